@@ -1,0 +1,59 @@
+"""Symbolic derivation (sympy.physics.mechanics) and C emission (CasADi) of robot models.
+
+This is the only part of jointplay that imports sympy.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from jointplay.derive.emit import GENERATOR_VERSION, Emitted, emit, provenance, write_generated
+from jointplay.derive.symbolic import SymbolicModel, derive
+
+__all__ = [
+    "GENERATOR_VERSION",
+    "Emitted",
+    "SymbolicModel",
+    "derive",
+    "emit",
+    "generated_folder",
+    "model_for",
+    "provenance",
+    "write_generated",
+]
+
+
+def generated_folder(robot, refresh_defaults: bool = True) -> Path:  # type: ignore[no-untyped-def]
+    """A folder holding generated code for ``robot``'s structure, generating it if needed.
+
+    Checked-in models (``jointplay.generated``) are used when their input hash matches;
+    otherwise the model is derived once into the per-user cache, keyed by that hash.
+    """
+    from jointplay import generated
+    from jointplay.build import cache_root
+    from jointplay.files import atomic_write_text
+    from jointplay.robotio import robot_to_toml
+
+    prov = provenance(robot.structure())
+    folder = generated.find(prov["input_hash"])
+    if folder is not None:
+        return folder
+    folder = cache_root() / "models" / prov["input_hash"]
+    if not (folder / "layout.json").exists():
+        write_generated(robot, folder)
+    elif refresh_defaults:
+        atomic_write_text(folder / "robot.toml", robot_to_toml(robot))
+    return folder
+
+
+def model_for(robot):  # type: ignore[no-untyped-def]
+    """Derive (or reuse), compile (or reuse) and load the model of ``robot``.
+
+    The returned model's default parameter vector is ``robot``'s numbers.
+    """
+    import numpy as np
+    from jointplay.model import load_model
+
+    model = load_model(generated_folder(robot, refresh_defaults=False))
+    model.default_parameters = np.asarray(robot.parameter_values())
+    return model

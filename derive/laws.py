@@ -1,0 +1,135 @@
+"""Contact and friction laws of a revolute clearance joint, written to stay finite everywhere.
+
+Normal force, continuous dissipative Hertz family (Lankarani & Nikravesh 1990, J. Mech. Des.
+112:369; Hunt & Crossley 1975, J. Appl. Mech. 42:440; Gonthier et al. 2004, Multibody Syst.
+Dyn. 11:209; Flores et al. 2011, Mech. Mach. Theory 46:1564):
+
+    F_n = max(0, K d+^n (1 + x(ce) d'/v-)),   d+ = max(0, |e| - c),
+
+with the pin-in-hole stiffness K = 4 / (3 (sb + sj)) sqrt(Rb Rj / (Rb - Rj)), s = (1 - nu^2)/E,
+and v- the normal approach speed at the onset of this impact (an input, floored at the
+parameter ``contact.impact_speed_floor`` for grazing contact). The outer max(0, .) stops the
+damping term from pulling the bodies together while they separate.
+
+Friction, modified Coulomb law (Ambrosio 2002): F_t = -mu c_d(|v_t|) F_n v_t / |v_t| with the
+dynamic correction c_d = 0 below v0, 1 above v1, and a ramp between: linear (the literature's)
+or, as the named option ``smooth``, the C1 cubic s^2 (3 - 2 s).
+
+Finiteness (the traps of the literature): the unit normal n = e/|e| is undefined at e = 0, and
+step(d) * e/|e| is 0 * NaN there, derivatives included. Here |e| is evaluated as
+sqrt(max(|e|^2, (1e-6 c)^2)): exact wherever |e| > 1e-6 c, bounded away from 0 below, where
+d+ = 0 multiplies everything. Likewise v_t / |v_t| becomes v_t / max(|v_t|, v0): exact wherever
+c_d > 0, finite where c_d = 0. pow(max(0, d), n) has no NaN and a continuous derivative.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+# |e| is floored at this fraction of the radial clearance (see module docstring).
+ECCENTRICITY_FLOOR = sp.Rational(1, 10**6)
+
+
+@dataclass
+class ContactTerms:
+    clearance: sp.Expr  # c = Rb - Rj
+    stiffness: sp.Expr  # K
+    eccentricity: sp.Expr  # |e| (floored far below c)
+    penetration: sp.Expr  # d = |e| - c (negative: no contact)
+    penetration_rate: sp.Expr  # d' = e'.n
+    sliding_speed: sp.Expr  # v_t: relative tangential speed of the contact points
+    damping_factor: sp.Expr  # x(ce) of the chosen law
+    normal_force: sp.Expr  # F_n >= 0, pushes the journal towards the bearing centre
+    friction_factor: sp.Expr  # c_d(|v_t|) in [0, 1]
+    friction_force: sp.Expr  # F_t, on the journal, along the tangent t = z x n
+    force_x: sp.Expr  # total contact force on the journal, N components
+    force_y: sp.Expr
+    potential: sp.Expr  # K d+^(n+1) / (n+1)
+
+
+def damping_factor(law: str, ce: sp.Expr) -> sp.Expr:
+    """x(ce) in chi = x K / v-, for each law of the Hertz family."""
+    if law == "lankarani-nikravesh":
+        return sp.Rational(3, 4) * (1 - ce**2)
+    if law == "hunt-crossley":
+        return sp.Rational(3, 2) * (1 - ce)
+    if law == "gonthier":
+        return (1 - ce**2) / ce
+    if law == "flores":
+        return sp.Rational(8, 5) * (1 - ce) / ce
+    raise ValueError(f"unknown contact law {law!r}")
+
+
+def friction_ramp(ramp: str, speed: sp.Expr, v0: sp.Expr, v1: sp.Expr) -> sp.Expr:
+    """c_d(|v_t|): 0 below v0, 1 above v1; linear or C1-smooth in between."""
+    s = sp.Min(sp.Max((speed - v0) / (v1 - v0), 0), 1)
+    if ramp == "linear":
+        return s
+    if ramp == "smooth":
+        return s**2 * (3 - 2 * s)
+    raise ValueError(f"unknown friction ramp {ramp!r}")
+
+
+def contact_terms(
+    structure: dict[str, Any],
+    joint: int,
+    ex: Any,
+    ey: Any,
+    vx: Any,
+    vy: Any,
+    omega_bearing: sp.Expr,
+    omega_journal: sp.Expr,
+    impact_speed: sp.Symbol,
+    P: Callable[[str], sp.Symbol],
+) -> ContactTerms:
+    rb = P(f"joint{joint}.bearing_radius")
+    rj = P(f"joint{joint}.journal_radius")
+    sigma_b = (1 - P(f"joint{joint}.bearing_nu") ** 2) / P(f"joint{joint}.bearing_E")
+    sigma_j = (1 - P(f"joint{joint}.journal_nu") ** 2) / P(f"joint{joint}.journal_E")
+    clearance = rb - rj
+    stiffness = sp.Rational(4, 3) / (sigma_b + sigma_j) * sp.sqrt(rb * rj / clearance)
+    n_exp = P("contact.exponent")
+
+    ecc = sp.sqrt(sp.Max(ex**2 + ey**2, (ECCENTRICITY_FLOOR * clearance) ** 2))
+    penetration = ecc - clearance
+    pen_plus = sp.Max(penetration, 0)
+    nx, ny = ex / ecc, ey / ecc
+    tx, ty = -ny, nx
+    rate = nx * vx + ny * vy
+    # Contact points: bearing centre + Rb n (on link i-1), journal centre + Rj n (on link i).
+    sliding = tx * vx + ty * vy + omega_journal * rj - omega_bearing * rb
+
+    x_ce = damping_factor(structure["contact_law"], P("contact.restitution"))
+    approach = sp.Max(impact_speed, P("contact.impact_speed_floor"))
+    normal = sp.Max(stiffness * pen_plus**n_exp * (1 + x_ce * rate / approach), 0)
+
+    friction_kind = structure["friction"]
+    if friction_kind == "none":
+        c_d: sp.Expr = sp.Integer(0)
+        friction: sp.Expr = sp.Integer(0)
+    else:
+        ramp = friction_kind.split("-", 1)[1]
+        v0, v1 = P("friction.v0"), P("friction.v1")
+        speed = sp.Abs(sliding)
+        c_d = friction_ramp(ramp, speed, v0, v1)
+        friction = -P("friction.mu") * c_d * normal * sliding / sp.Max(speed, v0)
+
+    return ContactTerms(
+        clearance=clearance,
+        stiffness=stiffness,
+        eccentricity=ecc,
+        penetration=penetration,
+        penetration_rate=rate,
+        sliding_speed=sliding,
+        damping_factor=x_ce,
+        normal_force=normal,
+        friction_factor=c_d,
+        friction_force=friction,
+        force_x=-normal * nx + friction * tx,
+        force_y=-normal * ny + friction * ty,
+        potential=stiffness * pen_plus ** (n_exp + 1) / (n_exp + 1),
+    )

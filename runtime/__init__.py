@@ -1,0 +1,60 @@
+"""jointplay: dynamics and control of planar serial robots with revolute-joint clearance.
+
+The flat public API. This package is the runtime: it loads and evaluates generated models and
+never imports sympy. Deriving new models lives in :mod:`jointplay.derive`.
+"""
+
+from jointplay.build import cache_root, compile_source
+from jointplay.description import (
+    Contact,
+    Friction,
+    Gravity,
+    Joint,
+    Link,
+    Parameter,
+    Robot,
+    load_robot,
+    robot_from_dict,
+    robot_from_flags,
+    uniform_chain,
+    with_parameters,
+)
+from jointplay.errors import BuildError, DescriptionError, GeneratedCodeError, JointplayError
+from jointplay.model import FastFunction, Model, load_model
+from jointplay.robotio import robot_to_toml
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "BuildError",
+    "Contact",
+    "DescriptionError",
+    "FastFunction",
+    "Friction",
+    "GeneratedCodeError",
+    "Gravity",
+    "Joint",
+    "JointplayError",
+    "Link",
+    "Model",
+    "Parameter",
+    "Robot",
+    "__version__",
+    "cache_root",
+    "compile_source",
+    "default_robot",
+    "load_model",
+    "load_robot",
+    "robot_from_dict",
+    "robot_from_flags",
+    "robot_to_toml",
+    "uniform_chain",
+    "with_parameters",
+]
+
+
+def default_robot() -> Robot:
+    """The built-in default: the paper's 4-link arm with clearance at joints 2 and 3."""
+    from importlib.resources import files
+
+    return load_robot(str(files("jointplay") / "robots" / "paper_4dof.toml"))

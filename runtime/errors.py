@@ -1,0 +1,30 @@
+"""Errors jointplay raises for bad input, each naming the field at fault and what is allowed."""
+
+from __future__ import annotations
+
+
+class JointplayError(Exception):
+    """Base class of every error jointplay raises on purpose."""
+
+
+class DescriptionError(JointplayError, ValueError):
+    """A robot description (file, table or flags) is invalid.
+
+    ``source`` is the file (or ``"flags"``), ``field`` the dotted path of the offending field
+    (for example ``joints[2].journal_radius``) and ``message`` says what is allowed.
+    """
+
+    def __init__(self, field: str, message: str, source: str | None = None) -> None:
+        self.field = field
+        self.message = message
+        self.source = source
+        where = f"{source}: " if source else ""
+        super().__init__(f"{where}{field}: {message}")
+
+
+class BuildError(JointplayError, RuntimeError):
+    """Compiling or loading a generated model failed."""
+
+
+class GeneratedCodeError(JointplayError, RuntimeError):
+    """Generated files are missing, edited by hand, or stamped by other tool versions."""

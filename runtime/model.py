@@ -1,0 +1,229 @@
+"""A compiled model: load generated C, compile it through the cache, evaluate it cheaply.
+
+Evaluation goes through CasADi's ``Function.buffer``: inputs and outputs are preallocated numpy
+arrays handed to the compiled code once, so a call costs a copy in, the C, and a copy out,
+not the construction of CasADi matrices (which costs 15-80 us per call).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import casadi as ca
+import numpy as np
+from jointplay.build import DEFAULT_CFLAGS, compile_source
+from jointplay.errors import GeneratedCodeError
+
+SOURCE_NAME = "model.c"
+LAYOUT_NAME = "layout.json"
+ROBOT_NAME = "robot.toml"
+_HASH_LINE = re.compile(r"^ \* input hash: ([0-9a-f]{64})$", re.MULTILINE)
+
+
+class FastFunction:
+    """A compiled CasADi function bound to preallocated float64 buffers.
+
+    ``inputs[i]`` and ``outputs[i]`` are numpy arrays shared with the C code: write inputs in
+    place and call :meth:`trigger` for the lowest overhead, or call the object with arrays.
+    Outputs are returned as dense arrays (column-major data reshaped to their shape).
+    """
+
+    def __init__(self, function: ca.Function) -> None:
+        self.function = function
+        self.name = function.name()
+        self._buffer, self._trigger = function.buffer()
+        self.inputs = [np.zeros(function.nnz_in(i)) for i in range(function.n_in())]
+        self.outputs = [np.zeros(function.nnz_out(i)) for i in range(function.n_out())]
+        for i, arr in enumerate(self.inputs):
+            self._buffer.set_arg(i, memoryview(arr))
+        for i, arr in enumerate(self.outputs):
+            self._buffer.set_res(i, memoryview(arr))
+        self._shapes = [function.size_out(i) for i in range(function.n_out())]
+        self._scatter: list[tuple[np.ndarray, np.ndarray] | None] = []
+        for i in range(function.n_out()):
+            sp = function.sparsity_out(i)
+            if sp.is_dense():
+                self._scatter.append(None)
+            else:
+                rows, cols = sp.get_triplet()
+                self._scatter.append((np.asarray(rows, int), np.asarray(cols, int)))
+        self._in_sizes = [function.nnz_in(i) for i in range(function.n_in())]
+
+    def trigger(self) -> None:
+        self._trigger()
+
+    def __call__(self, *args: Any) -> list[np.ndarray]:
+        if len(args) != len(self.inputs):
+            raise TypeError(f"{self.name} takes {len(self.inputs)} inputs "
+                            f"({', '.join(self.function.name_in())}), got {len(args)}")
+        for i, (arr, value) in enumerate(zip(self.inputs, args, strict=True)):
+            v = np.asarray(value, dtype=float).reshape(-1, order="F")
+            if v.size != self._in_sizes[i]:
+                raise ValueError(f"{self.name}: input {self.function.name_in(i)!r} needs "
+                                 f"{self._in_sizes[i]} values, got {v.size}")
+            arr[:] = v
+        self._trigger()
+        return [self._dense(i) for i in range(len(self.outputs))]
+
+    def _dense(self, i: int) -> np.ndarray:
+        rows, cols = self._shapes[i]
+        scatter = self._scatter[i]
+        if scatter is None:
+            out = self.outputs[i].reshape((rows, cols), order="F").copy()
+        else:
+            out = np.zeros((rows, cols))
+            out[scatter[0], scatter[1]] = self.outputs[i]
+        return out[:, 0] if cols == 1 else out
+
+
+@dataclass(frozen=True)
+class Layout:
+    """What layout.json says: coordinates, parameters and every function's slots."""
+
+    data: dict[str, Any]
+
+    @property
+    def coordinate_names(self) -> list[str]:
+        return [c["name"] for c in self.data["coordinates"]]
+
+    @property
+    def parameter_names(self) -> list[str]:
+        return [p["name"] for p in self.data["parameters"]]
+
+    @property
+    def input_hash(self) -> str:
+        return str(self.data["provenance"]["input_hash"])
+
+
+class Model:
+    """A loaded, compiled robot model. Create it with :func:`load_model`."""
+
+    def __init__(self, folder: Path, library: Path, layout: Layout, compile_seconds: float,
+                 default_parameters: np.ndarray | None) -> None:
+        self.folder = folder
+        self.library = library
+        self.layout = layout
+        self.compile_seconds = compile_seconds
+        self.name: str = layout.data["name"]
+        self.structure: dict[str, Any] = layout.data["structure"]
+        self.coordinates = layout.coordinate_names
+        self.parameters = layout.parameter_names
+        self.torque_joints: list[int] = layout.data["torque_joints"]
+        self.clearance_joints: list[int] = layout.data["clearance_joints"]
+        self.n_coordinates = len(self.coordinates)
+        self.n_state = 2 * self.n_coordinates
+        self.default_parameters = default_parameters
+        self._functions: dict[str, FastFunction] = {}
+
+    def __repr__(self) -> str:
+        return (f"Model({self.name!r}, coordinates={self.coordinates}, "
+                f"parameters={len(self.parameters)}, library={str(self.library)!r})")
+
+    def function(self, name: str) -> FastFunction:
+        """The compiled function ``name`` (see layout.json), loaded on first use."""
+        if name not in self._functions:
+            if name not in self.layout.data["functions"]:
+                raise KeyError(f"{name!r} is not a function of this model; it has "
+                               f"{', '.join(self.layout.data['functions'])}")
+            self._functions[name] = FastFunction(ca.external(name, str(self.library)))
+        return self._functions[name]
+
+    def casadi_function(self, name: str) -> ca.Function:
+        """The compiled function as a CasADi ``Function`` (for integrators and AD)."""
+        return self.function(name).function
+
+    # ---- parameters ------------------------------------------------------------------------
+    def parameter_vector(self, values: Mapping[str, float] | Sequence[float] | None = None,
+                         **overrides: float) -> np.ndarray:
+        """A parameter vector: the model's defaults, updated by name (or a full sequence)."""
+        if values is not None and not isinstance(values, Mapping):
+            vec = np.asarray(values, dtype=float).ravel()
+            if vec.size != len(self.parameters):
+                raise ValueError(f"the parameter vector has {len(self.parameters)} entries "
+                                 f"({', '.join(self.parameters)}), got {vec.size}")
+            return vec.copy()
+        if self.default_parameters is None:
+            raise GeneratedCodeError(
+                f"{self.folder} has no {ROBOT_NAME} with default values; pass a full vector")
+        vec = self.default_parameters.copy()
+        for name, value in {**(values or {}), **overrides}.items():
+            if name not in self.parameters:
+                raise KeyError(f"{name!r} is not a parameter of this model")
+            vec[self.parameters.index(name)] = float(value)
+        return vec
+
+    # ---- evaluation ------------------------------------------------------------------------
+    def _zeros_if_none(self, value: Any, size: int) -> Any:
+        return np.zeros(size) if value is None else value
+
+    def mass_matrix(self, q: Any, p: Any) -> np.ndarray:
+        return self.function("mass_matrix")(q, p)[0]
+
+    def forcing(self, x: Any, tau: Any, p: Any, v_imp: Any = None) -> np.ndarray:
+        v_imp = self._zeros_if_none(v_imp, len(self.clearance_joints))
+        return self.function("forcing")(x, tau, p, v_imp)[0]
+
+    def forward_dynamics(self, x: Any, tau: Any, p: Any, v_imp: Any = None) -> np.ndarray:
+        """dx/dt = [u; M(q)^-1 f(x, tau, p, v_imp)]."""
+        v_imp = self._zeros_if_none(v_imp, len(self.clearance_joints))
+        return self.function("forward_dynamics")(x, tau, p, v_imp)[0]
+
+    def jacobian(self, x: Any, tau: Any, p: Any, v_imp: Any = None) -> dict[str, np.ndarray]:
+        """Exact Jacobians of forward_dynamics with respect to x, tau, p and v_imp."""
+        v_imp = self._zeros_if_none(v_imp, len(self.clearance_joints))
+        blocks = self.function("jac_forward_dynamics")(x, tau, p, v_imp, np.zeros(0))
+        return dict(zip(("x", "tau", "p", "v_imp"), blocks, strict=True))
+
+    def contact(self, x: Any, p: Any, v_imp: Any = None) -> dict[str, np.ndarray]:
+        """Per clearance joint: delta, delta_dot, v_t, f_n, f_t, f_x, f_y."""
+        v_imp = self._zeros_if_none(v_imp, len(self.clearance_joints))
+        fn = self.function("contact")
+        return dict(zip(fn.function.name_out(), fn(x, p, v_imp), strict=True))
+
+    def energy(self, x: Any, p: Any) -> dict[str, float]:
+        fn = self.function("energy")
+        return {k: float(v.ravel()[0])
+                for k, v in zip(fn.function.name_out(), fn(x, p), strict=True)}
+
+    def end_effector(self, x: Any, udot: Any, p: Any) -> dict[str, np.ndarray]:
+        fn = self.function("end_effector")
+        return dict(zip(fn.function.name_out(), fn(x, udot, p), strict=True))
+
+
+def read_generated(folder: str | Path) -> tuple[str, Layout]:
+    """Read and cross-check model.c and layout.json of a generated folder."""
+    folder = Path(folder)
+    try:
+        source = (folder / SOURCE_NAME).read_text(encoding="utf-8")
+        layout = Layout(json.loads((folder / LAYOUT_NAME).read_text(encoding="utf-8")))
+    except FileNotFoundError as err:
+        raise GeneratedCodeError(f"{folder} is not a generated model: {err.filename} is "
+                                 "missing; regenerate it with `jointplay derive`") from None
+    except json.JSONDecodeError as err:
+        raise GeneratedCodeError(f"{folder / LAYOUT_NAME} is not valid JSON ({err}); "
+                                 "regenerate it with `jointplay derive`") from None
+    match = _HASH_LINE.search(source[:2000])
+    if not match or match.group(1) != layout.input_hash:
+        raise GeneratedCodeError(f"{folder}: the input hash of {SOURCE_NAME} does not match "
+                                 f"{LAYOUT_NAME}; regenerate the folder with `jointplay derive`")
+    return source, layout
+
+
+def load_model(folder: str | Path, cflags: tuple[str, ...] = DEFAULT_CFLAGS) -> Model:
+    """Compile (or reuse from the cache) and load the generated model in ``folder``."""
+    from jointplay.description import load_robot
+
+    folder = Path(folder)
+    source, layout = read_generated(folder)
+    library, seconds = compile_source(source, cflags)
+    defaults = None
+    if (folder / ROBOT_NAME).exists():
+        robot = load_robot(folder / ROBOT_NAME)
+        if robot.parameters() and [p.name for p in robot.parameters()] == layout.parameter_names:
+            defaults = np.asarray(robot.parameter_values())
+    return Model(folder, library, layout, seconds, defaults)
