@@ -23,7 +23,7 @@ __all__ = [
 ]
 
 
-def generated_folder(robot, refresh_defaults: bool = True) -> Path:  # type: ignore[no-untyped-def]
+def generated_folder(robot) -> Path:  # type: ignore[no-untyped-def]
     """A folder holding generated code for ``robot``'s structure, generating it if needed.
 
     Checked-in models (``jointplay.generated``) are used when their input hash matches;
@@ -31,9 +31,6 @@ def generated_folder(robot, refresh_defaults: bool = True) -> Path:  # type: ign
     """
     from jointplay import generated
     from jointplay.build import cache_root
-    from jointplay.files import atomic_write_text
-    from jointplay.robotio import robot_to_toml
-
     prov = provenance(robot.structure())
     folder = generated.find(prov["input_hash"])
     if folder is not None:
@@ -41,8 +38,6 @@ def generated_folder(robot, refresh_defaults: bool = True) -> Path:  # type: ign
     folder = cache_root() / "models" / prov["input_hash"]
     if not (folder / "layout.json").exists():
         write_generated(robot, folder)
-    elif refresh_defaults:
-        atomic_write_text(folder / "robot.toml", robot_to_toml(robot))
     return folder
 
 
@@ -54,6 +49,6 @@ def model_for(robot):  # type: ignore[no-untyped-def]
     import numpy as np
     from jointplay.model import load_model
 
-    model = load_model(generated_folder(robot, refresh_defaults=False))
+    model = load_model(generated_folder(robot))
     model.default_parameters = np.asarray(robot.parameter_values())
     return model

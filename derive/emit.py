@@ -226,16 +226,35 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
     return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip], layout
 
 
-def header(prov: dict[str, str], robot_name: str) -> str:
+def _slot_summary(layout: dict[str, Any]) -> str:
+    lines = [" * Functions (inputs -> outputs; column vectors, dense, float64):"]
+    for name, fn in layout["functions"].items():
+        ins = ", ".join(f"{s['name']}[{s['shape'][0]}]" for s in fn["inputs"])
+        outs = ", ".join(f"{s['name']}[{'x'.join(map(str, s['shape']))}]" for s in fn["outputs"])
+        lines.append(f" *   {name}({ins}) -> {outs}")
+        if "jacobian" in fn:
+            lines.append(f" *   {fn['jacobian']}: d {name} / d each input, CasADi's calling "
+                         "convention")
+    for slot in layout["functions"]["forward_dynamics"]["inputs"]:
+        entries = slot.get("entries", [])
+        lines.append(f" * {slot['name']} [{slot['unit']}]: {slot['doc']}")
+        for start in range(0, len(entries), 6):
+            lines.append(f" *     {start}: {', '.join(entries[start:start + 6])}")
+    return "\n".join(lines) + "\n"
+
+
+def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any]) -> str:
     return (
-        "/* GENERATED FILE: DO NOT EDIT. Regenerate with `jointplay derive` "
-        "(or tests/test_generated.py --update).\n"
+        "/* GENERATED FILE: DO NOT EDIT.\n"
+        " * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models\n"
+        " * checked in under generated/: `pytest tests/test_generated.py --update-generated`.\n"
         f" * model: {robot_name}\n"
         f" * generator: jointplay.derive {prov['generator']}, casadi {prov['casadi']}, "
         f"sympy {prov['sympy']}\n"
         f" * input hash: {prov['input_hash']}\n"
         " * Every input and output slot is described, with names and units, in layout.json.\n"
-        " */\n"
+        + _slot_summary(layout)
+        + " */\n"
     )
 
 
@@ -246,12 +265,13 @@ def emit(robot: Robot) -> Emitted:
     model = derive(structure)
     t1 = time.perf_counter()
     functions, layout = build_functions(model)
-    prov = provenance(structure)
-    layout = {"name": robot.name, "provenance": prov, **layout}
     gen = ca.CodeGenerator(SOURCE_NAME, {"with_header": False, "verbose": False})
     for fn in functions:
         gen.add(fn)
-    source = header(prov, robot.name) + gen.dump()
+    body = gen.dump()
+    prov = {**provenance(structure), "code_sha256": hashlib.sha256(body.encode()).hexdigest()}
+    layout = {"name": robot.name, "provenance": prov, **layout}
+    source = header(prov, robot.name, layout) + body
     t2 = time.perf_counter()
     return Emitted(source=source, layout=layout,
                    timings={"derive": t1 - t0, "emit": t2 - t1, **model.timings})

@@ -7,6 +7,7 @@ not the construction of CasADi matrices (which costs 15-80 us per call).
 
 from __future__ import annotations
 
+import hashlib
 import json
 import re
 from collections.abc import Mapping, Sequence
@@ -127,7 +128,9 @@ class Model:
     def function(self, name: str) -> FastFunction:
         """The compiled function ``name`` (see layout.json), loaded on first use."""
         if name not in self._functions:
-            if name not in self.layout.data["functions"]:
+            functions = self.layout.data["functions"]
+            jacobians = {f.get("jacobian") for f in functions.values()}
+            if name not in functions and name not in jacobians:
                 raise KeyError(f"{name!r} is not a function of this model; it has "
                                f"{', '.join(self.layout.data['functions'])}")
             self._functions[name] = FastFunction(ca.external(name, str(self.library)))
@@ -211,6 +214,11 @@ def read_generated(folder: str | Path) -> tuple[str, Layout]:
     if not match or match.group(1) != layout.input_hash:
         raise GeneratedCodeError(f"{folder}: the input hash of {SOURCE_NAME} does not match "
                                  f"{LAYOUT_NAME}; regenerate the folder with `jointplay derive`")
+    body = source[source.find("*/\n") + 3:]
+    if hashlib.sha256(body.encode()).hexdigest() != layout.data["provenance"].get("code_sha256"):
+        raise GeneratedCodeError(f"{folder / SOURCE_NAME} was edited after it was generated "
+                                 "(its checksum does not match layout.json); regenerate it "
+                                 "with `jointplay derive` instead of editing it")
     return source, layout
 
 
