@@ -6,9 +6,8 @@ from collections.abc import Callable
 from typing import Any
 
 import sympy as sp
-from sympy.physics import mechanics as me
-
 from jointplay.derive.symbolic import SymbolicModel
+from sympy.physics import mechanics as me
 
 FORMATS = ("text", "latex", "markdown")
 _TABLE_SECTIONS = ("Coordinates", "Parameters", "Inputs")

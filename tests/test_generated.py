@@ -7,7 +7,6 @@ import json
 import casadi
 import pytest
 import sympy
-
 from jointplay import generated, load_robot
 from jointplay.derive import emit
 from jointplay.derive.emit import write_generated
@@ -60,5 +59,5 @@ def test_hand_edited_source_is_refused(tmp_path) -> None:  # type: ignore[no-unt
     with pytest.raises(GeneratedCodeError, match="edited after it was generated"):
         read_generated(tmp_path)
     (tmp_path / "layout.json").unlink()
-    with pytest.raises(GeneratedCodeError, match="layout.json is missing"):
+    with pytest.raises(GeneratedCodeError, match=r"layout\.json is missing"):
         read_generated(tmp_path)
