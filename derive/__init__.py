@@ -9,6 +9,8 @@ from pathlib import Path
 
 from jointplay.derive.emit import GENERATOR_VERSION, Emitted, emit, provenance, write_generated
 from jointplay.derive.symbolic import SymbolicModel, derive
+from jointplay.description import Robot
+from jointplay.model import Model
 
 __all__ = [
     "GENERATOR_VERSION",
@@ -23,7 +25,7 @@ __all__ = [
 ]
 
 
-def generated_folder(robot) -> Path:  # type: ignore[no-untyped-def]
+def generated_folder(robot: Robot) -> Path:
     """A folder holding generated code for ``robot``'s structure, generating it if needed.
 
     Checked-in models (``jointplay.generated``) are used when their input hash matches;
@@ -41,12 +43,13 @@ def generated_folder(robot) -> Path:  # type: ignore[no-untyped-def]
     return folder
 
 
-def model_for(robot):  # type: ignore[no-untyped-def]
+def model_for(robot: Robot) -> Model:
     """Derive (or reuse), compile (or reuse) and load the model of ``robot``.
 
     The returned model's default parameter vector is ``robot``'s numbers.
     """
     import numpy as np
+
     from jointplay.model import load_model
 
     model = load_model(generated_folder(robot))

@@ -23,11 +23,13 @@ import hashlib
 import json
 import time
 from dataclasses import dataclass
+from importlib.metadata import version
 from pathlib import Path
 from typing import Any
 
 import casadi as ca
 import sympy as sp
+
 from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.description import Robot, canonical_json
@@ -40,18 +42,11 @@ GENERATOR_VERSION = "1"
 
 def provenance(structure: dict[str, Any]) -> dict[str, str]:
     """What the emitted text depends on, and the hash that stamps it."""
-    inputs = {
-        "structure": structure,
-        "generator": GENERATOR_VERSION,
-        "casadi": ca.__version__,
-        "sympy": sp.__version__,
-    }
-    return {
-        "generator": GENERATOR_VERSION,
-        "casadi": ca.__version__,
-        "sympy": sp.__version__,
-        "input_hash": hashlib.sha256(canonical_json(inputs).encode()).hexdigest(),
-    }
+    versions = {"generator": GENERATOR_VERSION, "casadi": version("casadi"),
+                "sympy": version("sympy")}
+    inputs = {"structure": structure, **versions}
+    return {**versions,
+            "input_hash": hashlib.sha256(canonical_json(inputs).encode()).hexdigest()}
 
 
 @dataclass

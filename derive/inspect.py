@@ -6,8 +6,9 @@ from collections.abc import Callable
 from typing import Any
 
 import sympy as sp
-from jointplay.derive.symbolic import SymbolicModel
 from sympy.physics import mechanics as me
+
+from jointplay.derive.symbolic import SymbolicModel
 
 FORMATS = ("text", "latex", "markdown")
 _TABLE_SECTIONS = ("Coordinates", "Parameters", "Inputs")

@@ -27,9 +27,10 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
+from sympy.physics import mechanics as me
+
 from jointplay.derive import laws
 from jointplay.description import Parameter, parameter_layout
-from sympy.physics import mechanics as me
 
 
 @dataclass(frozen=True)

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
 from jointplay.description import Robot, load_robot, robot_from_flags
 from jointplay.errors import DescriptionError, JointplayError
 

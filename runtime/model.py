@@ -17,6 +17,7 @@ from typing import Any
 
 import casadi as ca
 import numpy as np
+
 from jointplay.build import DEFAULT_CFLAGS, compile_source
 from jointplay.errors import GeneratedCodeError
 
@@ -37,13 +38,16 @@ class FastFunction:
     def __init__(self, function: ca.Function) -> None:
         self.function = function
         self.name = function.name()
+        # Typed as Any: CasADi's stubs list a size argument that its SWIG wrapper takes from
+        # the buffer itself.
+        self._buffer: Any
         self._buffer, self._trigger = function.buffer()
         self.inputs = [np.zeros(function.nnz_in(i)) for i in range(function.n_in())]
         self.outputs = [np.zeros(function.nnz_out(i)) for i in range(function.n_out())]
         for i, arr in enumerate(self.inputs):
-            self._buffer.set_arg(i, memoryview(arr))
+            self._buffer.set_arg(i, arr.data)
         for i, arr in enumerate(self.outputs):
-            self._buffer.set_res(i, memoryview(arr))
+            self._buffer.set_res(i, arr.data)
         self._shapes = [function.size_out(i) for i in range(function.n_out())]
         self._scatter: list[tuple[np.ndarray, np.ndarray] | None] = []
         for i in range(function.n_out()):

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from jointplay import generated, load_model
 from jointplay.build import DEFAULT_CFLAGS, LIBRARY_NAME, MARKER_NAME, build_key, compile_source
 

@@ -7,8 +7,9 @@ import subprocess
 import sys
 from pathlib import Path
 
-import jointplay
 import pytest
+
+import jointplay
 from jointplay import DescriptionError, load_robot, robot_from_flags, uniform_chain
 from jointplay.robotio import robot_to_toml
 

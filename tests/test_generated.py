@@ -7,6 +7,7 @@ import json
 import casadi
 import pytest
 import sympy
+
 from jointplay import generated, load_robot
 from jointplay.derive import emit
 from jointplay.derive.emit import write_generated
