@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from jointplay.derive.emit import GENERATOR_VERSION, Emitted, emit, provenance, write_generated
+from jointplay.derive.codegen import GENERATOR_VERSION, Emitted, emit, provenance, write_generated
 from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.description import Robot
 from jointplay.model import Model
@@ -33,12 +33,16 @@ def generated_folder(robot: Robot) -> Path:
     """
     from jointplay import generated
     from jointplay.build import cache_root
+    from jointplay.errors import GeneratedCodeError
+    from jointplay.model import read_generated
     prov = provenance(robot.structure())
     folder = generated.find(prov["input_hash"])
     if folder is not None:
         return folder
     folder = cache_root() / "models" / prov["input_hash"]
-    if not (folder / "layout.json").exists():
+    try:
+        read_generated(folder)
+    except GeneratedCodeError:  # absent, half-written or damaged: (re)generate it
         write_generated(robot, folder)
     return folder
 

@@ -16,10 +16,12 @@ dynamic correction c_d = 0 below v0, 1 above v1, and a ramp between: linear (the
 or, as the named option ``smooth``, the C1 cubic s^2 (3 - 2 s).
 
 Finiteness (the traps of the literature): the unit normal n = e/|e| is undefined at e = 0, and
-step(d) * e/|e| is 0 * NaN there, derivatives included. Here |e| is evaluated as
+step(d) * e/|e| is 0 * NaN there, derivatives included; and pow(0, n) differentiated by the
+runtime exponent n is log(0) * 0 = NaN. Here |e| is evaluated as
 sqrt(max(|e|^2, (1e-6 c)^2)): exact wherever |e| > 1e-6 c, bounded away from 0 below, where
 d+ = 0 multiplies everything. Likewise v_t / |v_t| becomes v_t / max(|v_t|, v0): exact wherever
-c_d > 0, finite where c_d = 0. pow(max(0, d), n) has no NaN and a continuous derivative.
+c_d > 0, finite where c_d = 0. The power d+^n is a branch, d > 0 ? max(d, 1e-300)^n : 0, with
+no NaN in any derivative and a continuous derivative in d at contact onset (n > 1).
 """
 
 from __future__ import annotations
@@ -32,6 +34,15 @@ import sympy as sp
 
 # |e| is floored at this fraction of the radial clearance (see module docstring).
 ECCENTRICITY_FLOOR = sp.Rational(1, 10**6)
+
+
+def penetration_power(delta: sp.Expr, exponent: sp.Expr) -> sp.Expr:
+    """max(0, delta)^exponent, with derivatives finite in delta *and* in the exponent.
+
+    pow(max(0, d), n) differentiated by n gives log(0) * 0 = NaN out of contact; the branch
+    keeps the power's base positive, and the untaken branch is masked exactly.
+    """
+    return sp.Piecewise((sp.Max(delta, sp.Float(1e-300)) ** exponent, delta > 0), (0, True))
 
 
 @dataclass
@@ -96,7 +107,6 @@ def contact_terms(
 
     ecc = sp.sqrt(sp.Max(ex**2 + ey**2, (ECCENTRICITY_FLOOR * clearance) ** 2))
     penetration = ecc - clearance
-    pen_plus = sp.Max(penetration, 0)
     nx, ny = ex / ecc, ey / ecc
     tx, ty = -ny, nx
     rate = nx * vx + ny * vy
@@ -105,7 +115,8 @@ def contact_terms(
 
     x_ce = damping_factor(structure["contact_law"], P("contact.restitution"))
     approach = sp.Max(impact_speed, P("contact.impact_speed_floor"))
-    normal = sp.Max(stiffness * pen_plus**n_exp * (1 + x_ce * rate / approach), 0)
+    normal = sp.Max(
+        stiffness * penetration_power(penetration, n_exp) * (1 + x_ce * rate / approach), 0)
 
     friction_kind = structure["friction"]
     if friction_kind == "none":
@@ -131,5 +142,5 @@ def contact_terms(
         friction_force=friction,
         force_x=-normal * nx + friction * tx,
         force_y=-normal * ny + friction * ty,
-        potential=stiffness * pen_plus ** (n_exp + 1) / (n_exp + 1),
+        potential=stiffness * penetration_power(penetration, n_exp + 1) / (n_exp + 1),
     )

@@ -17,7 +17,7 @@ Formulation (chosen for derivation speed and for readable equations):
   about either joint centre; friction acts at the contact points and gives the moments
   Rj Ft on the journal's link and -Rb Ft on the bearing's link.
 * Nothing is solved symbolically: the linear solve for the accelerations and all Jacobians are
-  done by CasADi (see :mod:`jointplay.derive.emit`). Differentiating solved accelerations in
+  done by CasADi (see :mod:`jointplay.derive.codegen`). Differentiating solved accelerations in
   sympy is what makes naive derivations take minutes at 12 links.
 """
 

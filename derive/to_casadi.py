@@ -26,6 +26,19 @@ _UNARY = {
 }
 
 
+def _children(node: sp.Basic) -> tuple[sp.Basic, ...]:
+    """Sub-expressions to convert first; for a Piecewise, its values and its conditions'
+    operands (conditions themselves are not numbers)."""
+    if isinstance(node, sp.Piecewise):
+        out: list[sp.Basic] = []
+        for value, cond in node.args:
+            out.append(value)
+            if cond is not sp.true:
+                out.extend(cond.args)
+        return tuple(out)
+    return tuple(node.args)
+
+
 class SympyToCasadi:
     """Convert sympy expressions, given a map from leaf symbols (or applied functions) to SX."""
 
@@ -50,13 +63,18 @@ class SympyToCasadi:
                 continue
             if not expanded and node.args and not node.is_Number:
                 stack.append((node, True))
-                stack.extend((a, False) for a in node.args if a not in cache)
+                stack.extend((a, False) for a in _children(node) if a not in cache)
                 continue
             cache[node] = self._node(node)
         return cache[root]
 
     def _node(self, node: sp.Basic) -> Any:
         cache = self._cache
+        if isinstance(node, sp.Piecewise):
+            result = ca.SX(float("nan"))  # sympy's value where no condition holds
+            for value, cond in reversed(node.args):
+                result = ca.if_else(self._condition(cond), cache[value], result)
+            return result
         args = [cache[a] for a in node.args] if node.args else []
         if node.is_Number or node in (sp.pi, sp.E):
             return ca.SX(float(node))
@@ -89,11 +107,6 @@ class SympyToCasadi:
             for a in args[1:]:
                 out = ca.fmin(out, a)
             return out
-        if isinstance(node, sp.Piecewise):
-            result = ca.SX(float("nan"))
-            for (_, cond), value in zip(reversed(node.args), reversed(args), strict=True):
-                result = ca.if_else(self._condition(cond), value, result)
-            return result
         for fn, cafn in _UNARY.items():
             if isinstance(node, fn):
                 return cafn(args[0])
@@ -102,7 +115,7 @@ class SympyToCasadi:
     def _condition(self, cond: sp.Basic) -> Any:
         if cond is sp.true:
             return ca.SX(1)
-        lhs, rhs = (self(a) for a in cond.args)
+        lhs, rhs = (self._cache[a] for a in cond.args)
         ops = {sp.StrictGreaterThan: lambda a, b: a > b, sp.GreaterThan: lambda a, b: a >= b,
                sp.StrictLessThan: lambda a, b: a < b, sp.LessThan: lambda a, b: a <= b}
         for kind, op in ops.items():

@@ -32,11 +32,14 @@ class FastFunction:
 
     ``inputs[i]`` and ``outputs[i]`` are numpy arrays shared with the C code: write inputs in
     place and call :meth:`trigger` for the lowest overhead, or call the object with arrays.
-    Outputs are returned as dense arrays (column-major data reshaped to their shape).
+    Outputs are returned as dense arrays (column-major data reshaped to their shape); column
+    vectors come back 1-D unless named in ``matrices``.
     """
 
-    def __init__(self, function: ca.Function) -> None:
+    def __init__(self, function: ca.Function, matrices: frozenset[str] = frozenset()) -> None:
         self.function = function
+        self._squeeze = [function.size2_out(i) == 1 and function.name_out(i) not in matrices
+                         for i in range(function.n_out())]
         self.name = function.name()
         # Typed as Any: CasADi's stubs list a size argument that its SWIG wrapper takes from
         # the buffer itself.
@@ -83,7 +86,7 @@ class FastFunction:
         else:
             out = np.zeros((rows, cols))
             out[scatter[0], scatter[1]] = self.outputs[i]
-        return out[:, 0] if cols == 1 else out
+        return out[:, 0] if self._squeeze[i] else out
 
 
 @dataclass(frozen=True)
@@ -137,7 +140,13 @@ class Model:
             if name not in functions and name not in jacobians:
                 raise KeyError(f"{name!r} is not a function of this model; it has "
                                f"{', '.join(self.layout.data['functions'])}")
-            self._functions[name] = FastFunction(ca.external(name, str(self.library)))
+            fn = ca.external(name, str(self.library))
+            if name in functions:
+                matrices = frozenset(s["name"] for s in functions[name]["outputs"]
+                                     if s.get("matrix"))
+            else:  # a Jacobian: every block is a matrix
+                matrices = frozenset(fn.name_out())
+            self._functions[name] = FastFunction(fn, matrices)
         return self._functions[name]
 
     def casadi_function(self, name: str) -> ca.Function:

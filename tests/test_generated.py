@@ -10,7 +10,7 @@ import sympy
 
 from jointplay import generated, load_robot
 from jointplay.derive import emit
-from jointplay.derive.emit import write_generated
+from jointplay.derive.codegen import write_generated
 from jointplay.model import read_generated
 
 FOLDERS = generated.folders()

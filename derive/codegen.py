@@ -37,7 +37,18 @@ from jointplay.files import atomic_write_text
 from jointplay.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.robotio import robot_to_toml
 
-GENERATOR_VERSION = "1"
+
+def _generator_version() -> str:
+    """The package version plus a hash of this generator's own source: any change to the
+    derivation or emission code changes the stamp, so stale cached models are never reused."""
+    h = hashlib.sha256()
+    for path in sorted(Path(__file__).parent.glob("*.py")):
+        h.update(path.name.encode())
+        h.update(path.read_bytes())
+    return f"{version('jointplay')}+{h.hexdigest()[:12]}"
+
+
+GENERATOR_VERSION = _generator_version()
 
 
 def provenance(structure: dict[str, Any]) -> dict[str, str]:
@@ -60,6 +71,8 @@ def _slot(name: str, size: int | tuple[int, int], unit: str, doc: str,
           entries: list[str] | None = None) -> dict[str, Any]:
     shape = [size, 1] if isinstance(size, int) else list(size)
     slot: dict[str, Any] = {"name": name, "shape": shape, "unit": unit, "doc": doc}
+    if not isinstance(size, int):
+        slot["matrix"] = True
     if entries is not None:
         slot["entries"] = entries
     return slot
