@@ -38,11 +38,15 @@ from jointplay.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.robotio import robot_to_toml
 
 
+_EMITTING_MODULES = ("codegen.py", "laws.py", "symbolic.py", "to_casadi.py")
+
+
 def _generator_version() -> str:
-    """The package version plus a hash of this generator's own source: any change to the
-    derivation or emission code changes the stamp, so stale cached models are never reused."""
+    """The package version plus a hash of the modules that decide the emitted text: any
+    change to the derivation or emission code changes the stamp, so stale cached models are
+    never reused (inspection and package glue are left out: they do not change the C)."""
     h = hashlib.sha256()
-    for path in sorted(Path(__file__).parent.glob("*.py")):
+    for path in sorted(Path(__file__).parent / name for name in _EMITTING_MODULES):
         h.update(path.name.encode())
         h.update(path.read_bytes())
     return f"{version('jointplay')}+{h.hexdigest()[:12]}"

@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+ac8be43e6aa6, casadi 3.8.2, sympy 1.14.0
- * input hash: db0c3c6ab3b6acfa22133d3513409b433d601902d713ccef22b978efa7ed3b24
+ * generator: jointplay.derive 0.1.0+d3c720d48433, casadi 3.8.2, sympy 1.14.0
+ * input hash: 68cea83062c3f073fae1b273f6c4a425b47091fa24e8ce3c029415ad00dc2dd5
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
