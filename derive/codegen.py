@@ -37,7 +37,6 @@ from jointplay.files import atomic_write_text
 from jointplay.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.robotio import robot_to_toml
 
-
 _EMITTING_MODULES = ("codegen.py", "laws.py", "symbolic.py", "to_casadi.py")
 
 
@@ -101,7 +100,8 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
     convert = SympyToCasadi(leaves)
 
     per_joint: dict[str, list[Any]] = {k: [] for k in
-                                       ("delta", "delta_dot", "v_t", "f_n", "f_t", "f_x", "f_y")}
+                                       ("delta", "delta_dot", "v_t", "f_n", "f_t", "f_x", "f_y",
+                                        "dissipation")}
     potential = ca.SX(0)
     for j, terms in enumerate(model.clearance):
         convert._cache[terms.impact_speed] = v_imp[j]
@@ -114,6 +114,7 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
             "f_t": convert(law.friction_force),
             "f_x": convert(law.force_x),
             "f_y": convert(law.force_y),
+            "dissipation": convert(law.dissipation),
         }
         for key, value in values.items():
             per_joint[key].append(value)
@@ -202,6 +203,7 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
         "f_t": ("N", "friction force on the journal along the tangent"),
         "f_x": ("N", "total contact force on the journal, x"),
         "f_y": ("N", "total contact force on the journal, y"),
+        "dissipation": ("W", "power taken out by contact damping and friction (>= 0)"),
     }
     functions: dict[str, Any] = {
         "mass_matrix": {"inputs": [_slot("q", n, "rad, m", "coordinates", coord_names), p_slot],
@@ -235,7 +237,80 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
         "clearance_joints": [c.index for c in model.clearance],
         "functions": functions,
     }
-    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip], layout
+    fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac)
+    step_inputs = [x_slot, None, _slot("h", 1, "s", "step size"), p_slot, v_slot]
+    for fn, stages, doc in (
+            (fn_rk4, "t, t + h/2, t + h", "explicit fourth-order Runge-Kutta step"),
+            (fn_radau, "t + c_i h, c = ((4 - 6^0.5)/10, (4 + 6^0.5)/10, 1)",
+             f"implicit Radau IIA step (3 stages, order 5), {RADAU_NEWTON_ITERATIONS} "
+             "simplified Newton iterations")):
+        ins = list(step_inputs)
+        ins[1] = _slot("tau_stages", (len(tau_names), 3), "N m",
+                       f"drive torques at the stage times {stages}, one column per stage")
+        outs = [_slot("x_next", 2 * n, "rad, m, rad/s, m/s", f"state after one {doc}",
+                      x_entries)]
+        functions[fn.name()] = {"inputs": ins, "outputs": outs}
+        if fn is fn_radau:
+            outs.append(_slot("newton_increment", 1, "rad, m, rad/s, m/s",
+                              "max norm of the last Newton update (convergence check)"))
+            functions[fn.name()]["newton_iterations"] = RADAU_NEWTON_ITERATIONS
+    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip, fn_rk4,
+            fn_radau], layout
+
+
+# Radau IIA, 3 stages (Hairer & Wanner, Solving ODEs II, Table 5.6): stiffly accurate, so the
+# last stage is the step's result.
+_S6 = 6 ** 0.5
+RADAU_C = ((4 - _S6) / 10, (4 + _S6) / 10, 1.0)
+RADAU_A = (((88 - 7 * _S6) / 360, (296 - 169 * _S6) / 1800, (-2 + 3 * _S6) / 225),
+           ((296 + 169 * _S6) / 1800, (88 + 7 * _S6) / 360, (-2 - 3 * _S6) / 225),
+           ((16 - _S6) / 36, (16 + _S6) / 36, 1 / 9))
+RADAU_NEWTON_ITERATIONS = 6
+
+
+def fixed_step_functions(fn_fd: ca.Function, fn_jac: ca.Function
+                         ) -> tuple[ca.Function, ca.Function]:
+    """One step of explicit RK4 and of implicit Radau IIA, as C with no solver library.
+
+    Torques enter at the stage times, so a time-varying drive keeps each method's order. The
+    Radau step solves its stage equations by simplified Newton with the exact Jacobian at
+    the step's start, inverted once per step; a fixed iteration count keeps it a plain loop,
+    and the size of the last update is returned so the caller can reject a step that did
+    not converge.
+    """
+    nx = fn_fd.size1_in(0)
+    x = ca.MX.sym("x", nx)
+    h = ca.MX.sym("h")
+    p = ca.MX.sym("p", fn_fd.size1_in(2))
+    v = ca.MX.sym("v_imp", fn_fd.size1_in(3))
+    tau = ca.MX.sym("tau_stages", fn_fd.size1_in(1), 3)
+    names = ["x", "tau_stages", "h", "p", "v_imp"]
+
+    def f(state: ca.MX, column: int) -> ca.MX:
+        return fn_fd(state, tau[:, column], p, v)
+
+    k1 = f(x, 0)
+    k2 = f(x + h / 2 * k1, 1)
+    k3 = f(x + h / 2 * k2, 1)
+    k4 = f(x + h * k3, 2)
+    rk4 = ca.Function("rk4_step", [x, tau, h, p, v], [x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)],
+                      names, ["x_next"])
+
+    a = ca.DM(RADAU_A)
+    jac_x = fn_jac(x, tau[:, 0], p, v, ca.MX(ca.Sparsity(nx, 1)))[0]
+    newton_inv = ca.solve(ca.MX.eye(3 * nx) - h * ca.kron(ca.MX(a), jac_x),
+                          ca.MX.eye(3 * nx), "qr")
+    z = ca.MX.zeros(nx, 3)  # stage increments x_i - x, one column per stage
+    increment = ca.MX(0)
+    for _ in range(RADAU_NEWTON_ITERATIONS):
+        slopes = ca.horzcat(*[f(x + z[:, i], i) for i in range(3)])
+        residual = ca.vec(z - h * ca.mtimes(slopes, a.T))
+        update = -ca.mtimes(newton_inv, residual)
+        z = z + ca.reshape(update, nx, 3)
+        increment = ca.norm_inf(update)
+    radau = ca.Function("radau_step", [x, tau, h, p, v], [x + z[:, 2], increment],
+                        names, ["x_next", "newton_increment"])
+    return rk4, radau
 
 
 def _slot_summary(layout: dict[str, Any]) -> str:

@@ -60,6 +60,7 @@ class ContactTerms:
     force_x: sp.Expr  # total contact force on the journal, N components
     force_y: sp.Expr
     potential: sp.Expr  # K d+^(n+1) / (n+1)
+    dissipation: sp.Expr  # power lost to damping and friction: (F_n - K d+^n) d' - F_t v_t >= 0
 
 
 def damping_factor(law: str, ce: sp.Expr) -> sp.Expr:
@@ -143,4 +144,8 @@ def contact_terms(
         force_x=-normal * nx + friction * tx,
         force_y=-normal * ny + friction * ty,
         potential=stiffness * penetration_power(penetration, n_exp + 1) / (n_exp + 1),
+        # The elastic part K d+^n d' is stored in the potential; the rest of the normal force
+        # (hysteresis damping, clipped at zero) and all of friction take energy out.
+        dissipation=(normal - stiffness * penetration_power(penetration, n_exp)) * rate
+        - friction * sliding,
     )

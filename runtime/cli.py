@@ -3,6 +3,7 @@
   jointplay build   [ROBOT.toml | flags]                 derive, compile, load and check a model
   jointplay derive  [ROBOT.toml | flags] --out DIR       write the generated model to DIR
   jointplay inspect [ROBOT.toml | flags] [--format text|latex|markdown] [--out FILE.md]
+  jointplay simulate [SCENE.toml] [--out RUN.h5] [--csv RUN.csv] [--plot DIR] [--compare-ideal]
 
 With neither a file nor flags, the robot is the built-in default (the paper's 4-link arm).
 Bad input exits with status 2 and a message naming the field and what is allowed; nothing is
@@ -165,6 +166,112 @@ def cmd_build(args: argparse.Namespace) -> int:
     return 0
 
 
+def _overrides(items: list[str]) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip():
+            raise DescriptionError("--set", f"expects NAME=VALUE (e.g. friction.mu=0.1), got "
+                                   f"{item!r}")
+        try:
+            number = float(value)
+        except ValueError:
+            raise DescriptionError(f"--set {name}", f"must be a number, got {value!r}") \
+                from None
+        if not np.isfinite(number):
+            raise DescriptionError(f"--set {name}", f"must be finite, got {value!r}")
+        out[name.strip()] = number
+    return out
+
+
+def cmd_simulate(args: argparse.Namespace) -> int:
+    from jointplay.output import check_output_path
+    from jointplay.scene import default_scene, load_scene
+
+    # Everything is validated before anything is derived, compiled or written.
+    scene = load_scene(args.scene) if args.scene else default_scene()
+    changes = {k: v for k, v in (("integrator", args.integrator), ("rtol", args.rtol),
+                                 ("atol", args.atol), ("t_end", args.t_end),
+                                 ("step", args.step)) if v is not None}
+    if changes:
+        try:
+            scene = scene.with_run(**changes)
+        except DescriptionError as err:
+            flag = "--" + err.field.removeprefix("run.").replace("_", "-")
+            raise DescriptionError(flag, err.message) from None
+    overrides = _overrides(args.set or [])
+    for flag, path in (("--out", args.out), ("--csv", args.csv)):
+        if path:
+            check_output_path(path, flag)
+    if args.plot:
+        _check_writable_dir(Path(args.plot), "--plot")
+    if overrides:
+        from jointplay.description import with_parameters
+
+        try:
+            scene = scene.with_robot(with_parameters(scene.robot, overrides))
+        except DescriptionError as err:
+            raise DescriptionError(f"--set {err.field}", err.message) from None
+
+    from jointplay.simulate import load_scene_model, simulate
+
+    quiet = args.quiet
+    t0 = time.perf_counter()
+    model = load_scene_model(scene)
+    if not quiet:
+        print(f"scene {scene.name}: model {model.name} ready in "
+              f"{time.perf_counter() - t0:.2f} s ({', '.join(model.coordinates)})")
+    result = simulate(scene, model=model, compare_ideal=args.compare_ideal, quiet=quiet)
+    written = []
+    if args.out:
+        from jointplay.output import write_hdf5
+
+        write_hdf5(result, args.out)
+        written.append(args.out)
+    if args.csv:
+        from jointplay.output import write_csv
+
+        write_csv(result, args.csv)
+        written.append(args.csv)
+    if args.plot:
+        from jointplay.plots import plot_result
+
+        written += [str(p) for p in plot_result(result, args.plot)]
+    if not quiet:
+        print(summary(result))
+        for path in written:
+            print(f"wrote {path}")
+    return 0
+
+
+def summary(result: Any) -> str:
+    """A few lines a person reads after a run."""
+    st = result.stats
+    lines = [
+        f"simulated {result.t[-1]:g} s with {result.integrator} in {st['wall_time_s']:.2f} s "
+        f"wall ({st['realtime_factor']:.3f} x real time)",
+        f"  steps {st['steps']}, right-hand sides {st['rhs_evaluations']}, Jacobians "
+        f"{st['jacobian_evaluations']}, contact events {st['events']}, impacts "
+        f"{st['impacts']}",
+        f"  energy balance: max |E - E0 - W_drive + D| = "
+        f"{np.max(np.abs(result.energy['balance'])):.3g} J "
+        f"(drive work {result.energy['drive_work'][-1]:.4g} J, dissipated "
+        f"{result.energy['dissipated'][-1]:.4g} J)",
+    ]
+    for k, j in enumerate(result.clearance_joints):
+        lines.append(f"  joint {j}: max penetration {result.penetration[:, k].max() * 1e6:.3f} um, "
+                     f"peak normal force {result.normal_force[:, k].max():.4g} N")
+    if result.ideal is not None:
+        ideal = result.ideal
+        for name, a, b, unit in (("position", result.tip_position, ideal.tip_position, "m"),
+                                 ("velocity", result.tip_velocity, ideal.tip_velocity, "m/s"),
+                                 ("acceleration", result.tip_acceleration,
+                                  ideal.tip_acceleration, "m/s^2")):
+            err = np.max(np.linalg.norm(a - b, axis=1))
+            lines.append(f"  end-effector {name} error vs ideal joints: max {err:.4g} {unit}")
+    return "\n".join(lines)
+
+
 def make_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="jointplay",
@@ -186,6 +293,24 @@ def make_parser() -> argparse.ArgumentParser:
     p_inspect.add_argument("--simplify", action="store_true",
                            help="trigonometric simplification (readable, slow beyond 3 links)")
     p_inspect.set_defaults(func=cmd_inspect)
+    p_sim = sub.add_parser("simulate", help="simulate a scene (default: the paper's example)")
+    p_sim.add_argument("scene", nargs="?", help="scene file (TOML); default: the built-in "
+                                                 "paper scene")
+    p_sim.add_argument("--out", help="write the results to this HDF5 file (atomically)")
+    p_sim.add_argument("--csv", help="also write a flat CSV table")
+    p_sim.add_argument("--plot", help="write PNG figures into this folder")
+    p_sim.add_argument("--compare-ideal", action="store_true",
+                       help="also simulate the scene with ideal joints and report the errors")
+    p_sim.add_argument("--integrator", help="override run.integrator (cvodes, idas, rk4, radau)")
+    p_sim.add_argument("--rtol", type=float, help="override run.rtol")
+    p_sim.add_argument("--atol", type=float, help="override run.atol")
+    p_sim.add_argument("--step", type=float, help="override run.step (fixed-step methods)")
+    p_sim.add_argument("--t-end", type=float, help="override run.t_end (s)")
+    p_sim.add_argument("--set", action="append", metavar="NAME=VALUE",
+                       help="override a robot parameter, e.g. --set friction.mu=0.1 "
+                            "(repeatable; never recompiles)")
+    p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    p_sim.set_defaults(func=cmd_simulate)
     return parser
 
 

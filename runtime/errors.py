@@ -28,3 +28,18 @@ class BuildError(JointplayError, RuntimeError):
 
 class GeneratedCodeError(JointplayError, RuntimeError):
     """Generated files are missing, edited by hand, or stamped by other tool versions."""
+
+
+class SimulationError(JointplayError, RuntimeError):
+    """A simulation could not continue: the integrator failed or the state stopped being finite.
+
+    ``time`` is where it stopped (s), ``joint`` the clearance joint involved when one is
+    (1-based, else None), and ``cause`` what happened and what to try.
+    """
+
+    def __init__(self, time: float, cause: str, joint: int | None = None) -> None:
+        self.time = time
+        self.joint = joint
+        self.cause = cause
+        where = f" at joint {joint}" if joint is not None else ""
+        super().__init__(f"simulation stopped at t = {time:.9g} s{where}: {cause}")

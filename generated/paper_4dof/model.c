@@ -2,17 +2,19 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+d3c720d48433, casadi 3.8.2, sympy 1.14.0
- * input hash: 68cea83062c3f073fae1b273f6c4a425b47091fa24e8ce3c029415ad00dc2dd5
+ * generator: jointplay.derive 0.1.0+efe11ec3c06c, casadi 3.8.2, sympy 1.14.0
+ * input hash: 4bc101b5bbe250b9e399396556b3539a0a98e1bef5ac5f602f3b122f5650cae3
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
  *   forcing(x[12], tau[2], p[39], v_imp[2]) -> f[6x1]
  *   forward_dynamics(x[12], tau[2], p[39], v_imp[2]) -> xdot[12x1]
  *   jac_forward_dynamics: d forward_dynamics / d each input, CasADi's calling convention
- *   contact(x[12], p[39], v_imp[2]) -> delta[2x1], delta_dot[2x1], v_t[2x1], f_n[2x1], f_t[2x1], f_x[2x1], f_y[2x1]
+ *   contact(x[12], p[39], v_imp[2]) -> delta[2x1], delta_dot[2x1], v_t[2x1], f_n[2x1], f_t[2x1], f_x[2x1], f_y[2x1], dissipation[2x1]
  *   energy(x[12], p[39]) -> kinetic[1x1], gravity[1x1], contact[1x1], total[1x1]
  *   end_effector(x[12], udot[6], p[39]) -> position[2x1], velocity[2x1], acceleration[2x1]
+ *   rk4_step(x[12], tau_stages[2], h[1], p[39], v_imp[2]) -> x_next[12x1]
+ *   radau_step(x[12], tau_stages[2], h[1], p[39], v_imp[2]) -> x_next[12x1], newton_increment[1x1]
  * x [rad, m, rad/s, m/s]: state: coordinates then their time derivatives
  *     0: q2, q3, ex2, ey2, ex3, ey3
  *     6: dq2, dq3, dex2, dey2, dex3, dey3
@@ -49,9 +51,13 @@
 #endif
 
 /* Add prefix to internal symbols */
+#define casadi_c0 CASADI_PREFIX(c0)
+#define casadi_c1 CASADI_PREFIX(c1)
+#define casadi_c2 CASADI_PREFIX(c2)
 #define casadi_clear CASADI_PREFIX(clear)
 #define casadi_copy CASADI_PREFIX(copy)
 #define casadi_densify CASADI_PREFIX(densify)
+#define casadi_dot CASADI_PREFIX(dot)
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f2 CASADI_PREFIX(f2)
@@ -60,13 +66,27 @@
 #define casadi_f5 CASADI_PREFIX(f5)
 #define casadi_f6 CASADI_PREFIX(f6)
 #define casadi_f7 CASADI_PREFIX(f7)
+#define casadi_f8 CASADI_PREFIX(f8)
+#define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
 #define casadi_fill CASADI_PREFIX(fill)
 #define casadi_fmax CASADI_PREFIX(fmax)
 #define casadi_fmin CASADI_PREFIX(fmin)
+#define casadi_house CASADI_PREFIX(house)
+#define casadi_if_else CASADI_PREFIX(if_else)
+#define casadi_kron_dense_sparse CASADI_PREFIX(kron_dense_sparse)
 #define casadi_ldl CASADI_PREFIX(ldl)
 #define casadi_ldl_solve CASADI_PREFIX(ldl_solve)
 #define casadi_ldl_trs CASADI_PREFIX(ldl_trs)
+#define casadi_mtimes_dense CASADI_PREFIX(mtimes_dense)
+#define casadi_norm_inf CASADI_PREFIX(norm_inf)
+#define casadi_project CASADI_PREFIX(project)
+#define casadi_qr CASADI_PREFIX(qr)
+#define casadi_qr_colcomb CASADI_PREFIX(qr_colcomb)
+#define casadi_qr_mv CASADI_PREFIX(qr_mv)
+#define casadi_qr_singular CASADI_PREFIX(qr_singular)
+#define casadi_qr_solve CASADI_PREFIX(qr_solve)
+#define casadi_qr_trs CASADI_PREFIX(qr_trs)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s10 CASADI_PREFIX(s10)
@@ -80,6 +100,14 @@
 #define casadi_s18 CASADI_PREFIX(s18)
 #define casadi_s19 CASADI_PREFIX(s19)
 #define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_s20 CASADI_PREFIX(s20)
+#define casadi_s21 CASADI_PREFIX(s21)
+#define casadi_s22 CASADI_PREFIX(s22)
+#define casadi_s23 CASADI_PREFIX(s23)
+#define casadi_s24 CASADI_PREFIX(s24)
+#define casadi_s25 CASADI_PREFIX(s25)
+#define casadi_s26 CASADI_PREFIX(s26)
+#define casadi_s27 CASADI_PREFIX(s27)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -87,6 +115,7 @@
 #define casadi_s7 CASADI_PREFIX(s7)
 #define casadi_s8 CASADI_PREFIX(s8)
 #define casadi_s9 CASADI_PREFIX(s9)
+#define casadi_scal CASADI_PREFIX(scal)
 #define casadi_sign CASADI_PREFIX(sign)
 #define casadi_sq CASADI_PREFIX(sq)
 #define casadi_trans CASADI_PREFIX(trans)
@@ -265,6 +294,247 @@ void casadi_trans(const casadi_real* x, const casadi_int* sp_x, casadi_real* y,
   }
 }
 
+void casadi_project(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, const casadi_int* sp_y, casadi_real* w) {
+  casadi_int ncol_x, ncol_y, i, el;
+  const casadi_int *colind_x, *row_x, *colind_y, *row_y;
+  ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2; row_y = sp_y + 2 + ncol_y+1;
+  for (i=0; i<ncol_x; ++i) {
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) w[row_y[el]] = 0;
+    for (el=colind_x[i]; el<colind_x[i+1]; ++el) w[row_x[el]] = x[el];
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) y[el] = w[row_y[el]];
+  }
+}
+
+void casadi_kron_dense_sparse(const casadi_real* a, casadi_int mA, casadi_int nA,
+                              const casadi_real* b, const casadi_int* sp_b,
+                              casadi_real* r) {
+    casadi_int nB = sp_b[1];
+    const casadi_int* b_colind = sp_b+2;
+    casadi_int j, s, i, b_el, k;
+    casadi_real a_val;
+    k = 0;
+    for (j=0; j<nA; ++j) {
+      for (s=0; s<nB; ++s) {
+        for (i=0; i<mA; ++i) {
+          a_val = a[j*mA + i];
+          for (b_el=b_colind[s]; b_el<b_colind[s+1]; ++b_el) {
+            r[k++] = a_val * b[b_el];
+          }
+        }
+      }
+    }
+}
+
+casadi_real casadi_if_else(casadi_real c, casadi_real x, casadi_real y) { return c!=0 ? x : y;}
+
+void casadi_scal(casadi_int n, casadi_real alpha, casadi_real* x) {
+  casadi_int i;
+  if (!x) return;
+  for (i=0; i<n; ++i) *x++ *= alpha;
+}
+
+casadi_real casadi_dot(casadi_int n, const casadi_real* x, const casadi_real* y) {
+  casadi_int i;
+  casadi_real r = 0;
+  for (i=0; i<n; ++i) r += *x++ * *y++;
+  return r;
+}
+
+casadi_real casadi_house(casadi_real* v, casadi_real* beta, casadi_int nv) {
+  casadi_int i;
+  casadi_real v0, sigma, s, sigma_is_zero, v0_nonpos;
+  v0 = v[0];
+  sigma=0;
+  for (i=1; i<nv; ++i) sigma += v[i]*v[i];
+  s = sqrt(v0*v0 + sigma);
+  sigma_is_zero = sigma==0;
+  v0_nonpos = v0<=0;
+  v[0] = casadi_if_else(sigma_is_zero, 1,
+                 casadi_if_else(v0_nonpos, v0-s, -sigma/(v0+s)));
+  *beta = casadi_if_else(sigma_is_zero, 2*v0_nonpos, -1/(s*v[0]));
+  return s;
+}
+void casadi_qr(const casadi_int* sp_a, const casadi_real* nz_a, casadi_real* x,
+               const casadi_int* sp_v, casadi_real* nz_v, const casadi_int* sp_r, casadi_real* nz_r, casadi_real* beta,
+               const casadi_int* prinv, const casadi_int* pc) {
+   casadi_int ncol, nrow, r, c, k, k1;
+   casadi_real alpha;
+   const casadi_int *a_colind, *a_row, *v_colind, *v_row, *r_colind, *r_row;
+   ncol = sp_a[1];
+   a_colind=sp_a+2; a_row=sp_a+2+ncol+1;
+   nrow = sp_v[0];
+   v_colind=sp_v+2; v_row=sp_v+2+ncol+1;
+   r_colind=sp_r+2; r_row=sp_r+2+ncol+1;
+   for (r=0; r<nrow; ++r) x[r] = 0;
+   for (c=0; c<ncol; ++c) {
+     for (k=a_colind[pc[c]]; k<a_colind[pc[c]+1]; ++k) x[prinv[a_row[k]]] = nz_a[k];
+     for (k=r_colind[c]; k<r_colind[c+1] && (r=r_row[k])<c; ++k) {
+       alpha = 0;
+       for (k1=v_colind[r]; k1<v_colind[r+1]; ++k1) alpha += nz_v[k1]*x[v_row[k1]];
+       alpha *= beta[r];
+       for (k1=v_colind[r]; k1<v_colind[r+1]; ++k1) x[v_row[k1]] -= alpha*nz_v[k1];
+       *nz_r++ = x[r];
+       x[r] = 0;
+     }
+     for (k=v_colind[c]; k<v_colind[c+1]; ++k) {
+       nz_v[k] = x[v_row[k]];
+       x[v_row[k]] = 0;
+     }
+     *nz_r++ = casadi_house(nz_v + v_colind[c], beta + c, v_colind[c+1] - v_colind[c]);
+   }
+ }
+void casadi_qr_mv(const casadi_int* sp_v, const casadi_real* v, const casadi_real* beta, casadi_real* x,
+                  casadi_int tr) {
+  casadi_int ncol, c, c1, k;
+  casadi_real alpha;
+  const casadi_int *colind, *row;
+  ncol=sp_v[1];
+  colind=sp_v+2; row=sp_v+2+ncol+1;
+  for (c1=0; c1<ncol; ++c1) {
+    c = tr ? c1 : ncol-1-c1;
+    alpha=0;
+    for (k=colind[c]; k<colind[c+1]; ++k) alpha += v[k]*x[row[k]];
+    alpha *= beta[c];
+    for (k=colind[c]; k<colind[c+1]; ++k) x[row[k]] -= alpha*v[k];
+  }
+}
+void casadi_qr_trs(const casadi_int* sp_r, const casadi_real* nz_r, casadi_real* x, casadi_int tr) {
+  casadi_int ncol, r, c, k;
+  const casadi_int *colind, *row;
+  ncol=sp_r[1];
+  colind=sp_r+2; row=sp_r+2+ncol+1;
+  if (tr) {
+    for (c=0; c<ncol; ++c) {
+      for (k=colind[c]; k<colind[c+1]; ++k) {
+        r = row[k];
+        if (r==c) {
+          x[c] /= nz_r[k];
+        } else {
+          x[c] -= nz_r[k]*x[r];
+        }
+      }
+    }
+  } else {
+    for (c=ncol-1; c>=0; --c) {
+      for (k=colind[c+1]-1; k>=colind[c]; --k) {
+        r=row[k];
+        if (r==c) {
+          x[r] /= nz_r[k];
+        } else {
+          x[r] -= nz_r[k]*x[c];
+        }
+      }
+    }
+  }
+}
+void casadi_qr_solve(casadi_real* x, casadi_int nrhs, casadi_int tr,
+                     const casadi_int* sp_v, const casadi_real* v, const casadi_int* sp_r, const casadi_real* r,
+                     const casadi_real* beta, const casadi_int* prinv, const casadi_int* pc, casadi_real* w) {
+  casadi_int k, c, nrow_ext, ncol;
+  nrow_ext = sp_v[0]; ncol = sp_v[1];
+  for (k=0; k<nrhs; ++k) {
+    if (tr) {
+      for (c=0; c<ncol; ++c) w[c] = x[pc[c]];
+      casadi_qr_trs(sp_r, r, w, 1);
+      casadi_qr_mv(sp_v, v, beta, w, 0);
+      for (c=0; c<ncol; ++c) x[c] = w[prinv[c]];
+    } else {
+      for (c=0; c<nrow_ext; ++c) w[c] = 0;
+      for (c=0; c<ncol; ++c) w[prinv[c]] = x[c];
+      casadi_qr_mv(sp_v, v, beta, w, 1);
+      casadi_qr_trs(sp_r, r, w, 0);
+      for (c=0; c<ncol; ++c) x[pc[c]] = w[c];
+    }
+    x += ncol;
+  }
+}
+casadi_int casadi_qr_singular(casadi_real* rmin, casadi_int* irmin, const casadi_real* nz_r,
+                             const casadi_int* sp_r, const casadi_int* pc, casadi_real eps) {
+  casadi_real rd, rd_min;
+  casadi_int ncol, c, nullity;
+  const casadi_int* r_colind;
+  nullity = 0;
+  rd_min = 0;
+  ncol = sp_r[1];
+  r_colind = sp_r + 2;
+  for (c=0; c<ncol; ++c) {
+    rd = fabs(nz_r[r_colind[c+1]-1]);
+    if (rd<eps) nullity++;
+    if (c==0 || rd < rd_min) {
+      rd_min = rd;
+      if (rmin) *rmin = rd;
+      if (irmin) *irmin = pc[c];
+    }
+  }
+  return nullity;
+}
+void casadi_qr_colcomb(casadi_real* v, const casadi_real* nz_r, const casadi_int* sp_r,
+                       const casadi_int* pc, casadi_real eps, casadi_int ind) {
+  casadi_int ncol, r, c, k;
+  const casadi_int *r_colind, *r_row;
+  ncol = sp_r[1];
+  r_colind = sp_r + 2;
+  r_row = r_colind + ncol + 1;
+  for (c=0; c<ncol; ++c) {
+    if (fabs(nz_r[r_colind[c+1]-1])<eps && 0==ind--) {
+      ind = c;
+      break;
+    }
+  }
+  casadi_clear(v, ncol);
+  v[pc[ind]] = 1.;
+  for (k=r_colind[ind]; k<r_colind[ind+1]-1; ++k) {
+    v[pc[r_row[k]]] = -nz_r[k];
+  }
+  for (c=ind-1; c>=0; --c) {
+    for (k=r_colind[c+1]-1; k>=r_colind[c]; --k) {
+      r=r_row[k];
+      if (r==c) {
+        if (fabs(nz_r[k])<eps) {
+          v[pc[r]] = 0;
+        } else {
+          v[pc[r]] /= nz_r[k];
+        }
+      } else {
+        v[pc[r]] -= nz_r[k]*v[pc[c]];
+      }
+    }
+  }
+  casadi_scal(ncol, 1./sqrt(casadi_dot(ncol, v, v)), v);
+}
+
+void casadi_mtimes_dense(const casadi_real* x, casadi_int nrow_x, casadi_int ncol_x,
+    const casadi_real* y, casadi_int ncol_y, casadi_real* z, casadi_int tr) {
+  casadi_int i, j, k;
+  if (tr) {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<ncol_x; ++j) {
+        for (k=0; k<nrow_x; ++k) {
+          z[j + i*ncol_x] += x[k + j*nrow_x] * y[k + i*nrow_x];
+        }
+      }
+    }
+  } else {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<nrow_x; ++j) {
+        for (k=0; k<ncol_x; ++k) {
+          z[j + i*nrow_x] += x[j + k*nrow_x] * y[k + i*ncol_x];
+        }
+      }
+    }
+  }
+}
+
+casadi_real casadi_norm_inf(casadi_int n, const casadi_real* x) {
+  casadi_int i;
+  casadi_real ret = 0;
+  for (i=0; i<n; ++i) ret = casadi_fmax(ret, casadi_fabs(*x++));
+  return ret;
+}
+
 /* Configuration this file was compiled with */
 CASADI_SYMBOL_EXPORT void model_casadi_version(int* major, int* minor, int* patch) {
   *major = 3;
@@ -437,6 +707,555 @@ static const casadi_int casadi_s17[12] =
   0, 1, 4, 5};
 static const casadi_int casadi_s18[4] = {12, 1, 0, 0};
 static const casadi_int casadi_s19[3] = {1, 1, 1};
+static const casadi_int casadi_s20[3] = {2, 3, 1};
+static const casadi_int casadi_s21[75] = 
+  {36, 36, 0, 1, 2, 3, 4, 5,
+  6, 7, 8, 9, 10, 11, 12, 13,
+  14, 15, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  30, 31, 32, 33, 34, 35, 36, 0,
+  1, 2, 3, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 32,
+  33, 34, 35};
+static const casadi_int casadi_s22[759] = 
+  {36, 36, 0, 19, 38, 57, 76, 95,
+  114, 135, 156, 177, 198, 219, 240, 259,
+  278, 297, 316, 335, 354, 375, 396, 417,
+  438, 459, 480, 499, 518, 537, 556, 575,
+  594, 615, 636, 657, 678, 699, 720, 0,
+  6, 7, 8, 9, 10, 11, 18, 19,
+  20, 21, 22, 23, 30, 31, 32, 33,
+  34, 35, 1, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 2, 6, 7,
+  8, 9, 10, 11, 18, 19, 20, 21,
+  22, 23, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 4, 6, 7, 8, 9,
+  10, 11, 18, 19, 20, 21, 22, 23,
+  30, 31, 32, 33, 34, 35, 5, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 0, 6, 7, 8, 9, 10, 11,
+  12, 18, 19, 20, 21, 22, 23, 24,
+  30, 31, 32, 33, 34, 35, 1, 6,
+  7, 8, 9, 10, 11, 13, 18, 19,
+  20, 21, 22, 23, 25, 30, 31, 32,
+  33, 34, 35, 2, 6, 7, 8, 9,
+  10, 11, 14, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 15,
+  18, 19, 20, 21, 22, 23, 27, 30,
+  31, 32, 33, 34, 35, 4, 6, 7,
+  8, 9, 10, 11, 16, 18, 19, 20,
+  21, 22, 23, 28, 30, 31, 32, 33,
+  34, 35, 5, 6, 7, 8, 9, 10,
+  11, 17, 18, 19, 20, 21, 22, 23,
+  29, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 12, 18, 19,
+  20, 21, 22, 23, 30, 31, 32, 33,
+  34, 35, 6, 7, 8, 9, 10, 11,
+  13, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 14, 18, 19, 20, 21,
+  22, 23, 30, 31, 32, 33, 34, 35,
+  6, 7, 8, 9, 10, 11, 15, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 16, 18, 19, 20, 21, 22, 23,
+  30, 31, 32, 33, 34, 35, 6, 7,
+  8, 9, 10, 11, 17, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 0, 6, 7, 8, 9, 10, 11,
+  12, 18, 19, 20, 21, 22, 23, 24,
+  30, 31, 32, 33, 34, 35, 1, 6,
+  7, 8, 9, 10, 11, 13, 18, 19,
+  20, 21, 22, 23, 25, 30, 31, 32,
+  33, 34, 35, 2, 6, 7, 8, 9,
+  10, 11, 14, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 15,
+  18, 19, 20, 21, 22, 23, 27, 30,
+  31, 32, 33, 34, 35, 4, 6, 7,
+  8, 9, 10, 11, 16, 18, 19, 20,
+  21, 22, 23, 28, 30, 31, 32, 33,
+  34, 35, 5, 6, 7, 8, 9, 10,
+  11, 17, 18, 19, 20, 21, 22, 23,
+  29, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 24, 30, 31, 32, 33,
+  34, 35, 6, 7, 8, 9, 10, 11,
+  18, 19, 20, 21, 22, 23, 25, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  6, 7, 8, 9, 10, 11, 18, 19,
+  20, 21, 22, 23, 27, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 28,
+  30, 31, 32, 33, 34, 35, 6, 7,
+  8, 9, 10, 11, 18, 19, 20, 21,
+  22, 23, 29, 30, 31, 32, 33, 34,
+  35, 0, 6, 7, 8, 9, 10, 11,
+  12, 18, 19, 20, 21, 22, 23, 24,
+  30, 31, 32, 33, 34, 35, 1, 6,
+  7, 8, 9, 10, 11, 13, 18, 19,
+  20, 21, 22, 23, 25, 30, 31, 32,
+  33, 34, 35, 2, 6, 7, 8, 9,
+  10, 11, 14, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 15,
+  18, 19, 20, 21, 22, 23, 27, 30,
+  31, 32, 33, 34, 35, 4, 6, 7,
+  8, 9, 10, 11, 16, 18, 19, 20,
+  21, 22, 23, 28, 30, 31, 32, 33,
+  34, 35, 5, 6, 7, 8, 9, 10,
+  11, 17, 18, 19, 20, 21, 22, 23,
+  29, 30, 31, 32, 33, 34, 35};
+static const casadi_int casadi_s23[741] = 
+  {36, 36, 0, 18, 36, 54, 72, 90,
+  108, 129, 150, 171, 192, 213, 234, 252,
+  270, 288, 306, 324, 342, 363, 384, 405,
+  426, 447, 468, 486, 504, 522, 540, 558,
+  576, 597, 618, 639, 660, 681, 702, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 0, 6, 7, 8, 9,
+  10, 11, 12, 18, 19, 20, 21, 22,
+  23, 24, 30, 31, 32, 33, 34, 35,
+  1, 6, 7, 8, 9, 10, 11, 13,
+  18, 19, 20, 21, 22, 23, 25, 30,
+  31, 32, 33, 34, 35, 2, 6, 7,
+  8, 9, 10, 11, 14, 18, 19, 20,
+  21, 22, 23, 26, 30, 31, 32, 33,
+  34, 35, 3, 6, 7, 8, 9, 10,
+  11, 15, 18, 19, 20, 21, 22, 23,
+  27, 30, 31, 32, 33, 34, 35, 4,
+  6, 7, 8, 9, 10, 11, 16, 18,
+  19, 20, 21, 22, 23, 28, 30, 31,
+  32, 33, 34, 35, 5, 6, 7, 8,
+  9, 10, 11, 17, 18, 19, 20, 21,
+  22, 23, 29, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 0, 6, 7,
+  8, 9, 10, 11, 12, 18, 19, 20,
+  21, 22, 23, 24, 30, 31, 32, 33,
+  34, 35, 1, 6, 7, 8, 9, 10,
+  11, 13, 18, 19, 20, 21, 22, 23,
+  25, 30, 31, 32, 33, 34, 35, 2,
+  6, 7, 8, 9, 10, 11, 14, 18,
+  19, 20, 21, 22, 23, 26, 30, 31,
+  32, 33, 34, 35, 3, 6, 7, 8,
+  9, 10, 11, 15, 18, 19, 20, 21,
+  22, 23, 27, 30, 31, 32, 33, 34,
+  35, 4, 6, 7, 8, 9, 10, 11,
+  16, 18, 19, 20, 21, 22, 23, 28,
+  30, 31, 32, 33, 34, 35, 5, 6,
+  7, 8, 9, 10, 11, 17, 18, 19,
+  20, 21, 22, 23, 29, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 0,
+  6, 7, 8, 9, 10, 11, 12, 18,
+  19, 20, 21, 22, 23, 24, 30, 31,
+  32, 33, 34, 35, 1, 6, 7, 8,
+  9, 10, 11, 13, 18, 19, 20, 21,
+  22, 23, 25, 30, 31, 32, 33, 34,
+  35, 2, 6, 7, 8, 9, 10, 11,
+  14, 18, 19, 20, 21, 22, 23, 26,
+  30, 31, 32, 33, 34, 35, 3, 6,
+  7, 8, 9, 10, 11, 15, 18, 19,
+  20, 21, 22, 23, 27, 30, 31, 32,
+  33, 34, 35, 4, 6, 7, 8, 9,
+  10, 11, 16, 18, 19, 20, 21, 22,
+  23, 28, 30, 31, 32, 33, 34, 35,
+  5, 6, 7, 8, 9, 10, 11, 17,
+  18, 19, 20, 21, 22, 23, 29, 30,
+  31, 32, 33, 34, 35};
+static const casadi_int casadi_s24[36] = 
+  {0, 19, 20, 21, 22, 23, 1, 2,
+  3, 4, 5, 6, 24, 26, 28, 30,
+  32, 34, 7, 8, 9, 10, 11, 12,
+  25, 27, 29, 31, 33, 35, 13, 14,
+  15, 16, 17, 18};
+static const casadi_int casadi_s25[36] = 
+  {0, 1, 2, 3, 4, 5, 6, 7,
+  8, 9, 10, 11, 12, 13, 14, 15,
+  16, 17, 18, 19, 20, 21, 22, 23,
+  24, 25, 26, 27, 28, 29, 30, 31,
+  32, 33, 34, 35};
+static const casadi_int casadi_s26[588] = 
+  {36, 36, 0, 19, 38, 57, 76, 95,
+  114, 134, 155, 177, 200, 224, 249, 273,
+  296, 318, 339, 359, 378, 396, 413, 429,
+  444, 458, 471, 483, 494, 504, 513, 521,
+  528, 534, 539, 543, 546, 548, 549, 0,
+  1, 2, 3, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 1, 2, 3, 4, 5, 6,
+  7, 8, 9, 10, 11, 12, 13, 14,
+  15, 16, 17, 18, 19, 2, 3, 4,
+  5, 6, 7, 8, 9, 10, 11, 12,
+  13, 14, 15, 16, 17, 18, 19, 20,
+  3, 4, 5, 6, 7, 8, 9, 10,
+  11, 12, 13, 14, 15, 16, 17, 18,
+  19, 20, 21, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 5, 6,
+  7, 8, 9, 10, 11, 12, 13, 14,
+  15, 16, 17, 18, 19, 20, 21, 22,
+  23, 6, 7, 8, 9, 10, 11, 12,
+  13, 14, 15, 16, 17, 18, 19, 20,
+  21, 22, 23, 24, 25, 7, 8, 9,
+  10, 11, 12, 13, 14, 15, 16, 17,
+  18, 19, 20, 21, 22, 23, 24, 25,
+  26, 27, 8, 9, 10, 11, 12, 13,
+  14, 15, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 10,
+  11, 12, 13, 14, 15, 16, 17, 18,
+  19, 20, 21, 22, 23, 24, 25, 26,
+  27, 28, 29, 30, 31, 32, 33, 11,
+  12, 13, 14, 15, 16, 17, 18, 19,
+  20, 21, 22, 23, 24, 25, 26, 27,
+  28, 29, 30, 31, 32, 33, 34, 35,
+  12, 13, 14, 15, 16, 17, 18, 19,
+  20, 21, 22, 23, 24, 25, 26, 27,
+  28, 29, 30, 31, 32, 33, 34, 35,
+  13, 14, 15, 16, 17, 18, 19, 20,
+  21, 22, 23, 24, 25, 26, 27, 28,
+  29, 30, 31, 32, 33, 34, 35, 14,
+  15, 16, 17, 18, 19, 20, 21, 22,
+  23, 24, 25, 26, 27, 28, 29, 30,
+  31, 32, 33, 34, 35, 15, 16, 17,
+  18, 19, 20, 21, 22, 23, 24, 25,
+  26, 27, 28, 29, 30, 31, 32, 33,
+  34, 35, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  30, 31, 32, 33, 34, 35, 17, 18,
+  19, 20, 21, 22, 23, 24, 25, 26,
+  27, 28, 29, 30, 31, 32, 33, 34,
+  35, 18, 19, 20, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 32,
+  33, 34, 35, 19, 20, 21, 22, 23,
+  24, 25, 26, 27, 28, 29, 30, 31,
+  32, 33, 34, 35, 20, 21, 22, 23,
+  24, 25, 26, 27, 28, 29, 30, 31,
+  32, 33, 34, 35, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 32,
+  33, 34, 35, 22, 23, 24, 25, 26,
+  27, 28, 29, 30, 31, 32, 33, 34,
+  35, 23, 24, 25, 26, 27, 28, 29,
+  30, 31, 32, 33, 34, 35, 24, 25,
+  26, 27, 28, 29, 30, 31, 32, 33,
+  34, 35, 25, 26, 27, 28, 29, 30,
+  31, 32, 33, 34, 35, 26, 27, 28,
+  29, 30, 31, 32, 33, 34, 35, 27,
+  28, 29, 30, 31, 32, 33, 34, 35,
+  28, 29, 30, 31, 32, 33, 34, 35,
+  29, 30, 31, 32, 33, 34, 35, 30,
+  31, 32, 33, 34, 35, 31, 32, 33,
+  34, 35, 32, 33, 34, 35, 33, 34,
+  35, 34, 35, 35};
+static const casadi_int casadi_s27[705] = 
+  {36, 36, 0, 1, 3, 6, 10, 15,
+  21, 28, 36, 45, 55, 66, 78, 91,
+  105, 120, 136, 153, 171, 190, 210, 231,
+  253, 276, 300, 325, 351, 378, 406, 435,
+  465, 496, 528, 561, 595, 630, 666, 0,
+  0, 1, 0, 1, 2, 0, 1, 2,
+  3, 0, 1, 2, 3, 4, 0, 1,
+  2, 3, 4, 5, 0, 1, 2, 3,
+  4, 5, 6, 0, 1, 2, 3, 4,
+  5, 6, 7, 0, 1, 2, 3, 4,
+  5, 6, 7, 8, 0, 1, 2, 3,
+  4, 5, 6, 7, 8, 9, 0, 1,
+  2, 3, 4, 5, 6, 7, 8, 9,
+  10, 0, 1, 2, 3, 4, 5, 6,
+  7, 8, 9, 10, 11, 0, 1, 2,
+  3, 4, 5, 6, 7, 8, 9, 10,
+  11, 12, 0, 1, 2, 3, 4, 5,
+  6, 7, 8, 9, 10, 11, 12, 13,
+  0, 1, 2, 3, 4, 5, 6, 7,
+  8, 9, 10, 11, 12, 13, 14, 0,
+  1, 2, 3, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 0,
+  1, 2, 3, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  0, 1, 2, 3, 4, 5, 6, 7,
+  8, 9, 10, 11, 12, 13, 14, 15,
+  16, 17, 0, 1, 2, 3, 4, 5,
+  6, 7, 8, 9, 10, 11, 12, 13,
+  14, 15, 16, 17, 18, 0, 1, 2,
+  3, 4, 5, 6, 7, 8, 9, 10,
+  11, 12, 13, 14, 15, 16, 17, 18,
+  19, 0, 1, 2, 3, 4, 5, 6,
+  7, 8, 9, 10, 11, 12, 13, 14,
+  15, 16, 17, 18, 19, 20, 0, 1,
+  2, 3, 4, 5, 6, 7, 8, 9,
+  10, 11, 12, 13, 14, 15, 16, 17,
+  18, 19, 20, 21, 0, 1, 2, 3,
+  4, 5, 6, 7, 8, 9, 10, 11,
+  12, 13, 14, 15, 16, 17, 18, 19,
+  20, 21, 22, 0, 1, 2, 3, 4,
+  5, 6, 7, 8, 9, 10, 11, 12,
+  13, 14, 15, 16, 17, 18, 19, 20,
+  21, 22, 23, 0, 1, 2, 3, 4,
+  5, 6, 7, 8, 9, 10, 11, 12,
+  13, 14, 15, 16, 17, 18, 19, 20,
+  21, 22, 23, 24, 0, 1, 2, 3,
+  4, 5, 6, 7, 8, 9, 10, 11,
+  12, 13, 14, 15, 16, 17, 18, 19,
+  20, 21, 22, 23, 24, 25, 0, 1,
+  2, 3, 4, 5, 6, 7, 8, 9,
+  10, 11, 12, 13, 14, 15, 16, 17,
+  18, 19, 20, 21, 22, 23, 24, 25,
+  26, 0, 1, 2, 3, 4, 5, 6,
+  7, 8, 9, 10, 11, 12, 13, 14,
+  15, 16, 17, 18, 19, 20, 21, 22,
+  23, 24, 25, 26, 27, 0, 1, 2,
+  3, 4, 5, 6, 7, 8, 9, 10,
+  11, 12, 13, 14, 15, 16, 17, 18,
+  19, 20, 21, 22, 23, 24, 25, 26,
+  27, 28, 0, 1, 2, 3, 4, 5,
+  6, 7, 8, 9, 10, 11, 12, 13,
+  14, 15, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  0, 1, 2, 3, 4, 5, 6, 7,
+  8, 9, 10, 11, 12, 13, 14, 15,
+  16, 17, 18, 19, 20, 21, 22, 23,
+  24, 25, 26, 27, 28, 29, 30, 0,
+  1, 2, 3, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 0,
+  1, 2, 3, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 32,
+  0, 1, 2, 3, 4, 5, 6, 7,
+  8, 9, 10, 11, 12, 13, 14, 15,
+  16, 17, 18, 19, 20, 21, 22, 23,
+  24, 25, 26, 27, 28, 29, 30, 31,
+  32, 33, 0, 1, 2, 3, 4, 5,
+  6, 7, 8, 9, 10, 11, 12, 13,
+  14, 15, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  30, 31, 32, 33, 34, 0, 1, 2,
+  3, 4, 5, 6, 7, 8, 9, 10,
+  11, 12, 13, 14, 15, 16, 17, 18,
+  19, 20, 21, 22, 23, 24, 25, 26,
+  27, 28, 29, 30, 31, 32, 33, 34,
+  35};
+
+static const casadi_real casadi_c0[1296] = 
+  {1., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 1., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 1., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 1.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 1., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 1., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 1., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 1., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  1., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 1., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 1., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 1.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 1., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 1., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 1., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 1., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  1., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 1., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 1., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 1.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 1., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 1., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 1., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 1., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  1., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 1., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 1., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 1.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 1., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 1., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 1., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 1., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  1., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 1., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 1., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 0.,
+  0., 0., 0., 0., 0., 0., 0., 1.};
+static const casadi_real casadi_c1[9] = 
+  {1.9681547722366044e-01, 3.9442431473908729e-01, 3.7640306270046725e-01, -6.5535425850198378e-02, 2.9207341166522843e-01, 5.1248582618842164e-01, 2.3770974348220151e-02, -4.1548752125997922e-02,
+  1.1111111111111110e-01};
+static const casadi_real casadi_c2[9] = 
+  {1.9681547722366044e-01, -6.5535425850198378e-02, 2.3770974348220151e-02, 3.9442431473908729e-01, 2.9207341166522843e-01, -4.1548752125997922e-02, 3.7640306270046725e-01, 5.1248582618842164e-01,
+  1.1111111111111110e-01};
 
 static const casadi_real casadi_zeros[39] = 
   {0.};
@@ -5403,11 +6222,11 @@ CASADI_SYMBOL_EXPORT int jac_forward_dynamics_work_bytes(casadi_int *sz_arg, cas
   return 0;
 }
 
-/* contact:(x[12],p[39],v_imp[2])->(delta[2],delta_dot[2],v_t[2],f_n[2],f_t[2],f_x[2],f_y[2]) */
+/* contact:(x[12],p[39],v_imp[2])->(delta[2],delta_dot[2],v_t[2],f_n[2],f_t[2],f_x[2],f_y[2],dissipation[2]) */
 static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
-  casadi_real a24, a25, a26, a27;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33;
   a00=arg[1]? arg[1][21] : 0;
   a01=-9.9999999999999995e-07;
   a02=(a01*a00);
@@ -5489,87 +6308,87 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a04=(a04-a00);
   a23=(a23/a04);
   a23=sqrt(a23);
-  a23=(a22*a23);
-  a04=1.;
-  a00=arg[1]? arg[1][23] : 0;
-  a00=casadi_sq(a00);
-  a00=(a04-a00);
-  a24=arg[1]? arg[1][22] : 0;
-  a00=(a00/a24);
-  a24=arg[1]? arg[1][25] : 0;
+  a04=(a22*a23);
+  a00=1.;
+  a24=arg[1]? arg[1][23] : 0;
   a24=casadi_sq(a24);
-  a24=(a04-a24);
-  a25=arg[1]? arg[1][24] : 0;
+  a24=(a00-a24);
+  a25=arg[1]? arg[1][22] : 0;
   a24=(a24/a25);
-  a00=(a00+a24);
-  a23=(a23/a00);
-  a00=7.5000000000000000e-01;
-  a24=-7.5000000000000000e-01;
-  a25=arg[1]? arg[1][34] : 0;
+  a25=arg[1]? arg[1][25] : 0;
   a25=casadi_sq(a25);
-  a24=(a24*a25);
-  a00=(a00+a24);
-  a24=arg[2]? arg[2][0] : 0;
-  a25=arg[1]? arg[1][35] : 0;
-  a24=casadi_fmax(a24,a25);
-  a24=(a00/a24);
-  a24=(a24*a13);
-  a24=(a04+a24);
-  a23=(a23*a24);
-  a24=1.0000000000000000e-300;
-  a06=casadi_fmax(a24,a06);
-  a13=arg[1]? arg[1][33] : 0;
-  a06=pow(a06,a13);
-  a23=(a23*a06);
-  a21=(a21?a23:0);
-  a21=casadi_fmax(a16,a21);
-  if (res[3]!=0) res[3][0]=a21;
-  a23=(a16<a10);
-  a06=(a09*a08);
-  a26=(a09-a08);
-  a06=(a06/a26);
-  a06=sqrt(a06);
-  a22=(a22*a06);
-  a06=arg[1]? arg[1][29] : 0;
-  a06=casadi_sq(a06);
-  a06=(a04-a06);
-  a26=arg[1]? arg[1][28] : 0;
-  a06=(a06/a26);
-  a26=arg[1]? arg[1][31] : 0;
-  a26=casadi_sq(a26);
-  a26=(a04-a26);
-  a27=arg[1]? arg[1][30] : 0;
-  a26=(a26/a27);
-  a06=(a06+a26);
-  a22=(a22/a06);
-  a06=arg[2]? arg[2][1] : 0;
-  a06=casadi_fmax(a06,a25);
-  a00=(a00/a06);
-  a00=(a00*a12);
-  a00=(a04+a00);
-  a22=(a22*a00);
-  a24=casadi_fmax(a24,a10);
-  a24=pow(a24,a13);
-  a22=(a22*a24);
-  a23=(a23?a22:0);
-  a23=casadi_fmax(a16,a23);
-  if (res[3]!=0) res[3][1]=a23;
-  a22=arg[1]? arg[1][36] : 0;
-  a24=arg[1]? arg[1][37] : 0;
-  a13=casadi_fabs(a19);
-  a10=casadi_fmax(a24,a13);
-  a00=(a22/a10);
-  a00=(a00*a19);
-  a00=(a00*a21);
-  a13=(a13-a24);
-  a12=arg[1]? arg[1][38] : 0;
-  a12=(a12-a24);
-  a13=(a13/a12);
-  a13=casadi_fmax(a16,a13);
-  a13=casadi_fmin(a04,a13);
-  a00=(a00*a13);
-  a00=(-a00);
-  if (res[4]!=0) res[4][0]=a00;
+  a25=(a00-a25);
+  a26=arg[1]? arg[1][24] : 0;
+  a25=(a25/a26);
+  a24=(a24+a25);
+  a04=(a04/a24);
+  a25=7.5000000000000000e-01;
+  a26=-7.5000000000000000e-01;
+  a27=arg[1]? arg[1][34] : 0;
+  a27=casadi_sq(a27);
+  a26=(a26*a27);
+  a25=(a25+a26);
+  a26=arg[2]? arg[2][0] : 0;
+  a27=arg[1]? arg[1][35] : 0;
+  a26=casadi_fmax(a26,a27);
+  a26=(a25/a26);
+  a26=(a26*a13);
+  a26=(a00+a26);
+  a04=(a04*a26);
+  a26=1.0000000000000000e-300;
+  a06=casadi_fmax(a26,a06);
+  a28=arg[1]? arg[1][33] : 0;
+  a06=pow(a06,a28);
+  a04=(a04*a06);
+  a04=(a21?a04:0);
+  a04=casadi_fmax(a16,a04);
+  if (res[3]!=0) res[3][0]=a04;
+  a29=(a16<a10);
+  a30=(a09*a08);
+  a31=(a09-a08);
+  a30=(a30/a31);
+  a30=sqrt(a30);
+  a22=(a22*a30);
+  a31=arg[1]? arg[1][29] : 0;
+  a31=casadi_sq(a31);
+  a31=(a00-a31);
+  a32=arg[1]? arg[1][28] : 0;
+  a31=(a31/a32);
+  a32=arg[1]? arg[1][31] : 0;
+  a32=casadi_sq(a32);
+  a32=(a00-a32);
+  a33=arg[1]? arg[1][30] : 0;
+  a32=(a32/a33);
+  a31=(a31+a32);
+  a22=(a22/a31);
+  a32=arg[2]? arg[2][1] : 0;
+  a32=casadi_fmax(a32,a27);
+  a25=(a25/a32);
+  a25=(a25*a12);
+  a25=(a00+a25);
+  a22=(a22*a25);
+  a26=casadi_fmax(a26,a10);
+  a26=pow(a26,a28);
+  a22=(a22*a26);
+  a22=(a29?a22:0);
+  a22=casadi_fmax(a16,a22);
+  if (res[3]!=0) res[3][1]=a22;
+  a28=arg[1]? arg[1][36] : 0;
+  a10=arg[1]? arg[1][37] : 0;
+  a25=casadi_fabs(a19);
+  a32=casadi_fmax(a10,a25);
+  a27=(a28/a32);
+  a27=(a27*a19);
+  a27=(a27*a04);
+  a25=(a25-a10);
+  a33=arg[1]? arg[1][38] : 0;
+  a33=(a33-a10);
+  a25=(a25/a33);
+  a25=casadi_fmax(a16,a25);
+  a25=casadi_fmin(a00,a25);
+  a27=(a27*a25);
+  a27=(-a27);
+  if (res[4]!=0) res[4][0]=a27;
   a09=(a09*a17);
   a08=(a08*a20);
   a09=(a09-a08);
@@ -5580,59 +6399,86 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a08=(a08*a18);
   a09=(a09-a08);
   a09=casadi_fabs(a09);
-  a08=casadi_fmax(a24,a09);
-  a18=(a22/a08);
+  a08=casadi_fmax(a10,a09);
+  a18=(a28/a08);
   a18=(a18*a14);
-  a18=(a18*a23);
-  a09=(a09-a24);
-  a09=(a09/a12);
+  a18=(a18*a22);
+  a09=(a09-a10);
+  a09=(a09/a33);
   a16=casadi_fmax(a16,a09);
-  a04=casadi_fmin(a04,a16);
-  a18=(a18*a04);
+  a00=casadi_fmin(a00,a16);
+  a18=(a18*a00);
   a18=(-a18);
   if (res[4]!=0) res[4][1]=a18;
-  a18=(a22/a10);
+  a18=(a28/a32);
   a18=(a18*a02);
   a18=(a18*a19);
-  a18=(a18*a21);
-  a18=(a18*a13);
+  a18=(a18*a04);
+  a18=(a18*a25);
   a18=(a18*a07);
-  a16=(a02*a21);
+  a16=(a02*a04);
   a16=(a16*a05);
   a18=(a18-a16);
   if (res[5]!=0) res[5][0]=a18;
-  a18=(a22/a08);
+  a18=(a28/a08);
   a18=(a18*a01);
   a18=(a18*a14);
-  a18=(a18*a23);
-  a18=(a18*a04);
+  a18=(a18*a22);
+  a18=(a18*a00);
   a18=(a18*a11);
-  a16=(a01*a23);
+  a16=(a01*a22);
   a16=(a16*a03);
   a18=(a18-a16);
   if (res[5]!=0) res[5][1]=a18;
-  a18=(a02*a21);
+  a18=(a02*a04);
   a18=(a18*a07);
-  a10=(a22/a10);
-  a10=(a10*a02);
-  a10=(a10*a19);
-  a10=(a10*a21);
-  a10=(a10*a13);
-  a10=(a10*a05);
-  a18=(a18+a10);
+  a07=(a28/a32);
+  a07=(a07*a02);
+  a07=(a07*a19);
+  a07=(a07*a04);
+  a07=(a07*a25);
+  a07=(a07*a05);
+  a18=(a18+a07);
   a18=(-a18);
   if (res[6]!=0) res[6][0]=a18;
-  a18=(a01*a23);
+  a18=(a01*a22);
   a18=(a18*a11);
-  a22=(a22/a08);
-  a22=(a22*a01);
-  a22=(a22*a14);
-  a22=(a22*a23);
-  a22=(a22*a04);
-  a22=(a22*a03);
-  a18=(a18+a22);
+  a11=(a28/a08);
+  a11=(a11*a01);
+  a11=(a11*a14);
+  a11=(a11*a22);
+  a11=(a11*a00);
+  a11=(a11*a03);
+  a18=(a18+a11);
   a18=(-a18);
   if (res[6]!=0) res[6][1]=a18;
+  a18=-1.3333333333333333e+00;
+  a23=(a18*a23);
+  a23=(a23/a24);
+  a23=(a23*a06);
+  a21=(a21?a23:0);
+  a21=(a21+a04);
+  a13=(a13*a21);
+  a19=casadi_sq(a19);
+  a19=(a28*a19);
+  a19=(a19/a32);
+  a19=(a19*a04);
+  a19=(a19*a25);
+  a13=(a13+a19);
+  if (res[7]!=0) res[7][0]=a13;
+  a18=(a18*a30);
+  a18=(a18/a31);
+  a18=(a18*a26);
+  a29=(a29?a18:0);
+  a29=(a29+a22);
+  a12=(a12*a29);
+  a14=casadi_sq(a14);
+  a28=(a28*a14);
+  a28=(a28/a08);
+  a28=(a28*a22);
+  a28=(a28*a00);
+  a12=(a12+a28);
+  if (res[7]!=0) res[7][1]=a12;
   return 0;
 }
 
@@ -5655,7 +6501,7 @@ CASADI_SYMBOL_EXPORT void contact_decref(void) {
 
 CASADI_SYMBOL_EXPORT casadi_int contact_n_in(void) { return 3;}
 
-CASADI_SYMBOL_EXPORT casadi_int contact_n_out(void) { return 7;}
+CASADI_SYMBOL_EXPORT casadi_int contact_n_out(void) { return 8;}
 
 CASADI_SYMBOL_EXPORT casadi_real contact_default_in(casadi_int i) {
   switch (i) {
@@ -5681,6 +6527,7 @@ CASADI_SYMBOL_EXPORT const char* contact_name_out(casadi_int i) {
     case 4: return "f_t";
     case 5: return "f_x";
     case 6: return "f_y";
+    case 7: return "dissipation";
     default: return 0;
   }
 }
@@ -5703,13 +6550,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* contact_sparsity_out(casadi_int i) {
     case 4: return casadi_s4;
     case 5: return casadi_s4;
     case 6: return casadi_s4;
+    case 7: return casadi_s4;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT int contact_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 3;
-  if (sz_res) *sz_res = 7;
+  if (sz_res) *sz_res = 8;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
   return 0;
@@ -5717,7 +6565,7 @@ CASADI_SYMBOL_EXPORT int contact_work(casadi_int *sz_arg, casadi_int* sz_res, ca
 
 CASADI_SYMBOL_EXPORT int contact_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 7*sizeof(casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
@@ -6321,6 +7169,508 @@ CASADI_SYMBOL_EXPORT int end_effector_work_bytes(casadi_int *sz_arg, casadi_int*
   if (sz_res) *sz_res = 3*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* rk4_step:(x[12],tau_stages[2x3],h,p[39],v_imp[2])->(x_next[12]) */
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+1, *rr, *w00=w+154, w01, w02, *w03=w+166, *w04=w+172, *w06=w+174, *w07=w+176, w08, *w09=w+188, *w10=w+200;
+  const casadi_real **arg1=arg+5, *cr, *cs, *wr00, *wr05;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  w01 = arg[2] ? arg[2][0] : 0;
+  w02 = 6.;
+  w02  = (w01/w02);
+  casadi_copy(arg[1], 6, w03);
+  for (rr=w04, cs=w03+0; cs!=w03+2; cs+=1) *rr++ = *cs;
+  wr05 = arg[3] ? arg[3] : casadi_zeros;
+  casadi_copy(arg[4], 2, w06);
+  arg1[0]=wr00;
+  arg1[1]=w04;
+  arg1[2]=wr05;
+  arg1[3]=w06;
+  res1[0]=w07;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  w08 = 2.;
+  w08  = (w01/w08);
+  for (i=0, rr=w09, cs=w07; i<12; ++i) (*rr++)  = (w08*(*cs++));
+  for (i=0, rr=w09, cr=wr00, cs=w09; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w04, cs=w03+2; cs!=w03+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w09;
+  arg1[1]=w04;
+  arg1[2]=wr05;
+  arg1[3]=w06;
+  res1[0]=w10;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (i=0, rr=w09, cs=w10; i<12; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w07, cs=w09; i<12; ++i) (*rr++) += (*cs++);
+  w08 = 2.;
+  w08  = (w01/w08);
+  for (i=0, rr=w10, cs=w10; i<12; ++i) (*rr++)  = (w08*(*cs++));
+  for (i=0, rr=w10, cr=wr00, cs=w10; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w04, cs=w03+2; cs!=w03+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w10;
+  arg1[1]=w04;
+  arg1[2]=wr05;
+  arg1[3]=w06;
+  res1[0]=w09;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (i=0, rr=w10, cs=w09; i<12; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w07, cs=w10; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w09, cs=w09; i<12; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w09, cr=wr00, cs=w09; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w04, cs=w03+4; cs!=w03+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w09;
+  arg1[1]=w04;
+  arg1[2]=wr05;
+  arg1[3]=w06;
+  res1[0]=w10;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (i=0, rr=w07, cs=w10; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w07, cs=w07; i<12; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cr=wr00, cs=w07; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  casadi_copy(w00, 12, res[0]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int rk4_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f8(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int rk4_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void rk4_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void rk4_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void rk4_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int rk4_step_n_in(void) { return 5;}
+
+CASADI_SYMBOL_EXPORT casadi_int rk4_step_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real rk4_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* rk4_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_stages";
+    case 2: return "h";
+    case 3: return "p";
+    case 4: return "v_imp";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* rk4_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* rk4_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s20;
+    case 2: return casadi_s19;
+    case 3: return casadi_s1;
+    case 4: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* rk4_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int rk4_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 3;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 212;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int rk4_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 212*sizeof(casadi_real);
+  return 0;
+}
+
+/* radau_step:(x[12],tau_stages[2x3],h,p[39],v_imp[2])->(x_next[12],newton_increment) */
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real *qr_beta, *qr_r, *qr_v, *qr_w, **res1=res+2, *rr, *w00=w+1402, *w01=w+1414, *w02=w+1450, *w03=w+2746, *w04=w+2782, w05;
+  casadi_real *w07=w+3502, *w08=w+3508, *w10=w+3510, *w12=w+3512, *w13=w+3590, *w14=w+4292, *w15=w+5012, *w16=w+5024, *w17=w+5036, *w18=w+5048, *w19=w+5084, *w20=w+5096;
+  const casadi_real **arg1=arg+5, *cr, *cs, *ss, *wr00, *wr02, *wr06, *wr09;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  casadi_clear(w01, 36);
+  wr02 = casadi_c0;
+  casadi_fill(w03, 36, 1.);
+  casadi_project(w03, casadi_s21, w04, casadi_s22, w);
+  w05 = arg[2] ? arg[2][0] : 0;
+  wr06 = casadi_c1;
+  casadi_copy(arg[1], 6, w07);
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  wr09 = arg[3] ? arg[3] : casadi_zeros;
+  casadi_copy(arg[4], 2, w10);
+  arg1[0]=wr00;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  arg1[4]=0;
+  res1[0]=w12;
+  res1[1]=0;
+  res1[2]=0;
+  res1[3]=0;
+  if (casadi_f3(arg1, res1, iw, w, 0)) return 1;
+  casadi_kron_dense_sparse(wr06, 3, 3, w12, casadi_s9, w13);
+  for (i=0, rr=w13, cs=w13; i<702; ++i) (*rr++)  = (w05*(*cs++));
+  casadi_project(w13, casadi_s23, w14, casadi_s22, w);
+  for (i=0, rr=w04, cs=w14; i<720; ++i) (*rr++) -= (*cs++);
+  rr = w02;
+  ss = w04;
+  casadi_copy(wr02, 1296, rr);
+  qr_v = w;
+  qr_r = w+549;
+  qr_beta = w+1215;
+  qr_w = w+1251;
+  casadi_qr(casadi_s22, ss, qr_w, casadi_s26, qr_v, casadi_s27, qr_r, qr_beta, casadi_s24, casadi_s25);
+  casadi_qr_solve(rr, 36, 0, casadi_s26, qr_v, casadi_s27, qr_r, qr_beta, casadi_s24, casadi_s25, qr_w);
+  casadi_clear(w03, 36);
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=wr00;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w15;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=wr00;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=wr00;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w17;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w18;
+  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w18, 12, 3, wr06, 3, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  casadi_mtimes_dense(w02, 36, 36, w03, 1, w01, 0);
+  for (i=0, rr=w01, cs=w01; i<36; ++i) *rr++ = (- *cs++ );
+  casadi_clear(w03, 36);
+  casadi_clear(w18, 36);
+  for (rr=w15, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w15;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w15, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w15;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w17;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w15, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w15;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w19;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w20;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w19; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w20, 12, 3, wr06, 3, w18, 0);
+  for (i=0, rr=w18, cs=w18; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w18, 36);
+  for (rr=w16, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w17;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w16, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w19;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w16, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w15;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w20;
+  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w19; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w20, 12, 3, wr06, 3, w18, 0);
+  for (i=0, rr=w18, cs=w18; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w18, 36);
+  for (rr=w17, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w19;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w17, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w15;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w17, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w20;
+  for (i=0, cs=w19; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w20, 12, 3, wr06, 3, w18, 0);
+  for (i=0, rr=w18, cs=w18; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w18, 36);
+  for (rr=w19, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w19, cr=wr00, cs=w19; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w19;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w15;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w19, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w19, cr=wr00, cs=w19; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w19;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w19, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w19, cr=wr00, cs=w19; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w19;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w17;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w20;
+  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w20, 12, 3, wr06, 3, w18, 0);
+  for (i=0, rr=w18, cs=w18; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w18, 36);
+  for (rr=w15, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w15;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w15, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w15;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w17;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w15, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w15;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w19;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w20;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w19; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w20, 12, 3, wr06, 3, w18, 0);
+  for (i=0, rr=w18, cs=w18; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  casadi_copy(w03, 36, w18);
+  for (i=0, rr=w01, cs=w18; i<36; ++i) (*rr++) += (*cs++);
+  for (rr=w16, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w00, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  casadi_copy(w00, 12, res[0]);
+  w05 = casadi_norm_inf(36, w03);
+  if (res[1]) res[1][0] = w05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int radau_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f9(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int radau_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void radau_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void radau_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void radau_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int radau_step_n_in(void) { return 5;}
+
+CASADI_SYMBOL_EXPORT casadi_int radau_step_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real radau_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* radau_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_stages";
+    case 2: return "h";
+    case 3: return "p";
+    case 4: return "v_imp";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* radau_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "newton_increment";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* radau_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s20;
+    case 2: return casadi_s19;
+    case 3: return casadi_s1;
+    case 4: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* radau_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int radau_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 15;
+  if (sz_res) *sz_res = 10;
+  if (sz_iw) *sz_iw = 40;
+  if (sz_w) *sz_w = 5132;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int radau_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 15*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 10*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 40*sizeof(casadi_int);
+  if (sz_w) *sz_w = 5132*sizeof(casadi_real);
   return 0;
 }
 
