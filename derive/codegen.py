@@ -265,7 +265,7 @@ RADAU_C = ((4 - _S6) / 10, (4 + _S6) / 10, 1.0)
 RADAU_A = (((88 - 7 * _S6) / 360, (296 - 169 * _S6) / 1800, (-2 + 3 * _S6) / 225),
            ((296 + 169 * _S6) / 1800, (88 + 7 * _S6) / 360, (-2 - 3 * _S6) / 225),
            ((16 - _S6) / 36, (16 + _S6) / 36, 1 / 9))
-RADAU_NEWTON_ITERATIONS = 6
+RADAU_NEWTON_ITERATIONS = 8
 
 
 def fixed_step_functions(fn_fd: ca.Function, fn_jac: ca.Function

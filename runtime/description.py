@@ -338,8 +338,9 @@ def validate(robot: Robot) -> None:
                 if not 0.0 < nu < 0.5:
                     raise DescriptionError(f"joints[{i}].{part}_nu",
                                            f"Poisson's ratio must be in (0, 0.5), got {nu}")
-    if not robot.moving_joints:
-        raise DescriptionError("joints", "at least one joint must move (not every joint locked)")
+    if not robot.moving_joints and not robot.clearance_joints:
+        raise DescriptionError("joints", "at least one joint must move or have play (not every "
+                               "joint locked)")
     g = robot.gravity
     if len(g.vector) != 2:
         raise DescriptionError("gravity.vector", f"must have 2 components, got {len(g.vector)}")

@@ -55,7 +55,7 @@ class RunSettings:
     output_step: float = 1e-3
     integrator: str = "cvodes"
     rtol: float = 1e-6
-    atol: float = 1e-6
+    atol: float = 1e-5
     step: float = 1e-5
     max_steps: int = 200_000
 

@@ -38,6 +38,8 @@ from jointplay.scene import ADAPTIVE, Scene, ideal_counterpart
 
 # Onsets are located to this many seconds: at 1 m/s the journal moves 1 nm in that time.
 EVENT_TIME_TOLERANCE = 1e-9
+# ... or once the penetration is within this fraction of the radial clearance of zero.
+GAP_TOLERANCE = 1e-4
 # Output intervals integrated per call of the adaptive integrators.
 CHUNK_OUTPUTS = 50
 # More transitions than this inside one output interval means contact chatter.
@@ -91,19 +93,26 @@ class _Problem:
         self.nc = len(model.clearance_joints)
         self.scale = _scaling(model, p)
         self.torques = scene.torques
+        # Torques added to the scene's and held over an integration (closed-loop control).
+        self.u_hold = np.zeros(len(model.torque_joints))
         self.angle_index = [model.coordinates.index(f"q{j}") for j in model.torque_joints]
         if "contact.impact_speed_floor" in model.parameters:
             self.speed_floor = float(p[model.parameters.index("contact.impact_speed_floor")])
         else:
             self.speed_floor = 0.0
         self._contact = model.function("contact") if self.nc else None
+        # An onset or separation is located once the gap is within this of zero (m).
+        clearances = [self.scale[model.coordinates.index(f"ex{j}")]
+                      for j in model.clearance_joints]
+        self.gap_tolerance = GAP_TOLERANCE * np.asarray(clearances, dtype=float)
 
     def tau(self, t: np.ndarray | float) -> np.ndarray:
         """Drive torques at times t: shape (len(t), ntau)."""
         t_arr = np.atleast_1d(np.asarray(t, dtype=float))
         cols = [np.broadcast_to(np.asarray(f.numpy(t_arr), dtype=float), t_arr.shape)
                 for f in self.torques]
-        return np.stack(cols, axis=1) if cols else np.zeros((t_arr.size, 0))
+        out = np.stack(cols, axis=1) if cols else np.zeros((t_arr.size, 0))
+        return out + self.u_hold
 
     def tau_casadi(self, t: Any) -> Any:
         return ca.vertcat(*[f.casadi(t) for f in self.torques]) if self.torques \
@@ -131,10 +140,11 @@ class _AdaptiveIntegrator:
         flags = ca.MX.sym("in_contact", pr.nc)
         t0 = ca.MX.sym("t0")
         span = ca.MX.sym("span")
+        hold = ca.MX.sym("u_hold", len(model.torque_joints))
         scale = ca.DM(pr.scale)
         x = z * scale
         t = t0 + s * span
-        tau = pr.tau_casadi(t)
+        tau = pr.tau_casadi(t) + hold
         xdot = model.casadi_function("forward_dynamics")(x, tau, p, v_imp)
         drive_power = sum((tau[k] * x[pr.n + i] for k, i in enumerate(pr.angle_index)),
                           ca.MX(0))
@@ -147,7 +157,7 @@ class _AdaptiveIntegrator:
             dissipation = ca.sum1(contact[names.index("dissipation")])
             quad.append(ca.if_else(flags > 0.5, delta < 0, delta > 0))
         quad += [drive_power, dissipation]
-        dae = {"x": z, "t": s, "p": ca.vertcat(p, v_imp, flags, t0, span),
+        dae = {"x": z, "t": s, "p": ca.vertcat(p, v_imp, flags, t0, span, hold),
                "ode": span * xdot / scale, "quad": span * ca.vertcat(*quad)}
         self.dae = dae
         self.options = {"reltol": rtol, "abstol": atol, "max_num_steps": max_steps}
@@ -166,7 +176,7 @@ class _AdaptiveIntegrator:
         ``intervals`` equal sub-intervals of [t0, t0 + span]."""
         pr = self.problem
         integ = self._integrator(intervals)
-        params = np.concatenate([pr.p, v_imp, flags, [t0, span]])
+        params = np.concatenate([pr.p, v_imp, flags, [t0, span], pr.u_hold])
         try:
             out = integ(x0=x0 / pr.scale, p=params)
         except RuntimeError as err:
@@ -240,6 +250,11 @@ class _EventState:
         self.v_imp[i] = speed
         self.impacts.append((t, int(self.pr.model.clearance_joints[i]), speed))
 
+    def gap(self, x: np.ndarray) -> np.ndarray:
+        """Per joint: > 0 where the penetration disagrees with the joint's flag."""
+        delta = self.pr.contact_at(x, self.v_imp)["delta"]
+        return np.where(self.flags > 0.5, -delta, delta)
+
     def switch(self, x: np.ndarray, t: float, joints: np.ndarray) -> None:
         """Flip the flags of ``joints`` (indices into the clearance joints) at state x."""
         c = self.pr.contact_at(x, self.v_imp)
@@ -310,18 +325,34 @@ def _resolve_interval(integ: _AdaptiveIntegrator, pr: _Problem, x: np.ndarray, t
             traj.dissipated[k + 1] = dissipated + qs[0, nc + 1]
             traj.v_imp[k + 1] = events.v_imp
             return xs[0]
-        # Bisect on the end time for the first transition in (t_cur, tb].
+        # Locate the first transition in (t_cur, tb]: Illinois regula falsi on the gap of
+        # the joints that crossed, bisection when the crossing came and went inside.
         lo, x_lo = t_cur, x_cur
         hi, x_hi, q_hi = tb, xs[0], qs[0]
+        g_lo, g_hi = events.gap(x_lo), events.gap(x_hi)
+        kept = 0  # +1 / -1: how many times in a row lo / hi stayed put
         while hi - lo > EVENT_TIME_TOLERANCE:
-            mid = 0.5 * (lo + hi)
+            crossed = g_hi > 0
+            if np.any(crossed) and np.all(g_hi[crossed] < pr.gap_tolerance[crossed]):
+                break
+            if np.any(crossed):
+                lo_weight = 0.5 if kept >= 2 else 1.0
+                hi_weight = 0.5 if kept <= -2 else 1.0
+                a, b = lo_weight * g_lo[crossed], hi_weight * g_hi[crossed]
+                frac = float(np.min(-a / np.maximum(b - a, 1e-300)))
+                frac = min(max(frac, 0.01), 0.99)
+            else:
+                frac = 0.5
+            mid = lo + frac * (hi - lo)
             xm, qm = integ.run(x_lo, lo, mid - lo, 1, events.v_imp, events.flags, stats)
             if np.any(qm[0, :nc] > 0):
-                hi, x_hi, q_hi = mid, xm[0], qm[0]
+                hi, x_hi, q_hi, g_hi = mid, xm[0], qm[0], events.gap(xm[0])
+                kept = kept + 1 if kept > 0 else 1
             else:
                 work += qm[0, nc]
                 dissipated += qm[0, nc + 1]
-                lo, x_lo = mid, xm[0]
+                lo, x_lo, g_lo = mid, xm[0], events.gap(xm[0])
+                kept = kept - 1 if kept < 0 else -1
         work += q_hi[nc]
         dissipated += q_hi[nc + 1]
         events.switch(x_hi, hi, np.flatnonzero(q_hi[:nc] > 0))
@@ -668,3 +699,62 @@ def simulate(scene: Scene, *, model: Model | None = None,
     wall = time.perf_counter() - start
     counts: dict[str, Any] = dict(stats.counts)
     return _assemble(pr, traj, t, counts, wall, ideal_result)
+
+
+class Stepper:
+    """The scene's robot advanced one sample at a time, with torques added and held (ZOH).
+
+    For closed-loop control and identification: ``step(u)`` integrates one sample period with
+    the scene's own torques plus ``u`` held constant, through contact events exactly as
+    :func:`simulate` does (adaptive integrators only), and returns the new state.
+    """
+
+    def __init__(self, scene: Scene, *, model: Model | None = None,
+                 parameters: Mapping[str, float] | Sequence[float] | None = None,
+                 sample_time: float | None = None) -> None:
+        run = scene.run
+        if run.integrator not in ADAPTIVE:
+            raise ValueError(f"Stepper needs an adaptive integrator ({', '.join(ADAPTIVE)}), "
+                             f"got {run.integrator!r}")
+        self.model = model or load_scene_model(scene)
+        self.scene = scene
+        self._pr = _Problem(self.model, scene, _parameter_vector(self.model, scene, parameters))
+        self._integ = _AdaptiveIntegrator(self._pr, run.integrator, run.rtol, run.atol,
+                                          run.max_steps)
+        self.sample_time = float(sample_time or run.output_step)
+        self.stats = _Accumulated()
+        self.reset()
+
+    @property
+    def parameters(self) -> np.ndarray:
+        return self._pr.p
+
+    def reset(self, x0: np.ndarray | None = None) -> None:
+        """Back to t = 0 at ``x0`` (default: the scene's initial state)."""
+        self.t = 0.0
+        self.x = (np.asarray(x0, dtype=float).copy() if x0 is not None
+                  else _initial_state(self.model, self.scene))
+        self.impacts: list[tuple[float, int, float]] = []
+        self._events = _EventState(self._pr, self.x, 0.0, self.impacts)
+        self.work = 0.0
+        self.dissipated = 0.0
+
+    def step(self, u: Sequence[float] | np.ndarray) -> np.ndarray:
+        """Advance one sample with the added torques ``u`` (one per driven joint, N m)."""
+        pr = self._pr
+        pr.u_hold[:] = np.asarray(u, dtype=float)
+        traj = _Trajectory(x=np.zeros((2, pr.nx)), v_imp=np.zeros((2, pr.nc)),
+                           work=np.array([self.work, 0.0]),
+                           dissipated=np.array([self.dissipated, 0.0]), impacts=self.impacts)
+        self.x = _resolve_interval(self._integ, pr, self.x, self.t, self.sample_time,
+                                   self._events, traj, 0, self.stats)
+        self.t += self.sample_time
+        self.work, self.dissipated = float(traj.work[1]), float(traj.dissipated[1])
+        return self.x
+
+    def end_effector(self) -> dict[str, np.ndarray]:
+        """Tip position, velocity and acceleration at the current state and held torque."""
+        pr = self._pr
+        xdot = self.model.forward_dynamics(self.x, pr.tau(self.t)[0], pr.p,
+                                           self._events.v_imp)
+        return self.model.end_effector(self.x, xdot[pr.n:], pr.p)

@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+efe11ec3c06c, casadi 3.8.2, sympy 1.14.0
- * input hash: 4bc101b5bbe250b9e399396556b3539a0a98e1bef5ac5f602f3b122f5650cae3
+ * generator: jointplay.derive 0.1.0+1c0a3f0a09f4, casadi 3.8.2, sympy 1.14.0
+ * input hash: a95f827df234426dc3fb1e76638e8c4e4bc6030e542d1688bbbab48060ff7e81
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
@@ -7583,10 +7583,90 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
   casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
   for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w18, 36);
+  for (rr=w16, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w17;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w16, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w19;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w16, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w15;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w20;
+  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w19; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w20, 12, 3, wr06, 3, w18, 0);
+  for (i=0, rr=w18, cs=w18; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w18, 36);
+  for (rr=w17, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w19;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w17, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w15;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w17, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w20;
+  for (i=0, cs=w19; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w20, 12, 3, wr06, 3, w18, 0);
+  for (i=0, rr=w18, cs=w18; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w18, cr=w01, cs=w18; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w18, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
   casadi_copy(w03, 36, w18);
   for (i=0, rr=w01, cs=w18; i<36; ++i) (*rr++) += (*cs++);
-  for (rr=w16, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w00, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w19, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w00, cr=wr00, cs=w19; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
   casadi_copy(w00, 12, res[0]);
   w05 = casadi_norm_inf(36, w03);
   if (res[1]) res[1][0] = w05;

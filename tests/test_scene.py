@@ -1,0 +1,174 @@
+"""Scenes: the default, validation before anything is compiled, and the simulate command."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+import jointplay.simulate
+from jointplay.cli import main
+from jointplay.errors import DescriptionError
+from jointplay.scene import default_scene, load_scene
+from jointplay.simulate import load_scene_model
+
+ROBOT = """
+[robot]
+name = "two"
+[[robot.links]]
+length = 0.3
+mass = 1.0
+inertia = 0.0075
+com = 0.15
+[[robot.links]]
+length = 0.3
+mass = 1.0
+inertia = 0.0075
+com = 0.15
+[[robot.joints]]
+kind = "ideal"
+[[robot.joints]]
+kind = "clearance"
+"""
+
+
+def write_scene(tmp_path: Path, head: str, robot: str = ROBOT) -> Path:
+    path = tmp_path / "scene.toml"
+    path.write_text(head + "\n" + robot)
+    return path
+
+
+def test_default_scene_is_the_papers_example() -> None:
+    scene = default_scene()
+    robot = scene.robot
+    assert [j.kind for j in robot.joints] == ["locked", "clearance", "clearance", "locked"]
+    assert [link.length for link in robot.links] == [0.30, 0.35, 0.30, 0.10]
+    assert [link.mass for link in robot.links] == [3.0, 2.0, 1.5, 0.5]
+    assert robot.payload_mass == 2.0
+    assert robot.joints[1].bearing_radius - robot.joints[1].journal_radius == pytest.approx(30e-6)
+    assert robot.contact.law == "lankarani-nikravesh" and robot.contact.restitution == 0.9
+    assert (robot.friction.mu, robot.friction.v0, robot.friction.v1) == (0.05, 1e-4, 1e-2)
+    assert scene.initial["q2"] == pytest.approx(-math.pi, abs=0)
+    t = np.linspace(0, 2, 9)
+    np.testing.assert_allclose(scene.torques[0].numpy(t), 4 * np.sin(2 * np.pi * t), atol=1e-14)
+    np.testing.assert_allclose(scene.torques[1].numpy(t), 2 * np.sin(2 * np.pi * t), atol=1e-14)
+    assert (scene.run.t_end, scene.run.output_step, scene.run.integrator) == (2.0, 1e-3,
+                                                                               "cvodes")
+
+
+def test_a_scene_compiles_only_the_effects_it_asks_for(tmp_path: Path) -> None:
+    path = write_scene(tmp_path, '[run]\nt_end = 0.01\n',
+                       ROBOT + '[robot.friction]\nlaw = "none"\n')
+    model = load_scene_model(load_scene(path))
+    assert not [p for p in model.parameters if p.startswith("friction.")]
+    assert model.structure["friction"] == "none"
+    assert model.coordinates == ["q1", "q2", "ex2", "ey2"]  # joint 1 ideal: no play terms
+    with_friction = load_scene_model(load_scene(write_scene(tmp_path, "", ROBOT)))
+    assert "friction.mu" in with_friction.parameters
+    assert with_friction.library != model.library
+
+
+BAD_SCENES = [
+    ("[run\nt_end = 1", "(file)", "not valid TOML"),
+    ("[runn]\nt_end = 1", "runn", "did you mean 'run'"),
+    ("[run]\nt_end = 'two'", "run.t_end", "finite number"),
+    ("[run]\nt_end = 0", "run.t_end", "> 0"),
+    ("[run]\nt_end = -1.0", "run.t_end", "> 0"),
+    ("[run]\nt_end = nan", "run.t_end", "finite number"),
+    ("[run]\nrtol = inf", "run.rtol", "finite number"),
+    ("[run]\nintegrator = 'cvode'", "run.integrator", "did you mean 'cvodes'"),
+    ("[run]\nt_end = 1.0\noutput_step = 0.3", "run.output_step", "whole samples"),
+    ("[run]\nintegrator = 'rk4'\nstep = 3e-4", "run.step", "divide"),
+    ("[run]\nt_ned = 1.0", "run.t_ned", "did you mean 't_end'"),
+    ("[torques]\njoint2 = \"__import__('os').system('true')\"", "torques.joint2", "__import__"),
+    ("[torques]\njoint2 = 't.real'", "torques.joint2", "attribute"),
+    ("[torques]\njoint2 = 'open(t)'", "torques.joint2", "open"),
+    ("[torques]\njoint2 = '(lambda: 1)()'", "torques.joint2", ""),
+    ("[torques]\njoint7 = 'sin(t)'", "torques.joint7", "unknown key"),
+    ("[torques]\njoint2 = 'A*sin(t)'", "torques.joint2", "A"),
+    ("[constants]\n__x = 1.0", "constants.__x", "identifier"),
+    ("[initial]\nq7 = 1.0", "initial.q7", "unknown key"),
+    ("[initial]\nq1 = 't'", "initial.q1", "must not depend on t"),
+    ("[initial]\nex2 = 1.0", "initial.ex2", "inside its bearing"),
+    ("[initial]\nq1 = true", "initial.q1", "finite number"),
+]
+
+
+@pytest.mark.parametrize(("head", "field", "message"), BAD_SCENES,
+                         ids=[b[1] + ":" + b[2][:12] for b in BAD_SCENES])
+def test_bad_scenes_name_the_file_field_and_fix(tmp_path: Path, head: str, field: str,
+                                                message: str,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    path = write_scene(tmp_path, head)
+    with pytest.raises(DescriptionError) as info:
+        load_scene(path)
+    assert info.value.field == field
+    assert message in info.value.message
+    assert str(path) in str(info.value)
+    out = tmp_path / "run.h5"
+    assert main(["simulate", str(path), "--out", str(out), "--quiet"]) == 2
+    assert not out.exists()
+    assert f"{field}" in capsys.readouterr().err
+
+
+def test_bad_robot_inside_a_scene(tmp_path: Path) -> None:
+    path = write_scene(tmp_path, "", ROBOT.replace("mass = 1.0", "mass = -1.0", 1))
+    with pytest.raises(DescriptionError, match=r"links\[1\]\.mass: must be > 0"):
+        load_scene(path)
+    with pytest.raises(DescriptionError, match="robot: is required"):
+        load_scene(write_scene(tmp_path, "", ""))
+
+
+def test_missing_scene_file(tmp_path: Path) -> None:
+    assert main(["simulate", str(tmp_path / "nope.toml"), "--quiet"]) == 2
+
+
+@pytest.mark.parametrize("flag", ["--out", "--csv"])
+def test_unwritable_output_path_is_refused_before_running(tmp_path: Path, flag: str) -> None:
+    target = tmp_path / "missing" / "run.out"
+    assert main(["simulate", "--t-end", "0.01", flag, str(target), "--quiet"]) == 2
+    assert not target.parent.exists()
+
+
+def test_bad_override_flags(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["simulate", "--t-end", "-1", "--quiet"]) == 2
+    assert "--t-end" in capsys.readouterr().err
+    assert main(["simulate", "--set", "payload.mas=3", "--quiet"]) == 2
+    assert "did you mean 'payload.mass'" in capsys.readouterr().err
+    assert main(["simulate", "--set", "friction.mu=abc", "--quiet"]) == 2
+
+
+def test_interrupted_run_leaves_no_result_file(tmp_path: Path,
+                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    def interrupted(*args: object, **kwargs: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(jointplay.simulate, "simulate", interrupted)
+    out = tmp_path / "run.h5"
+    assert main(["simulate", "--t-end", "0.01", "--out", str(out), "--quiet"]) == 130
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_simulate_command_writes_results_and_plots(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    out, csv, plots = tmp_path / "run.h5", tmp_path / "run.csv", tmp_path / "plots"
+    code = main(["simulate", "--t-end", "0.02", "--compare-ideal", "--out", str(out),
+                 "--csv", str(csv), "--plot", str(plots), "--set", "payload.mass=2.5"])
+    assert code == 0
+    text = capsys.readouterr().out
+    assert "x real time" in text and "error vs ideal joints" in text
+    with h5py.File(out) as f:
+        assert f["t"].shape == (21,)
+        assert f["q"].shape == (21, 6)
+        assert "ideal" in f
+        assert f["impacts/time"].shape[0] >= 2
+        names = [n.decode() if isinstance(n, bytes) else n for n in f.attrs["parameter_names"]]
+        assert f["parameters"][names.index("payload.mass")] == 2.5
+    header = csv.read_text().splitlines()[0]
+    assert header.startswith("t [s],") and "delta2 [m]" in header
+    assert sorted(p.name for p in plots.iterdir()) == [
+        "contact_force.png", "end_effector.png", "energy.png", "orbit_joint2.png",
+        "orbit_joint3.png"]

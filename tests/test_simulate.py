@@ -1,0 +1,338 @@
+"""Simulation: conservation, hard cases that stay stable, convergence, independent references.
+
+Tolerances are stated where they are used. Energy balances are relative to the energy that
+moved during the run (``sim_fixtures.energy_scale``).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+from sim_fixtures import (
+    assert_finite,
+    clearance_joint,
+    hertz_stiffness,
+    make_scene,
+    pin_in_bearing,
+    relative_balance,
+    robot_table,
+)
+
+from jointplay.errors import SimulationError
+from jointplay.scene import default_scene
+from jointplay.simulate import Stepper, simulate
+
+LAWS = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
+
+
+def pendulum(**kwargs: object) -> dict[str, object]:
+    """Two links, joint 1 ideal, joint 2 with 30 um clearance (unless told otherwise)."""
+    clearance = float(kwargs.pop("clearance", 30e-6))  # type: ignore[arg-type]
+    return robot_table(2, [{"kind": "ideal"}, clearance_joint(clearance)], **kwargs)  # type: ignore[arg-type]
+
+
+# ---- conservation ----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("tol", [1e-6, 1e-9])
+def test_energy_conserved_through_impacts_without_damping_or_friction(tol: float) -> None:
+    """ce = 1, mu = 0: kinetic + gravity + contact energy is conserved through every impact,
+    to the integrator's tolerance (balance / moved energy <= 10 x rtol)."""
+    robot = pendulum(restitution=1.0, drive=False)
+    result = simulate(make_scene(robot, initial={"q1": 0.0}, t_end=0.1, rtol=tol, atol=tol))
+    assert len(result.impacts) > 5
+    assert result.energy["dissipated"][-1] == pytest.approx(0.0, abs=1e-12)
+    assert relative_balance(result) < 10 * tol
+
+
+def test_drive_work_and_dissipation_close_the_balance() -> None:
+    """Damping, friction and a drive: E - E0 - W + D stays at the tolerance level."""
+    robot = pendulum(restitution=0.5, mu=0.1)
+    scene = make_scene(robot, torques={"joint1": "2*sin(2*pi*t)", "joint2": "cos(3*t)"},
+                       initial={"q1": -1.0}, t_end=0.2)
+    result = simulate(scene)
+    assert result.energy["dissipated"][-1] > 0
+    assert abs(result.energy["drive_work"][-1]) > 1e-3
+    assert relative_balance(result) < 1e-6
+
+
+# ---- hard cases: finite results and a closed balance, or a clear error -----------------------
+
+HARD_BALANCE = 1e-4  # relative, at rtol = atol = 1e-8
+
+
+@pytest.mark.parametrize("clearance", [1e-6, 1e-3])
+def test_clearance_from_one_micrometre_to_one_millimetre(clearance: float) -> None:
+    robot = pendulum(clearance=clearance, restitution=0.8, mu=0.05)
+    result = simulate(make_scene(robot, initial={"q1": -0.5}, t_end=0.1))
+    assert_finite(result)
+    assert relative_balance(result) < HARD_BALANCE
+    assert np.max(result.penetration) < 0.05 * clearance + 2e-6
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("ce", [0.1, 0.5, 1.0])
+def test_every_damping_law_over_the_restitution_range(law: str, ce: float) -> None:
+    robot = pendulum(law=law, restitution=ce)
+    result = simulate(make_scene(robot, initial={"q1": 0.0}, t_end=0.05))
+    assert_finite(result)
+    assert len(result.impacts) >= 1
+    assert relative_balance(result) < HARD_BALANCE
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.1, 0.3])
+def test_friction_including_sticking(mu: float) -> None:
+    """Hanging at rest under gravity, then a slow drive: the journal sits on the bearing with
+    v_t near 0 (sticking) before it slides."""
+    robot = pendulum(mu=mu, restitution=0.7) if mu > 0 else pendulum(restitution=0.7)
+    scene = make_scene(robot, torques={"joint1": "0.5*t"}, initial={"q1": -math.pi / 2,
+                                                                     "ey2": -30e-6},
+                       t_end=0.1)
+    result = simulate(scene)
+    assert_finite(result)
+    assert relative_balance(result) < HARD_BALANCE
+    # In contact with the sliding speed below v0 (where c_d = 0): the sticking regime.
+    in_contact = result.normal_force[:, 0] > 0
+    assert np.any(np.abs(result.sliding_speed[in_contact, 0]) < 1e-4)
+
+
+def test_grazing_contact() -> None:
+    """The journal skims the bearing wall: a tangential speed and a tiny normal approach."""
+    robot = pin_in_bearing(restitution=0.8, mu=0.1)
+    scene = make_scene(robot, initial={"ex1": 30e-6 - 1e-9, "dey1": 0.05, "dex1": 1e-6},
+                       t_end=0.01, output_step=1e-5)
+    result = simulate(scene)
+    assert_finite(result)
+    assert relative_balance(result) < HARD_BALANCE
+    assert len(result.impacts) >= 1
+    assert np.min(result.impacts.speed) < 1e-3  # below the floor: grazing
+
+
+def test_impact_at_one_metre_per_second() -> None:
+    robot = pin_in_bearing(restitution=0.9)
+    scene = make_scene(robot, initial={"dex1": 1.0}, t_end=2e-4, output_step=1e-7)
+    result = simulate(scene)
+    assert_finite(result)
+    assert result.impacts.speed[0] == pytest.approx(1.0, rel=1e-6)
+    assert relative_balance(result) < HARD_BALANCE
+
+
+@pytest.mark.slow
+def test_twenty_second_run() -> None:
+    robot = pendulum(restitution=0.9, mu=0.05, payload=0.5)
+    scene = make_scene(robot, torques={"joint1": "3*sin(2*pi*t)", "joint2": "sin(2*pi*t)"},
+                       initial={"q1": -math.pi / 2}, t_end=20.0, rtol=1e-6, atol=1e-5)
+    result = simulate(scene)
+    assert_finite(result)
+    assert relative_balance(result) < 1e-2
+
+
+@pytest.mark.slow
+def test_eight_links_all_with_clearance() -> None:
+    robot = robot_table(8, [clearance_joint()] * 8, restitution=0.9, mu=0.05)
+    result = simulate(make_scene(robot, initial={"q1": -1.2}, t_end=0.05, rtol=1e-6,
+                                 atol=1e-5))
+    assert_finite(result)
+    assert relative_balance(result) < 1e-2
+
+
+def test_start_at_e_zero_default_scene_runs() -> None:
+    scene = default_scene().with_run(t_end=0.05)
+    result = simulate(scene)
+    assert_finite(result)
+    assert np.all(result.eccentricity[0] == 0.0)
+    assert len(result.impacts) >= 2  # both journals fall onto their bearings
+    assert set(result.impacts.joint.tolist()) == {2, 3}
+
+
+# ---- divergence is an error, never a silent NaN -----------------------------------------------
+
+def test_explicit_method_beyond_its_stability_limit_stops_with_a_message() -> None:
+    robot = pin_in_bearing(restitution=0.9)
+    scene = make_scene(robot, initial={"dex1": 1.0}, t_end=1e-3, output_step=1e-4,
+                       integrator="rk4", step=1e-4)
+    with pytest.raises(SimulationError, match=r"t = .*joint 1.*reduce run\.step"):
+        simulate(scene)
+
+
+def test_work_limit_stops_with_a_message() -> None:
+    scene = default_scene().with_run(t_end=0.02, max_steps=20)
+    with pytest.raises(SimulationError, match=r"cvodes failed .*run\.max_steps"):
+        simulate(scene)
+
+
+# ---- fixed-step methods: convergence order ---------------------------------------------------
+
+@pytest.mark.parametrize(("method", "order"), [("rk4", 4), ("radau", 5)])
+def test_fixed_step_convergence_order(method: str, order: int) -> None:
+    """Ideal joints, smooth drive: halving the step divides the error by about 2^order."""
+    robot = robot_table(2, [{"kind": "ideal"}, {"kind": "ideal"}])
+    base = make_scene(robot, torques={"joint1": "sin(5*t)", "joint2": "cos(7*t)"},
+                      initial={"q1": -1.0, "q2": 0.5}, t_end=0.4, output_step=0.04,
+                      rtol=1e-12, atol=1e-12)
+    reference = simulate(base)
+    errors = []
+    steps = [0.02, 0.01, 0.005]
+    for h in steps:
+        result = simulate(base.with_run(integrator=method, step=h))
+        errors.append(np.max(np.abs(result.q - reference.q)))
+    rates = [math.log2(a / b) for a, b in itertools.pairwise(errors)]
+    assert all(r > order - 0.6 for r in rates), (errors, rates)
+
+
+def test_fixed_step_methods_agree_with_cvodes_through_impacts() -> None:
+    """The paper scene for 20 ms: RK4 and Radau at 2 us agree with CVODES at 1e-10 to 1 um at
+    the tip (onsets between step ends are located by interpolation: first order in h)."""
+    scene = default_scene().with_run(t_end=0.02)
+    reference = simulate(scene.with_run(rtol=1e-10, atol=1e-10))
+    firm = int(np.sum(reference.impacts.speed > 1e-2))
+    for method in ("rk4", "radau"):
+        result = simulate(scene.with_run(integrator=method, step=2e-6))
+        err = np.max(np.linalg.norm(result.tip_position - reference.tip_position, axis=1))
+        assert err < 1e-6, (method, err)
+        assert int(np.sum(result.impacts.speed > 1e-2)) == firm
+
+
+def test_idas_agrees_with_cvodes() -> None:
+    scene = default_scene().with_run(t_end=0.1, rtol=1e-9, atol=1e-9)
+    a = simulate(scene)
+    b = simulate(scene.with_run(integrator="idas"))
+    assert np.max(np.abs(a.tip_position - b.tip_position)) < 1e-8
+    # The first impacts happen at the same times; later ones drift with the state's small
+    # differences, amplified by repeated impacts (and grazing onsets are ill-conditioned).
+    np.testing.assert_allclose(a.impacts.time[:5], b.impacts.time[:5], atol=1e-8)
+
+
+# ---- results ---------------------------------------------------------------------------------
+
+def test_result_contents_and_compare_ideal() -> None:
+    scene = default_scene().with_run(t_end=0.05)
+    result = simulate(scene, compare_ideal=True)
+    n = result.t.size
+    assert n == 51
+    assert result.coordinate_names == ["q2", "q3", "ex2", "ey2", "ex3", "ey3"]
+    assert result.eccentricity.shape == (n, 2, 2)
+    assert result.ideal is not None
+    assert result.ideal.coordinate_names == ["q2", "q3"]
+    assert result.ideal.impacts.time.size == 0
+    # The clearance robot sags by about the clearance in each of two joints.
+    sag = np.max(np.abs(result.tip_position - result.ideal.tip_position))
+    assert 1e-5 < sag < 1e-3
+    for key in ("steps", "rhs_evaluations", "jacobian_evaluations", "events", "impacts",
+                "wall_time_s"):
+        assert key in result.stats
+    np.testing.assert_allclose(result.radial_clearance, [30e-6, 30e-6], rtol=1e-12)
+    assert result.metadata["model_input_hash"]
+
+
+def test_parameters_change_without_recompiling() -> None:
+    scene = default_scene().with_run(t_end=0.02)
+    a = simulate(scene)
+    b = simulate(scene, parameters={"payload.mass": 4.0})
+    assert b.parameters[b.parameter_names.index("payload.mass")] == 4.0
+    assert not np.allclose(a.q, b.q)
+    with pytest.raises(KeyError, match=r"did you mean 'payload\.mass'"):
+        simulate(scene, parameters={"payload.mas": 4.0})
+
+
+def test_stepper_follows_simulate() -> None:
+    """Stepping sample by sample with no added torque reproduces simulate (to tolerance)."""
+    scene = default_scene().with_run(t_end=0.05, rtol=1e-10, atol=1e-10)
+    result = simulate(scene)
+    stepper = Stepper(scene)
+    states = [stepper.x.copy()] + [stepper.step([0.0, 0.0]).copy() for _ in range(50)]
+    assert np.max(np.abs(np.array(states)[:, :2] - result.q[:, :2])) < 1e-8
+    assert len(stepper.impacts) == len(result.impacts)
+
+
+# ---- outside references -----------------------------------------------------------------------
+
+@pytest.mark.parametrize(("law", "ce", "speed"), [("hunt-crossley", 0.8, 0.1),
+                                                  ("flores", 0.5, 1.0),
+                                                  ("lankarani-nikravesh", 0.9, 0.5)])
+def test_pin_impact_matches_exudyn(law: str, ce: float, speed: float) -> None:
+    """A free body thrown against the bearing wall: rebound speed, peak force and contact
+    duration agree with Exudyn's hollow-sphere contact with the same K, n and damping (1%)."""
+    from exudyn_reference import exudyn_pin_impact
+
+    clearance, mass = 30e-6, 2.0
+    robot = pin_in_bearing(law=law, restitution=ce, clearance=clearance, mass=mass)
+    t_hit = clearance / speed
+    scene = make_scene(robot, initial={"dex1": speed}, t_end=round(t_hit + 3e-4, 7),
+                       output_step=1e-7, rtol=1e-10, atol=1e-10)
+    result = simulate(scene)
+    reference = exudyn_pin_impact(mass=mass, stiffness=hertz_stiffness(10e-3, 10e-3 - clearance),
+                                  exponent=1.5, restitution=ce, law=law, clearance=clearance,
+                                  journal_radius=10e-3 - clearance, impact_speed=speed)
+    delta = result.penetration[:, 0]
+    inside = delta > 0
+    first = int(np.argmax(inside))
+    last = first + int(np.argmin(inside[first:])) - 1  # end of the first contact
+    # Separation between the last sample in contact and the next, by linear interpolation.
+    t = result.t
+    t_sep = t[last] + (t[last + 1] - t[last]) * delta[last] / (delta[last] - delta[last + 1])
+    duration = t_sep - result.impacts.time[0]
+    rebound = abs(result.u[last + 2, 0])  # free flight after separation
+    assert first > 0 and not inside[last + 1]
+    assert rebound == pytest.approx(reference["rebound_speed"], rel=1e-2)
+    assert np.max(result.normal_force) == pytest.approx(reference["peak_force"], rel=1e-2)
+    assert duration == pytest.approx(reference["contact_duration"], rel=1e-2)
+
+
+def test_ideal_joint_simulation_matches_pinocchio() -> None:
+    """Ideal joints: jointplay's run equals one driven by Pinocchio's ABA with the same
+    integrator (CVODES, same tolerances) to the integrator's tolerance."""
+    import casadi as ca
+    import pinocchio as pin
+
+    robot = robot_table(3, [{"kind": "ideal"}] * 3, payload=0.5)
+    scene = make_scene(robot, torques={"joint1": "2*sin(3*t)", "joint2": "cos(2*t)",
+                                       "joint3": "0.3"},
+                       initial={"q1": -1.0, "q2": 0.4, "q3": -0.2, "dq1": 0.5}, t_end=0.5,
+                       output_step=0.01, rtol=1e-10, atol=1e-10)
+    result = simulate(scene)
+
+    pmodel = pin.Model()
+    parent = 0
+    placement = pin.SE3.Identity()
+    for link in scene.robot.links:
+        jid = pmodel.addJoint(parent, pin.JointModelRZ(), placement, "rz")
+        inertia = pin.Inertia(link.mass, np.array([link.com, 0.0, 0.0]),
+                              np.diag([1e-9, 1e-9, link.inertia]))
+        pmodel.appendBodyToJoint(jid, inertia, pin.SE3.Identity())
+        parent, placement = jid, pin.SE3(np.eye(3), np.array([link.length, 0.0, 0.0]))
+    pmodel.appendBodyToJoint(parent, pin.Inertia(0.5, np.array([0.3, 0.0, 0.0]),
+                                                 np.zeros((3, 3))), pin.SE3.Identity())
+    pmodel.gravity = pin.Motion(np.array([0.0, -9.81, 0.0]), np.zeros(3))
+    data = pmodel.createData()
+
+    class Aba(ca.Callback):  # Pinocchio's ABA as the right-hand side, in CVODES
+        def __init__(self) -> None:
+            ca.Callback.__init__(self)
+            self.construct("aba", {"enable_fd": True})
+
+        def get_n_in(self) -> int:
+            return 2
+
+        def get_sparsity_in(self, i: int) -> ca.Sparsity:
+            return ca.Sparsity.dense(6 if i == 0 else 1, 1)
+
+        def get_sparsity_out(self, i: int) -> ca.Sparsity:
+            return ca.Sparsity.dense(6, 1)
+
+        def eval(self, args: list[ca.DM]) -> list[ca.DM]:
+            x, t = np.asarray(args[0]).ravel(), float(args[1])
+            tau = np.array([2 * math.sin(3 * t), math.cos(2 * t), 0.3])
+            a = pin.aba(pmodel, data, x[:3], x[3:], tau)
+            return [ca.DM(np.concatenate([x[3:], a]))]
+
+    aba = Aba()
+    xs, ts = ca.MX.sym("x", 6), ca.MX.sym("t")
+    integ = ca.integrator("pin", "cvodes", {"x": xs, "t": ts, "ode": aba(xs, ts)}, 0.0,
+                          result.t[1:], {"reltol": 1e-10, "abstol": 1e-10})
+    x0 = np.array([-1.0, 0.4, -0.2, 0.5, 0.0, 0.0])
+    reference = np.asarray(integ(x0=x0)["xf"]).T
+    np.testing.assert_allclose(result.q[1:], reference[:, :3], atol=5e-8)
+    np.testing.assert_allclose(result.u[1:], reference[:, 3:], atol=5e-7)
