@@ -1,16 +1,21 @@
 """Symbolic derivation (sympy.physics.mechanics) and C emission (CasADi) of robot models.
 
-This is the only part of jointplay that imports sympy.
+This is the only part of jointplay that imports sympy, and only when something is derived:
+finding and loading a model that was generated before does not import it.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
-from jointplay.derive.codegen import GENERATOR_VERSION, Emitted, emit, provenance, write_generated
-from jointplay.derive.symbolic import SymbolicModel, derive
+from jointplay.derive.stamp import GENERATOR_VERSION, provenance
 from jointplay.description import Robot
 from jointplay.model import Model
+
+if TYPE_CHECKING:
+    from jointplay.derive.codegen import Emitted, emit, write_generated
+    from jointplay.derive.symbolic import SymbolicModel, derive
 
 __all__ = [
     "GENERATOR_VERSION",
@@ -24,6 +29,18 @@ __all__ = [
     "write_generated",
 ]
 
+_LAZY = {"Emitted": "codegen", "emit": "codegen", "write_generated": "codegen",
+         "SymbolicModel": "symbolic", "derive": "symbolic"}
+
+
+def __getattr__(name: str) -> Any:
+    """Import the sympy-based modules on first use only."""
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module(f"jointplay.derive.{_LAZY[name]}"), name)
+    raise AttributeError(f"module 'jointplay.derive' has no attribute {name!r}")
+
 
 def generated_folder(robot: Robot) -> Path:
     """A folder holding generated code for ``robot``'s structure, generating it if needed.
@@ -35,6 +52,7 @@ def generated_folder(robot: Robot) -> Path:
     from jointplay.build import cache_root
     from jointplay.errors import GeneratedCodeError
     from jointplay.model import read_generated
+
     prov = provenance(robot.structure())
     folder = generated.find(prov["input_hash"])
     if folder is not None:
@@ -43,6 +61,8 @@ def generated_folder(robot: Robot) -> Path:
     try:
         read_generated(folder)
     except GeneratedCodeError:  # absent, half-written or damaged: (re)generate it
+        from jointplay.derive.codegen import write_generated
+
         write_generated(robot, folder)
     return folder
 

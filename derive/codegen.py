@@ -23,44 +23,19 @@ import hashlib
 import json
 import time
 from dataclasses import dataclass
-from importlib.metadata import version
 from pathlib import Path
 from typing import Any
 
 import casadi as ca
 import sympy as sp
 
+from jointplay.derive.stamp import provenance
 from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
-from jointplay.description import Robot, canonical_json
+from jointplay.description import Robot
 from jointplay.files import atomic_write_text
 from jointplay.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.robotio import robot_to_toml
-
-_EMITTING_MODULES = ("codegen.py", "laws.py", "symbolic.py", "to_casadi.py")
-
-
-def _generator_version() -> str:
-    """The package version plus a hash of the modules that decide the emitted text: any
-    change to the derivation or emission code changes the stamp, so stale cached models are
-    never reused (inspection and package glue are left out: they do not change the C)."""
-    h = hashlib.sha256()
-    for path in sorted(Path(__file__).parent / name for name in _EMITTING_MODULES):
-        h.update(path.name.encode())
-        h.update(path.read_bytes())
-    return f"{version('jointplay')}+{h.hexdigest()[:12]}"
-
-
-GENERATOR_VERSION = _generator_version()
-
-
-def provenance(structure: dict[str, Any]) -> dict[str, str]:
-    """What the emitted text depends on, and the hash that stamps it."""
-    versions = {"generator": GENERATOR_VERSION, "casadi": version("casadi"),
-                "sympy": version("sympy")}
-    inputs = {"structure": structure, **versions}
-    return {**versions,
-            "input_hash": hashlib.sha256(canonical_json(inputs).encode()).hexdigest()}
 
 
 @dataclass

@@ -172,3 +172,17 @@ def test_simulate_command_writes_results_and_plots(tmp_path: Path,
     assert sorted(p.name for p in plots.iterdir()) == [
         "contact_force.png", "end_effector.png", "energy.png", "orbit_joint2.png",
         "orbit_joint3.png"]
+
+
+def test_loading_a_generated_model_does_not_import_sympy() -> None:
+    """The runtime finds and loads a model generated before without the derivation."""
+    import subprocess
+    import sys
+
+    code = ("import sys\n"
+            "from jointplay.scene import default_scene\n"
+            "from jointplay.simulate import load_scene_model, simulate\n"
+            "scene = default_scene().with_run(t_end=0.002)\n"
+            "simulate(scene, model=load_scene_model(scene))\n"
+            "assert 'sympy' not in sys.modules, 'sympy was imported'\n")
+    subprocess.run([sys.executable, "-c", code], check=True)

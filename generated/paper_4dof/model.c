@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+1c0a3f0a09f4, casadi 3.8.2, sympy 1.14.0
- * input hash: a95f827df234426dc3fb1e76638e8c4e4bc6030e542d1688bbbab48060ff7e81
+ * generator: jointplay.derive 0.1.0+552d77662f03, casadi 3.8.2, sympy 1.14.0
+ * input hash: e21072225f40da8a01c5e241cfd760a97d99227d467f583e015709dfa31a656b
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

@@ -1,0 +1,39 @@
+"""The provenance stamp of generated code, computable without sympy.
+
+The runtime needs a model's input hash to find it (checked in, or in the cache) before it
+knows whether anything must be derived; computing it must not import the derivation.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from importlib.metadata import version
+from pathlib import Path
+from typing import Any
+
+from jointplay.description import canonical_json
+
+_EMITTING_MODULES = ("codegen.py", "laws.py", "symbolic.py", "to_casadi.py")
+
+
+def _generator_version() -> str:
+    """The package version plus a hash of the modules that decide the emitted text: any
+    change to the derivation or emission code changes the stamp, so stale cached models are
+    never reused (inspection and package glue are left out: they do not change the C)."""
+    h = hashlib.sha256()
+    for path in sorted(Path(__file__).parent / name for name in _EMITTING_MODULES):
+        h.update(path.name.encode())
+        h.update(path.read_bytes())
+    return f"{version('jointplay')}+{h.hexdigest()[:12]}"
+
+
+GENERATOR_VERSION = _generator_version()
+
+
+def provenance(structure: dict[str, Any]) -> dict[str, str]:
+    """What the emitted text depends on, and the hash that stamps it."""
+    versions = {"generator": GENERATOR_VERSION, "casadi": version("casadi"),
+                "sympy": version("sympy")}
+    inputs = {"structure": structure, **versions}
+    return {**versions,
+            "input_hash": hashlib.sha256(canonical_json(inputs).encode()).hexdigest()}
