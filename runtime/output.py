@@ -9,7 +9,7 @@ HDF5 layout (format "jointplay-result", version 1); every array carries attrs "u
   parameters with attr names); attrs scene_name, integrator, coordinate_names, coordinate_units,
   clearance_joints, torque_joints, parameter_names, format, format_version. q, u and udot mix
   angles and lengths, so they also carry per-column "column_units".
-* ``/impacts``: time, joint, speed.  ``/energy``: one dataset per energy component.
+* ``/impacts``: time, joint, speed, eccentricity.  ``/energy``: one dataset per energy component.
 * ``/metadata``: string metadata as attrs, other values as JSON attrs of ``/metadata/json``;
   solver statistics as the JSON text dataset ``/metadata/stats``.
 * ``/ideal``: the ideal-joint result, same layout (without format attrs), when present.
@@ -58,6 +58,7 @@ _IMPACTS: list[tuple[str, str, str]] = [
     ("time", "s", "onset of contact, located by event detection"),
     ("joint", "1", "1-based joint number"),
     ("speed", "m/s", "normal approach speed at onset (before flooring)"),
+    ("eccentricity", "m", "journal centre minus bearing centre at onset (ex, ey)"),
 ]
 
 

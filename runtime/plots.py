@@ -111,10 +111,7 @@ def plot_end_effector(result: SimulationResult, path: Path) -> Path:
 def impact_positions(result: SimulationResult, k: int) -> np.ndarray:
     """Eccentricity (m) at each impact of clearance joint number ``k`` (0-based column)."""
     joint = result.clearance_joints[k]
-    times = result.impacts.time[result.impacts.joint == joint]
-    ecc = result.eccentricity[:, k, :]
-    return np.column_stack([np.interp(times, result.t, ecc[:, 0]),
-                            np.interp(times, result.t, ecc[:, 1])]).reshape(-1, 2)
+    return result.impacts.eccentricity[result.impacts.joint == joint].reshape(-1, 2)
 
 
 def plot_orbit(result: SimulationResult, k: int, path: Path) -> Path:

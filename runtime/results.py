@@ -19,6 +19,7 @@ class Impacts:
     time: np.ndarray  # (m,) s, onset of contact located by event detection
     joint: np.ndarray  # (m,) int, 1-based joint number
     speed: np.ndarray  # (m,) m/s, normal approach speed d(delta)/dt at onset (before flooring)
+    eccentricity: np.ndarray  # (m, 2) m, journal centre minus bearing centre at onset
 
     def __len__(self) -> int:
         return int(self.time.size)

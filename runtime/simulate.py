@@ -228,14 +228,14 @@ class _Trajectory:
     v_imp: np.ndarray
     work: np.ndarray
     dissipated: np.ndarray
-    impacts: list[tuple[float, int, float]] = field(default_factory=list)
+    impacts: list[tuple[float, int, float, float, float]] = field(default_factory=list)
 
 
 class _EventState:
     """Contact flags and captured impact speeds of every clearance joint."""
 
     def __init__(self, pr: _Problem, x0: np.ndarray, t0: float,
-                 impacts: list[tuple[float, int, float]]) -> None:
+                 impacts: list[tuple[float, int, float, float, float]]) -> None:
         self.pr = pr
         self.flags = np.zeros(pr.nc)
         self.v_imp = np.zeros(pr.nc)
@@ -243,12 +243,16 @@ class _EventState:
         if pr.nc:
             c = pr.contact_at(x0, self.v_imp)
             for i in np.flatnonzero(c["delta"] > 0):
-                self.onset(int(i), t0, float(c["delta_dot"][i]))
+                self.onset(int(i), t0, float(c["delta_dot"][i]), x0)
 
-    def onset(self, i: int, t: float, speed: float) -> None:
+    def onset(self, i: int, t: float, speed: float, x: np.ndarray) -> None:
+        """Joint i (index into the clearance joints) comes into contact at state x."""
         self.flags[i] = 1.0
         self.v_imp[i] = speed
-        self.impacts.append((t, int(self.pr.model.clearance_joints[i]), speed))
+        joint = int(self.pr.model.clearance_joints[i])
+        ex, ey = (float(x[self.pr.model.coordinates.index(f"{axis}{joint}")])
+                  for axis in ("ex", "ey"))
+        self.impacts.append((t, joint, speed, ex, ey))
 
     def gap(self, x: np.ndarray) -> np.ndarray:
         """Per joint: > 0 where the penetration disagrees with the joint's flag."""
@@ -261,7 +265,7 @@ class _EventState:
         for i in joints:
             i = int(i)
             if self.flags[i] < 0.5:
-                self.onset(i, t, float(c["delta_dot"][i]))
+                self.onset(i, t, float(c["delta_dot"][i]), x)
             else:
                 self.flags[i] = 0.0
 
@@ -505,7 +509,8 @@ def _run_fixed(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumula
             for c in np.flatnonzero(onset):
                 theta = min(max(-delta_prev[c] / (deltas[j][c] - delta_prev[c]), 0.0), 1.0)
                 events.onset(int(c), float(t_start[j] + theta * h),
-                             float(rate_prev[c] + theta * (rates[j][c] - rate_prev[c])))
+                             float(rate_prev[c] + theta * (rates[j][c] - rate_prev[c])),
+                             x + theta * (states[j] - x))
             if np.any(onset):
                 # Steps from j on used a stale impact speed: redo them with the captured one.
                 redone = evaluate(batch_of(m - j), x, t_start[j:])
@@ -597,7 +602,8 @@ def _assemble(pr: _Problem, traj: _Trajectory, t: np.ndarray, stats: dict[str, A
         sliding_speed=get["v_t"],
         impacts=Impacts(time=np.array([i[0] for i in impacts], float),
                         joint=np.array([i[1] for i in impacts], int),
-                        speed=np.array([i[2] for i in impacts], float)),
+                        speed=np.array([i[2] for i in impacts], float),
+                        eccentricity=np.array([i[3:] for i in impacts], float).reshape(-1, 2)),
         energy=energy,
         parameter_names=list(model.parameters),
         parameters=p.copy(),
@@ -734,7 +740,7 @@ class Stepper:
         self.t = 0.0
         self.x = (np.asarray(x0, dtype=float).copy() if x0 is not None
                   else _initial_state(self.model, self.scene))
-        self.impacts: list[tuple[float, int, float]] = []
+        self.impacts: list[tuple[float, int, float, float, float]] = []
         self._events = _EventState(self._pr, self.x, 0.0, self.impacts)
         self.work = 0.0
         self.dissipated = 0.0

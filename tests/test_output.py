@@ -75,7 +75,7 @@ def make_ideal(n: int = 500) -> SimulationResult:
         radial_clearance=np.zeros(0), eccentricity=np.zeros((n, 0, 2)), penetration=empty,
         penetration_rate=empty, normal_force=empty, friction_force=empty,
         contact_force=np.zeros((n, 0, 2)), sliding_speed=empty,
-        impacts=Impacts(np.zeros(0), np.zeros(0, dtype=np.int64), np.zeros(0)),
+        impacts=Impacts(np.zeros(0), np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros((0, 2))),
         energy=_energy(t, u, pos[:, 1], np.zeros(n)), stats={"steps": 321},
         metadata={"compare": "ideal joints"})
 
@@ -102,7 +102,10 @@ def make_result(n: int = 500, ideal: bool = True) -> SimulationResult:
         ft.append(-FRICTION * fn[-1] * np.sign(nu))
         fc.append(-fn[-1][:, None] * nrm + ft[-1][:, None] * tan)
         vs.append(r * nu)
-        impact_rows += [(k / f, joint, c * AMPLITUDE * om) for k in range(1, int(f))]
+        # At an onset r = c: the journal centre sits on the clearance circle, at angle phi.
+        impact_rows += [(k / f, joint, c * AMPLITUDE * om,
+                         c * np.cos(0.3 * joint + nu * k / f), c * np.sin(0.3 * joint + nu * k / f))
+                        for k in range(1, int(f))]
     e = np.stack(ecc, axis=1)
     q_all = np.hstack([q, e.reshape(n, -1)])
     u_all = np.hstack([u, np.stack(decc, axis=1).reshape(n, -1)])
@@ -115,7 +118,8 @@ def make_result(n: int = 500, ideal: bool = True) -> SimulationResult:
     impact_rows.sort()
     impacts = Impacts(np.array([r[0] for r in impact_rows]),
                       np.array([r[1] for r in impact_rows], dtype=np.int64),
-                      np.array([r[2] for r in impact_rows]))
+                      np.array([r[2] for r in impact_rows]),
+                      np.array([r[3:] for r in impact_rows]).reshape(-1, 2))
     names = ["q1", "q2", "q3", "q4", "ex2", "ey2", "ex3", "ey3"]
     return SimulationResult(
         **_common(t, names, q_all, u_all, a_all),

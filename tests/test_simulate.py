@@ -145,6 +145,9 @@ def test_start_at_e_zero_default_scene_runs() -> None:
     assert np.all(result.eccentricity[0] == 0.0)
     assert len(result.impacts) >= 2  # both journals fall onto their bearings
     assert set(result.impacts.joint.tolist()) == {2, 3}
+    # Onsets are located on the clearance circle, to the gap tolerance (1e-4 c).
+    np.testing.assert_allclose(np.linalg.norm(result.impacts.eccentricity, axis=1), 30e-6,
+                               rtol=1.1e-4)
 
 
 # ---- divergence is an error, never a silent NaN -----------------------------------------------
