@@ -16,8 +16,10 @@ print(json.dumps({
     "jointplay": jointplay.__file__,
     "derive": jointplay.derive.__file__,
     "generated": jointplay.generated.__file__,
-    "bare": [n for n in ("derive", "runtime", "generated") if importlib.util.find_spec(n)],
+    "bare": [n for n in ("derive", "runtime", "generated", "scenes")
+             if importlib.util.find_spec(n)],
     "robot": (files("jointplay") / "robots" / "paper_4dof.toml").is_file(),
+    "scene": (files("jointplay.scenes") / "paper_4dof.toml").is_file(),
     "models": sorted(jointplay.generated.folders()),
 }))
 """
@@ -44,6 +46,7 @@ def test_installed_import_paths(tmp_path: Path) -> None:
     assert root.name in ("runtime", "jointplay")
     assert info["bare"] == [], "bare generic top-level names must not be importable"
     assert info["robot"]
+    assert info["scene"]
     assert "paper_4dof" in info["models"]
 
 
@@ -77,5 +80,6 @@ def test_regular_install_layout(tmp_path: Path) -> None:
     assert Path(info["generated"]) == target / "jointplay" / "generated" / "__init__.py"
     assert info["bare"] == []
     assert info["robot"]
+    assert info["scene"]
     assert info["models"] == ["paper_4dof"]
     assert (target / "jointplay" / "generated" / "paper_4dof" / "model.c").is_file()
