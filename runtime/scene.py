@@ -29,7 +29,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from jointplay.description import Joint, Robot, load_robot, robot_from_dict
+from jointplay.description import Joint, JointKind, Robot, load_robot, robot_from_dict
 from jointplay.errors import DescriptionError
 from jointplay.expressions import TimeFunction, load_torque_table, parse_expression
 
@@ -94,7 +94,7 @@ class Scene:
 
 def ideal_counterpart(robot: Robot) -> Robot:
     """The same robot with every clearance joint made ideal (and locked play made locked)."""
-    kinds = {"clearance": "ideal", "locked_clearance": "locked"}
+    kinds: dict[JointKind, JointKind] = {"clearance": "ideal", "locked_clearance": "locked"}
     joints = tuple(replace(j, kind=kinds.get(j.kind, j.kind)) for j in robot.joints)
     return replace(robot, joints=joints, name=f"{robot.name}_ideal")
 
