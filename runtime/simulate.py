@@ -40,8 +40,10 @@ from jointplay.scene import ADAPTIVE, Scene, ideal_counterpart
 EVENT_TIME_TOLERANCE = 1e-9
 # ... or once the penetration is within this fraction of the radial clearance of zero.
 GAP_TOLERANCE = 1e-4
-# Output intervals integrated per call of the adaptive integrators.
-CHUNK_OUTPUTS = 50
+# Output intervals integrated per call of the adaptive integrators, at most: a call restarts
+# the integrator, and what follows an event in a call is integrated again, so calls start at
+# one interval after an event and double while none occurs.
+CHUNK_OUTPUTS = 64
 # More transitions than this inside one output interval means contact chatter.
 MAX_EVENTS_PER_OUTPUT = 2000
 # Eccentricity rates are scaled by clearance / this time (s).
@@ -62,7 +64,7 @@ class _Accumulated:
         c = self.counts
         c["integrator_calls"] += 1
         c["steps"] += int(stats.get("nsteps", 0))
-        c["rhs_evaluations"] += int(stats.get("nfevals", 0)) + int(stats.get("n_call_daeF", 0))
+        c["rhs_evaluations"] += int(stats.get("nfevals", 0))
         c["jacobian_evaluations"] += int(stats.get("n_call_jacF", 0))
         c["error_test_failures"] += int(stats.get("netfails", 0))
 
@@ -293,8 +295,9 @@ def _run_adaptive(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accum
     x = x0.copy()
     traj.x[0] = x
     traj.v_imp[0] = events.v_imp
+    chunk = 1
     while k < n_out:
-        m = min(CHUNK_OUTPUTS, n_out - k)
+        m = min(chunk, n_out - k)
         xs, qs = integ.run(x, k * dt, m * dt, m, events.v_imp, events.flags, stats)
         hits = np.flatnonzero(np.any(qs[:, :nc] > 0, axis=1)) if nc else np.array([], int)
         accept = int(hits[0]) if hits.size else m
@@ -311,6 +314,9 @@ def _run_adaptive(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accum
             x = _resolve_interval(integ, pr, x, k * dt, dt, events, traj, k, stats)
             k += 1
             progress.update(1)
+            chunk = 1
+        else:
+            chunk = min(2 * chunk, CHUNK_OUTPUTS)
 
 
 def _resolve_interval(integ: _AdaptiveIntegrator, pr: _Problem, x: np.ndarray, ta: float,
