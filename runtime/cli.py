@@ -311,8 +311,10 @@ def make_parser() -> argparse.ArgumentParser:
                             "(repeatable; never recompiles)")
     p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p_sim.set_defaults(func=cmd_simulate)
-    from jointplay import sweep
+    from jointplay import control, identify, sweep
 
+    identify.register(sub)
+    control.register(sub)
     sweep.register(sub)
     return parser
 
