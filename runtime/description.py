@@ -382,17 +382,19 @@ _FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", 
                  "impact_speed_floor", "mu", "v0", "v1"}
 
 
-def _check_keys(table: Mapping[str, Any], allowed: Sequence[str], where: str) -> None:
+def check_keys(table: Any, allowed: Sequence[str], where: str,
+               source: str | None = None) -> None:
+    """Refuse a non-table or an unknown key, naming the nearest allowed key."""
     if not isinstance(table, Mapping):
         raise DescriptionError(where or "(top level)",
-                               f"must be a table, got {type(table).__name__}")
+                               f"must be a table, got {type(table).__name__}", source)
     for key in table:
         if key not in allowed:
             close = difflib.get_close_matches(key, allowed, n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
             prefix = f"{where}." if where else ""
             raise DescriptionError(f"{prefix}{key}",
-                                   f"unknown key (allowed: {', '.join(allowed)}){hint}")
+                                   f"unknown key (allowed: {', '.join(allowed)}){hint}", source)
 
 
 def _number(value: Any, where: str) -> float:
@@ -420,14 +422,14 @@ def robot_from_dict(data: Mapping[str, Any], source: str | None = None) -> Robot
 def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
     if "robot" in data and isinstance(data["robot"], Mapping):
         data = data["robot"]
-    _check_keys(data, _TOP_KEYS, "")
+    check_keys(data, _TOP_KEYS, "")
     raw_links = data.get("links")
     if not isinstance(raw_links, list) or not raw_links:
         raise DescriptionError("links", "must be a non-empty array of [[links]] tables "
                                         f"(1 to {MAX_LINKS} links)")
     links = []
     for i, raw in enumerate(raw_links, start=1):
-        _check_keys(raw, _LINK_KEYS, f"links[{i}]")
+        check_keys(raw, _LINK_KEYS, f"links[{i}]")
         missing = [key for key in _LINK_KEYS if key not in raw]
         if missing:
             raise DescriptionError(f"links[{i}].{missing[0]}", "is required")
@@ -437,7 +439,7 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
         raise DescriptionError("joints", "must be an array of [[joints]] tables")
     joints = []
     for i, raw in enumerate(raw_joints, start=1):
-        _check_keys(raw, _JOINT_KEYS, f"joints[{i}]")
+        check_keys(raw, _JOINT_KEYS, f"joints[{i}]")
         kind = raw.get("kind", "ideal")
         if isinstance(kind, list):
             raise DescriptionError(f"joints[{i}].kind",
@@ -450,9 +452,9 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
                                    f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
         joints.append(Joint(**_numbers(raw, f"joints[{i}]")))
     payload = data.get("payload", {})
-    _check_keys(payload, ("mass",), "payload")
+    check_keys(payload, ("mass",), "payload")
     gravity_raw = data.get("gravity", {})
-    _check_keys(gravity_raw, ("enabled", "vector"), "gravity")
+    check_keys(gravity_raw, ("enabled", "vector"), "gravity")
     vector = gravity_raw.get("vector", Gravity().vector)
     if not isinstance(vector, list | tuple) or len(vector) != 2:
         raise DescriptionError("gravity.vector", f"must be [gx, gy] in m/s^2, got {vector!r}")
@@ -460,11 +462,11 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
                       vector=(_number(vector[0], "gravity.vector"),
                               _number(vector[1], "gravity.vector")))
     contact_raw = data.get("contact", {})
-    _check_keys(contact_raw, tuple(vars(Contact())), "contact")
+    check_keys(contact_raw, tuple(vars(Contact())), "contact")
     friction_raw = data.get("friction", {})
-    _check_keys(friction_raw, tuple(vars(Friction())), "friction")
+    check_keys(friction_raw, tuple(vars(Friction())), "friction")
     drive_raw = data.get("drive", {})
-    _check_keys(drive_raw, ("enabled",), "drive")
+    check_keys(drive_raw, ("enabled",), "drive")
     name = data.get("name", "robot")
     if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
         raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
@@ -486,17 +488,25 @@ def _bool(value: Any, where: str) -> bool:
     return value
 
 
-def load_robot(path: str | Path) -> Robot:
-    """Read and validate a robot description TOML file (never executed: data only)."""
+def read_toml(path: str | Path, what: str) -> tuple[dict[str, Any], str]:
+    """The parsed document and its text; errors name the file (``what``: "robot", "scene"...)."""
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8")
-    except OSError as err:
-        raise DescriptionError("(file)", f"cannot read: {err.strerror}", str(path)) from None
+    except FileNotFoundError:
+        raise DescriptionError("(file)", f"not found; give the path of a {what} TOML file",
+                               str(path)) from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise DescriptionError("(file)", f"cannot be read ({err})", str(path)) from None
     try:
-        data = tomllib.loads(text)
+        return tomllib.loads(text), text
     except tomllib.TOMLDecodeError as err:
         raise DescriptionError("(toml)", f"malformed TOML: {err}", str(path)) from None
+
+
+def load_robot(path: str | Path) -> Robot:
+    """Read and validate a robot description TOML file (never executed: data only)."""
+    data, _ = read_toml(path, "robot")
     return robot_from_dict(data, source=str(path))
 
 

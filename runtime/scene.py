@@ -23,13 +23,20 @@ from __future__ import annotations
 
 import difflib
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from jointplay.description import Joint, JointKind, Robot, load_robot, robot_from_dict
+from jointplay.description import (
+    Joint,
+    JointKind,
+    Robot,
+    check_keys,
+    load_robot,
+    read_toml,
+    robot_from_dict,
+)
 from jointplay.errors import DescriptionError
 from jointplay.expressions import TimeFunction, load_torque_table, parse_expression
 
@@ -103,18 +110,6 @@ def _error(field_name: str, message: str, source: str | None) -> DescriptionErro
     return DescriptionError(field_name, message, source)
 
 
-def _check_keys(table: Any, allowed: tuple[str, ...], where: str, source: str | None) -> None:
-    if not isinstance(table, Mapping):
-        raise _error(where, f"must be a table, got {type(table).__name__}", source)
-    for key in table:
-        if key not in allowed:
-            close = difflib.get_close_matches(key, allowed, n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else ""
-            prefix = f"{where}." if where else ""
-            raise _error(f"{prefix}{key}",
-                         f"unknown key (allowed: {', '.join(allowed)}){hint}", source)
-
-
 def _finite_number(value: Any, where: str, source: str | None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise _error(where, f"must be a finite number in SI units, got {value!r}", source)
@@ -155,7 +150,7 @@ def _validate_run(run: RunSettings, source: str | None) -> None:
 
 
 def _run_settings(raw: Any, source: str | None) -> RunSettings:
-    _check_keys(raw, _RUN_KEYS, "run", source)
+    check_keys(raw, _RUN_KEYS, "run", source)
     values: dict[str, Any] = {}
     for key, value in raw.items():
         if key == "integrator":
@@ -186,7 +181,7 @@ def _robot(raw: Any, base: Path | None, source: str | None) -> Robot:
 
 
 def _constants(raw: Any, source: str | None) -> dict[str, float]:
-    _check_keys(raw, tuple(raw) if isinstance(raw, Mapping) else (), "constants", source)
+    check_keys(raw, tuple(raw) if isinstance(raw, Mapping) else (), "constants", source)
     out: dict[str, float] = {}
     for key, value in raw.items():
         if not key.isidentifier() or key.startswith("_") or key in ("t", "pi", "e"):
@@ -201,7 +196,7 @@ def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path 
              source: str | None) -> tuple[tuple[TimeFunction, ...], dict[str, str]]:
     driven = robot.moving_joints if robot.drive else ()
     keys = tuple(f"joint{j}" for j in driven)
-    _check_keys(raw, (*keys, "table"), "torques", source)
+    check_keys(raw, (*keys, "table"), "torques", source)
     if raw and not robot.drive:
         raise _error("torques", "the robot's drive is disabled (drive.enabled = false); "
                      "remove [torques] or enable the drive", source)
@@ -243,7 +238,7 @@ def _initial(raw: Any, robot: Robot, constants: Mapping[str, float],
              source: str | None) -> dict[str, float]:
     coords = coordinate_names(robot)
     allowed = (*coords, *[f"d{c}" for c in coords])
-    _check_keys(raw, allowed, "initial", source)
+    check_keys(raw, allowed, "initial", source)
     out: dict[str, float] = {}
     for key, value in raw.items():
         if isinstance(value, str):
@@ -266,7 +261,7 @@ def _initial(raw: Any, robot: Robot, constants: Mapping[str, float],
 def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Scene:
     """Validate a parsed scene document; relative paths resolve against ``base``."""
-    _check_keys(data, _TOP_KEYS, "", source)
+    check_keys(data, _TOP_KEYS, "", source)
     if "robot" not in data:
         raise _error("robot", "is required: a [robot] table or the path of a robot file",
                      source)
@@ -287,18 +282,8 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
 def load_scene(path: str | Path) -> Scene:
     """Read and validate a scene file."""
     path = Path(path)
+    data, text = read_toml(path, "scene")
     source = str(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise _error("(file)", "not found; give the path of a scene TOML file", source) \
-            from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise _error("(file)", f"cannot be read ({err})", source) from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
-        raise _error("(file)", f"is not valid TOML: {err}", source) from None
     return scene_from_dict(data, source=source, base=path.parent, text=text)
 
 

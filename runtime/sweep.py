@@ -30,7 +30,6 @@ import re
 import socket
 import threading
 import time
-import tomllib
 import uuid
 import zlib
 from collections import OrderedDict
@@ -41,7 +40,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from jointplay.description import Robot, parameter_layout, with_parameters
+from jointplay.description import (
+    Robot,
+    check_keys,
+    parameter_layout,
+    read_toml,
+    with_parameters,
+)
 from jointplay.errors import DescriptionError, JointplayError, SimulationError
 from jointplay.scene import RunSettings, Scene, default_scene, ideal_counterpart, load_scene
 
@@ -149,17 +154,6 @@ def _hint(word: str, choices: Iterable[str]) -> str:
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
-def _check_keys(table: Any, allowed: Sequence[str], where: str, source: str | None) -> None:
-    if not isinstance(table, Mapping):
-        raise _error(where or "(top level)", f"must be a table, got {type(table).__name__}",
-                     source)
-    for key in table:
-        if key not in allowed:
-            prefix = f"{where}." if where else ""
-            raise _error(f"{prefix}{key}", f"unknown key (allowed: {', '.join(allowed)})"
-                         f"{_hint(key, allowed)}", source)
-
-
 def _number(value: Any, where: str, source: str | None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise _error(where, f"must be a finite number, got {value!r}", source)
@@ -238,7 +232,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
                      + (f"; got {' and '.join(forms)}" if forms else ""), source)
     form = forms[0]
     if form == "values":
-        _check_keys(spec, ("values",), where, source)
+        check_keys(spec, ("values",), where, source)
         raw = spec["values"]
         if not isinstance(raw, list) or not raw:
             raise _error(f"{where}.values", "must be a non-empty list of numbers", source)
@@ -250,7 +244,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
         log = positive and max(values) / min(values) >= 100
         return Axis(name, "values", tuple(values), log)
     if form == "grid":
-        _check_keys(spec, GRID_KEYS, where, source)
+        check_keys(spec, GRID_KEYS, where, source)
         for key in ("start", "stop", "num"):
             if key not in spec:
                 raise _error(f"{where}.{key}", "is required for a grid (start, stop, num)",
@@ -278,7 +272,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
         raise _error(f"{where}.distribution", f"must be one of {', '.join(DISTRIBUTIONS)}, "
                      f"got {dist!r}{_hint(str(dist), DISTRIBUTIONS)}", source)
     params = DISTRIBUTIONS[dist]
-    _check_keys(spec, (*RANDOM_KEYS, *params), where, source)
+    check_keys(spec, (*RANDOM_KEYS, *params), where, source)
     for key in params:
         if key not in spec:
             raise _error(f"{where}.{key}", f"is required for a {dist} distribution "
@@ -309,7 +303,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
 
 
 def _run_overrides(raw: Any, scene: Scene, source: str | None) -> Scene:
-    _check_keys(raw, RUN_KEYS, "run", source)
+    check_keys(raw, RUN_KEYS, "run", source)
     changes: dict[str, Any] = {}
     for key, value in raw.items():
         if key == "integrator":
@@ -410,7 +404,7 @@ def case_key(scene: Scene, robot: Robot) -> str:
 def sweep_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Sweep:
     """Validate a parsed sweep document completely; relative paths resolve against ``base``."""
-    _check_keys(data, TOP_KEYS, "", source)
+    check_keys(data, TOP_KEYS, "", source)
     raw_scene = data.get("scene")
     if not isinstance(raw_scene, str) or not raw_scene:
         raise _error("scene", "is required: the path of a scene file (relative to the sweep "
@@ -486,18 +480,8 @@ def sweep_from_dict(data: Mapping[str, Any], *, source: str | None = None,
 def load_sweep(path: str | Path) -> Sweep:
     """Read and validate a sweep file (TOML, data only)."""
     path = Path(path)
+    data, text = read_toml(path, "sweep")
     source = str(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise _error("(file)", "not found; give the path of a sweep TOML file", source) \
-            from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise _error("(file)", f"cannot be read ({err})", source) from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
-        raise _error("(file)", f"is not valid TOML: {err}", source) from None
     return sweep_from_dict(data, source=source, base=path.parent, text=text)
 
 

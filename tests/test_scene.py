@@ -72,7 +72,7 @@ def test_a_scene_compiles_only_the_effects_it_asks_for(tmp_path: Path) -> None:
 
 
 BAD_SCENES = [
-    ("[run\nt_end = 1", "(file)", "not valid TOML"),
+    ("[run\nt_end = 1", "(toml)", "malformed TOML"),
     ("[runn]\nt_end = 1", "runn", "did you mean 'run'"),
     ("[run]\nt_end = 'two'", "run.t_end", "finite number"),
     ("[run]\nt_end = 0", "run.t_end", "> 0"),
