@@ -19,9 +19,25 @@ from jointplay.description import (
     uniform_chain,
     with_parameters,
 )
-from jointplay.errors import BuildError, DescriptionError, GeneratedCodeError, JointplayError
+from jointplay.errors import (
+    BuildError,
+    DescriptionError,
+    GeneratedCodeError,
+    JointplayError,
+    SimulationError,
+)
 from jointplay.model import FastFunction, Model, load_model
+from jointplay.results import Impacts, SimulationResult
 from jointplay.robotio import robot_to_toml
+from jointplay.scene import (
+    RunSettings,
+    Scene,
+    default_scene,
+    ideal_counterpart,
+    load_scene,
+    scene_from_dict,
+)
+from jointplay.simulation import Stepper, load_scene_model, simulate
 
 __version__ = "0.1.0"
 
@@ -33,21 +49,33 @@ __all__ = [
     "Friction",
     "GeneratedCodeError",
     "Gravity",
+    "Impacts",
     "Joint",
     "JointplayError",
     "Link",
     "Model",
     "Parameter",
     "Robot",
+    "RunSettings",
+    "Scene",
+    "SimulationError",
+    "SimulationResult",
+    "Stepper",
     "__version__",
     "cache_root",
     "compile_source",
     "default_robot",
+    "default_scene",
+    "ideal_counterpart",
     "load_model",
     "load_robot",
+    "load_scene",
+    "load_scene_model",
     "robot_from_dict",
     "robot_from_flags",
     "robot_to_toml",
+    "scene_from_dict",
+    "simulate",
     "uniform_chain",
     "with_parameters",
 ]

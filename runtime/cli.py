@@ -213,7 +213,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         except DescriptionError as err:
             raise DescriptionError(f"--set {err.field}", err.message) from None
 
-    from jointplay.simulate import load_scene_model, simulate
+    from jointplay.simulation import load_scene_model, simulate
 
     quiet = args.quiet
     t0 = time.perf_counter()
@@ -311,11 +311,12 @@ def make_parser() -> argparse.ArgumentParser:
                             "(repeatable; never recompiles)")
     p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p_sim.set_defaults(func=cmd_simulate)
-    from jointplay import control, identify, sweep
+    from jointplay import bench, control, identify, sweep
 
     identify.register(sub)
     control.register(sub)
     sweep.register(sub)
+    bench.register(sub)
     return parser
 
 

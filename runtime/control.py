@@ -391,7 +391,7 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
              clearance_model: Any | None = None) -> Run:
     """Step the scene's clearance robot with ``law(k, y)`` added to the scene's torques."""
     from jointplay.identify import measure
-    from jointplay.simulate import Stepper
+    from jointplay.simulation import Stepper
 
     stepper = Stepper(scene, model=clearance_model)
     joints = scene.robot.moving_joints
@@ -444,7 +444,7 @@ def computed_torque_law(scene: Any, ideal: Any, reference: np.ndarray, omega: fl
     """Computed torque with the ideal-joint model: tau = M(q)(qdd_r + kd e' + kp e) - f0(q,
     qdot); the scene's torque at the sample is subtracted because the stepper adds it."""
     from jointplay.scene import ideal_counterpart
-    from jointplay.simulate import load_scene_model
+    from jointplay.simulation import load_scene_model
 
     model = load_scene_model(scene, ideal=True)
     p = np.asarray(ideal_counterpart(scene.robot).parameter_values(), dtype=float)
@@ -629,7 +629,7 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *,
     ``analyse`` also measures the compiled step's cost and the nominal spectral radius.
     """
     from jointplay.identify import ideal_reference, reference_outputs
-    from jointplay.simulate import load_scene_model
+    from jointplay.simulation import load_scene_model
 
     ideal = ideal_reference(scene)
     reference = reference_outputs(ideal)

@@ -270,7 +270,7 @@ _MODELS: dict[str, Any] = {}
 
 
 def _models(scene: Any) -> tuple[Any, Any]:
-    from jointplay.simulate import load_scene_model
+    from jointplay.simulation import load_scene_model
 
     key = scene.robot.structure_hash()
     if key not in _MODELS:
@@ -281,7 +281,7 @@ def _models(scene: Any) -> tuple[Any, Any]:
 def ideal_reference(scene: Any, ideal_model: Any | None = None) -> Any:
     """The ideal-joint robot under the scene's torques: the motion the controller tracks."""
     from jointplay.scene import ideal_counterpart
-    from jointplay.simulate import load_scene_model, simulate
+    from jointplay.simulation import load_scene_model, simulate
 
     model = ideal_model or load_scene_model(scene, ideal=True)
     return simulate(scene.with_robot(ideal_counterpart(scene.robot)), model=model)
@@ -289,7 +289,7 @@ def ideal_reference(scene: Any, ideal_model: Any | None = None) -> Any:
 
 def run_task(task: _Task) -> Trajectory:
     """Simulate one identification trajectory (a worker's job)."""
-    from jointplay.simulate import Stepper
+    from jointplay.simulation import Stepper
 
     clearance, ideal_model = _models(task.scene)
     ideal = ideal_reference(task.scene, ideal_model)

@@ -495,7 +495,7 @@ _IDEAL_CACHE: OrderedDict[str, SimulationResult | BaseException] = OrderedDict()
 def _model(scene: Scene, ideal: bool) -> Model:
     """This thread's loaded model of the scene's structure (a compiled library is not shared
     between threads, whose calls would race on its buffers)."""
-    from jointplay.simulate import load_scene_model
+    from jointplay.simulation import load_scene_model
 
     models: dict[tuple[str, bool], Model] = _LOCAL.__dict__.setdefault("models", {})
     key = (scene.robot.structure_hash(), ideal)
@@ -511,7 +511,7 @@ def _ideal_result(case: Case, model: Model) -> tuple[SimulationResult, bool]:
     those share one ideal run (deterministic: reusing it gives the very same numbers).
     Returns the result and whether it was reused.
     """
-    from jointplay.simulate import simulate
+    from jointplay.simulation import simulate
 
     with _IDEAL_LOCK:
         hit = _IDEAL_CACHE.get(case.ideal_key)
@@ -597,7 +597,7 @@ def run_case(case: Case, *, series: bool = False,
     Runs on a worker (or in this process): the model is loaded from the compile cache once
     per worker thread. ``hook(case)`` is called first (instrumentation and fault injection).
     """
-    from jointplay.simulate import simulate
+    from jointplay.simulation import simulate
 
     if hook is not None:
         hook(case)
@@ -922,7 +922,7 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     """
     from tqdm import tqdm
 
-    from jointplay.simulate import load_scene_model
+    from jointplay.simulation import load_scene_model
 
     started = time.perf_counter()
     if not isinstance(sweep, Sweep):

@@ -23,7 +23,7 @@ from sim_fixtures import (
 
 from jointplay.errors import SimulationError
 from jointplay.scene import default_scene
-from jointplay.simulate import Stepper, simulate
+from jointplay.simulation import Stepper, simulate
 
 LAWS = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 

@@ -43,7 +43,7 @@ GAP_TOLERANCE = 1e-4
 # Output intervals integrated per call of the adaptive integrators, at most: a call restarts
 # the integrator, and what follows an event in a call is integrated again, so calls start at
 # one interval after an event and double while none occurs.
-CHUNK_OUTPUTS = 64
+CHUNK_OUTPUTS = 512
 # More transitions than this inside one output interval means contact chatter.
 MAX_EVENTS_PER_OUTPUT = 2000
 # Eccentricity rates are scaled by clearance / this time (s).
@@ -295,7 +295,7 @@ def _run_adaptive(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accum
     x = x0.copy()
     traj.x[0] = x
     traj.v_imp[0] = events.v_imp
-    chunk = 1
+    chunk = 1 if nc else n_out  # without clearance nothing can interrupt a call
     while k < n_out:
         m = min(chunk, n_out - k)
         xs, qs = integ.run(x, k * dt, m * dt, m, events.v_imp, events.flags, stats)
