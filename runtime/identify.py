@@ -31,6 +31,8 @@ import hashlib
 import json
 import math
 import os
+import shutil
+import tempfile
 import time
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field, replace
@@ -826,11 +828,23 @@ def inner_loop_for(scene: Any, kp: Sequence[float], kd: Sequence[float]) -> Inne
     return InnerLoop(joints, tuple(kp) or (DEFAULT_KP,) * n, tuple(kd) or (DEFAULT_KD,) * n)
 
 
+def check_finite(trajectories: Sequence[Trajectory]) -> None:
+    """Refuse training data with NaN or Inf, naming the run, the sample and the column."""
+    for k, traj in enumerate(trajectories):
+        for name in ("t", "y", "r", "v", "tau_base", "tau_inner"):
+            values = np.asarray(getattr(traj, name), dtype=float)
+            bad = np.argwhere(~np.isfinite(values))
+            if bad.size:
+                where = ", column ".join(str(int(i)) for i in bad[0])
+                raise DescriptionError(
+                    "training data", f"run {k} ({traj.split}, {traj.family}) has a non-finite "
+                    f"{name} at sample {where}: identification needs finite data; check the "
+                    "scene's torques and limits")
+
+
 def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False) -> dict[str,
                                                                                         Any]:
     """Collect the data, train, evaluate and write the model folder; return the metrics."""
-    from importlib.metadata import version
-
     dt = scene.run.output_step
     joints = tuple(scene.robot.moving_joints)
     inner = inner_loop_for(scene, config.kp, config.kd)
@@ -839,9 +853,27 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False)
         out.mkdir(parents=True, exist_ok=True)
     except OSError as err:
         raise DescriptionError("--out", f"cannot create folder {out}: {err}") from None
-    (out / "narx.json").unlink(missing_ok=True)  # the folder is a model only once training ends
+    # Everything is written into a staging folder and moved into ``out`` only once training
+    # and evaluation succeeded: a failed run leaves a previous model folder as it was.
+    stage = Path(tempfile.mkdtemp(prefix=".identify.", dir=out))
+    try:
+        metrics = _identify_into(scene, stage, config, inner, limits, joints, dt, quiet)
+        (out / "narx.json").unlink(missing_ok=True)  # a model only once every file is in
+        for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, "narx.json"):
+            os.replace(stage / name, out / name)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+    return metrics
+
+
+def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLoop,
+                   limits: np.ndarray, joints: tuple[int, ...], dt: float,
+                   quiet: bool) -> dict[str, Any]:
+    from importlib.metadata import version
+
     t0 = time.perf_counter()
     trajectories = collect(scene, config, inner, limits, quiet)
+    check_finite(trajectories)
     t1 = time.perf_counter()
     names_out, units_out = output_names(joints)
     names_in, units_in = input_names(joints)

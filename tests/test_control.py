@@ -369,3 +369,35 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     for m in result.metrics.values():
         assert all(np.isfinite(v) for v in m.values())
     assert result.per_call_us > 0
+    # A failed rerun into the same folder leaves the finished model as it was.
+    before = {name: (out / name).read_bytes() for name in ("narx.json", "metrics.json")}
+    import jointplay.identify as identify_module
+
+    def failing(*args: Any, **kwargs: Any) -> None:
+        raise RuntimeError("training failed")
+
+    original = identify_module.train_narx
+    identify_module.train_narx = failing  # type: ignore[assignment]
+    try:
+        with pytest.raises(RuntimeError, match="training failed"):
+            identify(scene, out, config, quiet=True)
+    finally:
+        identify_module.train_narx = original
+    assert {name: (out / name).read_bytes() for name in before} == before
+    assert sorted(p.name for p in out.iterdir()) == ["datasets.h5", "metrics.json", "narx.json",
+                                                      "report.md"]
+
+
+def test_training_data_with_nan_is_refused() -> None:
+    from jointplay.identify import Trajectory, check_finite
+
+    n = 5
+    good = Trajectory(split="train", family="multisine", seed=0, t=np.arange(n) * 1e-3,
+                      y=np.zeros((n, 3)), r=np.zeros((n, 3)), v=np.zeros((n, 2)),
+                      tau_base=np.zeros((n, 2)), tau_inner=np.zeros((n, 2)))
+    check_finite([good])
+    y = good.y.copy()
+    y[3, 1] = np.nan
+    bad = replace(good, y=y)
+    with pytest.raises(DescriptionError, match=r"non-finite y at sample 3, column 1"):
+        check_finite([good, bad])
