@@ -23,8 +23,9 @@ from pathlib import Path
 from jointplay.errors import BuildError
 from jointplay.files import atomic_write_text
 
-# -O1: on CasADi's straight-line C, -O2/-O3 took 2-8x longer to compile for no measurable
-# gain in run time (see README, "Build times"). -fno-math-errno lets sqrt/pow inline.
+# -O1: on CasADi's straight-line C, -O2 compiled 1.3-1.4x longer for 5-30 % faster calls at
+# 4 links, -O3 no faster than -O2 (README, "Build times"); compile time is what grows with the
+# link count. -fno-math-errno lets sqrt/pow inline.
 DEFAULT_CFLAGS: tuple[str, ...] = ("-O1", "-fPIC", "-shared", "-fno-math-errno")
 LIBRARY_NAME = "model.so"
 MARKER_NAME = "complete.json"
