@@ -113,8 +113,8 @@ def horizon_gain(narx: Narx, horizon: int) -> np.ndarray:
     f = narx.casadi_function()
     ny, nu = narx.n_outputs, narx.n_inputs
     v = ca.MX.sym("v", nu)
-    ys = [ca.DM.zeros(ny)] * narx.output_lags
-    us = [v] + [ca.DM.zeros(nu)] * (narx.input_lags - 1)
+    ys: list[Any] = [ca.DM.zeros(ny)] * narx.output_lags
+    us: list[Any] = [v] + [ca.DM.zeros(nu)] * (narx.input_lags - 1)
     for _ in range(horizon):
         nxt = f(ca.vertcat(*ys, *us))
         ys = [nxt, *ys[:-1]]
