@@ -48,6 +48,8 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
+from jointplay.bench import per_call_seconds
+
 PAPER = "paper"
 STRUCTURES = ("clearance", "ideal")
 SECTION = re.compile(r"^/\* (\w+):\(", re.MULTILINE)
@@ -96,36 +98,6 @@ def _state(model: Any, params: Any, rng: Any) -> Any:
     return x
 
 
-def _time_per_call(fn: Callable[[], Any], repeats: int, batch_s: float) -> float:
-    """Median seconds per call over ``repeats`` batches sized to take about ``batch_s``."""
-    import gc
-
-    fn()
-    number = 1
-    while True:  # calibrate the batch size
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fn()
-        elapsed = time.perf_counter() - t0
-        if elapsed >= batch_s / 4 or number >= 1 << 22:
-            break
-        number *= 4
-    number = max(1, int(number * batch_s / max(elapsed, 1e-9)))
-    samples = []
-    gc_was_enabled = gc.isenabled()
-    gc.disable()
-    try:
-        for _ in range(repeats):
-            t0 = time.perf_counter()
-            for _ in range(number):
-                fn()
-            samples.append((time.perf_counter() - t0) / number)
-    finally:
-        if gc_was_enabled:
-            gc.enable()
-    return statistics.median(samples)
-
-
 def _interleaved(fns: dict[str, Callable[[], Any]], repeats: int, batch_s: float
                  ) -> dict[str, float]:
     """Like :func:`_time_per_call` for several functions, in alternating rounds."""
@@ -134,7 +106,7 @@ def _interleaved(fns: dict[str, Callable[[], Any]], repeats: int, batch_s: float
     samples: dict[str, list[float]] = {name: [] for name in fns}
     for _ in range(rounds):
         for name, fn in fns.items():
-            samples[name].append(_time_per_call(fn, per_round, batch_s))
+            samples[name].append(per_call_seconds(fn, per_round, batch_s))
     return {name: statistics.median(values) for name, values in samples.items()}
 
 
@@ -213,11 +185,11 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
 
         repeats, batch_s = spec["repeats"], spec["batch_s"]
         per_call = {
-            "fd_trigger_us": _time_per_call(fd.trigger, repeats, batch_s),
-            "jac_trigger_us": _time_per_call(jac.trigger, repeats, batch_s),
-            "fd_call_us": _time_per_call(lambda: fd(*fd_args), repeats, batch_s),
-            "jac_call_us": _time_per_call(lambda: jac(*jac_args), repeats, batch_s),
-            "fd_casadi_us": _time_per_call(lambda: fd.function(*fd_args), repeats, batch_s),
+            "fd_trigger_us": per_call_seconds(fd.trigger, repeats, batch_s),
+            "jac_trigger_us": per_call_seconds(jac.trigger, repeats, batch_s),
+            "fd_call_us": per_call_seconds(lambda: fd(*fd_args), repeats, batch_s),
+            "jac_call_us": per_call_seconds(lambda: jac(*jac_args), repeats, batch_s),
+            "fd_casadi_us": per_call_seconds(lambda: fd.function(*fd_args), repeats, batch_s),
         }
         row: dict[str, Any] = {
             "structure": spec["structure"],

@@ -49,7 +49,6 @@ from __future__ import annotations
 
 import argparse
 import functools
-import gc
 import math
 import os
 import statistics
@@ -68,6 +67,7 @@ from jointplay.bench import (
     final_state_error,
     machine_facts,
     markdown_table,
+    per_call_seconds,
     prepare_out_dir,
     run_counts,
     state_scale,
@@ -441,34 +441,6 @@ def jointplay_lsoda_rhs(model: Any, scene: Any) -> PeerRhs:
 
 
 # ---- timing helpers ------------------------------------------------------------------------------
-
-
-def per_call_seconds(fn: Callable[[], Any], repeats: int = 7, batch_s: float = 0.05) -> float:
-    """Median seconds per call over ``repeats`` batches sized to take about ``batch_s``."""
-    fn()
-    number = 1
-    while True:
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fn()
-        elapsed = time.perf_counter() - t0
-        if elapsed >= batch_s / 4 or number >= 1 << 22:
-            break
-        number *= 4
-    number = max(1, int(number * batch_s / max(elapsed, 1e-9)))
-    samples = []
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        for _ in range(repeats):
-            t0 = time.perf_counter()
-            for _ in range(number):
-                fn()
-            samples.append((time.perf_counter() - t0) / number)
-    finally:
-        if enabled:
-            gc.enable()
-    return statistics.median(samples)
 
 
 def cpu_runs(fn: Callable[[], Any], repeats: int) -> tuple[Any, list[float]]:

@@ -39,7 +39,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -226,6 +226,37 @@ def reference_solution(scene: Scene, model: Model, *, rtol: float = REFERENCE_RT
     return Reference(result=ref.result, label=run_label(ref_scene), cpu_s=ref.cpu_s[0],
                      check_label=run_label(check_scene), check_cpu_s=second.cpu_s[0],
                      agreement=all_errors(second.result, ref.result))
+
+
+def per_call_seconds(fn: Callable[[], Any], repeats: int = 7, batch_s: float = 0.05) -> float:
+    """Median seconds per call over ``repeats`` batches sized to take about ``batch_s``
+    (batch size calibrated first; the garbage collector off while timing)."""
+    import gc
+
+    fn()
+    number = 1
+    while True:
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        elapsed = time.perf_counter() - t0
+        if elapsed >= batch_s / 4 or number >= 1 << 22:
+            break
+        number *= 4
+    number = max(1, int(number * batch_s / max(elapsed, 1e-9)))
+    samples = []
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            for _ in range(number):
+                fn()
+            samples.append((time.perf_counter() - t0) / number)
+    finally:
+        if enabled:
+            gc.enable()
+    return statistics.median(samples)
 
 
 # ---- work-precision -----------------------------------------------------------------------
