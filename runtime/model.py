@@ -65,6 +65,10 @@ class FastFunction:
     def trigger(self) -> None:
         self._trigger()
 
+    def stats(self) -> dict[str, Any]:
+        """Statistics of the last call (for integrators: steps, evaluations...)."""
+        return dict(self._buffer.stats())
+
     def __call__(self, *args: Any) -> list[np.ndarray]:
         if len(args) != len(self.inputs):
             raise TypeError(f"{self.name} takes {len(self.inputs)} inputs "
