@@ -705,7 +705,7 @@ def simulate(scene: Scene, *, model: Model | None = None,
         if isinstance(parameters, Mapping):
             ideal_params = {k: v for k, v in parameters.items()
                             if k in ideal_model.parameters}
-        ideal_result = simulate(ideal_scene.with_run(), model=ideal_model,
+        ideal_result = simulate(ideal_scene, model=ideal_model,
                                 parameters=ideal_params, quiet=quiet)
     pr = _Problem(model, scene, p)
     run = scene.run
