@@ -48,7 +48,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from jointplay.bench import per_call_seconds
+from jointplay.bench import cpu_name, per_call_seconds
 
 PAPER = "paper"
 STRUCTURES = ("clearance", "ideal")
@@ -370,14 +370,7 @@ def write_atomic(path: Path, text: str) -> None:
 def machine_facts() -> dict[str, str]:
     from jointplay.build import DEFAULT_CFLAGS, compiler_version
 
-    cpu = platform.processor() or platform.machine()
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
+    cpu = cpu_name()
     import casadi
     import numpy
     import sympy
