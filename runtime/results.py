@@ -12,17 +12,82 @@ from typing import Any
 import numpy as np
 
 
+# Columns of the contact-phase table beyond the four an impact always had, with their units.
+PHASE_FIELDS: tuple[tuple[str, str, str], ...] = (
+    ("onset_angle", "rad", "position of the onset on the bearing, atan2(ey, ex)"),
+    ("peak_force", "N", "largest normal force of the phase (located on the dense output)"),
+    ("peak_force_time", "s", "when it occurs"),
+    ("max_penetration", "m", "largest penetration of the phase (d(delta)/dt = 0, located)"),
+    ("max_penetration_time", "s", "when it occurs"),
+    ("separation_time", "s", "end of the phase (located); NaN while still in contact at the end"),
+    ("exit_speed", "m/s", "separation speed -d(delta)/dt at separation; NaN without separation"),
+    ("duration", "s", "separation_time - time, or the run's end - time without separation"),
+    ("restitution", "1", "effective restitution exit_speed / speed; NaN without separation"),
+    ("impulse", "N s", "integral of the normal force over the phase"),
+    ("damping_energy", "J", "energy taken out by the hysteresis damping during the phase"),
+    ("friction_energy", "J", "energy taken out by friction during the phase"),
+    ("separated", "bool", "True: ended in separation; False: still in continuous contact"),
+)
+
+
+def _empty(n: int = 0) -> np.ndarray:
+    return np.full(n, np.nan)
+
+
 @dataclass(frozen=True)
 class Impacts:
-    """One row per impact (onset of contact at a clearance joint), in time order."""
+    """One row per contact phase (an impact and what follows until separation), onset order.
+
+    Every time and extremum is located (events on the penetration and its rate, maxima on the
+    integrator's dense output), never read off the output samples. ``time``, ``joint``,
+    ``speed`` and ``eccentricity`` describe the onset; the rest (see :data:`PHASE_FIELDS`)
+    describe the phase. Runs with a fixed-step method fill only the onset columns (the rest
+    NaN); see the README.
+    """
 
     time: np.ndarray  # (m,) s, onset of contact located by event detection
     joint: np.ndarray  # (m,) int, 1-based joint number
     speed: np.ndarray  # (m,) m/s, normal approach speed d(delta)/dt at onset (before flooring)
     eccentricity: np.ndarray  # (m, 2) m, journal centre minus bearing centre at onset
+    onset_angle: np.ndarray = field(default_factory=_empty)
+    peak_force: np.ndarray = field(default_factory=_empty)
+    peak_force_time: np.ndarray = field(default_factory=_empty)
+    max_penetration: np.ndarray = field(default_factory=_empty)
+    max_penetration_time: np.ndarray = field(default_factory=_empty)
+    separation_time: np.ndarray = field(default_factory=_empty)
+    exit_speed: np.ndarray = field(default_factory=_empty)
+    duration: np.ndarray = field(default_factory=_empty)
+    restitution: np.ndarray = field(default_factory=_empty)
+    impulse: np.ndarray = field(default_factory=_empty)
+    damping_energy: np.ndarray = field(default_factory=_empty)
+    friction_energy: np.ndarray = field(default_factory=_empty)
+    separated: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+
+    def __post_init__(self) -> None:
+        # Tables built from the four onset columns alone get NaN phase columns of their length.
+        m = int(np.asarray(self.time).size)
+        for name, _, _ in PHASE_FIELDS:
+            value = np.asarray(getattr(self, name))
+            if value.size != m:
+                fill = np.zeros(m, dtype=bool) if name == "separated" else _empty(m)
+                object.__setattr__(self, name, fill)
+        if np.asarray(self.eccentricity).size == 0:
+            object.__setattr__(self, "eccentricity", np.zeros((m, 2)) if m == 0
+                               else np.full((m, 2), np.nan))
 
     def __len__(self) -> int:
         return int(self.time.size)
+
+    def for_joint(self, joint: int) -> Impacts:
+        """The rows of one clearance joint (1-based joint number)."""
+        rows = np.asarray(self.joint) == joint
+        return Impacts(**{name: np.asarray(getattr(self, name))[rows]
+                          for name in self.column_names()})
+
+    @staticmethod
+    def column_names() -> tuple[str, ...]:
+        return ("time", "joint", "speed", "eccentricity",
+                *(name for name, _, _ in PHASE_FIELDS))
 
 
 @dataclass(frozen=True)
