@@ -37,7 +37,7 @@ from jointplay.scene import (
     load_scene,
     scene_from_dict,
 )
-from jointplay.simulation import Stepper, load_scene_model, simulate
+from jointplay.sim import Stepper, load_scene_model, simulate
 
 __version__ = "0.1.0"
 

@@ -11,7 +11,6 @@ from typing import Any
 
 import numpy as np
 
-
 # Columns of the contact-phase table beyond the four an impact always had, with their units.
 PHASE_FIELDS: tuple[tuple[str, str, str], ...] = (
     ("onset_angle", "rad", "position of the onset on the bearing, atan2(ey, ex)"),

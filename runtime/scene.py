@@ -16,7 +16,7 @@ compiled, and never executed: torque expressions go through the restricted parse
     [run]
     t_end = 2.0
     output_step = 1e-3
-    integrator = "cvodes"    # cvodes | idas | rk4 | radau
+    integrator = "bdf"       # bdf | cvodes | idas | rk4 | radau
 """
 
 from __future__ import annotations
@@ -40,8 +40,8 @@ from jointplay.description import (
 from jointplay.errors import DescriptionError
 from jointplay.expressions import TimeFunction, load_torque_table, parse_expression
 
-INTEGRATORS: tuple[str, ...] = ("cvodes", "idas", "rk4", "radau")
-ADAPTIVE: tuple[str, ...] = ("cvodes", "idas")
+INTEGRATORS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
+ADAPTIVE: tuple[str, ...] = ("bdf", "cvodes", "idas")
 
 _TOP_KEYS = ("name", "description", "robot", "constants", "torques", "initial", "run")
 _RUN_KEYS = ("t_end", "output_step", "integrator", "rtol", "atol", "step", "max_steps")
@@ -60,7 +60,7 @@ class RunSettings:
 
     t_end: float = 2.0
     output_step: float = 1e-3
-    integrator: str = "cvodes"
+    integrator: str = "bdf"
     rtol: float = 1e-6
     atol: float = 1e-5
     step: float = 1e-5

@@ -1,0 +1,186 @@
+"""The simulator: a scene's robot integrated through its contact events.
+
+Rooms: ``problem`` (model, parameters, torques, scaling, contact flags), ``bdf`` with
+``native`` and ``driver.c`` (the default method: a whole run in compiled code, events
+included), ``casadi_methods`` (CVODES and IDAS through CasADi, the independent reference),
+``fixed`` (compiled RK4 and Radau IIA steps at a fixed step) and ``assemble`` (every derived
+output). :func:`simulate` runs a scene; :class:`Stepper` advances it one sample at a time for
+closed loops.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from jointplay.model import Model
+from jointplay.results import SimulationResult
+from jointplay.scene import ADAPTIVE, Scene, ideal_counterpart
+from jointplay.sim.assemble import _assemble
+from jointplay.sim.bdf import native_integrator, run_bdf, torque_fields
+from jointplay.sim.casadi_methods import _AdaptiveIntegrator, _resolve_interval, _run_adaptive
+from jointplay.sim.fixed import _run_fixed
+from jointplay.sim.native import raise_for_status
+from jointplay.sim.problem import (
+    _Accumulated,
+    _EventState,
+    _initial_state,
+    _nearest_contact_joint,
+    _parameter_vector,
+    _Problem,
+    _Trajectory,
+    load_scene_model,
+)
+
+__all__ = ["Stepper", "load_scene_model", "simulate"]
+
+
+def simulate(scene: Scene, *, model: Model | None = None,
+             parameters: Mapping[str, float] | Sequence[float] | None = None,
+             compare_ideal: bool = False, quiet: bool = True) -> SimulationResult:
+    """Simulate ``scene`` and return every output as numpy arrays.
+
+    ``parameters`` overrides numbers of the scene's robot by name (``{"friction.mu": 0.1}``)
+    or replaces the whole vector; this never recompiles. ``compare_ideal`` also simulates the
+    same scene with ideal joints (``result.ideal``). Raises :class:`SimulationError` with the
+    time, the joint and the cause when the integration cannot go on.
+    """
+    from tqdm import tqdm
+
+    model = model or load_scene_model(scene)
+    p = _parameter_vector(model, scene, parameters)
+    ideal_result = None
+    if compare_ideal:
+        ideal_scene = scene.with_robot(ideal_counterpart(scene.robot))
+        ideal_model = load_scene_model(scene, ideal=True)
+        ideal_params = None
+        if isinstance(parameters, Mapping):
+            ideal_params = {k: v for k, v in parameters.items()
+                            if k in ideal_model.parameters}
+        ideal_result = simulate(ideal_scene, model=ideal_model,
+                                parameters=ideal_params, quiet=quiet)
+    pr = _Problem(model, scene, p)
+    run = scene.run
+    n_out = run.n_outputs
+    t = np.arange(n_out + 1) * run.output_step
+    traj = _Trajectory(x=np.zeros((n_out + 1, model.n_state)),
+                       v_imp=np.zeros((n_out + 1, pr.nc)),
+                       work=np.zeros(n_out + 1), dissipated=np.zeros(n_out + 1))
+    x0 = _initial_state(model, scene)
+    stats = _Accumulated()
+    start = time.perf_counter()
+    with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,
+              desc=f"{scene.name} ({run.integrator})") as progress:
+        phases = None
+        if run.integrator == "bdf":
+            phases = run_bdf(pr, x0, traj, stats, progress)
+        elif run.integrator in ADAPTIVE:
+            _run_adaptive(pr, x0, traj, stats, progress)
+        else:
+            _run_fixed(pr, x0, traj, stats, progress)
+    wall = time.perf_counter() - start
+    counts: dict[str, Any] = dict(stats.counts)
+    return _assemble(pr, traj, t, counts, wall, ideal_result, phases)
+
+
+
+class Stepper:
+    """The scene's robot advanced one sample at a time, with torques added and held (ZOH).
+
+    For closed-loop control and identification: ``step(u)`` integrates one sample period with
+    the scene's own torques plus ``u`` held constant, through contact events exactly as
+    :func:`simulate` does (adaptive integrators only), and returns the new state. With the
+    default ``bdf`` the integrator object lives in C across samples; a change of ``u``
+    restarts its history (the right-hand side jumps there).
+    """
+
+    def __init__(self, scene: Scene, *, model: Model | None = None,
+                 parameters: Mapping[str, float] | Sequence[float] | None = None,
+                 sample_time: float | None = None) -> None:
+        run = scene.run
+        if run.integrator not in ADAPTIVE:
+            raise ValueError(f"Stepper needs an adaptive integrator ({', '.join(ADAPTIVE)}), "
+                             f"got {run.integrator!r}")
+        self.model = model or load_scene_model(scene)
+        self.scene = scene
+        self._pr = _Problem(self.model, scene, _parameter_vector(self.model, scene, parameters))
+        self._native = run.integrator == "bdf"
+        if self._native:
+            self._bdf = native_integrator(self._pr)
+        else:
+            self._integ = _AdaptiveIntegrator(self._pr, run.integrator, run.rtol, run.atol,
+                                              run.max_steps)
+        self.sample_time = float(sample_time or run.output_step)
+        self.stats = _Accumulated()
+        self.reset()
+
+    @property
+    def parameters(self) -> np.ndarray:
+        return self._pr.p
+
+    def reset(self, x0: np.ndarray | None = None) -> None:
+        """Back to t = 0 at ``x0`` (default: the scene's initial state)."""
+        self.t = 0.0
+        self.x = (np.asarray(x0, dtype=float).copy() if x0 is not None
+                  else _initial_state(self.model, self.scene))
+        self.impacts: list[tuple[float, int, float, float, float]] = []
+        self.work = 0.0
+        self.dissipated = 0.0
+        if self._native:
+            self._bdf.reset(self.x)
+            self._bdf.hold(np.full(len(self.model.torque_joints), np.nan))  # force a start
+            self._seen_phases = 0
+            self._v_imp = self._bdf.flags()[1]
+        else:
+            self._events = _EventState(self._pr, self.x, 0.0, self.impacts)
+
+    def step(self, u: Sequence[float] | np.ndarray) -> np.ndarray:
+        """Advance one sample with the added torques ``u`` (one per driven joint, N m)."""
+        pr = self._pr
+        pr.u_hold[:] = np.asarray(u, dtype=float)
+        if self._native:
+            return self._step_native()
+        traj = _Trajectory(x=np.zeros((2, pr.nx)), v_imp=np.zeros((2, pr.nc)),
+                           work=np.array([self.work, 0.0]),
+                           dissipated=np.array([self.dissipated, 0.0]), impacts=self.impacts)
+        self.x = _resolve_interval(self._integ, pr, self.x, self.t, self.sample_time,
+                                   self._events, traj, 0, self.stats)
+        self.t += self.sample_time
+        self.work, self.dissipated = float(traj.work[1]), float(traj.dissipated[1])
+        return self.x
+
+    def _step_native(self) -> np.ndarray:
+        pr, integ = self._pr, self._bdf
+        integ.hold(pr.u_hold)
+        t_next = self.t + self.sample_time
+        values, speeds, status = integ.integrate(t_next, np.array([t_next]))
+        if status:
+            raise_for_status(status, integ, torque_fields(pr),
+                             lambda: _nearest_contact_joint(pr, self.x, self._v_imp))
+        self.t = t_next
+        self.x = values[0, :pr.nx].copy()
+        self._v_imp = speeds[0]
+        self.work = float(values[0, pr.nx])
+        if pr.nc:
+            self.dissipated = float(values[0, pr.nx + 1:].reshape(pr.nc, 3)[:, 1:].sum())
+        rows = integ.phases()
+        for row in rows[self._seen_phases:]:
+            joint = int(self.model.clearance_joints[int(row[0])])
+            self.impacts.append((float(row[1]), joint, float(row[2]), float(row[3]),
+                                 float(row[4])))
+        self._seen_phases = rows.shape[0]
+        counts = integ.stats()
+        self.stats.counts.update({k: counts[k] for k in ("steps", "rhs_evaluations",
+                                                         "jacobian_evaluations", "events")})
+        self.stats.counts["impacts"] = len(self.impacts)
+        return self.x
+
+    def end_effector(self) -> dict[str, np.ndarray]:
+        """Tip position, velocity and acceleration at the current state and held torque."""
+        pr = self._pr
+        v_imp = self._v_imp if self._native else self._events.v_imp
+        xdot = self.model.forward_dynamics(self.x, pr.tau(self.t)[0], pr.p, v_imp)
+        return self.model.end_effector(self.x, xdot[pr.n:], pr.p)

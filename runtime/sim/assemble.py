@@ -1,0 +1,122 @@
+"""From integrated states to a SimulationResult: every derived quantity, mapped over samples."""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from jointplay.model import Model
+from jointplay.results import Impacts, SimulationResult
+from jointplay.sim.native import map_function
+from jointplay.sim.problem import _Problem, _Trajectory
+
+
+def _mapped(model: Model, name: str, columns: Sequence[np.ndarray]) -> list[np.ndarray]:
+    """Evaluate a compiled function on many samples at once (inputs as columns, outputs as
+    (size, samples) like CasADi's map), in one C loop over the samples."""
+    count = max(c.shape[1] if c.ndim == 2 else 1 for c in columns)
+    rows = [np.ascontiguousarray(c.T) if c.ndim == 2 and c.shape[1] == count and count > 1
+            else np.ascontiguousarray(c[:, 0] if c.ndim == 2 else c) for c in columns]
+    return [o.T for o in map_function(model, name, rows, count)]
+
+
+def _assemble(pr: _Problem, traj: _Trajectory, t: np.ndarray, stats: dict[str, Any],
+              wall: float, ideal: SimulationResult | None,
+              phases: Impacts | None = None) -> SimulationResult:
+    model, p, n, nc = pr.model, pr.p, pr.n, pr.nc
+    xs = traj.x.T
+    tau = pr.tau(t)
+    ps = np.repeat(p[:, None], t.size, axis=1)
+    vs = traj.v_imp.T
+    xdot = _mapped(model, "forward_dynamics", [xs, tau.T, ps, vs])[0]
+    udot = xdot[n:].T
+    tip = _mapped(model, "end_effector", [xs, udot.T, ps])
+    energy_parts = _mapped(model, "energy", [xs, ps])
+    energy = {name: energy_parts[i].ravel()
+              for i, name in enumerate(("kinetic", "gravity", "contact", "total"))}
+    energy["drive_work"] = traj.work.copy()
+    energy["dissipated"] = traj.dissipated.copy()
+    energy["balance"] = energy["total"] - energy["total"][0] - traj.work + traj.dissipated
+    if nc:
+        c = _mapped(model, "contact", [xs, ps, vs])
+        names = model.casadi_function("contact").name_out()
+        get = {name: c[i].T for i, name in enumerate(names)}
+        ecc = np.stack([traj.x[:, [model.coordinates.index(f"ex{j}"),
+                                   model.coordinates.index(f"ey{j}")]]
+                        for j in model.clearance_joints], axis=1)
+        clearance = np.array([p[model.parameters.index(f"joint{j}.bearing_radius")]
+                              - p[model.parameters.index(f"joint{j}.journal_radius")]
+                              for j in model.clearance_joints])
+        contact_force = np.stack([get["f_x"], get["f_y"]], axis=2)
+    else:
+        zeros = np.zeros((t.size, 0))
+        get = {k: zeros for k in ("delta", "delta_dot", "f_n", "f_t", "v_t")}
+        ecc = np.zeros((t.size, 0, 2))
+        clearance = np.zeros(0)
+        contact_force = np.zeros((t.size, 0, 2))
+    if phases is None:  # the Python event loops record onsets only
+        rows = traj.impacts
+        phases = Impacts(time=np.array([i[0] for i in rows], float),
+                         joint=np.array([i[1] for i in rows], int),
+                         speed=np.array([i[2] for i in rows], float),
+                         eccentricity=np.array([i[3:] for i in rows], float).reshape(-1, 2))
+    stats = {**stats, "impacts": len(phases), "wall_time_s": wall,
+             "realtime_factor": wall / float(t[-1]) if t[-1] > 0 else math.nan}
+    return SimulationResult(
+        scene_name=pr.scene.name,
+        integrator=pr.scene.run.integrator,
+        t=t,
+        coordinate_names=list(model.coordinates),
+        q=traj.x[:, :n].copy(),
+        u=traj.x[:, n:].copy(),
+        udot=udot,
+        tau=tau,
+        torque_joints=list(model.torque_joints),
+        tip_position=tip[0].T,
+        tip_velocity=tip[1].T,
+        tip_acceleration=tip[2].T,
+        clearance_joints=list(model.clearance_joints),
+        radial_clearance=clearance,
+        eccentricity=ecc,
+        penetration=get["delta"],
+        penetration_rate=get["delta_dot"],
+        normal_force=get["f_n"],
+        friction_force=get["f_t"],
+        contact_force=contact_force,
+        sliding_speed=get["v_t"],
+        impacts=phases,
+        energy=energy,
+        parameter_names=list(model.parameters),
+        parameters=p.copy(),
+        stats=stats,
+        metadata=_metadata(pr),
+        ideal=ideal,
+    )
+
+
+@functools.cache
+def _versions() -> dict[str, str]:
+    from importlib.metadata import version
+
+    return {pkg: version(pkg) for pkg in ("jointplay", "casadi", "numpy")}
+
+
+def _metadata(pr: _Problem) -> dict[str, Any]:
+
+    scene = pr.scene
+    return {
+        "scene": scene.text,
+        "scene_source": scene.source or "",
+        "torques": dict(scene.torque_text),
+        "run": {k: getattr(scene.run, k) for k in ("t_end", "output_step", "integrator",
+                                                    "rtol", "atol", "step", "max_steps")},
+        "model_input_hash": pr.model.layout.input_hash,
+        "model_name": pr.model.name,
+        "versions": _versions(),
+    }
+
+

@@ -1,0 +1,988 @@
+/* jointplay's compiled integration loop: a whole run, events included, in one call.
+ *
+ * Method: variable-order (1-5), quasi-constant step size BDF in the NDF form of Shampine and
+ * Reichelt ("The MATLAB ODE Suite", SIAM J. Sci. Comput. 18, 1997), with backward differences
+ * kept as an array D and rescaled when the step changes. Simplified Newton on I - c J, the
+ * Jacobian refreshed only when Newton fails to converge with a stale one, the LU refreshed when
+ * c changes. Dense output is the interpolating polynomial of the differences.
+ *
+ * The model is CasADi-generated C in another shared library; its functions are called through
+ * pointers with CasADi's calling convention (arg, res, iw, w, mem). Drive torques are a small
+ * postfix program per driven joint (or a piecewise-linear table), so a scene's torques need no
+ * compiler. Quadratures (drive work, and per clearance joint the normal impulse, the energy
+ * taken out by damping and by friction) ride in the same difference array, outside Newton and
+ * outside the error test, like CVODES's quadratures with errconQ off.
+ *
+ * Events, per clearance joint, checked on the dense output at the end and at interior points of
+ * every accepted step:
+ * - onset (penetration delta crosses 0 upwards while the joint is free): the crossing is located
+ *   on the dense output to round-off, the step is redone to land exactly there (the model's
+ *   damping after the onset depends on the approach speed captured at it), and the approach
+ *   speed d(delta)/dt is captured;
+ * - separation (delta crosses 0 downwards while in contact): located, recorded;
+ * - maximum penetration (d(delta)/dt crosses 0 downwards in contact) and peak normal force
+ *   (dF_n/dt crosses 0 downwards, the derivative by a central difference along the dense
+ *   output): located, recorded per phase.
+ * The state is scaled: eccentricities in units of their joint's clearance, so one absolute
+ * tolerance means the same for angles and micrometre play.
+ */
+#include <math.h>
+#include <signal.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef long long jp_int; /* casadi_int of the generated code (checked from Python) */
+typedef int (*casadi_eval)(const double **arg, double **res, jp_int *iw, double *w, int mem);
+
+enum { MAX_ORDER = 5, NEWTON_MAXITER = 4, INTERIOR = 3 };
+enum {
+  JP_OK = 0, JP_TOO_MUCH_WORK = 1, JP_STEP_COLLAPSED = 2, JP_NONFINITE = 3,
+  JP_INTERRUPTED = 4, JP_BAD_TORQUE = 5, JP_CHATTER = 6, JP_NO_MEMORY = 7
+};
+
+/* Torque program opcodes. */
+enum {
+  OP_CONST = 0, OP_TIME = 1, OP_NEG = 2, OP_ADD = 3, OP_SUB = 4, OP_MUL = 5, OP_DIV = 6,
+  OP_POW = 7, OP_SIN = 8, OP_COS = 9, OP_TAN = 10, OP_EXP = 11, OP_LOG = 12, OP_SQRT = 13,
+  OP_ABS = 14, OP_TANH = 15, OP_SINH = 16, OP_COSH = 17, OP_ATAN = 18, OP_MIN = 19,
+  OP_MAX = 20, OP_STEP = 21
+};
+#define STACK_DEPTH 256
+
+typedef struct {
+  casadi_eval eval;
+  jp_int n_in, n_out, sz_arg, sz_res, sz_iw, sz_w;
+  const jp_int *sparsity_out0; /* CCS pattern of output 0 (for the Jacobian) */
+} jp_function;
+
+/* Everything a run needs, filled from Python (mirrored by a ctypes Structure). */
+typedef struct {
+  int nq, nx, nc, ntau, np;
+  const double *p;          /* np parameters */
+  const double *scale;      /* nx: state = scale * z */
+  const int *ecc_index;     /* 2 nc: coordinate index of ex_j, ey_j */
+  const double *clearance;  /* nc */
+  const int *drive_index;   /* ntau: coordinate index of each driven angle */
+  /* torques: per driven joint a program [start, start+len) in ops/consts, or a table */
+  const int *torque_kind;   /* ntau: 0 program, 1 table */
+  const int *torque_start, *torque_len;
+  const int *ops;
+  const double *consts;
+  const double *table_t, *table_v; /* tables: [start, start+len) */
+  double rtol, atol, h_max, h_init;
+  long max_steps;           /* steps allowed between two outputs */
+  long max_events;          /* event locations allowed between two outputs */
+  jp_function f, jac, contact;
+} jp_config;
+
+/* One contact phase: see jointplay.results.Impacts. */
+enum {
+  PH_JOINT, PH_T_ON, PH_V_ON, PH_EX, PH_EY, PH_F_PEAK, PH_T_F, PH_D_MAX, PH_T_D,
+  PH_T_OFF, PH_V_OFF, PH_IMPULSE, PH_DAMPING, PH_FRICTION, PH_FIELDS
+};
+
+typedef struct {
+  jp_config c;
+  int N;           /* nx + quadratures */
+  int nquad;
+  /* integrator state */
+  double t, h, h_abs;
+  int order, n_equal_steps, have_lu, current_jac, started;
+  double *D;       /* (MAX_ORDER + 3) x N, row k = k-th difference */
+  double *D_save;
+  double *J, *LU; int *piv;
+  double *y_pred, *psi, *d, *y_new, *f_buf, *dy, *scal, *err, *work_n;
+  double *xs, *xdot;           /* unscaled state and its derivative */
+  double *tau, *u_hold;
+  double *v_imp, *flags;       /* per clearance joint */
+  int *armed;                  /* penetration has been positive since the onset */
+  int *rising;                 /* normal force rising at the end of the last step */
+  double *tmp_y, *tmp_y2;
+  /* CasADi work */
+  const double **arg; double **res; jp_int *iw; double *w;
+  double *jac_sparse, *c_out; /* contact outputs: 8 x nc */
+  /* phases */
+  double *phases; long n_phases, cap_phases;
+  long *open_phase;            /* per joint: row of the open phase or -1 */
+  /* statistics */
+  long n_steps, n_rhs, n_jac, n_lu, n_err_fail, n_newton_fail, n_events, n_onsets;
+  double last_safety, last_err_norm, t_old, h_abs_old; int order_old, n_equal_old;
+  /* failure */
+  int status; double fail_t; int fail_joint; double fail_h;
+} jp_sim;
+
+static volatile sig_atomic_t jp_interrupted = 0;
+static void jp_on_sigint(int sig) { (void)sig; jp_interrupted = 1; }
+
+/* ---- small helpers ------------------------------------------------------------------------ */
+
+static double rms(int n, const double *x, const double *scal) {
+  double s = 0.0;
+  for (int i = 0; i < n; ++i) { double v = x[i] / scal[i]; s += v * v; }
+  return sqrt(s / n);
+}
+
+static int all_finite(int n, const double *x) {
+  for (int i = 0; i < n; ++i) if (!isfinite(x[i])) return 0;
+  return 1;
+}
+
+static double torque_program(const jp_config *c, int k, double t, int *ok) {
+  double stack[STACK_DEPTH]; int sp = 0;
+  const int *op = c->ops + c->torque_start[k];
+  const double *cs = c->consts + c->torque_start[k];
+  for (int i = 0; i < c->torque_len[k]; ++i) {
+    switch (op[i]) {
+      case OP_CONST: stack[sp++] = cs[i]; break;
+      case OP_TIME: stack[sp++] = t; break;
+      case OP_NEG: stack[sp - 1] = -stack[sp - 1]; break;
+      case OP_ADD: sp--; stack[sp - 1] += stack[sp]; break;
+      case OP_SUB: sp--; stack[sp - 1] -= stack[sp]; break;
+      case OP_MUL: sp--; stack[sp - 1] *= stack[sp]; break;
+      case OP_DIV: sp--; stack[sp - 1] /= stack[sp]; break;
+      case OP_POW: sp--; stack[sp - 1] = pow(stack[sp - 1], stack[sp]); break;
+      case OP_SIN: stack[sp - 1] = sin(stack[sp - 1]); break;
+      case OP_COS: stack[sp - 1] = cos(stack[sp - 1]); break;
+      case OP_TAN: stack[sp - 1] = tan(stack[sp - 1]); break;
+      case OP_EXP: stack[sp - 1] = exp(stack[sp - 1]); break;
+      case OP_LOG: stack[sp - 1] = log(stack[sp - 1]); break;
+      case OP_SQRT: stack[sp - 1] = sqrt(stack[sp - 1]); break;
+      case OP_ABS: stack[sp - 1] = fabs(stack[sp - 1]); break;
+      case OP_TANH: stack[sp - 1] = tanh(stack[sp - 1]); break;
+      case OP_SINH: stack[sp - 1] = sinh(stack[sp - 1]); break;
+      case OP_COSH: stack[sp - 1] = cosh(stack[sp - 1]); break;
+      case OP_ATAN: stack[sp - 1] = atan(stack[sp - 1]); break;
+      case OP_MIN: sp--; stack[sp - 1] = fmin(stack[sp - 1], stack[sp]); break;
+      case OP_MAX: sp--; stack[sp - 1] = fmax(stack[sp - 1], stack[sp]); break;
+      case OP_STEP: stack[sp - 1] = stack[sp - 1] >= 0.0 ? 1.0 : 0.0; break;
+      default: *ok = 0; return NAN;
+    }
+  }
+  return sp == 1 ? stack[0] : (*ok = 0, NAN);
+}
+
+static double torque_table(const jp_config *c, int k, double t) {
+  const double *ts = c->table_t + c->torque_start[k];
+  const double *vs = c->table_v + c->torque_start[k];
+  int n = c->torque_len[k];
+  if (t <= ts[0]) return vs[0];
+  if (t >= ts[n - 1]) return vs[n - 1];
+  int lo = 0, hi = n - 1;
+  while (hi - lo > 1) { int mid = (lo + hi) / 2; if (ts[mid] <= t) lo = mid; else hi = mid; }
+  double s = (t - ts[lo]) / (ts[hi] - ts[lo]);
+  return vs[lo] + s * (vs[hi] - vs[lo]);
+}
+
+/* tau = scene torques at t + held torques; 0 if all finite, else 1 + index of the bad one. */
+static int torques_at(jp_sim *s, double t) {
+  const jp_config *c = &s->c;
+  for (int k = 0; k < c->ntau; ++k) {
+    int ok = 1;
+    double v = c->torque_kind[k] == 0 ? torque_program(c, k, t, &ok) : torque_table(c, k, t);
+    v += s->u_hold[k];
+    if (!ok || !isfinite(v)) return k + 1;
+    s->tau[k] = v;
+  }
+  return 0;
+}
+
+static int call(jp_sim *s, const jp_function *fn) {
+  return fn->eval(s->arg, s->res, s->iw, s->w, 0);
+}
+
+/* Unscaled state xs from the scaled one z. */
+static void unscale(jp_sim *s, const double *z) {
+  for (int i = 0; i < s->c.nx; ++i) s->xs[i] = z[i] * s->c.scale[i];
+}
+
+/* dz/dt of the state part (scaled) at (t, z); returns 0 on success. */
+static int rhs(jp_sim *s, double t, const double *z, double *dz) {
+  const jp_config *c = &s->c;
+  int bad = torques_at(s, t);
+  if (bad) { s->status = JP_BAD_TORQUE; s->fail_t = t; s->fail_joint = bad - 1; return -1; }
+  unscale(s, z);
+  s->arg[0] = s->xs; s->arg[1] = s->tau; s->arg[2] = c->p; s->arg[3] = s->v_imp;
+  s->res[0] = s->xdot;
+  if (call(s, &c->f)) return 1;
+  s->n_rhs++;
+  for (int i = 0; i < c->nx; ++i) dz[i] = s->xdot[i] / c->scale[i];
+  return all_finite(c->nx, dz) ? 0 : 1;
+}
+
+/* Contact outputs at unscaled state xs: c_out[k * nc + j], k in delta, delta_dot, v_t, f_n,
+ * f_t, f_x, f_y, dissipation. */
+static void contact_at(jp_sim *s) {
+  const jp_config *c = &s->c;
+  s->arg[0] = s->xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
+  for (int k = 0; k < 8; ++k) s->res[k] = s->c_out + k * c->nc;
+  call(s, &c->contact);
+}
+
+/* Quadrature integrands at scaled state z (torques already at t): drive power, then per joint
+ * normal force, damping power, friction power; all in the order of the quadrature block. */
+static void quadrature_rates(jp_sim *s, const double *z, double *g) {
+  const jp_config *c = &s->c;
+  unscale(s, z);
+  double power = 0.0;
+  for (int k = 0; k < c->ntau; ++k) power += s->tau[k] * s->xs[c->nq + c->drive_index[k]];
+  g[0] = power;
+  if (c->nc) {
+    contact_at(s);
+    int nc = c->nc;
+    for (int j = 0; j < nc; ++j) {
+      double fn = s->c_out[3 * nc + j], ft = s->c_out[4 * nc + j], vt = s->c_out[2 * nc + j];
+      double diss = s->c_out[7 * nc + j];
+      double friction = -ft * vt;
+      g[1 + 3 * j] = fn;
+      g[2 + 3 * j] = diss - friction;
+      g[3 + 3 * j] = friction;
+    }
+  }
+}
+
+/* Penetration and its rate of joint j from an unscaled state. */
+static void gap(const jp_sim *s, const double *xs, int j, double *delta, double *rate) {
+  const jp_config *c = &s->c;
+  int ix = c->ecc_index[2 * j], iy = c->ecc_index[2 * j + 1];
+  double ex = xs[ix], ey = xs[iy], vx = xs[c->nq + ix], vy = xs[c->nq + iy];
+  double floor = 1e-6 * c->clearance[j];
+  double e = sqrt(fmax(ex * ex + ey * ey, floor * floor));
+  *delta = e - c->clearance[j];
+  if (rate) *rate = (ex * vx + ey * vy) / e;
+}
+
+/* ---- dense linear algebra (row-major n x n, partial pivoting) -------------------------------- */
+
+static int lu_factor(int n, double *a, int *piv) {
+  for (int k = 0; k < n; ++k) {
+    int p = k; double big = fabs(a[k * n + k]);
+    for (int i = k + 1; i < n; ++i) if (fabs(a[i * n + k]) > big) { big = fabs(a[i * n + k]); p = i; }
+    piv[k] = p;
+    if (big == 0.0) return 1;
+    if (p != k) for (int j = 0; j < n; ++j) { double tmp = a[k * n + j]; a[k * n + j] = a[p * n + j]; a[p * n + j] = tmp; }
+    double inv = 1.0 / a[k * n + k];
+    for (int i = k + 1; i < n; ++i) {
+      double l = a[i * n + k] *= inv;
+      if (l != 0.0) for (int j = k + 1; j < n; ++j) a[i * n + j] -= l * a[k * n + j];
+    }
+  }
+  return 0;
+}
+
+static void lu_solve(int n, const double *a, const int *piv, double *b) {
+  for (int k = 0; k < n; ++k) { int p = piv[k]; if (p != k) { double tmp = b[k]; b[k] = b[p]; b[p] = tmp; } }
+  for (int i = 1; i < n; ++i) { double sum = b[i]; for (int j = 0; j < i; ++j) sum -= a[i * n + j] * b[j]; b[i] = sum; }
+  for (int i = n - 1; i >= 0; --i) { double sum = b[i]; for (int j = i + 1; j < n; ++j) sum -= a[i * n + j] * b[j]; b[i] = sum / a[i * n + i]; }
+}
+
+/* ---- BDF machinery -------------------------------------------------------------------------- */
+
+static const double KAPPA[MAX_ORDER + 1] = {0.0, -0.1850, -1.0 / 9.0, -0.0823, -0.0415, 0.0};
+static double GAMMA[MAX_ORDER + 2], ALPHA[MAX_ORDER + 1], ERRCONST[MAX_ORDER + 2];
+
+static void bdf_constants(void) {
+  GAMMA[0] = 0.0;
+  for (int k = 1; k <= MAX_ORDER + 1; ++k) GAMMA[k] = GAMMA[k - 1] + 1.0 / k;
+  for (int k = 0; k <= MAX_ORDER; ++k) {
+    ALPHA[k] = (1.0 - KAPPA[k]) * GAMMA[k];
+    ERRCONST[k] = KAPPA[k] * GAMMA[k] + 1.0 / (k + 1);
+  }
+  ERRCONST[MAX_ORDER + 1] = 1.0 / (MAX_ORDER + 2);
+}
+
+/* R(order, factor): the matrix that rescales differences to a step factor * h. */
+static void compute_r(int order, double factor, double *r /* (order+1)^2 */) {
+  int m = order + 1;
+  for (int j = 0; j < m; ++j) r[j] = 1.0;
+  for (int i = 1; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      r[i * m + j] = j == 0 ? 0.0 : r[(i - 1) * m + j] * (i - 1 - factor * j) / i;
+  /* row 0 stays 1 except its first entry, which the cumulative product keeps at 1 */
+}
+
+static void change_d(jp_sim *s, double factor) {
+  int m = s->order + 1, N = s->N;
+  double R[(MAX_ORDER + 1) * (MAX_ORDER + 1)], U[(MAX_ORDER + 1) * (MAX_ORDER + 1)];
+  double RU[(MAX_ORDER + 1) * (MAX_ORDER + 1)];
+  compute_r(s->order, factor, R);
+  compute_r(s->order, 1.0, U);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      double sum = 0.0;
+      for (int k = 0; k < m; ++k) sum += R[i * m + k] * U[k * m + j];
+      RU[i * m + j] = sum;
+    }
+  /* D[:m] = RU^T D[:m] */
+  double *tmp = s->work_n; /* needs m * N: work_n has (MAX_ORDER + 3) * N */
+  for (int i = 0; i < m; ++i)
+    for (int col = 0; col < N; ++col) {
+      double sum = 0.0;
+      for (int k = 0; k < m; ++k) sum += RU[k * m + i] * s->D[k * N + col];
+      tmp[i * N + col] = sum;
+    }
+  memcpy(s->D, tmp, (size_t)m * N * sizeof(double));
+}
+
+/* Dense output of the last step at time t into y (N values). */
+static void dense(const jp_sim *s, double t, double *y) {
+  int N = s->N, order = s->order;
+  memcpy(y, s->D, N * sizeof(double));
+  double p = 1.0;
+  for (int k = 0; k < order; ++k) {
+    double shift = s->t - s->h * k, denom = s->h * (1 + k);
+    p *= (t - shift) / denom;
+    const double *row = s->D + (k + 1) * N;
+    for (int i = 0; i < N; ++i) y[i] += p * row[i];
+  }
+}
+
+static int jacobian(jp_sim *s, double t, const double *z) {
+  const jp_config *c = &s->c;
+  int nx = c->nx;
+  if (torques_at(s, t)) return 1;
+  unscale(s, z);
+  s->arg[0] = s->xs; s->arg[1] = s->tau; s->arg[2] = c->p; s->arg[3] = s->v_imp;
+  s->arg[4] = NULL;
+  s->res[0] = s->jac_sparse;
+  for (int k = 1; k < c->jac.n_out; ++k) s->res[k] = NULL;
+  if (call(s, &c->jac)) return 1;
+  s->n_jac++;
+  memset(s->J, 0, (size_t)nx * nx * sizeof(double));
+  const jp_int *sp = c->jac.sparsity_out0; /* nrow, ncol, colind[ncol+1], row[nnz] */
+  jp_int ncol = sp[1];
+  const jp_int *colind = sp + 2, *row = sp + 2 + ncol + 1;
+  for (jp_int col = 0; col < ncol; ++col)
+    for (jp_int k = colind[col]; k < colind[col + 1]; ++k) {
+      jp_int r = row[k];
+      /* scaled: dz_r/dz_col = J_rc * scale_col / scale_r */
+      s->J[r * nx + col] = s->jac_sparse[k] * c->scale[col] / c->scale[r];
+    }
+  return all_finite(nx * nx, s->J) ? 0 : 1;
+}
+
+static void quad_scale(jp_sim *s, const double *y, double *scal) {
+  for (int i = 0; i < s->c.nx; ++i) scal[i] = s->c.atol + s->c.rtol * fabs(y[i]);
+}
+
+/* Start (or restart) at (t, z): order 1, a step from the initial-step heuristic. */
+static int bdf_start(jp_sim *s, double t, const double *z, const double *quad, double t_bound) {
+  const jp_config *c = &s->c;
+  int N = s->N, nx = c->nx;
+  memset(s->D, 0, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
+  memcpy(s->D, z, nx * sizeof(double));
+  memcpy(s->D + nx, quad, s->nquad * sizeof(double));
+  double *f0 = s->f_buf, *f1 = s->dy, *y1 = s->tmp_y;
+  int rc = rhs(s, t, z, f0);
+  if (rc) { if (rc > 0) { s->status = JP_NONFINITE; s->fail_t = t; } return 1; }
+  double h;
+  if (c->h_init > 0) {
+    h = c->h_init;
+  } else {
+    quad_scale(s, z, s->scal);
+    double d0 = rms(nx, z, s->scal), d1 = rms(nx, f0, s->scal);
+    double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+    for (int i = 0; i < nx; ++i) y1[i] = z[i] + h0 * f0[i];
+    rc = rhs(s, t + h0, y1, f1);
+    if (rc) { if (rc > 0) { s->status = JP_NONFINITE; s->fail_t = t; } return 1; }
+    for (int i = 0; i < nx; ++i) f1[i] -= f0[i];
+    double d2 = rms(nx, f1, s->scal) / h0;
+    double h1 = (d1 <= 1e-15 && d2 <= 1e-15) ? fmax(1e-6, h0 * 1e-3)
+                                              : pow(0.01 / fmax(d1, d2), 0.5);
+    h = fmin(100 * h0, h1);
+  }
+  h = fmin(h, c->h_max);
+  if (t_bound > t) h = fmin(h, t_bound - t);
+  /* quadrature rates at the start (torques are at t from the first rhs call) */
+  rc = torques_at(s, t);
+  quadrature_rates(s, z, s->tmp_y2);
+  for (int i = 0; i < nx; ++i) s->D[N + i] = f0[i] * h;
+  for (int i = 0; i < s->nquad; ++i) s->D[N + nx + i] = s->tmp_y2[i] * h;
+  s->t = t; s->h_abs = h; s->h = h; s->order = 1; s->n_equal_steps = 0;
+  s->have_lu = 0; s->current_jac = 0; s->started = 1;
+  if (jacobian(s, t, z)) { s->status = JP_NONFINITE; s->fail_t = t; return 1; }
+  s->current_jac = 1;
+  return 0;
+}
+
+/* One Newton solve of the BDF system. Returns 1 when converged. */
+static int newton(jp_sim *s, double t_new, double c_coef, double tol, int *iters) {
+  const jp_config *c = &s->c;
+  int nx = c->nx;
+  memset(s->d, 0, nx * sizeof(double));
+  memcpy(s->y_new, s->y_pred, nx * sizeof(double));
+  double dy_norm_old = -1.0;
+  for (int k = 0; k < NEWTON_MAXITER; ++k) {
+    *iters = k + 1;
+    int rc = rhs(s, t_new, s->y_new, s->f_buf);
+    if (rc < 0) return -1; /* bad torque: fatal */
+    if (rc) return 0;
+    for (int i = 0; i < nx; ++i) s->dy[i] = c_coef * s->f_buf[i] - s->psi[i] - s->d[i];
+    lu_solve(nx, s->LU, s->piv, s->dy);
+    double dy_norm = rms(nx, s->dy, s->scal);
+    double rate = dy_norm_old > 0 ? dy_norm / dy_norm_old : -1.0;
+    if (rate >= 0 && (rate >= 1 || pow(rate, NEWTON_MAXITER - k) / (1 - rate) * dy_norm > tol))
+      return 0;
+    for (int i = 0; i < nx; ++i) { s->y_new[i] += s->dy[i]; s->d[i] += s->dy[i]; }
+    if (dy_norm == 0 || (rate >= 0 && rate / (1 - rate) * dy_norm < tol)) return 1;
+    dy_norm_old = dy_norm;
+  }
+  return 0;
+}
+
+/* Take one step, not past t_bound. Returns 0 on success (the step is in s->D, s->t), else 1
+ * with s->status set. On success the pre-step differences are kept in D_save for a redo. */
+static int bdf_step(jp_sim *s, double t_bound) {
+  const jp_config *c = &s->c;
+  int N = s->N, nx = c->nx, nq = s->nquad;
+  double newton_tol = fmax(10 * 2.220446049250313e-16 / c->rtol, fmin(0.03, sqrt(c->rtol)));
+  double h_abs = s->h_abs;
+  if (h_abs > c->h_max) { change_d(s, c->h_max / h_abs); h_abs = c->h_max; s->have_lu = 0; }
+  for (;;) {
+    double min_step = 16 * 2.220446049250313e-16 * fmax(fabs(s->t), 1e-300);
+    if (h_abs < min_step || h_abs < 1e-15) {
+      s->status = JP_STEP_COLLAPSED; s->fail_t = s->t; s->fail_h = h_abs; return 1;
+    }
+    double h = h_abs, t_new = s->t + h;
+    if (t_new > t_bound) {
+      t_new = t_bound; h = t_new - s->t;
+      change_d(s, h / h_abs); h_abs = h; s->have_lu = 0;
+    }
+    int order = s->order;
+    for (int i = 0; i < N; ++i) {
+      double sum = 0.0;
+      for (int k = 0; k <= order; ++k) sum += s->D[k * N + i];
+      s->y_pred[i] = sum;
+    }
+    quad_scale(s, s->y_pred, s->scal);
+    for (int i = 0; i < N; ++i) {
+      double sum = 0.0;
+      for (int k = 1; k <= order; ++k) sum += s->D[k * N + i] * GAMMA[k];
+      s->psi[i] = sum / ALPHA[order];
+    }
+    double c_coef = h / ALPHA[order];
+    int converged = 0, iters = 0;
+    for (;;) {
+      if (!s->have_lu) {
+        for (int i = 0; i < nx * nx; ++i) s->LU[i] = -c_coef * s->J[i];
+        for (int i = 0; i < nx; ++i) s->LU[i * nx + i] += 1.0;
+        s->n_lu++;
+        if (lu_factor(nx, s->LU, s->piv)) { converged = 0; s->have_lu = 0; break; }
+        s->have_lu = 1;
+      }
+      converged = newton(s, t_new, c_coef, newton_tol, &iters);
+      if (converged < 0) return 1;
+      if (converged || s->current_jac) break;
+      if (jacobian(s, t_new, s->y_pred)) break;
+      s->current_jac = 1; s->have_lu = 0;
+    }
+    if (!converged) {
+      s->n_newton_fail++;
+      change_d(s, 0.5); h_abs *= 0.5; s->n_equal_steps = 0; s->have_lu = 0;
+      continue;
+    }
+    double safety = 0.9 * (2 * NEWTON_MAXITER + 1) / (2 * NEWTON_MAXITER + iters);
+    quad_scale(s, s->y_new, s->scal);
+    for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order] * s->d[i];
+    double err_norm = rms(nx, s->err, s->scal);
+    s->last_err_norm = err_norm;
+    if (err_norm > 1.0) {
+      s->n_err_fail++;
+      double factor = fmax(0.2, safety * pow(err_norm, -1.0 / (order + 1)));
+      change_d(s, factor); h_abs *= factor; s->n_equal_steps = 0; s->have_lu = 0;
+      continue;
+    }
+    /* accepted: quadratures explicitly at the converged state */
+    torques_at(s, t_new);
+    quadrature_rates(s, s->y_new, s->tmp_y2);
+    for (int i = 0; i < nq; ++i) {
+      double di = c_coef * s->tmp_y2[i] - s->psi[nx + i];
+      s->d[nx + i] = di;
+      s->y_new[nx + i] = s->y_pred[nx + i] + di;
+    }
+    memcpy(s->D_save, s->D, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
+    s->t_old = s->t; s->h_abs_old = h_abs; s->order_old = order;
+    s->n_equal_old = s->n_equal_steps;
+    s->n_steps++;
+    s->n_equal_steps++;
+    s->t = t_new; s->h = h; s->h_abs = h_abs;
+    s->current_jac = 0;
+    double *D = s->D;
+    for (int i = 0; i < N; ++i) {
+      D[(order + 2) * N + i] = s->d[i] - D[(order + 1) * N + i];
+      D[(order + 1) * N + i] = s->d[i];
+    }
+    for (int k = order; k >= 0; --k)
+      for (int i = 0; i < N; ++i) D[k * N + i] += D[(k + 1) * N + i];
+    s->last_safety = safety;
+    return 0;
+  }
+}
+
+/* After an accepted step (and its events): choose the order and step of the next one. */
+static void bdf_adapt(jp_sim *s) {
+  int order = s->order, N = s->N, nx = s->c.nx;
+  if (s->n_equal_steps < order + 1) return;
+  quad_scale(s, s->D, s->scal); /* D[0] is the current point */
+  double norms[3] = {INFINITY, s->last_err_norm, INFINITY};
+  if (order > 1) {
+    for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order - 1] * s->D[order * N + i];
+    norms[0] = rms(nx, s->err, s->scal);
+  }
+  if (order < MAX_ORDER) {
+    for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order + 1] * s->D[(order + 2) * N + i];
+    norms[2] = rms(nx, s->err, s->scal);
+  }
+  int best = 1; double best_factor = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double f = norms[k] == 0.0 ? INFINITY : pow(norms[k], -1.0 / (order + k));
+    if (isnan(f)) f = 0.0;
+    if (f > best_factor) { best_factor = f; best = k; }
+  }
+  s->order = order + best - 1;
+  double factor = fmin(10.0, s->last_safety * best_factor);
+  change_d(s, factor);
+  s->h_abs *= factor; s->n_equal_steps = 0; s->have_lu = 0;
+}
+
+/* ---- events ---------------------------------------------------------------------------------- */
+
+enum { EV_DELTA = 0, EV_RATE = 1 };
+
+/* The event function `kind` of joint j at time t, on the dense output of the last step. */
+static double event_value(jp_sim *s, int kind, int j, double t) {
+  dense(s, t, s->tmp_y);
+  unscale(s, s->tmp_y);
+  double delta, rate;
+  gap(s, s->xs, j, &delta, &rate);
+  return kind == EV_DELTA ? delta : rate;
+}
+
+/* Illinois regula falsi for a sign change of the event function in [a, b]: returns the end of
+ * the final bracket on b's side (where the sign is that of fb). */
+static double locate(jp_sim *s, int kind, int j, double a, double fa, double b, double fb,
+                     double *at_root) {
+  int side = 0;
+  double ttol = 4 * 2.220446049250313e-16 * fmax(fabs(a), fabs(b));
+  for (int it = 0; it < 200 && b - a > ttol; ++it) {
+    double m = (a * fb - b * fa) / (fb - fa);
+    if (!(m > a && m < b)) m = 0.5 * (a + b);
+    /* keep the iterate away from the ends so the bracket always shrinks */
+    double w = b - a;
+    if (m - a < 1e-3 * w) m = a + 1e-3 * w;
+    if (b - m < 1e-3 * w) m = b - 1e-3 * w;
+    double fm = event_value(s, kind, j, m);
+    if ((fm > 0) == (fb > 0)) {
+      b = m; fb = fm;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = m; fa = fm;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
+  }
+  if (at_root) *at_root = fb;
+  return b;
+}
+
+static int new_phase(jp_sim *s, int j, double t, double speed, const double *xs) {
+  if (s->n_phases == s->cap_phases) {
+    long cap = s->cap_phases ? 2 * s->cap_phases : 64;
+    double *grown = realloc(s->phases, (size_t)cap * PH_FIELDS * sizeof(double));
+    if (!grown) { s->status = JP_NO_MEMORY; return 1; }
+    s->phases = grown; s->cap_phases = cap;
+  }
+  double *row = s->phases + s->n_phases * PH_FIELDS;
+  for (int k = 0; k < PH_FIELDS; ++k) row[k] = NAN;
+  const jp_config *c = &s->c;
+  row[PH_JOINT] = j; row[PH_T_ON] = t; row[PH_V_ON] = speed;
+  row[PH_EX] = xs[c->ecc_index[2 * j]]; row[PH_EY] = xs[c->ecc_index[2 * j + 1]];
+  row[PH_F_PEAK] = 0.0; row[PH_D_MAX] = 0.0;
+  s->open_phase[j] = s->n_phases++;
+  s->n_onsets++;
+  return 0;
+}
+
+/* Quadrature block index of joint j's impulse / damping / friction. */
+static int quad_index(const jp_sim *s, int j, int which) { return s->c.nx + 1 + 3 * j + which; }
+
+/* Store cumulative quadratures at phase start as negative values; close adds the end values. */
+static void phase_quadratures(jp_sim *s, double *row, const double *y, int j, double sign) {
+  double *cols[3] = {&row[PH_IMPULSE], &row[PH_DAMPING], &row[PH_FRICTION]};
+  for (int k = 0; k < 3; ++k) {
+    double v = sign * y[quad_index(s, j, k)];
+    *cols[k] = isnan(*cols[k]) ? v : *cols[k] + v;
+  }
+}
+
+static void onset(jp_sim *s, int j, double t, const double *y /* scaled, N */) {
+  unscale(s, y);
+  double delta, rate;
+  gap(s, s->xs, j, &delta, &rate);
+  s->flags[j] = 1.0; s->armed[j] = delta > 0; s->v_imp[j] = rate; s->rising[j] = 1;
+  s->n_events++;
+  if (new_phase(s, j, t, rate, s->xs)) return;
+  phase_quadratures(s, s->phases + s->open_phase[j] * PH_FIELDS, y, j, -1.0);
+}
+
+static void separation(jp_sim *s, int j, double t) {
+  dense(s, t, s->tmp_y2);
+  unscale(s, s->tmp_y2);
+  double delta, rate;
+  gap(s, s->xs, j, &delta, &rate);
+  s->flags[j] = 0.0; s->armed[j] = 0;
+  s->n_events++;
+  if (s->open_phase[j] < 0) return;
+  double *row = s->phases + s->open_phase[j] * PH_FIELDS;
+  row[PH_T_OFF] = t; row[PH_V_OFF] = -rate;
+  phase_quadratures(s, row, s->tmp_y2, j, 1.0);
+  s->open_phase[j] = -1;
+}
+
+static void note_peak(jp_sim *s, int j, int column, int time_column, double value, double t) {
+  if (s->open_phase[j] < 0) return;
+  double *row = s->phases + s->open_phase[j] * PH_FIELDS;
+  if (value > row[column]) { row[column] = value; row[time_column] = t; }
+}
+
+/* Samples of one step: its start, INTERIOR points and its end. */
+#define NS (INTERIOR + 2)
+#define MAX_JOINTS 64
+/* A sampled local maximum of the force this far (relative) below the phase's peak so far
+ * cannot beat it (the force is resolved by the steps), so it is not refined. */
+#define PEAK_MARGIN 1e-2
+
+/* Normal force of every joint at time t on the dense output, into s->c_out. */
+static void forces_at(jp_sim *s, double t) {
+  dense(s, t, s->tmp_y);
+  unscale(s, s->tmp_y);
+  contact_at(s);
+}
+
+/* The largest normal force of joint j in [a, b] (golden-section search on the dense output,
+ * to round-off in time): the force is unimodal there, the samples bracket its peak. */
+static double peak_force(jp_sim *s, int j, double a, double b, double *t_peak) {
+  const double g = 0.5 * (sqrt(5.0) - 1.0);
+  int nc = s->c.nc;
+  double x1 = b - g * (b - a), x2 = a + g * (b - a);
+  forces_at(s, x1); double f1 = s->c_out[3 * nc + j];
+  forces_at(s, x2); double f2 = s->c_out[3 * nc + j];
+  /* the peak's value is flat in time: 1e-9 of the bracket fixes it to round-off */
+  double ttol = fmax(1e-9 * (b - a), 8 * 2.220446049250313e-16 * fmax(fabs(a), fabs(b)));
+  for (int it = 0; it < 120 && b - a > ttol; ++it) {
+    if (f1 >= f2) { b = x2; x2 = x1; f2 = f1; x1 = b - g * (b - a); forces_at(s, x1); f1 = s->c_out[3 * nc + j]; }
+    else { a = x1; x1 = x2; f1 = f2; x2 = a + g * (b - a); forces_at(s, x2); f2 = s->c_out[3 * nc + j]; }
+  }
+  if (f1 >= f2) { *t_peak = x1; return f1; }
+  *t_peak = x2; return f2;
+}
+
+/* Scan the last step for events. Returns 0 when the step stands (events recorded), 1 when an
+ * onset inside it needs the step redone up to *t_cut (nothing recorded), 3 when the onset is at
+ * its very start (the step is redone from there with the captured speed). */
+static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
+  const jp_config *c = &s->c;
+  int nc = c->nc;
+  if (!nc) return 0;
+  double ts[NS], dl[NS][MAX_JOINTS], rt[NS][MAX_JOINTS];
+  double t0 = s->t - s->h;
+  for (int k = 0; k < NS; ++k) {
+    ts[k] = k == NS - 1 ? s->t : t0 + s->h * k / (NS - 1);
+    dense(s, ts[k], s->tmp_y);
+    unscale(s, s->tmp_y);
+    for (int j = 0; j < nc; ++j) gap(s, s->xs, j, &dl[k][j], &rt[k][j]);
+  }
+  double landing = 1e-6 * s->h + 4 * 2.220446049250313e-16 * fabs(s->t);
+  /* Pass 1: the earliest onset inside the step that is not at its end. */
+  double earliest = INFINITY; int who = -1;
+  for (int j = 0; j < nc; ++j) {
+    int flag = s->flags[j] > 0.5, armed = s->armed[j];
+    for (int k = 1; k < NS; ++k) {
+      if (flag) {
+        if (dl[k][j] > 0) armed = 1;
+        if (dl[k][j] < 0 && (armed || dl[k][j] < -c->atol * c->clearance[j])) flag = 0;
+      } else if (dl[k][j] > 0) {
+        double b = locate(s, EV_DELTA, j, ts[k - 1], dl[k - 1][j], ts[k], dl[k][j], NULL);
+        if (s->t - b > landing && b < earliest) { earliest = b; who = j; }
+        break;
+      }
+    }
+  }
+  if (who >= 0) {
+    *t_cut = earliest; *cut_joint = who;
+    return earliest - t0 <= landing ? 3 : 1;
+  }
+  /* Pass 2: record everything. Forces are sampled only while a joint is in contact. */
+  int any = 0;
+  for (int j = 0; j < nc; ++j) any |= s->flags[j] > 0.5;
+  double fn[NS][MAX_JOINTS];
+  if (any)
+    for (int k = 0; k < NS; ++k) {
+      forces_at(s, ts[k]);
+      for (int j = 0; j < nc; ++j) fn[k][j] = s->c_out[3 * nc + j];
+    }
+  for (int j = 0; j < nc; ++j) {
+    int was_in_contact = s->flags[j] > 0.5;
+    int k_end = NS - 1; /* last sample of the contact inside this step */
+    for (int k = 1; k < NS; ++k) {
+      if (s->flags[j] < 0.5) {
+        if (dl[k][j] > 0) { /* an onset at the end of the step: the step has landed on it */
+          memcpy(s->tmp_y2, s->D, s->N * sizeof(double));
+          onset(s, j, ts[k], s->tmp_y2);
+        }
+        continue;
+      }
+      if (dl[k][j] > 0) s->armed[j] = 1;
+      if (rt[k - 1][j] > 0 && rt[k][j] <= 0) {
+        double tm = locate(s, EV_RATE, j, ts[k - 1], rt[k - 1][j], ts[k], rt[k][j], NULL);
+        note_peak(s, j, PH_D_MAX, PH_T_D, event_value(s, EV_DELTA, j, tm), tm);
+      }
+      if (dl[k][j] < 0 && (s->armed[j] || dl[k][j] < -c->atol * c->clearance[j])) {
+        double tsep = locate(s, EV_DELTA, j, ts[k - 1], dl[k - 1][j], ts[k], dl[k][j], NULL);
+        k_end = k;
+        /* the force peak of this last stretch, before the phase closes */
+        if (was_in_contact) {
+          int km = 0;
+          for (int q = 1; q < k; ++q) if (fn[q][j] > fn[km][j]) km = q;
+          if (km > 0) {
+            double tp, fp = peak_force(s, j, ts[km - 1], ts[km + 1] < tsep ? ts[km + 1] : tsep, &tp);
+            note_peak(s, j, PH_F_PEAK, PH_T_F, fp, tp);
+          }
+        }
+        separation(s, j, tsep);
+        break;
+      }
+      note_peak(s, j, PH_D_MAX, PH_T_D, dl[k][j], ts[k]);
+    }
+    int rising = s->rising[j];
+    if (any) s->rising[j] = fn[NS - 1][j] > fn[NS - 2][j];
+    if (!was_in_contact || k_end != NS - 1 || s->flags[j] < 0.5) continue;
+    /* the force peak inside the step (or at its start, continuing the previous step's rise);
+     * only a local maximum that can beat the phase's peak so far is refined */
+    int km = 0;
+    for (int q = 1; q < NS; ++q) if (fn[q][j] > fn[km][j]) km = q;
+    if (km == NS - 1) { note_peak(s, j, PH_F_PEAK, PH_T_F, fn[km][j], ts[km]); continue; }
+    if (km == 0 && !rising) continue;
+    if (fn[km][j] < (1 - PEAK_MARGIN) * s->phases[s->open_phase[j] * PH_FIELDS + PH_F_PEAK])
+      continue;
+    double a = km > 0 ? ts[km - 1] : ts[0] - 0.25 * s->h;
+    double tp, fp = peak_force(s, j, a, ts[km + 1], &tp);
+    note_peak(s, j, PH_F_PEAK, PH_T_F, fmax(fp, fn[km][j]), fp >= fn[km][j] ? tp : ts[km]);
+  }
+  return 0;
+}
+
+/* ---- public interface ------------------------------------------------------------------------ */
+
+void jp_free(jp_sim *s);
+
+jp_sim *jp_create(const jp_config *config) {
+  static int constants_ready = 0;
+  if (!constants_ready) { bdf_constants(); constants_ready = 1; }
+  jp_sim *s = calloc(1, sizeof(jp_sim));
+  if (!s) return NULL;
+  s->c = *config;
+  const jp_config *c = &s->c;
+  int nx = c->nx, nc = c->nc;
+  s->nquad = 1 + 3 * nc;
+  s->N = nx + s->nquad;
+  int N = s->N;
+  size_t rows = MAX_ORDER + 3;
+  s->D = calloc(rows * N, sizeof(double));
+  s->D_save = calloc(rows * N, sizeof(double));
+  s->work_n = calloc(rows * N, sizeof(double));
+  s->J = calloc((size_t)nx * nx, sizeof(double));
+  s->LU = calloc((size_t)nx * nx, sizeof(double));
+  s->piv = calloc(nx, sizeof(int));
+  double **vecs[] = {&s->y_pred, &s->psi, &s->d, &s->y_new, &s->f_buf, &s->dy, &s->scal,
+                     &s->err, &s->tmp_y, &s->tmp_y2};
+  for (size_t k = 0; k < sizeof(vecs) / sizeof(vecs[0]); ++k) *vecs[k] = calloc(N, sizeof(double));
+  s->xs = calloc(nx, sizeof(double));
+  s->xdot = calloc(nx, sizeof(double));
+  s->tau = calloc(c->ntau + 1, sizeof(double));
+  s->u_hold = calloc(c->ntau + 1, sizeof(double));
+  s->v_imp = calloc(nc + 1, sizeof(double));
+  s->flags = calloc(nc + 1, sizeof(double));
+  s->armed = calloc(nc + 1, sizeof(int));
+  s->rising = calloc(nc + 1, sizeof(int));
+  s->open_phase = calloc(nc + 1, sizeof(long));
+  s->c_out = calloc(8 * (nc + 1), sizeof(double));
+  jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
+  const jp_function *fns[3] = {&c->f, &c->jac, &c->contact};
+  for (int k = 0; k < 3; ++k) {
+    if (!fns[k]->eval) continue;
+    if (fns[k]->sz_arg > sz_arg) sz_arg = fns[k]->sz_arg;
+    if (fns[k]->sz_res > sz_res) sz_res = fns[k]->sz_res;
+    if (fns[k]->sz_iw > sz_iw) sz_iw = fns[k]->sz_iw;
+    if (fns[k]->sz_w > sz_w) sz_w = fns[k]->sz_w;
+  }
+  s->arg = calloc(sz_arg, sizeof(double *));
+  s->res = calloc(sz_res, sizeof(double *));
+  s->iw = calloc(sz_iw + 1, sizeof(jp_int));
+  s->w = calloc(sz_w + 1, sizeof(double));
+  jp_int nnz = c->jac.sparsity_out0[2 + c->jac.sparsity_out0[1]];
+  s->jac_sparse = calloc(nnz + 1, sizeof(double));
+  if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->piv || !s->tmp_y2 ||
+      !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->v_imp || !s->flags || !s->armed || !s->rising ||
+      !s->open_phase || !s->c_out || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
+    jp_free(s);
+    return NULL;
+  }
+  for (int j = 0; j < nc; ++j) s->open_phase[j] = -1;
+  return s;
+}
+
+void jp_free(jp_sim *s) {
+  if (!s) return;
+  void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->piv, s->y_pred, s->psi, s->d,
+                  s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
+                  s->xdot, s->tau, s->u_hold, s->v_imp, s->flags, s->armed, s->rising, s->open_phase,
+                  s->c_out, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases};
+  for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
+  free(s);
+}
+
+/* Put the run at (t0, x0) (unscaled state), quadratures zero, no phases; a contact already
+ * present at t0 opens a phase there. */
+int jp_reset(jp_sim *s, double t0, const double *x0) {
+  const jp_config *c = &s->c;
+  for (int i = 0; i < c->nx; ++i) s->D[i] = x0[i] / c->scale[i];
+  for (int i = 0; i < s->nquad; ++i) s->D[c->nx + i] = 0.0;
+  s->t = t0; s->started = 0; s->status = JP_OK; s->n_phases = 0;
+  for (int j = 0; j < c->nc; ++j) {
+    s->flags[j] = 0.0; s->v_imp[j] = 0.0; s->armed[j] = 0; s->open_phase[j] = -1;
+  }
+  s->n_steps = s->n_rhs = s->n_jac = s->n_lu = s->n_err_fail = s->n_newton_fail = 0;
+  s->n_events = s->n_onsets = 0;
+  memcpy(s->tmp_y2, s->D, s->N * sizeof(double));
+  for (int j = 0; j < c->nc; ++j) {
+    double delta;
+    gap(s, x0, j, &delta, NULL);
+    if (delta > 0) onset(s, j, t0, s->tmp_y2);
+  }
+  return s->status;
+}
+
+/* Torques added to the scene's and held from now on; a change restarts the method (the
+ * right-hand side jumps). */
+void jp_hold(jp_sim *s, const double *u) {
+  int changed = 0;
+  for (int k = 0; k < s->c.ntau; ++k) if (s->u_hold[k] != u[k]) { s->u_hold[k] = u[k]; changed = 1; }
+  if (changed) s->started = 0;
+}
+
+/* Integrate to t_end, writing outputs at the n_out times t_out (increasing, in (t, t_end]):
+ * y_out rows of nx + nquad values (state unscaled, then the cumulative quadratures), v_out rows
+ * of nc captured approach speeds. Returns a status (JP_OK on success). */
+int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, double *y_out,
+                 double *v_out) {
+  const jp_config *c = &s->c;
+  int N = s->N, nx = c->nx;
+  struct sigaction action, previous;
+  memset(&action, 0, sizeof(action));
+  action.sa_handler = jp_on_sigint;
+  sigemptyset(&action.sa_mask);
+  jp_interrupted = 0;
+  sigaction(SIGINT, &action, &previous);
+  long next = 0, steps_since_output = 0, events_since_output = 0;
+  double bound = t_end;
+  int redo_joint = -1;
+  s->status = JP_OK;
+  if (!s->started) {
+    memcpy(s->tmp_y, s->D, N * sizeof(double));
+    double *z0 = malloc(N * sizeof(double));
+    if (!z0) { s->status = JP_NO_MEMORY; goto done; }
+    memcpy(z0, s->tmp_y, N * sizeof(double));
+    int rc = bdf_start(s, s->t, z0, z0 + nx, t_end);
+    free(z0);
+    if (rc) goto done;
+  }
+  while (s->t < t_end) {
+    if (jp_interrupted) { s->status = JP_INTERRUPTED; s->fail_t = s->t; break; }
+    if (bdf_step(s, bound)) break;
+    double t_cut = 0.0; int cut_joint = -1;
+    int ev = scan_events(s, &t_cut, &cut_joint);
+    if (s->status) break;
+    if (ev == 1 || ev == 3) {
+      /* redo the step: to land on the onset, or from its start with the captured speed */
+      memcpy(s->D, s->D_save, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
+      s->t = s->t_old; s->h_abs = s->h_abs_old; s->order = s->order_old;
+      s->n_equal_steps = s->n_equal_old; s->have_lu = 0; s->n_steps--;
+      redo_joint = cut_joint;
+      if (ev == 1) {
+        bound = t_cut;
+      } else {
+        memcpy(s->tmp_y2, s->D, N * sizeof(double));
+        onset(s, cut_joint, s->t, s->tmp_y2);
+        if (s->status) break;
+      }
+      if (++events_since_output > c->max_events) {
+        s->status = JP_CHATTER; s->fail_t = s->t; s->fail_joint = cut_joint; break;
+      }
+      continue;
+    }
+    (void)redo_joint;
+    if (s->t >= bound) bound = t_end;
+    while (next < n_out && t_out[next] <= s->t) {
+      dense(s, t_out[next], s->tmp_y);
+      double *row = y_out + next * N;
+      for (int i = 0; i < nx; ++i) row[i] = s->tmp_y[i] * c->scale[i];
+      for (int i = nx; i < N; ++i) row[i] = s->tmp_y[i];
+      if (t_out[next] == s->t) for (int i = 0; i < N; ++i) row[i] = s->D[i] * (i < nx ? c->scale[i] : 1.0);
+      for (int j = 0; j < c->nc; ++j) v_out[next * c->nc + j] = s->v_imp[j];
+      next++;
+      steps_since_output = 0; events_since_output = 0;
+    }
+    if (++steps_since_output > c->max_steps) {
+      s->status = JP_TOO_MUCH_WORK; s->fail_t = s->t; break;
+    }
+    if (!all_finite(N, s->D)) { s->status = JP_NONFINITE; s->fail_t = s->t; break; }
+    bdf_adapt(s);
+  }
+done:
+  sigaction(SIGINT, &previous, NULL);
+  return s->status;
+}
+
+/* The current (scaled) point: state unscaled then quadratures, N values. */
+void jp_current(const jp_sim *s, double *y) {
+  for (int i = 0; i < s->N; ++i) y[i] = s->D[i] * (i < s->c.nx ? s->c.scale[i] : 1.0);
+}
+
+long jp_n_phases(const jp_sim *s) { return s->n_phases; }
+int jp_phase_fields(void) { return PH_FIELDS; }
+void jp_phases(const jp_sim *s, double *out) {
+  memcpy(out, s->phases, (size_t)s->n_phases * PH_FIELDS * sizeof(double));
+}
+void jp_flags(const jp_sim *s, double *flags, double *v_imp) {
+  for (int j = 0; j < s->c.nc; ++j) { flags[j] = s->flags[j]; v_imp[j] = s->v_imp[j]; }
+}
+void jp_stats(const jp_sim *s, long *out) {
+  out[0] = s->n_steps; out[1] = s->n_rhs; out[2] = s->n_jac; out[3] = s->n_lu;
+  out[4] = s->n_err_fail; out[5] = s->n_newton_fail; out[6] = s->n_events; out[7] = s->n_onsets;
+}
+void jp_failure(const jp_sim *s, double *t, double *h, int *joint) {
+  *t = s->fail_t; *h = s->fail_h; *joint = s->fail_joint;
+}
+int jp_n_state(const jp_sim *s) { return s->N; }
+
+/* Evaluate a generated function on `count` samples: input i of sample k at in[i] + k *
+ * in_stride[i] (stride 0: the same for every sample), output likewise. For the derived
+ * outputs of a run (accelerations, tip, energies, contact forces) without a Python loop. */
+int jp_map(const jp_function *fn, long count, const double *const *in, const long *in_stride,
+           double *const *out, const long *out_stride) {
+  const double **arg = calloc(fn->sz_arg + 1, sizeof(double *));
+  double **res = calloc(fn->sz_res + 1, sizeof(double *));
+  jp_int *iw = calloc(fn->sz_iw + 1, sizeof(jp_int));
+  double *w = calloc(fn->sz_w + 1, sizeof(double));
+  int rc = 0;
+  if (!arg || !res || !iw || !w) rc = JP_NO_MEMORY;
+  for (long k = 0; k < count && !rc; ++k) {
+    for (jp_int i = 0; i < fn->n_in; ++i) arg[i] = in[i] ? in[i] + k * in_stride[i] : NULL;
+    for (jp_int i = 0; i < fn->n_out; ++i) res[i] = out[i] ? out[i] + k * out_stride[i] : NULL;
+    rc = fn->eval(arg, res, iw, w, 0);
+  }
+  free(arg); free(res); free(iw); free(w);
+  return rc;
+}
