@@ -283,7 +283,8 @@ class Expression:
 OPCODES: dict[str, int] = {
     "const": 0, "t": 1, "neg": 2, "+": 3, "-": 4, "*": 5, "/": 6, "**": 7, "sin": 8, "cos": 9,
     "tan": 10, "exp": 11, "log": 12, "sqrt": 13, "abs": 14, "tanh": 15, "sinh": 16,
-    "cosh": 17, "atan": 18, "min": 19, "max": 20, "step": 21,
+    "cosh": 17, "atan": 18, "min": 19, "max": 20, "step": 21, "<=": 22, "<": 23,
+    "if_else_zero": 24, "sq": 25, "inv": 26, "twice": 27,
 }
 # Deepest operand stack driver.c allows (its STACK_DEPTH).
 STACK_DEPTH = 256

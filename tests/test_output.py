@@ -152,7 +152,7 @@ def assert_same(a: Any, b: Any, where: str = "result") -> None:
     elif isinstance(a, np.ndarray):
         assert isinstance(b, np.ndarray), where
         assert (a.dtype, a.shape) == (b.dtype, b.shape), where
-        assert np.array_equal(a, b), where
+        assert np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), where
     elif isinstance(a, dict):
         assert list(a) == list(b) or where.endswith("metadata"), where
         assert set(a) == set(b), where

@@ -46,7 +46,8 @@ enum {
   OP_CONST = 0, OP_TIME = 1, OP_NEG = 2, OP_ADD = 3, OP_SUB = 4, OP_MUL = 5, OP_DIV = 6,
   OP_POW = 7, OP_SIN = 8, OP_COS = 9, OP_TAN = 10, OP_EXP = 11, OP_LOG = 12, OP_SQRT = 13,
   OP_ABS = 14, OP_TANH = 15, OP_SINH = 16, OP_COSH = 17, OP_ATAN = 18, OP_MIN = 19,
-  OP_MAX = 20, OP_STEP = 21
+  OP_MAX = 20, OP_STEP = 21, OP_LE = 22, OP_LT = 23, OP_IF_ELSE_ZERO = 24, OP_SQ = 25,
+  OP_INV = 26, OP_TWICE = 27
 };
 #define STACK_DEPTH 256
 
@@ -107,6 +108,7 @@ typedef struct {
   long *open_phase;            /* per joint: row of the open phase or -1 */
   /* statistics */
   long n_steps, n_rhs, n_jac, n_lu, n_err_fail, n_newton_fail, n_events, n_onsets;
+  double landing_target; /* the onset time a redone step aims at, else +inf */
   double last_safety, last_err_norm, t_old, h_abs_old; int order_old, n_equal_old;
   /* failure */
   int status; double fail_t; int fail_joint; double fail_h;
@@ -156,6 +158,12 @@ static double torque_program(const jp_config *c, int k, double t, int *ok) {
       case OP_MIN: sp--; stack[sp - 1] = fmin(stack[sp - 1], stack[sp]); break;
       case OP_MAX: sp--; stack[sp - 1] = fmax(stack[sp - 1], stack[sp]); break;
       case OP_STEP: stack[sp - 1] = stack[sp - 1] >= 0.0 ? 1.0 : 0.0; break;
+      case OP_LE: sp--; stack[sp - 1] = stack[sp - 1] <= stack[sp] ? 1.0 : 0.0; break;
+      case OP_LT: sp--; stack[sp - 1] = stack[sp - 1] < stack[sp] ? 1.0 : 0.0; break;
+      case OP_IF_ELSE_ZERO: sp--; stack[sp - 1] = stack[sp - 1] != 0.0 ? stack[sp] : 0.0; break;
+      case OP_SQ: stack[sp - 1] *= stack[sp - 1]; break;
+      case OP_INV: stack[sp - 1] = 1.0 / stack[sp - 1]; break;
+      case OP_TWICE: stack[sp - 1] *= 2.0; break;
       default: *ok = 0; return NAN;
     }
   }
@@ -698,10 +706,15 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
   double earliest = INFINITY; int who = -1;
   for (int j = 0; j < nc; ++j) {
     int flag = s->flags[j] > 0.5, armed = s->armed[j];
+    /* round-off in the penetration: a gap this close to zero is contact */
+    double zero_gap = 64 * 2.220446049250313e-16 * c->clearance[j];
     for (int k = 1; k < NS; ++k) {
       if (flag) {
         if (dl[k][j] > 0) armed = 1;
         if (dl[k][j] < 0 && (armed || dl[k][j] < -c->atol * c->clearance[j])) flag = 0;
+      } else if (dl[k][j] > 0 && k == 1 && dl[0][j] > -zero_gap) {
+        if (t0 < earliest) { earliest = t0; who = j; } /* touching at the start */
+        break;
       } else if (dl[k][j] > 0) {
         double b = locate(s, EV_DELTA, j, ts[k - 1], dl[k - 1][j], ts[k], dl[k][j], NULL);
         if (s->t - b > landing && b < earliest) { earliest = b; who = j; }
@@ -727,7 +740,9 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
     int k_end = NS - 1; /* last sample of the contact inside this step */
     for (int k = 1; k < NS; ++k) {
       if (s->flags[j] < 0.5) {
-        if (dl[k][j] > 0) { /* an onset at the end of the step: the step has landed on it */
+        /* an onset at the end of the step: the step has landed on it (to round-off) */
+        if (dl[k][j] > 0 || (k == NS - 1 && s->t >= s->landing_target &&
+                             dl[k][j] > -64 * 2.220446049250313e-16 * c->clearance[j])) {
           memcpy(s->tmp_y2, s->D, s->N * sizeof(double));
           onset(s, j, ts[k], s->tmp_y2);
         }
@@ -849,7 +864,7 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   const jp_config *c = &s->c;
   for (int i = 0; i < c->nx; ++i) s->D[i] = x0[i] / c->scale[i];
   for (int i = 0; i < s->nquad; ++i) s->D[c->nx + i] = 0.0;
-  s->t = t0; s->started = 0; s->status = JP_OK; s->n_phases = 0;
+  s->t = t0; s->started = 0; s->status = JP_OK; s->n_phases = 0; s->landing_target = INFINITY;
   for (int j = 0; j < c->nc; ++j) {
     s->flags[j] = 0.0; s->v_imp[j] = 0.0; s->armed[j] = 0; s->open_phase[j] = -1;
   }
@@ -911,7 +926,7 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
       s->n_equal_steps = s->n_equal_old; s->have_lu = 0; s->n_steps--;
       redo_joint = cut_joint;
       if (ev == 1) {
-        bound = t_cut;
+        bound = t_cut; s->landing_target = t_cut;
       } else {
         memcpy(s->tmp_y2, s->D, N * sizeof(double));
         onset(s, cut_joint, s->t, s->tmp_y2);
@@ -923,7 +938,7 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
       continue;
     }
     (void)redo_joint;
-    if (s->t >= bound) bound = t_end;
+    if (s->t >= bound) { bound = t_end; s->landing_target = INFINITY; }
     while (next < n_out && t_out[next] <= s->t) {
       dense(s, t_out[next], s->tmp_y);
       double *row = y_out + next * N;
