@@ -214,9 +214,9 @@ def torque_data(torques: tuple[TimeFunction, ...]) -> TorqueData:
             table_t += [0.0] * len(program_ops)
             table_v += [0.0] * len(program_ops)
     return TorqueData(*(np.ascontiguousarray(a, dtype=d) for a, d in (
-        (kinds, np.int32), (starts, np.int32), (lengths, np.int32), (ops + [0], np.int32),
-        (consts + [0.0], np.float64), (table_t + [0.0], np.float64),
-        (table_v + [0.0], np.float64))))
+        (kinds, np.int32), (starts, np.int32), (lengths, np.int32), ([*ops, 0], np.int32),
+        ([*consts, 0.0], np.float64), ([*table_t, 0.0], np.float64),
+        ([*table_v, 0.0], np.float64))))
 
 
 class NativeIntegrator:
