@@ -45,13 +45,10 @@ class SimulationError(JointplayError, RuntimeError):
         super().__init__(f"simulation stopped at t = {time:.9g} s{where}: {cause}")
 
 
-class FileError(JointplayError, OSError):
+class FileError(JointplayError):
     """Reading or writing a file failed: ``path`` and ``cause`` in one line."""
 
     def __init__(self, path: str, cause: str) -> None:
         self.path = path
         self.cause = cause
         super().__init__(f"{path}: {cause}")
-
-    def __str__(self) -> str:
-        return f"{self.path}: {self.cause}"
