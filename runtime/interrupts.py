@@ -9,8 +9,10 @@ an error can then ask :func:`interrupted` and re-raise it as the interrupt it wa
 
 from __future__ import annotations
 
+import contextlib
 import signal
 import threading
+from collections.abc import Iterator
 from types import FrameType
 
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
@@ -50,10 +52,25 @@ def raise_if_interrupted() -> None:
         raise KeyboardInterrupt
 
 
+@contextlib.contextmanager
+def ignored() -> Iterator[None]:
+    """Ignore SIGINT while processes are started (they inherit it); an interrupt that
+    arrived meanwhile is raised on the way out."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    raise_if_interrupted()
+
+
 def ignore_in_child() -> None:
     """For worker processes: leave Ctrl-C to the parent, which stops them in order."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
-__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "ignore_in_child", "install", "interrupted",
-           "raise_if_interrupted"]
+__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "ignore_in_child", "ignored", "install",
+           "interrupted", "raise_if_interrupted"]
