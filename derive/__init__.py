@@ -46,25 +46,65 @@ def generated_folder(robot: Robot) -> Path:
     """A folder holding generated code for ``robot``'s structure, generating it if needed.
 
     Checked-in models (``jointplay.generated``) are used when their input hash matches;
-    otherwise the model is derived once into the per-user cache, keyed by that hash.
+    otherwise the model is derived once into the per-user cache, keyed by that hash. A cached
+    folder that does not load (a damaged file, a half-written one) is generated again, with a
+    one-line note, under a lock so that concurrent runs repair it once.
     """
     from jointplay import generated
     from jointplay.build import cache_root
-    from jointplay.errors import GeneratedCodeError
-    from jointplay.model import read_generated
 
     prov = provenance(robot.structure())
     folder = generated.find(prov["input_hash"])
     if folder is not None:
         return folder
     folder = cache_root() / "models" / prov["input_hash"]
-    try:
-        read_generated(folder)
-    except GeneratedCodeError:  # absent, half-written or damaged: (re)generate it
-        from jointplay.derive.codegen import write_generated
-
-        write_generated(robot, folder)
+    if _damage(folder) is None:
+        return folder
+    _regenerate(robot, folder)
     return folder
+
+
+def _damage(folder: Path) -> str | None:
+    """Why the generated folder does not load ("absent" if it does not exist), or None."""
+    from jointplay.errors import GeneratedCodeError
+    from jointplay.model import check_generated
+
+    if not folder.exists():
+        return "absent"
+    try:
+        check_generated(folder)
+    except GeneratedCodeError as err:
+        return str(err)
+    return None
+
+
+def _regenerate(robot: Robot, folder: Path) -> None:
+    import fcntl
+
+    from jointplay.build import cache_error
+    from jointplay.errors import FileError
+    from jointplay.files import sweep_stale
+    from jointplay.model import note
+
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with open(folder / ".lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            damage = _damage(folder)  # another process may have repaired it meanwhile
+            if damage is None:
+                return
+            sweep_stale(folder)
+            if not (folder / "layout.json").exists() and not (folder / "model.c").exists():
+                damage = "absent"
+            if damage != "absent":
+                reason = damage.splitlines()[0].split("; regenerate")[0]
+                reason = reason.replace(f"{folder}/", "").replace(f"{folder}: ", "")
+                note(f"the cached model {folder} does not load ({reason}); generating it again")
+            from jointplay.derive.codegen import write_generated
+
+            write_generated(robot, folder)
+    except (OSError, FileError) as err:
+        raise cache_error(folder, err) from None
 
 
 def model_for(robot: Robot) -> Model:

@@ -20,7 +20,7 @@ import subprocess
 import time
 from pathlib import Path
 
-from jointplay.errors import BuildError
+from jointplay.errors import BuildError, FileError
 from jointplay.files import atomic_write_text
 
 # -O1: on CasADi's straight-line C, -O2 compiled 1.3-1.4x longer for 5-30 % faster calls at
@@ -86,16 +86,42 @@ def compile_source(
     library = entry / LIBRARY_NAME
     if _entry_is_complete(entry):
         return library, 0.0
+    try:
+        return _build(source, cflags, cc, entry)
+    except (OSError, FileError) as err:
+        raise cache_error(entry, err) from None
+
+
+def cache_error(path: Path, err: OSError | FileError) -> FileError:
+    """A cache that cannot be written: say where, why, and how to use another."""
+    from jointplay.files import describe_os_error
+
+    cause = describe_os_error(err) if isinstance(err, OSError) else \
+        err.cause.removeprefix("cannot write: ").split(";")[0]
+    return FileError(str(path), f"cannot write the model cache ({cause}); set "
+                     "JOINTPLAY_CACHE to a writable folder")
+
+
+def discard_entry(entry: Path) -> None:
+    """Mark a build entry incomplete, so the next :func:`compile_source` rebuilds it."""
+    (entry / MARKER_NAME).unlink(missing_ok=True)
+
+
+def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path) -> tuple[Path, float]:
+    from jointplay.files import sweep_stale, temp_tag
+
+    library = entry / LIBRARY_NAME
     entry.mkdir(parents=True, exist_ok=True)
     with open(entry / ".lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if _entry_is_complete(entry):  # another process finished it while we waited
             return library, 0.0
+        sweep_stale(entry)  # temporaries of builds that were killed
         for stale in (entry / MARKER_NAME, library):
             stale.unlink(missing_ok=True)
         c_file = entry / "model.c"
         atomic_write_text(c_file, source)
-        tmp_lib = entry / f".{LIBRARY_NAME}.{os.getpid()}.part"
+        tmp_lib = entry / f".{LIBRARY_NAME}.{temp_tag()}.x.part"
         t0 = time.perf_counter()
         proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(tmp_lib), "-lm"],
                               capture_output=True, text=True)

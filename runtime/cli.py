@@ -16,11 +16,13 @@ import argparse
 import os
 import sys
 import time
+import traceback
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from jointplay import interrupts
 from jointplay.description import Robot, load_robot, robot_from_flags
 from jointplay.errors import DescriptionError, JointplayError
 
@@ -185,8 +187,8 @@ def _overrides(items: list[str]) -> dict[str, float]:
 
 
 def cmd_simulate(args: argparse.Namespace) -> int:
-    from jointplay.output import check_output_path
-    from jointplay.scene import default_scene, load_scene
+    from jointplay.output import check_distinct_outputs, check_output_path
+    from jointplay.scene import default_scene, load_scene, scene_inputs
 
     # Everything is validated before anything is derived, compiled or written.
     scene = load_scene(args.scene) if args.scene else default_scene()
@@ -197,12 +199,15 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         try:
             scene = scene.with_run(**changes)
         except DescriptionError as err:
-            flag = "--" + err.field.removeprefix("run.").replace("_", "-")
-            raise DescriptionError(flag, err.message) from None
+            name = err.field.removeprefix("run.")
+            if name not in changes:  # a consequence elsewhere in the scene
+                raise
+            raise DescriptionError("--" + name.replace("_", "-"), err.message) from None
     overrides = _overrides(args.set or [])
+    check_distinct_outputs({"--out": args.out, "--csv": args.csv})
     for flag, path in (("--out", args.out), ("--csv", args.csv)):
         if path:
-            check_output_path(path, flag)
+            check_output_path(path, flag, inputs=scene_inputs(scene))
     if args.plot:
         _check_writable_dir(Path(args.plot), "--plot")
     if overrides:
@@ -320,20 +325,67 @@ def make_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _add_debug_flag(parser: argparse.ArgumentParser) -> None:
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in action.choices.values():
+                # SUPPRESS: a subcommand's absent flag must not reset the top-level one.
+                sub.add_argument("--debug", action="store_true", default=argparse.SUPPRESS,
+                                 help="show the full traceback of an error")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = make_parser()
+    parser.add_argument("--debug", action="store_true",
+                        help="show the full traceback of an error")
+    _add_debug_flag(parser)
     args = parser.parse_args(argv)
+    interrupts.install()
     try:
-        return int(args.func(args))
-    except DescriptionError as err:
+        code = int(args.func(args))
+        interrupts.raise_if_interrupted()  # one that a library swallowed still counts
+        return code
+    except KeyboardInterrupt:
+        return _interrupted(args)
+    except Exception as err:
+        # Compiled code may turn an interrupt into an error of its own: it is still Ctrl-C.
+        if interrupts.interrupted():
+            return _interrupted(args)
+        return _report(err, args)
+
+
+def _interrupted(args: argparse.Namespace) -> int:
+    if args.debug:
+        traceback.print_exc()
+    print("jointplay: interrupted", file=sys.stderr)
+    return interrupts.EXIT_INTERRUPTED
+
+
+def _report(err: Exception, args: argparse.Namespace) -> int:
+    """One line naming the cause (the traceback only with --debug); the exit status."""
+    if args.debug:
+        traceback.print_exc()
+    if isinstance(err, DescriptionError):
         print(f"jointplay: error: {err}", file=sys.stderr)
         return EXIT_BAD_INPUT
-    except JointplayError as err:
-        print(f"jointplay: error: {err}", file=sys.stderr)
-        return 1
-    except KeyboardInterrupt:
-        print("jointplay: interrupted", file=sys.stderr)
-        return 130
+    if isinstance(err, JointplayError):
+        text = str(err)
+    elif isinstance(err, OSError):
+        from jointplay.files import describe_os_error
+
+        where = f"{err.filename}: " if err.filename else ""
+        text = f"{where}{describe_os_error(err)}"
+    elif isinstance(err, MemoryError):
+        text = "out of memory; give a shorter run, fewer outputs or fewer cases"
+    else:
+        text = f"internal error ({type(err).__name__}: {err})"
+    lines = text.splitlines() or [type(err).__name__]
+    hint = "" if args.debug or isinstance(err, JointplayError) else \
+        " (--debug shows the traceback)"
+    print(f"jointplay: error: {lines[0]}{hint}", file=sys.stderr)
+    if len(lines) > 1:  # a compiler's output, say: the detail, after the one line
+        print("\n".join(lines[1:]), file=sys.stderr)
+    return 1
 
 
 if __name__ == "__main__":

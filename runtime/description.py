@@ -489,14 +489,20 @@ def _bool(value: Any, where: str) -> bool:
 
 
 def read_toml(path: str | Path, what: str) -> tuple[dict[str, Any], str]:
-    """The parsed document and its text; errors name the file (``what``: "robot", "scene"...)."""
+    """The parsed document and its text; errors name the file (``what``: "robot", "scene"...).
+
+    Only a regular file of at most ``MAX_TOML_BYTES`` is read: a device or FIFO is refused at
+    once instead of blocking or filling memory.
+    """
+    from jointplay.files import read_input
+    from jointplay.limits import MAX_TOML_BYTES
+
     path = Path(path)
+    data = read_input(path, "(file)", f"{what} TOML file", MAX_TOML_BYTES)
     try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise DescriptionError("(file)", f"not found; give the path of a {what} TOML file",
-                               str(path)) from None
-    except (OSError, UnicodeDecodeError) as err:
+        # Newlines translated as by a text-mode read.
+        text = data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")
+    except UnicodeDecodeError as err:
         raise DescriptionError("(file)", f"cannot be read ({err})", str(path)) from None
     try:
         return tomllib.loads(text), text

@@ -43,3 +43,12 @@ class SimulationError(JointplayError, RuntimeError):
         self.cause = cause
         where = f" at joint {joint}" if joint is not None else ""
         super().__init__(f"simulation stopped at t = {time:.9g} s{where}: {cause}")
+
+
+class FileError(JointplayError):
+    """Reading or writing a file failed: ``path`` and ``cause`` in one line."""
+
+    def __init__(self, path: str, cause: str) -> None:
+        self.path = path
+        self.cause = cause
+        super().__init__(f"{path}: {cause}")

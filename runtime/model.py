@@ -116,7 +116,8 @@ class Model:
     """A loaded, compiled robot model. Create it with :func:`load_model`."""
 
     def __init__(self, folder: Path, library: Path, layout: Layout, compile_seconds: float,
-                 default_parameters: np.ndarray | None) -> None:
+                 default_parameters: np.ndarray | None,
+                 cflags: tuple[str, ...] = DEFAULT_CFLAGS) -> None:
         self.folder = folder
         self.library = library
         self.layout = layout
@@ -130,6 +131,8 @@ class Model:
         self.n_coordinates = len(self.coordinates)
         self.n_state = 2 * self.n_coordinates
         self.default_parameters = default_parameters
+        self.cflags = cflags
+        self._rebuilt = False
         self._functions: dict[str, FastFunction] = {}
 
     def __repr__(self) -> str:
@@ -144,7 +147,10 @@ class Model:
             if name not in functions and name not in jacobians:
                 raise KeyError(f"{name!r} is not a function of this model; it has "
                                f"{', '.join(self.layout.data['functions'])}")
-            fn = ca.external(name, str(self.library))
+            try:
+                fn = ca.external(name, str(self.library))
+            except RuntimeError as err:
+                fn = self._rebuilt_external(name, err)
             if name in functions:
                 matrices = frozenset(s["name"] for s in functions[name]["outputs"]
                                      if s.get("matrix"))
@@ -152,6 +158,28 @@ class Model:
                 matrices = frozenset(fn.name_out())
             self._functions[name] = FastFunction(fn, matrices)
         return self._functions[name]
+
+    def _rebuilt_external(self, name: str, err: RuntimeError) -> ca.Function:
+        """A cached library that does not load is rebuilt once, then loaded again."""
+        from jointplay.build import discard_entry
+        from jointplay.errors import BuildError
+
+        cause = (str(err).strip().splitlines() or ["unknown error"])[-1][:200]
+        if self._rebuilt:
+            raise BuildError(f"the compiled model {self.library} cannot be loaded ({cause})") \
+                from None
+        note(f"the compiled model {self.library} does not load; compiling it again")
+        self._rebuilt = True
+        discard_entry(self.library.parent)
+        source, _ = read_generated(self.folder)
+        self.library, self.compile_seconds = compile_source(source, self.cflags)
+        self._functions.clear()
+        try:
+            return ca.external(name, str(self.library))
+        except RuntimeError as again:
+            cause = (str(again).strip().splitlines() or ["unknown error"])[-1][:200]
+            raise BuildError(f"the compiled model {self.library} cannot be loaded ({cause})") \
+                from None
 
     def casadi_function(self, name: str) -> ca.Function:
         """The compiled function as a CasADi ``Function`` (for integrators and AD)."""
@@ -215,18 +243,49 @@ class Model:
         return dict(zip(fn.function.name_out(), fn(x, udot, p), strict=True))
 
 
+_LAYOUT_KEYS: dict[str, type] = {"name": str, "structure": dict, "coordinates": list,
+                                 "parameters": list, "torque_joints": list,
+                                 "clearance_joints": list, "functions": dict,
+                                 "provenance": dict}
+
+
+def _check_layout(path: Path, data: Any) -> Layout:
+    """The layout, once its shape is what the loader reads (not, say, ``{}``)."""
+    if not isinstance(data, dict):
+        raise GeneratedCodeError(f"{path} is not a layout (a JSON object is expected); "
+                                 "regenerate it with `jointplay derive`")
+    for key, kind in _LAYOUT_KEYS.items():
+        if not isinstance(data.get(key), kind):
+            raise GeneratedCodeError(f"{path} has no valid {key!r} entry; regenerate it with "
+                                     "`jointplay derive`")
+    names = [*data["coordinates"], *data["parameters"]]
+    if not all(isinstance(c, dict) and isinstance(c.get("name"), str) for c in names) or \
+            not isinstance(data["provenance"].get("input_hash"), str):
+        raise GeneratedCodeError(f"{path} has malformed coordinates, parameters or "
+                                 "provenance; regenerate it with `jointplay derive`")
+    return Layout(data)
+
+
 def read_generated(folder: str | Path) -> tuple[str, Layout]:
     """Read and cross-check model.c and layout.json of a generated folder."""
     folder = Path(folder)
     try:
         source = (folder / SOURCE_NAME).read_text(encoding="utf-8")
-        layout = Layout(json.loads((folder / LAYOUT_NAME).read_text(encoding="utf-8")))
+        layout = _check_layout(folder / LAYOUT_NAME, json.loads(
+            (folder / LAYOUT_NAME).read_text(encoding="utf-8")))
     except FileNotFoundError as err:
         raise GeneratedCodeError(f"{folder} is not a generated model: {err.filename} is "
                                  "missing; regenerate it with `jointplay derive`") from None
     except json.JSONDecodeError as err:
         raise GeneratedCodeError(f"{folder / LAYOUT_NAME} is not valid JSON ({err}); "
                                  "regenerate it with `jointplay derive`") from None
+    except UnicodeDecodeError as err:
+        raise GeneratedCodeError(f"{folder}: a generated file is not valid UTF-8 ({err}); "
+                                 "regenerate it with `jointplay derive`") from None
+    except OSError as err:
+        raise GeneratedCodeError(f"{folder}: cannot read the generated files "
+                                 f"({err.strerror or err}); regenerate them with "
+                                 "`jointplay derive`") from None
     match = _HASH_LINE.search(source[:2000])
     if not match or match.group(1) != layout.input_hash:
         raise GeneratedCodeError(f"{folder}: the input hash of {SOURCE_NAME} does not match "
@@ -239,16 +298,42 @@ def read_generated(folder: str | Path) -> tuple[str, Layout]:
     return source, layout
 
 
+def read_defaults(folder: Path, layout: Layout) -> np.ndarray | None:
+    """The default parameter vector from the folder's robot.toml (None if it has none)."""
+    from jointplay.description import load_robot
+    from jointplay.errors import DescriptionError
+
+    if not (folder / ROBOT_NAME).exists():
+        return None
+    try:
+        robot = load_robot(folder / ROBOT_NAME)
+    except DescriptionError as err:
+        raise GeneratedCodeError(f"{folder / ROBOT_NAME} is not a valid robot description "
+                                 f"({err.field}: {err.message}); regenerate the folder with "
+                                 "`jointplay derive`") from None
+    if robot.parameters() and [p.name for p in robot.parameters()] == layout.parameter_names:
+        return np.asarray(robot.parameter_values())
+    return None
+
+
+def check_generated(folder: str | Path) -> None:
+    """Raise :class:`GeneratedCodeError` unless every file of ``folder`` loads."""
+    folder = Path(folder)
+    _, layout = read_generated(folder)
+    read_defaults(folder, layout)
+
+
 def load_model(folder: str | Path, cflags: tuple[str, ...] = DEFAULT_CFLAGS) -> Model:
     """Compile (or reuse from the cache) and load the generated model in ``folder``."""
-    from jointplay.description import load_robot
-
     folder = Path(folder)
     source, layout = read_generated(folder)
+    defaults = read_defaults(folder, layout)
     library, seconds = compile_source(source, cflags)
-    defaults = None
-    if (folder / ROBOT_NAME).exists():
-        robot = load_robot(folder / ROBOT_NAME)
-        if robot.parameters() and [p.name for p in robot.parameters()] == layout.parameter_names:
-            defaults = np.asarray(robot.parameter_values())
-    return Model(folder, library, layout, seconds, defaults)
+    return Model(folder, library, layout, seconds, defaults, cflags)
+
+
+def note(message: str) -> None:
+    """A one-line note on stderr (something was repaired; the run goes on)."""
+    import sys
+
+    print(f"jointplay: note: {message}", file=sys.stderr)

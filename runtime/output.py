@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterator
+import tempfile
+from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -67,17 +68,63 @@ def coordinate_unit(name: str) -> str:
     return "m" if name.startswith(("ex", "ey")) else "rad"
 
 
-def check_output_path(path: str | Path, flag: str = "--out") -> Path:
-    """Fail early, before anything is written, if ``path`` cannot become a file."""
+def check_output_path(path: str | Path, flag: str = "--out",
+                      inputs: Iterable[str | Path | None] = ()) -> Path:
+    """Fail early, before any work, if ``path`` cannot become a file.
+
+    The folder must exist and take a new file (tried, not guessed from permission bits), an
+    existing ``path`` must be a regular file, and it must not be one of ``inputs`` (the scene
+    it was made from). Temporary files of earlier runs that died writing ``path`` are removed.
+    """
+    from jointplay.files import describe_os_error, sweep_stale, temp_tag
+
     path = Path(path)
     if path.is_dir():
         raise DescriptionError(flag, f"{path} is a folder; give a file name", None)
+    if path.exists() and not path.is_file():
+        raise DescriptionError(flag, f"{path} exists and is not a regular file; give the name "
+                               "of a file to write", None)
+    for item in inputs:
+        if item is not None and _same_file(path, Path(item)):
+            raise DescriptionError(flag, f"{path} is an input of this run ({item}); writing "
+                                   "it would overwrite the input: give another name", None)
     parent = path.parent
     if not parent.is_dir():
         raise DescriptionError(flag, f"folder {parent} does not exist", None)
     if not os.access(parent, os.W_OK | os.X_OK):
         raise DescriptionError(flag, f"cannot write to {parent}: permission denied", None)
+    try:
+        fd, probe = tempfile.mkstemp(prefix=f".{path.name}.{temp_tag()}.", suffix=".part",
+                                     dir=parent)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as err:
+        raise DescriptionError(flag, f"cannot write to {parent}: {describe_os_error(err)}",
+                               None) from None
+    sweep_stale(parent, path.name)
     return path
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    try:
+        if a.exists() and b.exists():
+            return os.path.samefile(a, b)
+        return a.resolve() == b.resolve()
+    except OSError:
+        return False
+
+
+def check_distinct_outputs(paths: Mapping[str, str | Path | None]) -> None:
+    """Refuse two output flags naming one file (one result would silently replace the other)."""
+    seen: dict[Path, str] = {}
+    for flag, value in paths.items():
+        if not value:
+            continue
+        resolved = Path(value).resolve()
+        if resolved in seen:
+            raise DescriptionError(flag, f"{value} is also given to {seen[resolved]}; give each "
+                                   "output its own file", None)
+        seen[resolved] = flag
 
 
 # --------------------------------------------------------------------------------------- HDF5

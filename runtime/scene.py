@@ -28,6 +28,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from jointplay import limits
 from jointplay.description import (
     Joint,
     JointKind,
@@ -38,7 +39,12 @@ from jointplay.description import (
     robot_from_dict,
 )
 from jointplay.errors import DescriptionError
-from jointplay.expressions import TimeFunction, load_torque_table, parse_expression
+from jointplay.expressions import (
+    FUNCTIONS,
+    TimeFunction,
+    load_torque_table,
+    parse_expression,
+)
 
 INTEGRATORS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
 ADAPTIVE: tuple[str, ...] = ("bdf", "cvodes", "idas")
@@ -93,7 +99,10 @@ class Scene:
         """The same scene with some run settings changed (validated)."""
         run = replace(self.run, **changes)
         _validate_run(run, self.source)
-        return replace(self, run=run)
+        scene = replace(self, run=run)
+        if {"t_end", "output_step"} & set(changes):  # a new output grid
+            check_torques_finite(scene)
+        return scene
 
     def with_robot(self, robot: Robot) -> Scene:
         return replace(self, robot=robot)
@@ -131,6 +140,25 @@ def _validate_run(run: RunSettings, source: str | None) -> None:
         hint = f"; did you mean {close[0]!r}?" if close else ""
         raise _error("run.integrator", f"must be one of {', '.join(INTEGRATORS)}, got "
                      f"{run.integrator!r}{hint}", source)
+    for name, low, high in (("t_end", 0.0, limits.MAX_T_END),
+                            ("output_step", limits.MIN_OUTPUT_STEP, math.inf),
+                            ("step", limits.MIN_STEP, math.inf),
+                            ("rtol", limits.MIN_RTOL, math.inf),
+                            ("atol", limits.MIN_ATOL, math.inf)):
+        value = getattr(run, name)
+        if value > high:
+            raise _error(f"run.{name}", f"must be at most {high:g}, got {value:g}", source)
+        if value < low:
+            raise _error(f"run.{name}", f"must be at least {low:g}, got {value:g}", source)
+    if run.t_end / run.output_step > limits.MAX_OUTPUTS + 0.5:
+        raise _error("run.output_step", f"gives {run.t_end / run.output_step:.3g} output "
+                     f"samples over run.t_end = {run.t_end:g} s; at most "
+                     f"{limits.MAX_OUTPUTS} are allowed (raise output_step or shorten t_end)",
+                     source)
+    if run.integrator not in ADAPTIVE and run.t_end / run.step > limits.MAX_FIXED_STEPS:
+        raise _error("run.step", f"gives {run.t_end / run.step:.3g} fixed steps over "
+                     f"run.t_end = {run.t_end:g} s; at most {limits.MAX_FIXED_STEPS} are "
+                     "allowed", source)
     if run.output_step > run.t_end:
         raise _error("run.output_step", f"must not exceed run.t_end ({run.t_end}), got "
                      f"{run.output_step}", source)
@@ -144,9 +172,9 @@ def _validate_run(run: RunSettings, source: str | None) -> None:
     if run.rtol >= 1:
         raise _error("run.rtol", f"must be < 1, got {run.rtol}", source)
     if isinstance(run.max_steps, bool) or not isinstance(run.max_steps, int) \
-            or run.max_steps < 1:
-        raise _error("run.max_steps", f"must be a positive integer, got {run.max_steps!r}",
-                     source)
+            or not 1 <= run.max_steps <= limits.MAX_MAX_STEPS:
+        raise _error("run.max_steps", f"must be an integer from 1 to {limits.MAX_MAX_STEPS}, "
+                     f"got {run.max_steps!r}", source)
 
 
 def _run_settings(raw: Any, source: str | None) -> RunSettings:
@@ -170,7 +198,10 @@ def _run_settings(raw: Any, source: str | None) -> RunSettings:
 def _robot(raw: Any, base: Path | None, source: str | None) -> Robot:
     if isinstance(raw, str):
         path = (base / raw) if base is not None else Path(raw)
-        if not path.is_file():
+        if path.is_dir():
+            raise _error("robot", f"{str(path)!r} is a folder, not a robot description file; "
+                         "give the path of a robot TOML file, or a [robot] table", source)
+        if not path.exists():
             raise _error("robot", f"robot description {str(path)!r} not found; give a path "
                          "relative to the scene file, or a [robot] table", source)
         return load_robot(path)
@@ -188,6 +219,9 @@ def _constants(raw: Any, source: str | None) -> dict[str, float]:
             raise _error(f"constants.{key}", "a constant's name must be a plain identifier "
                          "(letters, digits, underscores; not starting with _), and not t, pi "
                          "or e", source)
+        if key in FUNCTIONS:
+            raise _error(f"constants.{key}", f"{key!r} is the name of a function "
+                         f"({key}(x)); choose another name for the constant", source)
         out[key] = _finite_number(value, f"constants.{key}", source)
     return out
 
@@ -224,6 +258,16 @@ def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path 
                                           constants=constants, source=source))
         texts[key] = text
     return tuple(functions), texts
+
+
+def scene_inputs(scene: Scene) -> list[Path]:
+    """The files a scene was read from (the scene, its torque table): never outputs."""
+    if scene.source is None:
+        return []
+    paths = [Path(scene.source)]
+    if "table" in scene.torque_text:
+        paths.append(Path(scene.source).parent / scene.torque_text["table"])
+    return paths
 
 
 def coordinate_names(robot: Robot) -> list[str]:
@@ -275,8 +319,36 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
     torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
     initial = _initial(data.get("initial", {}), robot, constants, source)
     run = _run_settings(data.get("run", {}), source)
-    return Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
-                 run=run, constants=constants, source=source, text=text)
+    scene = Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
+                  run=run, constants=constants, source=source, text=text)
+    check_torques_finite(scene)
+    return scene
+
+
+def check_torques_finite(scene: Scene) -> None:
+    """Refuse a torque that is not finite at an output time, naming the joint and the time.
+
+    The simulation evaluates the torques at every output time (for the results) and near them
+    (inside the integrator); a torque such as ``1/(t - 0.3)`` would put NaN or inf into the
+    results, so it is refused before anything runs.
+    """
+    import numpy as np
+
+    run = scene.run
+    t = np.arange(run.n_outputs + 1) * run.output_step
+    keys = [f"joint{j}" for j in scene.robot.moving_joints] if scene.robot.drive else []
+    for k, torque in enumerate(scene.torques):
+        values = np.asarray(torque.numpy(t), dtype=np.float64)
+        bad = ~np.isfinite(values)
+        if bad.any():
+            i = int(np.argmax(bad))
+            key = keys[k] if k < len(keys) else f"[{k}]"
+            field_name = "torques.table" if "table" in scene.torque_text else f"torques.{key}"
+            text = scene.torque_text.get(key)
+            shown = f" {text!r}" if text else ""
+            raise _error(field_name, f"the torque{shown} is {values[i]} at t = {t[i]:.9g} s "
+                         "(an output time); every torque must be finite over [0, run.t_end]",
+                         scene.source)
 
 
 def load_scene(path: str | Path) -> Scene:
@@ -294,5 +366,16 @@ def default_scene() -> Scene:
     return load_scene(str(files("jointplay.scenes") / "paper_4dof.toml"))
 
 
-__all__ = ["INTEGRATORS", "Joint", "RunSettings", "Scene", "coordinate_names",
-           "default_scene", "ideal_counterpart", "load_scene", "scene_from_dict"]
+__all__ = [
+    "INTEGRATORS",
+    "Joint",
+    "RunSettings",
+    "Scene",
+    "check_torques_finite",
+    "coordinate_names",
+    "default_scene",
+    "ideal_counterpart",
+    "load_scene",
+    "scene_from_dict",
+    "scene_inputs",
+]

@@ -28,6 +28,7 @@ import math
 import os
 import re
 import socket
+import sys
 import threading
 import time
 import uuid
@@ -40,6 +41,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from jointplay import interrupts, limits
 from jointplay.description import (
     Robot,
     check_keys,
@@ -67,7 +69,7 @@ TOP_KEYS: tuple[str, ...] = ("name", "description", "scene", "mode", "seed", "co
 RUN_KEYS: tuple[str, ...] = tuple(f.name for f in fields(RunSettings))
 GRID_KEYS: tuple[str, ...] = ("start", "stop", "num", "spacing")
 RANDOM_KEYS: tuple[str, ...] = ("distribution", "count", "seed")
-MAX_CASES = 1_000_000
+MAX_CASES = limits.MAX_CASES
 # Dask reruns a task whose worker died (up to distributed.scheduler.allowed-failures times);
 # ``retries`` reruns a task that raised outside the simulation (a model that failed to load).
 RETRIES = 2
@@ -160,9 +162,12 @@ def _number(value: Any, where: str, source: str | None) -> float:
     return float(value)
 
 
-def _integer(value: Any, where: str, source: str | None, minimum: int) -> int:
+def _integer(value: Any, where: str, source: str | None, minimum: int,
+             maximum: int | None = None) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
         raise _error(where, f"must be an integer >= {minimum}, got {value!r}", source)
+    if maximum is not None and value > maximum:
+        raise _error(where, f"must be at most {maximum}, got {value!r}", source)
     return value
 
 
@@ -236,6 +241,9 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
         raw = spec["values"]
         if not isinstance(raw, list) or not raw:
             raise _error(f"{where}.values", "must be a non-empty list of numbers", source)
+        if len(raw) > MAX_CASES:
+            raise _error(f"{where}.values", f"lists {len(raw)} values; at most {MAX_CASES} are "
+                         "allowed", source)
         values = [_number(v, f"{where}.values[{i}]", source) for i, v in enumerate(raw)]
         if len(set(values)) != len(values):
             raise _error(f"{where}.values", "lists a value twice (the cases would repeat)",
@@ -251,7 +259,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
                              source)
         start = _number(spec["start"], f"{where}.start", source)
         stop = _number(spec["stop"], f"{where}.stop", source)
-        num = _integer(spec["num"], f"{where}.num", source, 1)
+        num = _integer(spec["num"], f"{where}.num", source, 1, MAX_CASES)
         spacing = spec.get("spacing", "linear")
         if spacing not in SPACINGS:
             raise _error(f"{where}.spacing", f"must be one of {', '.join(SPACINGS)}, got "
@@ -283,7 +291,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
     if dist in ("normal", "lognormal") and b <= 0:
         raise _error(f"{where}.{params[1]}", f"must be > 0, got {b}", source)
     if "count" in spec:
-        count = _integer(spec["count"], f"{where}.count", source, 1)
+        count = _integer(spec["count"], f"{where}.count", source, 1, MAX_CASES)
     elif "count" in defaults:
         count = defaults["count"]
     else:
@@ -309,7 +317,7 @@ def _run_overrides(raw: Any, scene: Scene, source: str | None) -> Scene:
         if key == "integrator":
             changes[key] = value
         elif key == "max_steps":
-            changes[key] = _integer(value, "run.max_steps", source, 1)
+            changes[key] = _integer(value, "run.max_steps", source, 1, limits.MAX_MAX_STEPS)
         else:
             changes[key] = _number(value, f"run.{key}", source)
     try:
@@ -429,7 +437,7 @@ def sweep_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                      f"{_hint(str(mode), MODES)}", source)
     defaults: dict[str, Any] = {"seed": _integer(data.get("seed", 0), "seed", source, 0)}
     if "count" in data:
-        defaults["count"] = _integer(data["count"], "count", source, 1)
+        defaults["count"] = _integer(data["count"], "count", source, 1, MAX_CASES)
     raw = data.get("parameters")
     if not isinstance(raw, Mapping) or not raw:
         raise _error("parameters", "must be a non-empty table naming what to vary, e.g. "
@@ -522,6 +530,7 @@ def _ideal_result(case: Case, model: Model) -> tuple[SimulationResult, bool]:
         try:
             hit = simulate(scene, model=model, quiet=True)
         except Exception as err:  # deterministic: remembered like a result
+            interrupts.raise_if_interrupted()  # not an interrupt, which is no result at all
             hit = err
         with _IDEAL_LOCK:
             _IDEAL_CACHE[case.ideal_key] = hit
@@ -613,15 +622,24 @@ def run_case(case: Case, *, series: bool = False,
         stage = "robot"
         result = simulate(case.scene, model=model, quiet=True)
     except Exception as err:
+        # An interrupt that compiled code turned into an error is no outcome: the case is
+        # simply not done, and the next run picks it up.
+        interrupts.raise_if_interrupted()
         message = err.cause if isinstance(err, SimulationError) else str(err)
         row.update(status="failed", error=f"{stage}: {message or type(err).__name__}",
                    error_type=type(err).__name__, error_stage=_STAGE_SIMULATION,
                    error_time=getattr(err, "time", None), error_joint=getattr(err, "joint",
                                                                               None))
     else:
-        row.update(_metrics(result, ideal))
-        if series:
-            full = replace(result, ideal=ideal)
+        metrics = _metrics(result, ideal)
+        bad = [name for name, value in metrics.items() if not math.isfinite(value)]
+        if bad:  # never an "ok" row with NaN in it
+            row.update(status="failed", error=f"robot: non-finite {', '.join(bad)}",
+                       error_type="SimulationError", error_stage=_STAGE_SIMULATION)
+        else:
+            row.update(metrics)
+            if series:
+                full = replace(result, ideal=ideal)
     row["wall_time_s"] = time.perf_counter() - start
     # CPU seconds of the process: well below wall time when other work shares the cores.
     row["cpu_time_s"] = time.process_time() - cpu
@@ -644,11 +662,53 @@ def _case_path(out: Path, key: str) -> Path:
 
 
 def _read_row(out: Path, key: str) -> dict[str, Any] | None:
+    """The case's row, or None when it has none or one that is damaged or of another shape
+    (that case then runs again instead of breaking the table)."""
     try:
         row = json.loads(_case_path(out, key).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
-    return row if isinstance(row, dict) and row.get("key") == key else None
+    return row if _valid_row(row, key) else None
+
+
+_INT_METRICS = frozenset(name for name, kind in metric_columns(()) if kind == "int")
+_TEXT_FIELDS = ("error", "error_type", "error_stage", "worker", "series")
+
+
+def _is_number(value: Any, integer: bool = False) -> bool:
+    if isinstance(value, bool):
+        return False
+    return isinstance(value, int) if integer else isinstance(value, (int, float))
+
+
+def _valid_row(row: Any, key: str) -> bool:
+    """A row as :func:`run_case` writes it: the types :func:`build_table` needs, and finite
+    metrics when its status is ok."""
+    if not isinstance(row, dict) or row.get("key") != key or \
+            row.get("status") not in ("ok", "failed"):
+        return False
+    params = row.get("parameters")
+    if not isinstance(params, dict) or not all(_is_number(v) for v in params.values()):
+        return False
+    if any(row.get(name) is not None and not isinstance(row[name], str)
+           for name in _TEXT_FIELDS):
+        return False
+    if row.get("ideal_reused") is not None and not isinstance(row["ideal_reused"], bool):
+        return False
+    if row.get("error_time") is not None and not _is_number(row["error_time"]):
+        return False
+    if row.get("error_joint") is not None and not _is_number(row["error_joint"], True):
+        return False
+    fixed = {"key", "status", "parameters", "ideal_reused", "error_time", "error_joint",
+             *_TEXT_FIELDS}
+    for name, value in row.items():
+        if name in fixed or value is None:
+            continue
+        if not _is_number(value, name in _INT_METRICS):
+            return False
+        if row["status"] == "ok" and not math.isfinite(value):
+            return False
+    return True
 
 
 def _is_finished(row: dict[str, Any] | None, out: Path, *, series: bool,
@@ -862,9 +922,18 @@ def _dask_client(client: Any, scheduler: str | None, workers: int | None) -> Ite
                 raise SweepError(f"cannot reach the Dask scheduler at {scheduler!r}: {err}") \
                     from None
         else:
-            cluster = LocalCluster(n_workers=workers or default_workers(), threads_per_worker=1,
-                                   processes=True, dashboard_address=None,
-                                   silence_logs=logging.ERROR)
+            # Workers stopped mid-task by an interrupt leave semaphores that the resource
+            # tracker (a process that takes its warning options from ours) cleans up, with a
+            # warning that is no concern of the user's.
+            option = "ignore:resource_tracker:UserWarning"
+            if option not in sys.warnoptions:
+                sys.warnoptions.append(option)
+            # Worker processes inherit an ignored SIGINT: Ctrl-C at a terminal reaches the
+            # whole process group, and this process alone stops the sweep, in order.
+            with interrupts.ignored():
+                cluster = LocalCluster(n_workers=workers or default_workers(),
+                                       threads_per_worker=1, processes=True,
+                                       dashboard_address=None, silence_logs=logging.ERROR)
             stack.callback(cluster.close)
             client = Client(cluster)
         stack.callback(client.close)
@@ -886,7 +955,16 @@ def _run_dask(client: Any, pending: Sequence[Case], out: Path, *, series: bool,
             try:
                 outcome = future.result()
             except Exception as err:  # KilledWorker, or a task that kept raising
+                interrupts.raise_if_interrupted()
+                if _is_interrupt(err):  # the worker was interrupted: the case is not done
+                    future.release()
+                    continue
                 outcome = _worker_failure(case, err)
+            except KeyboardInterrupt:
+                if interrupts.interrupted():  # ours, not the worker's
+                    raise
+                future.release()
+                continue
             future.release()
             _record(out, outcome)
             progress.update(1)
@@ -895,10 +973,16 @@ def _run_dask(client: Any, pending: Sequence[Case], out: Path, *, series: bool,
             client.cancel([f for f in futures if f.key in by_key])
 
 
+def _is_interrupt(err: BaseException) -> bool:
+    """Whether a task's error is an interrupt of the worker (Dask may rebuild its type)."""
+    return isinstance(err, KeyboardInterrupt) or type(err).__name__ == "KeyboardInterrupt"
+
+
 def _check_options(client: Any, workers: int | None, scheduler: str | None) -> None:
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
-                                or workers < 0):
-        raise _error("--workers", f"must be an integer >= 0, got {workers!r}", None)
+                                or not 0 <= workers <= limits.MAX_WORKERS):
+        raise _error("--workers", f"must be an integer from 0 to {limits.MAX_WORKERS}, got "
+                     f"{workers!r}", None)
     if scheduler and (client is not None or workers is not None):
         raise _error("--scheduler", "uses the workers of an existing cluster: give no "
                      "--workers (and no client) with it", None)
@@ -922,6 +1006,7 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     """
     from tqdm import tqdm
 
+    from jointplay.files import sweep_stale
     from jointplay.simulation import load_scene_model
 
     started = time.perf_counter()
@@ -942,6 +1027,8 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
         if pending and not serial:  # before anything is written: it may fail to connect
             cluster = stack.enter_context(_dask_client(client, scheduler, workers))
         (out / CASES_DIR).mkdir(parents=True, exist_ok=True)
+        for folder in (out, out / CASES_DIR, out / SERIES_DIR, out / PLOTS_DIR):
+            sweep_stale(folder)  # temporaries of a run that was killed
         if series:
             (out / SERIES_DIR).mkdir(exist_ok=True)
         _write_manifest(sweep, out)

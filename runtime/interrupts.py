@@ -1,0 +1,76 @@
+"""Ctrl-C means interrupt: remember that one arrived, whoever catches what it raises.
+
+Compiled code (CasADi's integrators, h5py) may turn the ``KeyboardInterrupt`` raised by
+Python's handler into an error of its own, or drop it. The command line installs
+:func:`install`, whose handler records the interrupt before raising; any layer that catches
+an error can then ask :func:`interrupted` and re-raise it as the interrupt it was
+(:func:`raise_if_interrupted`). Library callers that never install it see Python's default.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+from collections.abc import Iterator
+from types import FrameType
+
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
+EXIT_TERMINATED = 143  # 128 + SIGTERM
+
+_state = {"interrupted": False}
+
+
+def _on_sigint(signum: int, frame: FrameType | None) -> None:
+    _state["interrupted"] = True
+    raise KeyboardInterrupt
+
+
+def _on_sigterm(signum: int, frame: FrameType | None) -> None:
+    # Unwinding (not dying on the spot) lets every atomic write remove its temporary file.
+    _state["interrupted"] = True
+    raise SystemExit(EXIT_TERMINATED)
+
+
+def install() -> None:
+    """Record SIGINT (then raise KeyboardInterrupt) and turn SIGTERM into an orderly exit."""
+    if threading.current_thread() is not threading.main_thread():
+        return
+    _state["interrupted"] = False
+    signal.signal(signal.SIGINT, _on_sigint)
+    signal.signal(signal.SIGTERM, _on_sigterm)
+
+
+def interrupted() -> bool:
+    """True once SIGINT (or SIGTERM) arrived in this process since :func:`install`."""
+    return _state["interrupted"]
+
+
+def raise_if_interrupted() -> None:
+    """Raise KeyboardInterrupt if an interrupt arrived (call where an error is caught)."""
+    if _state["interrupted"]:
+        raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def ignored() -> Iterator[None]:
+    """Ignore SIGINT while processes are started (they inherit it); an interrupt that
+    arrived meanwhile is raised on the way out."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    raise_if_interrupted()
+
+
+def ignore_in_child() -> None:
+    """For worker processes: leave Ctrl-C to the parent, which stops them in order."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "ignore_in_child", "ignored", "install",
+           "interrupted", "raise_if_interrupted"]
