@@ -9,7 +9,11 @@ HDF5 layout (format "jointplay-result", version 1); every array carries attrs "u
   parameters with attr names); attrs scene_name, integrator, coordinate_names, coordinate_units,
   clearance_joints, torque_joints, parameter_names, format, format_version. q, u and udot mix
   angles and lengths, so they also carry per-column "column_units".
-* ``/impacts``: time, joint, speed, eccentricity.  ``/energy``: one dataset per energy component.
+* ``/impacts``: the contact-phase table, one row per phase, one dataset per column (time, joint,
+  speed, eccentricity, then :data:`~jointplay.results.PHASE_FIELDS`), each with its unit;
+  group attrs ``rows`` and ``columns``. Files written before the phase columns existed hold
+  the first four only and read back with the others NaN (``separated`` False).
+* ``/energy``: one dataset per energy component.
 * ``/metadata``: string metadata as attrs, other values as JSON attrs of ``/metadata/json``;
   solver statistics as the JSON text dataset ``/metadata/stats``.
 * ``/ideal``: the ideal-joint result, same layout (without format attrs), when present.
@@ -28,7 +32,7 @@ import numpy as np
 
 from jointplay.errors import DescriptionError
 from jointplay.files import atomic_path
-from jointplay.results import Impacts, SimulationResult
+from jointplay.results import PHASE_FIELDS, Impacts, SimulationResult
 
 FORMAT = "jointplay-result"
 FORMAT_VERSION = 1
@@ -61,6 +65,8 @@ _IMPACTS: list[tuple[str, str, str]] = [
     ("speed", "m/s", "normal approach speed at onset (before flooring)"),
     ("eccentricity", "m", "journal centre minus bearing centre at onset (ex, ey)"),
 ]
+# Every column of the contact-phase table, in order, with unit and meaning.
+IMPACT_COLUMNS: tuple[tuple[str, str, str], ...] = (*_IMPACTS, *PHASE_FIELDS)
 
 
 def coordinate_unit(name: str) -> str:
@@ -207,8 +213,11 @@ def _write_group(group: Any, r: SimulationResult, compress: bool) -> None:
     _dataset(group, "parameters", r.parameters, "SI", "parameter vector the run used")
     group["parameters"].attrs["names"] = _strings(r.parameter_names)
 
-    impacts = group.create_group("impacts")
-    for name, unit, doc in _IMPACTS:
+    impacts = group.create_group("impacts", track_order=True)
+    impacts.attrs["doc"] = "contact phases, one row per phase in onset order"
+    impacts.attrs["rows"] = len(r.impacts)
+    impacts.attrs["columns"] = _strings([name for name, _, _ in IMPACT_COLUMNS])
+    for name, unit, doc in IMPACT_COLUMNS:
         _dataset(impacts, name, getattr(r.impacts, name), unit, doc)
     energy = group.create_group("energy", track_order=True)
     for name, values in r.energy.items():
@@ -234,7 +243,10 @@ def _int_list(values: Any) -> list[int]:
 
 def _read_group(group: Any, ideal: SimulationResult | None = None) -> SimulationResult:
     arrays = {name: group[name][()] for name, _, _ in _ARRAYS}
-    impacts = Impacts(**{name: group["impacts"][name][()] for name, _, _ in _IMPACTS})
+    table = group["impacts"]
+    # Columns a file lacks (written before the phase columns existed) come back NaN.
+    impacts = Impacts(**{name: table[name][()] for name, _, _ in IMPACT_COLUMNS
+                         if name in table})
     energy = {name: ds[()] for name, ds in group["energy"].items()}
     meta = group["metadata"]
     metadata: dict[str, Any] = {str(k): str(v) for k, v in meta.attrs.items()}
@@ -295,11 +307,45 @@ def _motion_columns(r: SimulationResult, prefix: str) -> Iterator[tuple[str, np.
         yield f"{prefix}tip_{key}y [{unit}]", values[:, 1]
 
 
-def write_csv(result: SimulationResult, path: str | Path) -> None:
-    """Write one row per output sample (impacts are events, not samples: see the HDF5 file)."""
+def impacts_csv_path(path: str | Path) -> Path:
+    """Where the contact-phase table goes beside the samples: ``RUN.csv`` -> ``RUN.impacts.csv``."""
+    path = Path(path)
+    stem = path.name.removesuffix(".csv") if path.suffix == ".csv" else path.name
+    return path.with_name(f"{stem}.impacts.csv")
+
+
+def impact_csv_columns(impacts: Impacts) -> Iterator[tuple[str, np.ndarray, str]]:
+    """(header, column, number format) of the phase table; headers carry the unit."""
+    for name, unit, _ in IMPACT_COLUMNS:
+        values = np.asarray(getattr(impacts, name))
+        if name == "eccentricity":
+            ecc = values.reshape(-1, 2)
+            yield f"eccentricity_x [{unit}]", ecc[:, 0], "%.17g"
+            yield f"eccentricity_y [{unit}]", ecc[:, 1], "%.17g"
+        elif name in ("joint", "separated"):  # integers: joint number, 1 = separated
+            yield name, values.astype(np.int64), "%d"
+        else:
+            yield f"{name} [{unit}]", values, "%.17g"
+
+
+def write_csv(result: SimulationResult, path: str | Path) -> list[Path]:
+    """Write one row per output sample to ``path`` and one row per contact phase to
+    :func:`impacts_csv_path` beside it (phases are events, not samples); return both paths.
+
+    Each file is written atomically; the phase table first, so a samples file under its
+    final name always has its phase table beside it.
+    """
     path = check_output_path(path)
+    phases = check_output_path(impacts_csv_path(path))
+    heads, cols, fmts = zip(*impact_csv_columns(result.impacts), strict=True)
+    rows = np.column_stack([np.asarray(c, dtype=np.float64) for c in cols]) if len(
+        result.impacts) else np.zeros((0, len(heads)))
+    with atomic_path(phases) as tmp:
+        np.savetxt(tmp, rows, fmt=list(fmts), delimiter=",", header=",".join(heads),
+                   comments="", encoding="utf-8")
     headers, columns = zip(*csv_columns(result), strict=True)
     table = np.column_stack([np.asarray(c, dtype=np.float64) for c in columns])
     with atomic_path(path) as tmp:
         np.savetxt(tmp, table, fmt="%.17g", delimiter=",", header=",".join(headers),
                    comments="", encoding="utf-8")
+    return [path, phases]

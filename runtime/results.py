@@ -88,6 +88,13 @@ class Impacts:
         return ("time", "joint", "speed", "eccentricity",
                 *(name for name, _, _ in PHASE_FIELDS))
 
+    def to_pandas(self) -> Any:
+        """A ``pandas.DataFrame``, one row per phase (see
+        :func:`jointplay.export.impacts_frame`)."""
+        from jointplay.export import impacts_frame
+
+        return impacts_frame(self)
+
 
 @dataclass(frozen=True)
 class SimulationResult:
@@ -129,3 +136,10 @@ class SimulationResult:
     @property
     def n_samples(self) -> int:
         return int(self.t.size)
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` with dimensions time, joint, coordinate (see
+        :func:`jointplay.export.result_dataset`)."""
+        from jointplay.export import result_dataset
+
+        return result_dataset(self)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 import os
 import subprocess
 import sys
@@ -14,14 +15,22 @@ import numpy as np
 import pytest
 
 from jointplay.errors import DescriptionError
-from jointplay.output import read_hdf5, write_csv, write_hdf5
+from jointplay.output import (
+    IMPACT_COLUMNS,
+    impacts_csv_path,
+    read_hdf5,
+    write_csv,
+    write_hdf5,
+)
 from jointplay.plots import impact_positions, plot_result
-from jointplay.results import Impacts, SimulationResult
+from jointplay.results import PHASE_FIELDS, Impacts, SimulationResult
 
 LENGTHS = np.array([0.40, 0.30, 0.25, 0.15])
 MASSES = np.array([2.0, 1.5, 1.0, 0.5])
 CLEARANCE = {2: (50e-6, 5.0, 0.7), 3: (80e-6, 3.0, -1.3)}  # joint: (c, f, sweep rate rad/s)
 STIFFNESS, FRICTION, AMPLITUDE = 1e10, 0.1, 0.02
+# Integral of sin(x)^1.5 over [0, pi] = sqrt(pi) Gamma(5/4) / Gamma(7/4).
+SIN_15_INTEGRAL = math.sqrt(math.pi) * math.gamma(1.25) / math.gamma(1.75)
 
 
 def _angles(t: np.ndarray, scale: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -103,8 +112,15 @@ def make_result(n: int = 500, ideal: bool = True) -> SimulationResult:
         fc.append(-fn[-1][:, None] * nrm + ft[-1][:, None] * tan)
         vs.append(r * nu)
         # At an onset r = c: the journal centre sits on the clearance circle, at angle phi.
+        # Each phase is half a period of r - c = c A sin(om t): peak a quarter period in,
+        # separation at the half, exit speed = approach speed, impulse in closed form.
+        peak_force = STIFFNESS * (c * AMPLITUDE) ** 1.5
+        impulse = peak_force / om * SIN_15_INTEGRAL
         impact_rows += [(k / f, joint, c * AMPLITUDE * om,
-                         c * np.cos(0.3 * joint + nu * k / f), c * np.sin(0.3 * joint + nu * k / f))
+                         c * np.cos(0.3 * joint + nu * k / f), c * np.sin(0.3 * joint + nu * k / f),
+                         0.3 * joint + nu * k / f, peak_force, (k + 0.25) / f, c * AMPLITUDE,
+                         (k + 0.25) / f, (k + 0.5) / f, c * AMPLITUDE * om, 0.5 / f, 1.0,
+                         impulse, 0.0, FRICTION * abs(nu) * c * impulse, True)
                         for k in range(1, int(f))]
     e = np.stack(ecc, axis=1)
     q_all = np.hstack([q, e.reshape(n, -1)])
@@ -119,7 +135,10 @@ def make_result(n: int = 500, ideal: bool = True) -> SimulationResult:
     impacts = Impacts(np.array([r[0] for r in impact_rows]),
                       np.array([r[1] for r in impact_rows], dtype=np.int64),
                       np.array([r[2] for r in impact_rows]),
-                      np.array([r[3:] for r in impact_rows]).reshape(-1, 2))
+                      np.array([r[3:5] for r in impact_rows]).reshape(-1, 2),
+                      **{name: np.array([r[5 + i] for r in impact_rows],
+                                        dtype=bool if name == "separated" else np.float64)
+                         for i, (name, _, _) in enumerate(PHASE_FIELDS)})
     names = ["q1", "q2", "q3", "q4", "ex2", "ey2", "ex3", "ey3"]
     return SimulationResult(
         **_common(t, names, q_all, u_all, a_all),
@@ -178,6 +197,14 @@ def test_result_is_consistent(result: SimulationResult) -> None:
         hits = impact_positions(result, k)
         assert np.allclose(np.hypot(hits[:, 0], hits[:, 1]), result.radial_clearance[k],
                            rtol=1e-3)
+        # The hand-made phase peaks bound the sampled force from above and are nearly reached.
+        rows = result.impacts.for_joint(joint)
+        assert np.all(rows.separated)
+        sampled = result.normal_force[:, k]
+        assert sampled.max() <= rows.peak_force.max() * (1 + 1e-12)
+        assert sampled.max() >= 0.99 * rows.peak_force.max()
+        at_peak = np.interp(rows.peak_force_time, result.t, sampled)
+        assert np.allclose(at_peak, rows.peak_force, rtol=1e-2)
 
 
 @pytest.mark.parametrize("compress", [False, True])
@@ -211,6 +238,51 @@ def test_hdf5_layout(result: SimulationResult, tmp_path: Path) -> None:
         assert list(fh["parameters"].attrs["names"]) == result.parameter_names
         assert fh["ideal/q"].shape == (result.n_samples, 4)
         assert fh["ideal/eccentricity"].shape == (result.n_samples, 0, 2)
+
+
+def test_hdf5_impact_table(result: SimulationResult, tmp_path: Path) -> None:
+    """One dataset per column of the phase table, one row per phase, each with its unit."""
+    path = tmp_path / "run.h5"
+    write_hdf5(result, path)
+    with h5py.File(path, "r") as fh:
+        table = fh["impacts"]
+        assert table.attrs["rows"] == len(result.impacts) == 6
+        assert list(table.attrs["columns"]) == list(Impacts.column_names())
+        assert list(table) == list(Impacts.column_names())  # in order
+        for name, unit, _ in IMPACT_COLUMNS:
+            assert table[name].shape[0] == 6, name
+            assert table[name].attrs["unit"] == unit, name
+        assert table["peak_force"].attrs["unit"] == "N"
+        assert table["impulse"].attrs["unit"] == "N s"
+        assert table["separated"].dtype == bool
+        assert table["eccentricity"].shape == (6, 2)
+
+
+def test_hdf5_written_before_the_phase_columns_still_reads(result: SimulationResult,
+                                                           tmp_path: Path) -> None:
+    """A file with only time, joint, speed and eccentricity under /impacts (the layout before
+    the phase table) reads back with the onset columns intact and the phase columns NaN."""
+    path = tmp_path / "old.h5"
+    write_hdf5(result, path)
+    with h5py.File(path, "r+") as fh:
+        for group in (fh, fh["ideal"]):
+            table = group["impacts"]
+            for name, _, _ in PHASE_FIELDS:
+                del table[name]
+            for attr in ("rows", "columns", "doc"):
+                del table.attrs[attr]
+    back = read_hdf5(path)
+    for name in ("time", "joint", "speed", "eccentricity"):
+        assert_same(getattr(result.impacts, name), getattr(back.impacts, name), name)
+    assert len(back.impacts) == 6
+    for name, _, _ in PHASE_FIELDS:
+        values = getattr(back.impacts, name)
+        assert values.shape == (6,), name
+        if name == "separated":
+            assert values.dtype == bool and not values.any()
+        else:
+            assert np.isnan(values).all(), name
+    assert_same(result.q, back.q)
 
 
 def test_hdf5_without_ideal(tmp_path: Path) -> None:
@@ -253,7 +325,93 @@ def test_csv(result: SimulationResult, tmp_path: Path) -> None:
     expected["ideal_tip_y [m]"] = result.ideal.tip_position[:, 1]
     for name, values in expected.items():
         assert np.array_equal(col[name], values), name  # %.17g round-trips exactly
-    assert sorted(os.listdir(tmp_path)) == ["run.csv"]
+    assert sorted(os.listdir(tmp_path)) == ["run.csv", "run.impacts.csv"]
+
+
+def test_csv_impact_table(result: SimulationResult, tmp_path: Path) -> None:
+    """RUN.impacts.csv beside the samples: one row per phase, units in the header."""
+    written = write_csv(result, tmp_path / "run.csv")
+    assert written == [tmp_path / "run.csv", tmp_path / "run.impacts.csv"]
+    assert impacts_csv_path(tmp_path / "run.txt") == tmp_path / "run.txt.impacts.csv"
+    path = tmp_path / "run.impacts.csv"
+    header = path.read_text(encoding="utf-8").splitlines()[0].split(",")
+    assert header[:6] == ["time [s]", "joint", "speed [m/s]", "eccentricity_x [m]",
+                          "eccentricity_y [m]", "onset_angle [rad]"]
+    assert "peak_force [N]" in header and "impulse [N s]" in header
+    assert header[-1] == "separated"
+    table = np.loadtxt(path, delimiter=",", skiprows=1)
+    assert table.shape == (len(result.impacts), len(header))
+    col = {name: table[:, i] for i, name in enumerate(header)}
+    imp = result.impacts
+    for name, values in (("time [s]", imp.time), ("speed [m/s]", imp.speed),
+                         ("eccentricity_y [m]", imp.eccentricity[:, 1]),
+                         ("peak_force [N]", imp.peak_force),
+                         ("max_penetration_time [s]", imp.max_penetration_time),
+                         ("friction_energy [J]", imp.friction_energy),
+                         ("joint", imp.joint), ("separated", imp.separated)):
+        assert np.array_equal(col[name], values), name
+
+
+def test_csv_impact_table_not_located_and_empty(tmp_path: Path) -> None:
+    """Phase columns a run did not fill are written as nan; a run without impacts gets a
+    header-only table."""
+    plain = make_result(n=50, ideal=False)
+    onsets = plain.impacts
+    only_onsets = dataclasses.replace(plain, impacts=Impacts(
+        onsets.time, onsets.joint, onsets.speed, onsets.eccentricity))
+    write_csv(only_onsets, tmp_path / "a.csv")
+    table = np.loadtxt(tmp_path / "a.impacts.csv", delimiter=",", skiprows=1)
+    assert np.array_equal(table[:, 0], onsets.time)
+    assert np.isnan(table[:, 6]).all()
+    write_csv(make_ideal(20), tmp_path / "b.csv")
+    lines = (tmp_path / "b.impacts.csv").read_text(encoding="utf-8").splitlines()
+    assert len(lines) == 1 and lines[0].startswith("time [s],joint,")
+
+
+def test_impacts_to_pandas(result: SimulationResult) -> None:
+    frame = result.impacts.to_pandas()
+    imp = result.impacts
+    assert len(frame) == len(imp) and frame.index.name == "phase"
+    assert list(frame.columns[:5]) == ["time", "joint", "speed", "eccentricity_x",
+                                       "eccentricity_y"]
+    assert frame["joint"].dtype == np.int64 and frame["separated"].dtype == bool
+    assert np.array_equal(frame["peak_force"].to_numpy(), imp.peak_force)
+    assert np.array_equal(frame["eccentricity_x"].to_numpy(), imp.eccentricity[:, 0])
+    assert frame.attrs["units"]["max_penetration"] == "m"
+    assert frame.attrs["units"]["eccentricity_y"] == "m"
+    frame.loc[0, "peak_force"] = -1.0  # a copy: the result is untouched
+    assert imp.peak_force[0] > 0
+    by_joint = frame.groupby("joint")["peak_force"].max()
+    assert by_joint.to_dict() == {j: imp.for_joint(j).peak_force.max() for j in (2, 3)}
+    assert len(Impacts(np.zeros(0), np.zeros(0, dtype=np.int64), np.zeros(0),
+                       np.zeros((0, 2))).to_pandas()) == 0
+
+
+def test_to_xarray(result: SimulationResult) -> None:
+    ds = result.to_xarray()
+    assert ds.sizes["time"] == result.n_samples
+    assert list(ds["joint"].values) == [2, 3]
+    assert list(ds["coordinate"].values) == result.coordinate_names
+    assert list(ds["unit"].values) == ["rad"] * 4 + ["m"] * 4
+    assert ds["q"].dims == ("time", "coordinate")
+    assert ds["eccentricity"].dims == ("time", "joint", "axis")
+    assert ds["normal_force"].dims == ("time", "joint")
+    assert ds["tau"].dims == ("time", "torque_joint")
+    assert ds["normal_force"].attrs["unit"] == "N"
+    assert ds["time"].attrs["unit"] == "s"
+    assert np.array_equal(ds["q"].sel(coordinate="ex3").values, result.q[:, 6])
+    assert np.array_equal(ds["normal_force"].sel(joint=3).values, result.normal_force[:, 1])
+    assert np.array_equal(ds["contact_force"].sel(joint=2, axis="y").values,
+                          result.contact_force[:, 0, 1])
+    assert np.array_equal(ds["energy_balance"].values, result.energy["balance"])
+    assert result.ideal is not None
+    assert np.array_equal(ds["ideal_tip_position"].values, result.ideal.tip_position)
+    assert float(ds["parameters"].sel(parameter="gravity.y")) == -9.81
+    assert ds.attrs["impacts"] == 6
+    one = ds.sel(time=0.5, method="nearest")
+    assert one["q"].shape == (8,)
+    ideal = make_ideal(30).to_xarray()
+    assert ideal.sizes["joint"] == 0 and ideal["eccentricity"].shape == (30, 0, 2)
 
 
 def test_failed_hdf5_write_leaves_nothing(result: SimulationResult, tmp_path: Path,
@@ -288,7 +446,7 @@ def test_failed_write_keeps_previous_file(result: SimulationResult, tmp_path: Pa
     with pytest.raises(KeyboardInterrupt):
         write_csv(result, path)
     assert path.read_bytes() == before
-    assert os.listdir(tmp_path) == ["run.csv"]
+    assert sorted(os.listdir(tmp_path)) == ["run.csv", "run.impacts.csv"]
 
 
 @pytest.mark.parametrize("writer", [write_hdf5, write_csv])
