@@ -19,9 +19,19 @@ Finiteness (the traps of the literature): the unit normal n = e/|e| is undefined
 step(d) * e/|e| is 0 * NaN there, derivatives included; and pow(0, n) differentiated by the
 runtime exponent n is log(0) * 0 = NaN. Here |e| is evaluated as
 sqrt(max(|e|^2, (1e-6 c)^2)): exact wherever |e| > 1e-6 c, bounded away from 0 below, where
-d+ = 0 multiplies everything. Likewise v_t / |v_t| becomes v_t / max(|v_t|, v0): exact wherever
-c_d > 0, finite where c_d = 0. The power d+^n is a branch, d > 0 ? max(d, 1e-300)^n : 0, with
-no NaN in any derivative and a continuous derivative in d at contact onset (n > 1).
+d+ = 0 multiplies everything. Likewise v_t / |v_t| becomes v_t / max(|v_t|, v_floor) with the
+direction floor v_floor = max(v0, v1 / 1000) (see :data:`DIRECTION_FLOOR`). The power d+^n is
+a branch, d > 0 ? max(d, 1e-300)^n : 0, with no NaN in any derivative and a continuous
+derivative in d at contact onset (n > 1).
+
+The direction floor. Where v0 >= v1 / 1000 (the defaults: v0 = 1e-4, v1 = 1e-2 m/s) it is v0,
+and the law is exact wherever c_d > 0 (below v0, c_d = 0 multiplies the floored quotient).
+With v0 = 0 (the dynamic correction ramping from zero speed, as in other codes' regularised
+Coulomb law) a floor of v0 would divide 0 by 0 at v_t = 0; v1 / 1000 takes over. The rule has
+no parameter of its own: it scales with the ramp's width. Below the floor the force is
+mu c_d F_n v_t / v_floor, which is smaller than the exact mu c_d F_n sign(v_t) by at most
+mu F_n c_d(v1 / 1000) <= 1e-3 mu F_n (linear ramp; 3e-6 mu F_n for the smooth one), and its
+slope in v_t stays below 2 mu F_n / v1, the ramp's own scale, so it adds no stiffness.
 """
 
 from __future__ import annotations
@@ -34,6 +44,13 @@ import sympy as sp
 
 # |e| is floored at this fraction of the radial clearance (see module docstring).
 ECCENTRICITY_FLOOR = sp.Rational(1, 10**6)
+# The friction direction v_t / max(|v_t|, v0, DIRECTION_FLOOR * v1) (see module docstring).
+DIRECTION_FLOOR = sp.Rational(1, 10**3)
+
+
+def friction_direction(sliding: sp.Expr, v0: sp.Expr, v1: sp.Expr) -> sp.Expr:
+    """v_t / |v_t|, finite at v_t = 0 for every v0 >= 0 (exact where |v_t| >= the floor)."""
+    return sliding / sp.Max(sp.Abs(sliding), v0, DIRECTION_FLOOR * v1)
 
 
 def penetration_power(delta: sp.Expr, exponent: sp.Expr) -> sp.Expr:
@@ -128,7 +145,7 @@ def contact_terms(
         v0, v1 = P("friction.v0"), P("friction.v1")
         speed = sp.Abs(sliding)
         c_d = friction_ramp(ramp, speed, v0, v1)
-        friction = -P("friction.mu") * c_d * normal * sliding / sp.Max(speed, v0)
+        friction = -P("friction.mu") * c_d * normal * friction_direction(sliding, v0, v1)
 
     return ContactTerms(
         clearance=clearance,

@@ -4,6 +4,7 @@
   jointplay derive  [ROBOT.toml | flags] --out DIR       write the generated model to DIR
   jointplay inspect [ROBOT.toml | flags] [--format text|latex|markdown] [--out FILE.md]
   jointplay simulate [SCENE.toml] [--out RUN.h5] [--csv RUN.csv] [--plot DIR] [--compare-ideal]
+                     [--output-step H] [--animate FILE.gif|mp4]
 
 With neither a file nor flags, the robot is the built-in default (the paper's 4-link arm).
 Bad input exits with status 2 and a message naming the field and what is allowed; nothing is
@@ -186,6 +187,29 @@ def _overrides(items: list[str]) -> dict[str, float]:
     return out
 
 
+# Run settings --set may change (numbers only; the integrator has its own flag).
+_RUN_NUMBERS = ("t_end", "output_step", "rtol", "atol", "step", "max_steps")
+
+
+def _run_overrides(overrides: dict[str, float]) -> dict[str, Any]:
+    """Take the ``run.NAME`` entries out of ``overrides`` (in place) as run-setting changes."""
+    changes: dict[str, Any] = {}
+    for name in [n for n in overrides if n.startswith("run.")]:
+        value = overrides.pop(name)
+        key = name.removeprefix("run.")
+        if key not in _RUN_NUMBERS:
+            raise DescriptionError(f"--set {name}", "is not a run setting --set can change; "
+                                   f"these are run.{', run.'.join(_RUN_NUMBERS)} (the "
+                                   "integrator: --integrator)")
+        if key == "max_steps":
+            if not value.is_integer():
+                raise DescriptionError(f"--set {name}", f"must be a whole number, got {value}")
+            changes[key] = int(value)
+        else:
+            changes[key] = value
+    return changes
+
+
 def cmd_simulate(args: argparse.Namespace) -> int:
     from jointplay.output import check_distinct_outputs, check_output_path
     from jointplay.scene import default_scene, load_scene, scene_inputs
@@ -194,7 +218,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene) if args.scene else default_scene()
     changes = {k: v for k, v in (("integrator", args.integrator), ("rtol", args.rtol),
                                  ("atol", args.atol), ("t_end", args.t_end),
-                                 ("step", args.step)) if v is not None}
+                                 ("step", args.step), ("output_step", args.output_step))
+               if v is not None}
     if changes:
         try:
             scene = scene.with_run(**changes)
@@ -204,12 +229,26 @@ def cmd_simulate(args: argparse.Namespace) -> int:
                 raise
             raise DescriptionError("--" + name.replace("_", "-"), err.message) from None
     overrides = _overrides(args.set or [])
+    run_changes = _run_overrides(overrides)
+    if run_changes:
+        try:
+            scene = scene.with_run(**run_changes)
+        except DescriptionError as err:
+            raise DescriptionError(f"--set {err.field}", err.message) from None
     check_distinct_outputs({"--out": args.out, "--csv": args.csv})
     for flag, path in (("--out", args.out), ("--csv", args.csv)):
         if path:
             check_output_path(path, flag, inputs=scene_inputs(scene))
+    if args.csv:
+        from jointplay.output import impacts_csv_path
+
+        check_output_path(impacts_csv_path(args.csv), "--csv", inputs=scene_inputs(scene))
     if args.plot:
         _check_writable_dir(Path(args.plot), "--plot")
+    if args.animate:
+        from jointplay.animate import check_animation_path
+
+        check_animation_path(args.animate)
     if overrides:
         from jointplay.description import with_parameters
 
@@ -236,17 +275,54 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     if args.csv:
         from jointplay.output import write_csv
 
-        write_csv(result, args.csv)
-        written.append(args.csv)
+        written += [str(p) for p in write_csv(result, args.csv)]
     if args.plot:
         from jointplay.plots import plot_result
 
         written += [str(p) for p in plot_result(result, args.plot)]
+    if args.animate:
+        from jointplay.animate import animate_result
+
+        written.append(str(animate_result(result, args.animate, quiet=quiet)))
     if not quiet:
         print(summary(result))
         for path in written:
             print(f"wrote {path}")
     return 0
+
+
+def _output_step_text(result: Any) -> str:
+    if result.n_samples < 2:
+        return "at the output samples"
+    step = float(np.median(np.diff(result.t)))
+    return f"every {step * 1e3:.4g} ms" if step >= 1e-4 else f"every {step * 1e6:.4g} us"
+
+
+def contact_lines(result: Any) -> list[str]:
+    """Per clearance joint: impacts, largest approach speed, and the located peak force and
+    penetration with their times (from the impact table); a sampled value says it is one."""
+    from jointplay.contacts import joint_contacts
+
+    lines = []
+    for c in joint_contacts(result):
+        if c.impacts == 0 and c.located:
+            lines.append(f"  joint {c.joint}: no impacts, no contact")
+            continue
+        head = f"  joint {c.joint}: {c.impacts} impacts"
+        if c.impacts:
+            head += (f", largest approach speed {c.max_approach_speed:.4g} m/s (onset at "
+                     f"{c.max_approach_speed_time:.7g} s)")
+        lines.append(head)
+        if c.located:
+            lines.append(f"    peak normal force {c.peak_force:.4g} N at {c.peak_force_time:.7g} "
+                         f"s, max penetration {c.max_penetration * 1e6:.4g} um at "
+                         f"{c.max_penetration_time:.7g} s (located)")
+        else:
+            lines.append(f"    peak normal force and max penetration {c.note}")
+            lines.append(f"    sampled {_output_step_text(result)} (not the peak): normal "
+                         f"force up to {c.sampled_peak_force:.4g} N, penetration up to "
+                         f"{c.sampled_max_penetration * 1e6:.4g} um")
+    return lines
 
 
 def summary(result: Any) -> str:
@@ -263,9 +339,7 @@ def summary(result: Any) -> str:
         f"(drive work {result.energy['drive_work'][-1]:.4g} J, dissipated "
         f"{result.energy['dissipated'][-1]:.4g} J)",
     ]
-    for k, j in enumerate(result.clearance_joints):
-        lines.append(f"  joint {j}: max penetration {result.penetration[:, k].max() * 1e6:.3f} um, "
-                     f"peak normal force {result.normal_force[:, k].max():.4g} N")
+    lines += contact_lines(result)
     if result.ideal is not None:
         ideal = result.ideal
         for name, a, b, unit in (("position", result.tip_position, ideal.tip_position, "m"),
@@ -273,7 +347,8 @@ def summary(result: Any) -> str:
                                  ("acceleration", result.tip_acceleration,
                                   ideal.tip_acceleration, "m/s^2")):
             err = np.max(np.linalg.norm(a - b, axis=1))
-            lines.append(f"  end-effector {name} error vs ideal joints: max {err:.4g} {unit}")
+            lines.append(f"  end-effector {name} error vs ideal joints: max {err:.4g} {unit} "
+                         f"(sampled {_output_step_text(result)})")
     return "\n".join(lines)
 
 
@@ -310,10 +385,17 @@ def make_parser() -> argparse.ArgumentParser:
     p_sim.add_argument("--rtol", type=float, help="override run.rtol")
     p_sim.add_argument("--atol", type=float, help="override run.atol")
     p_sim.add_argument("--step", type=float, help="override run.step (fixed-step methods)")
+    p_sim.add_argument("--output-step", type=float, metavar="H",
+                       help="override run.output_step (s): the spacing of the output samples; "
+                            "it must divide run.t_end")
+    p_sim.add_argument("--animate", metavar="FILE.gif|mp4",
+                       help="write an animation of the arm, each journal's orbit magnified in "
+                            "an inset (mp4 needs ffmpeg)")
     p_sim.add_argument("--t-end", type=float, help="override run.t_end (s)")
     p_sim.add_argument("--set", action="append", metavar="NAME=VALUE",
                        help="override a robot parameter, e.g. --set friction.mu=0.1 "
-                            "(repeatable; never recompiles)")
+                            "(repeatable; never recompiles), or a run setting, e.g. --set "
+                            "run.output_step=1e-6")
     p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p_sim.set_defaults(func=cmd_simulate)
     from jointplay import bench, control, identify, sweep

@@ -99,7 +99,10 @@ class Contact:
 
 @dataclass(frozen=True)
 class Friction:
-    """Modified Coulomb friction (Ambrosio): F_t = -mu c_d(|v_t|) F_n v_t/|v_t|."""
+    """Modified Coulomb friction (Ambrosio): F_t = -mu c_d(|v_t|) F_n v_t/|v_t|.
+
+    c_d = 0 below v0 (>= 0; v0 = 0 ramps from zero speed), 1 above v1 (> v0).
+    """
 
     law: FrictionLaw = "coulomb"
     ramp: FrictionRamp = "linear"
@@ -363,7 +366,8 @@ def validate(robot: Robot) -> None:
         raise DescriptionError("friction.ramp",
                                f"must be one of {', '.join(FRICTION_RAMPS)}, got {f.ramp!r}")
     _positive("friction.mu", f.mu, allow_zero=True)
-    _positive("friction.v0", f.v0)
+    # v0 = 0: the correction ramps from zero speed; the law's direction floor keeps it finite.
+    _positive("friction.v0", f.v0, allow_zero=True)
     _positive("friction.v1", f.v1)
     if f.v1 <= f.v0:
         raise DescriptionError("friction.v1", f"must exceed friction.v0 ({f.v0}), got {f.v1}")

@@ -29,7 +29,7 @@ STALE_AGE_S = 24 * 3600.0
 """A temporary file of another host (or of no known process) is stale after a day."""
 
 _HOST = hashlib.sha256(socket.gethostname().encode()).hexdigest()[:6]
-_TAG = re.compile(r"\.j([0-9a-f]{6})p(\d+)\.[^.]*\.part$")
+_TAG = re.compile(r"\.j([0-9a-f]{6})p(\d+)\.[^.]*\.part(\.[A-Za-z0-9]+)?$")
 
 
 def temp_tag() -> str:
@@ -62,15 +62,17 @@ def file_error(path: str | Path, err: OSError, doing: str = "cannot write") -> F
 
 
 @contextlib.contextmanager
-def atomic_path(path: str | Path) -> Iterator[Path]:
+def atomic_path(path: str | Path, suffix: str = ".part") -> Iterator[Path]:
     """Yield a temporary path beside ``path``; rename it onto ``path`` only on success.
 
     An interrupt that arrived while writing (even one some library swallowed) discards the
-    file; an ``OSError`` becomes a :class:`FileError` naming ``path``.
+    file; an ``OSError`` becomes a :class:`FileError` naming ``path``. ``suffix`` ends the
+    temporary name: writers that choose the format by the file's extension need the real one
+    there (e.g. ``".part.gif"``); it must start with ``.part``, which marks it temporary.
     """
     path = Path(path)
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{temp_tag()}.", suffix=".part",
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{temp_tag()}.", suffix=suffix,
                                    dir=path.parent)
     except OSError as err:
         raise file_error(path, err) from None
@@ -137,7 +139,8 @@ def sweep_stale(folder: str | Path, name: str | None = None) -> int:
     except OSError:
         return 0
     for entry in entries:
-        if not (entry.name.startswith(prefix) and entry.name.endswith(".part")):
+        if not (entry.name.startswith(prefix)
+                and (entry.name.endswith(".part") or _TAG.search(entry.name))):
             continue
         if not _is_stale(entry, now):
             continue

@@ -6,6 +6,7 @@ pyplot, so ``import jointplay`` stays fast and no global backend state is touche
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -13,7 +14,7 @@ import numpy as np
 
 from jointplay.errors import DescriptionError
 from jointplay.files import atomic_path
-from jointplay.results import SimulationResult
+from jointplay.results import Impacts, SimulationResult
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -36,6 +37,9 @@ def plot_result(result: SimulationResult, folder: str | Path) -> list[Path]:
         paths.append(plot_orbit(result, k, folder / f"orbit_joint{joint}.png"))
     if result.clearance_joints:
         paths.append(plot_contact_force(result, folder / "contact_force.png"))
+    for k, joint in enumerate(result.clearance_joints):
+        paths.append(plot_contact_timeline(result, k,
+                                           folder / f"contact_timeline_joint{joint}.png"))
     paths.append(plot_energy(result, folder / "energy.png"))
     return paths
 
@@ -187,4 +191,90 @@ def plot_energy(result: SimulationResult, path: Path) -> Path:
     for ax in (top, bottom):
         _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: energy")
+    return _save(fig, path)
+
+
+# The first impact burst ends at the first gap between phases longer than this fraction of
+# the run (or after BURST_MAX phases): a rule on the run, not on the output step.
+BURST_GAP = 0.02
+BURST_MAX = 40
+
+
+def first_burst(impacts: Impacts, span: float) -> tuple[float, float]:
+    """(start, end) s of the first burst of phases in ``impacts`` (one joint's rows)."""
+    if len(impacts) == 0:
+        return math.nan, math.nan
+    ends = np.where(np.isfinite(impacts.separation_time), impacts.separation_time,
+                    impacts.time)
+    end = float(ends[0])
+    for k in range(1, min(len(impacts), BURST_MAX)):
+        if impacts.time[k] - end > BURST_GAP * span:
+            break
+        end = max(end, float(ends[k]))
+    return float(impacts.time[0]), end
+
+
+def _mark_phases(ax: Any, rows: Impacts, scale: float, located: bool) -> None:
+    """Onsets, located peaks (stems) and separations of one joint's phases."""
+    ax.plot(rows.time, np.zeros(len(rows)), "^", color="C2", ms=6, mec="k", mew=0.5,
+            label="onset", zorder=4)
+    if located:
+        ax.vlines(rows.peak_force_time, 0.0, scale * rows.peak_force, color="C3", lw=1.0,
+                  zorder=3)
+        ax.plot(rows.peak_force_time, scale * rows.peak_force, "v", color="C3", ms=6,
+                mec="k", mew=0.5, label="located peak", zorder=5)
+    sep = np.isfinite(rows.separation_time)
+    ax.plot(rows.separation_time[sep], np.zeros(int(sep.sum())), "o", color="C4", mfc="w",
+            ms=5, mew=1.2, label="separation", zorder=4)
+
+
+def plot_contact_timeline(result: SimulationResult, k: int, path: Path) -> Path:
+    """Normal force of clearance joint ``k`` against time with every onset, located peak and
+    separation marked; below, a zoom on the first impact burst."""
+    from jointplay.contacts import joint_contact
+
+    summary = joint_contact(result, k)
+    joint = summary.joint
+    rows = result.impacts.for_joint(joint)
+    force = result.normal_force[:, k]
+    step = float(np.median(np.diff(result.t))) if result.n_samples > 1 else 0.0
+    peaks = rows.peak_force[np.isfinite(rows.peak_force)]
+    factor, prefix = _scale(np.r_[force, peaks, 0.0])
+    fig, axes = _figure(2, 1, 11, 7.5, sharex=False)
+    full, zoom = axes[0, 0], axes[1, 0]
+    sampled = f"sampled every {step * 1e3:.3g} ms" if step else "sampled"
+    for ax in (full, zoom):
+        ax.plot(result.t, factor * force, color="C0", lw=0.9, label=f"normal force, {sampled}")
+        _mark_phases(ax, rows, factor, summary.located and len(rows) > 0)
+        ax.set_ylabel(f"normal force [{prefix}N]")
+        _time_axis(ax)
+    if summary.located and summary.impacts:
+        full.set_title(f"joint {joint}: {summary.impacts} contact phases; largest located peak "
+                       f"{summary.peak_force:.4g} N at {summary.peak_force_time:.6g} s")
+    else:
+        full.set_title(f"joint {joint}: {summary.impacts} contact phases")
+    if not summary.located:
+        full.text(0.99, 0.95, f"peak forces {summary.note}", transform=full.transAxes,
+                  ha="right", va="top", fontsize=8,
+                  bbox={"boxstyle": "round", "fc": "w", "ec": "C3"})
+    span = float(result.t[-1] - result.t[0]) if result.n_samples > 1 else 1.0
+    start, end = first_burst(rows, span)
+    if np.isfinite(start):
+        width = max(end - start, 1e-3 * span)
+        lo, hi = start - 0.1 * width, end + 0.1 * width
+        inside = (result.t >= lo) & (result.t <= hi)
+        zoom.plot(result.t[inside], factor * force[inside], ".", color="C0", ms=4)
+        zoom.set_xlim(lo, hi)
+        shown = (rows.time >= lo) & (rows.time <= hi)
+        tops = [factor * force[inside].max() if inside.any() else 0.0]
+        if summary.located:
+            tops.append(factor * float(np.max(rows.peak_force[shown], initial=0.0)))
+        zoom.set_ylim(-0.05 * max(max(tops), 1e-12), 1.1 * max(max(tops), 1e-12))
+        count = int(shown.sum())
+        zoom.set_title(f"first impact burst: {count} phase{'s' if count != 1 else ''} from "
+                       f"{start:.6g} s to {end:.6g} s")
+    else:
+        zoom.set_title("no impacts")
+    fig.legend(*full.get_legend_handles_labels(), loc="outside lower center", ncols=4)
+    fig.suptitle(f"{result.scene_name}: contact timeline, joint {joint}")
     return _save(fig, path)

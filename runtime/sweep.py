@@ -74,7 +74,8 @@ MAX_CASES = limits.MAX_CASES
 # ``retries`` reruns a task that raised outside the simulation (a model that failed to load).
 RETRIES = 2
 # Bump when the meaning of a case key changes (old case files are then not reused).
-KEY_VERSION = 1
+# 2: contact columns from the located contact-phase table (1 had sampled maxima).
+KEY_VERSION = 2
 CONNECT_TIMEOUT = "20s"
 TABLE_NAME = "sweep.parquet"
 MANIFEST_NAME = "sweep.json"
@@ -553,13 +554,20 @@ class CaseOutcome:
     result: SimulationResult | None = None
 
 
+# Contact columns from the contact-phase table (located, never sampled), overall and per
+# joint; None (null in the table, NaN in pandas) where the run did not locate them.
+CONTACT_METRICS: tuple[tuple[str, str], ...] = (
+    ("peak_normal_force", "float"), ("max_penetration", "float"), ("impacts", "int"),
+    ("max_approach_speed", "float"))
+
+
 def metric_columns(clearance_joints: Sequence[int]) -> list[tuple[str, str]]:
-    """(column, type) of the summary metrics, type one of float, int."""
+    """(column, type) of the summary metrics, type one of float, int, str."""
     cols = [("max_position_error", "float"), ("max_velocity_error", "float"),
-            ("max_acceleration_error", "float"), ("rms_position_error", "float"),
-            ("peak_normal_force", "float")]
-    cols += [(f"peak_normal_force_joint{j}", "float") for j in clearance_joints]
-    cols += [("impacts", "int"), ("energy_dissipated", "float"),
+            ("max_acceleration_error", "float"), ("rms_position_error", "float")]
+    for name, kind in CONTACT_METRICS:
+        cols += [(name, kind)] + [(f"{name}_joint{j}", kind) for j in clearance_joints]
+    cols += [("peak_note", "str"), ("energy_dissipated", "float"),
              ("energy_balance_error", "float")]
     cols += [(name, "int") for name in ("steps", "rhs_evaluations", "jacobian_evaluations",
                                         "error_test_failures", "integrator_calls", "events")]
@@ -577,18 +585,39 @@ def _metrics(result: SimulationResult, ideal: SimulationResult) -> dict[str, Any
         "max_velocity_error": worst(result.tip_velocity, ideal.tip_velocity),
         "max_acceleration_error": worst(result.tip_acceleration, ideal.tip_acceleration),
         "rms_position_error": float(np.sqrt(np.mean(pos**2))),
-        "peak_normal_force": float(np.max(result.normal_force)) if result.normal_force.size
-        else 0.0,
-        "impacts": len(result.impacts),
         "energy_dissipated": float(result.energy["dissipated"][-1]),
         "energy_balance_error": float(np.max(np.abs(result.energy["balance"]))),
         "simulation_time_s": float(result.stats["wall_time_s"]),
     }
-    for k, j in enumerate(result.clearance_joints):
-        out[f"peak_normal_force_joint{j}"] = float(np.max(result.normal_force[:, k]))
+    out.update(contact_metrics(result))
     for name in ("steps", "rhs_evaluations", "jacobian_evaluations", "error_test_failures",
                  "integrator_calls", "events"):
         out[name] = int(result.stats.get(name, 0))
+    return out
+
+
+def _number_or_none(value: float) -> float | None:
+    return None if math.isnan(value) else float(value)
+
+
+def contact_metrics(result: SimulationResult) -> dict[str, Any]:
+    """Peak force, max penetration, impact count and largest approach speed, overall and per
+    clearance joint, from the contact-phase table; ``peak_note`` says why peaks are None."""
+    from jointplay.contacts import joint_contacts, overall
+
+    joints = joint_contacts(result)
+    out: dict[str, Any] = {"impacts": len(result.impacts)}
+    for c in joints:
+        out[f"peak_normal_force_joint{c.joint}"] = _number_or_none(c.peak_force)
+        out[f"max_penetration_joint{c.joint}"] = _number_or_none(c.max_penetration)
+        out[f"impacts_joint{c.joint}"] = c.impacts
+        out[f"max_approach_speed_joint{c.joint}"] = _number_or_none(c.max_approach_speed)
+    out["peak_normal_force"] = _number_or_none(overall([c.peak_force for c in joints]))
+    out["max_penetration"] = _number_or_none(overall([c.max_penetration for c in joints]))
+    speeds = [c.max_approach_speed for c in joints if c.impacts]
+    out["max_approach_speed"] = max(speeds) if speeds else None
+    notes = sorted({f"joint {c.joint}: {c.note}" for c in joints if c.note is not None})
+    out["peak_note"] = "; ".join(notes) if notes else None
     return out
 
 
@@ -766,7 +795,7 @@ def build_table(sweep: Sweep, out: str | Path) -> Any:
     }
     for name in sweep.parameter_names:
         columns[name] = pa.array([r["parameters"].get(name) for _, r in rows], pa.float64())
-    types = {"float": pa.float64(), "int": pa.int64()}
+    types = {"float": pa.float64(), "int": pa.int64(), "str": pa.string()}
     for name, kind in metric_columns(clearance):
         columns[name] = pa.array([r.get(name) for _, r in rows], types[kind])
     for name, kind in (("ideal_reused", pa.bool_()), ("error", pa.string()),
@@ -789,9 +818,11 @@ PLOT_METRICS: tuple[tuple[str, str, str], ...] = (
     ("max_position_error", "max tip position error", "m"),
     ("max_velocity_error", "max tip velocity error", "m/s"),
     ("max_acceleration_error", "max tip acceleration error", "m/s²"),
-    ("peak_normal_force", "peak contact normal force", "N"),
-    ("impacts", "impacts", "count"),
     ("energy_dissipated", "energy dissipated", "J"),
+    ("peak_normal_force", "peak normal force (located)", "N"),
+    ("max_penetration", "max penetration (located)", "m"),
+    ("impacts", "impacts", "count"),
+    ("max_approach_speed", "largest approach speed", "m/s"),
 )
 
 
@@ -819,9 +850,9 @@ def plot_sweep(sweep: Sweep, table: Any, folder: str | Path) -> list[Path]:
         for i in range(len(x)):
             groups.setdefault(tuple(data[o][i] for o in others), []).append(i)
         lines = sweep.mode == "product" and len(groups) <= MAX_PLOT_LINES
-        fig = Figure(figsize=(11.0, 6.4), layout="constrained")
+        fig = Figure(figsize=(14.0, 6.4), layout="constrained")
         FigureCanvasAgg(fig)
-        axs = fig.subplots(2, 3, squeeze=False, sharex=True)
+        axs = fig.subplots(2, 4, squeeze=False, sharex=True)
         for ax, (col, label, unit) in zip(axs.ravel(), PLOT_METRICS, strict=True):
             y = np.array([np.nan if v is None else v for v in data[col]], dtype=np.float64)
             keep = ok & np.isfinite(y)
@@ -837,6 +868,9 @@ def plot_sweep(sweep: Sweep, table: Any, folder: str | Path) -> list[Path]:
                 ax.plot(x[keep], y[keep], "o", ms=3, color="C0", alpha=0.7)
             ax.set_title(label, fontsize=10)
             ax.set_ylabel(unit)
+            if not keep.any() and ok.any():  # e.g. peaks of fixed-step runs: never located
+                ax.text(0.5, 0.5, "not located\n(see the peak_note column)", ha="center",
+                        va="center", transform=ax.transAxes, color="C3")
             if axis.log:
                 ax.set_xscale("log")
                 ticks = sorted(set(axis.values))
@@ -1100,5 +1134,6 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 __all__ = ["Axis", "Case", "CaseOutcome", "Sweep", "SweepError", "SweepResult", "build_table",
-           "case_key", "cmd_sweep", "default_workers", "load_sweep", "metric_columns",
-           "plot_sweep", "register", "run_case", "run_sweep", "sweep_from_dict"]
+           "case_key", "cmd_sweep", "contact_metrics", "default_workers", "load_sweep",
+           "metric_columns", "plot_sweep", "register", "run_case", "run_sweep",
+           "sweep_from_dict"]

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 import jointplay
-from jointplay import DescriptionError, load_robot, robot_from_flags, uniform_chain
+from jointplay import DescriptionError, load_robot, robot_from_flags, uniform_chain, with_parameters
 from jointplay.robotio import robot_to_toml
 
 PAPER = Path(jointplay.__file__).parent / "robots" / "paper_4dof.toml"
@@ -90,6 +90,8 @@ CLEARANCE = ('[[joints]]\nkind = "clearance"\nbearing_radius = 0.01\njournal_rad
          "one joint per link"),
         (LINK + "[frictoin]\nmu = 0.1\n", "frictoin", "did you mean 'friction'"),
         (LINK + "[friction]\nv0 = 0.1\nv1 = 0.01\n", "friction.v1", "must exceed"),
+        (LINK + "[friction]\nv0 = -1e-4\n", "friction.v0", "must be >= 0"),
+        (LINK + "[friction]\nv0 = 0.0\nv1 = 0.0\n", "friction.v1", "must be > 0"),
         (LINK + "[contact]\nrestitution = 1.5\n", "contact.restitution", "(0, 1]"),
         (LINK + "[contact]\nlaw = \"hertz\"\n", "contact.law", "lankarani-nikravesh"),
         (LINK + "[gravity]\nvector = [0.0]\n", "gravity.vector", "[gx, gy]"),
@@ -105,6 +107,13 @@ def test_bad_description_names_the_field(tmp_path: Path, text: str, field: str,
     assert info.value.field == field
     assert message in info.value.message
     assert str(path) in str(info.value)
+
+
+def test_friction_from_zero_speed_is_accepted(tmp_path: Path) -> None:
+    """v0 = 0: the dynamic correction ramps from zero speed (finite: see derive/laws.py)."""
+    robot = load_robot(_write(tmp_path, LINK + CLEARANCE + "[friction]\nv0 = 0.0\n"))
+    assert robot.friction.v0 == 0.0
+    assert with_parameters(robot, {"friction.v0": 0.0}).friction.v0 == 0.0
 
 
 @pytest.mark.parametrize(

@@ -753,6 +753,58 @@ def test_friction_ramp_and_direction(compiled: Callable[[Robot], Model], law: st
     assert checked_full
 
 
+@pytest.mark.parametrize("kind", ["linear", "smooth"])
+def test_friction_ramp_from_zero_speed(compiled: Callable[[Robot], Model], kind: str) -> None:
+    """v0 = 0 (the correction ramps from zero speed) is accepted and stays finite: the
+    direction floor is then v1/1000, so f_t = -mu c_d f_n v_t / max(|v_t|, v1/1000), exact
+    (= -mu c_d f_n sign(v_t)) above the floor, within 1e-3 mu f_n below it. At v_t = 0 in
+    contact every output and every Jacobian block is finite, and the slope d f_t / d v_t
+    (central differences on a grid through 0) stays below 2 mu f_n / v1. Tolerance 1e-12."""
+    base = two_clearance_robot("lankarani-nikravesh", kind)
+    model = compiled(base)
+    mu, v1 = 0.3, 1e-2
+    robot = jointplay.with_parameters(base, {"friction.mu": mu, "friction.v0": 0.0,
+                                             "friction.v1": v1})
+    assert robot.friction.v0 == 0.0
+    p = pvec(robot)
+    floor = 1e-3 * v1
+    delta, angle = 2e-6, 0.9
+    stiffness = joint_stiffness(robot, 1)
+    for speed in (0.0, 1e-9, 0.3 * floor, floor, 2.0 * floor, 0.5 * v1, 3.0 * v1):
+        for sign in (1.0, -1.0):
+            x = contact_state(robot, model, 1, delta, angle, tangential_speed=sign * speed)
+            contact = model.contact(x, p, np.array([0.1, 0.1]))
+            f_n = contact["f_n"][0]
+            assert f_n == pytest.approx(stiffness * contact["delta"][0] ** 1.5, rel=1e-12)
+            c_d = ramp(kind, speed, 0.0, v1)
+            f_t = -mu * c_d * f_n * sign * speed / max(speed, floor)
+            assert contact["f_t"][0] == pytest.approx(f_t, rel=1e-12, abs=1e-14 * f_n)
+            assert abs(contact["f_t"][0] + mu * c_d * f_n * np.sign(sign * speed)) \
+                <= 1e-3 * mu * f_n * (1 + 1e-12)
+            if speed >= floor:
+                assert contact["f_t"][0] == pytest.approx(-mu * c_d * f_n * sign, rel=1e-12)
+    # Finite at v_t = 0 in contact, values and derivatives, with the impact speed floored.
+    rng = np.random.default_rng(3200)
+    tau = rng.uniform(-1.0, 1.0, 2)
+    failures = []
+    for name, x in singular_states(robot, rng).items():
+        for v_imp in (np.zeros(2), np.array([0.1, 0.3])):
+            bad = non_finite_report(model, all_outputs(model, x, tau, p, v_imp))
+            if bad:
+                failures.append(f"{name}, v_imp={v_imp}: " + "; ".join(bad))
+    assert not failures, "\n".join(failures)
+    # No new stiffness: the slope through v_t = 0 stays within the ramp's own 2 mu f_n / v1.
+    speeds = np.linspace(-3.0 * floor, 3.0 * floor, 61)
+    h = 1e-3 * floor
+    for v in speeds:
+        ends = [model.contact(contact_state(robot, model, 1, delta, angle,
+                                            tangential_speed=v + d), p)["f_t"][0]
+                for d in (-h, h)]
+        f_n = model.contact(contact_state(robot, model, 1, delta, angle,
+                                          tangential_speed=v), p)["f_n"][0]
+        assert abs(ends[1] - ends[0]) / (2 * h) <= 2.0 * mu * f_n / v1 * (1 + 1e-6), v
+
+
 def test_friction_none_gives_no_tangential_force(compiled: Callable[[Robot], Model]) -> None:
     robot = two_clearance_robot("lankarani-nikravesh", "none")
     model = compiled(robot)

@@ -14,6 +14,7 @@ import h5py
 import numpy as np
 import pytest
 
+from jointplay.animate import animate_result, arm_points, check_animation_path, frame_indices
 from jointplay.errors import DescriptionError
 from jointplay.output import (
     IMPACT_COLUMNS,
@@ -22,7 +23,7 @@ from jointplay.output import (
     write_csv,
     write_hdf5,
 )
-from jointplay.plots import impact_positions, plot_result
+from jointplay.plots import first_burst, impact_positions, plot_contact_timeline, plot_result
 from jointplay.results import PHASE_FIELDS, Impacts, SimulationResult
 
 LENGTHS = np.array([0.40, 0.30, 0.25, 0.15])
@@ -69,8 +70,8 @@ def _common(t: np.ndarray, names: list[str], q: np.ndarray, u: np.ndarray,
     return {"scene_name": "two-clearance arm", "integrator": "cvodes", "t": t,
             "coordinate_names": names, "q": q, "u": u, "udot": udot,
             "tau": np.cos(np.outer(t, [1.0, 2.0, 3.0, 4.0])), "torque_joints": [1, 2, 3, 4],
-            "parameter_names": ["link1.length", "link2.length", "gravity.y"],
-            "parameters": np.array([0.4, 0.3, -9.81])}
+            "parameter_names": [*(f"link{i}.length" for i in range(1, 5)), "gravity.y"],
+            "parameters": np.r_[LENGTHS, -9.81]}
 
 
 def make_ideal(n: int = 500) -> SimulationResult:
@@ -481,7 +482,7 @@ def test_plots(result: SimulationResult, tmp_path: Path) -> None:
     folder = tmp_path / "plots"
     paths = plot_result(result, folder)
     names = ["end_effector.png", "orbit_joint2.png", "orbit_joint3.png", "contact_force.png",
-             "energy.png"]
+             "contact_timeline_joint2.png", "contact_timeline_joint3.png", "energy.png"]
     assert [p.name for p in paths] == names
     assert sorted(os.listdir(folder)) == sorted(names)
     for p in paths:
@@ -492,11 +493,85 @@ def test_plots(result: SimulationResult, tmp_path: Path) -> None:
 
 def test_plots_without_ideal_or_clearance(tmp_path: Path) -> None:
     paths = plot_result(make_result(n=100, ideal=False), tmp_path / "a")
-    assert len(paths) == 5
+    assert len(paths) == 7
     paths = plot_result(make_ideal(100), tmp_path / "b")
     assert [p.name for p in paths] == ["end_effector.png", "energy.png"]
 
 
 def test_plots_module_imports_no_matplotlib() -> None:
-    code = "import sys, jointplay.plots, jointplay.output; assert 'matplotlib' not in sys.modules"
+    code = ("import sys, jointplay.plots, jointplay.output, jointplay.animate, jointplay.export; "
+            "assert not {'matplotlib', 'pandas', 'xarray'} & set(sys.modules)")
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_first_burst_rule(result: SimulationResult) -> None:
+    """The burst ends at the first gap longer than BURST_GAP of the run."""
+    rows = result.impacts.for_joint(2)  # phases 0.2-0.3, 0.4-0.5, ...: gaps of 0.1 s
+    assert first_burst(rows, 1.0) == (0.2, 0.3)  # 0.1 > 0.02
+    assert first_burst(rows, 10.0) == (0.2, rows.separation_time[-1])  # 0.1 < 0.2
+    assert np.isnan(first_burst(rows.for_joint(9), 1.0)[0])
+
+
+def test_contact_timeline_marks_located_peaks_or_says_not_located(
+        result: SimulationResult, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """With a filled table the located peaks are drawn (stems up to each peak); with onset
+    columns only, the figure says the peaks are not located and draws no peak."""
+    import jointplay.plots as plots
+
+    figures: list[Any] = []
+    original = plots._save
+
+    def keep(fig: Any, path: Path) -> Path:
+        figures.append(fig)
+        return original(fig, path)
+
+    monkeypatch.setattr(plots, "_save", keep)
+    plot_contact_timeline(result, 0, tmp_path / "a.png")
+    onsets = result.impacts
+    bare = dataclasses.replace(result, integrator="rk4", impacts=Impacts(
+        onsets.time, onsets.joint, onsets.speed, onsets.eccentricity))
+    plot_contact_timeline(bare, 0, tmp_path / "b.png")
+    located, bare_fig = (fig.axes[0] for fig in figures)
+    labels = [line.get_label() for line in located.lines]
+    assert "located peak" in labels
+    peak_line = located.lines[labels.index("located peak")]
+    assert np.array_equal(peak_line.get_ydata(), result.impacts.for_joint(2).peak_force)
+    assert "located peak" not in [line.get_label() for line in bare_fig.lines]
+    texts = " ".join(t.get_text() for t in bare_fig.texts)
+    assert "not located" in texts and "rk4" in texts
+    assert (tmp_path / "b.png").read_bytes().startswith(PNG)
+
+
+def test_arm_points_end_at_the_tip(result: SimulationResult) -> None:
+    """The animation's kinematics (sum of relative angles, eccentricity at clearance joints)
+    reproduce the result's tip position."""
+    points = arm_points(result)
+    assert points.shape == (result.n_samples, 5, 2)
+    assert np.allclose(points[:, 0], 0.0)
+    assert np.max(np.abs(points[:, -1] - result.tip_position)) < 1e-14
+
+
+def test_animation_gif(tmp_path: Path) -> None:
+    from PIL import Image
+
+    small = make_result(n=40, ideal=False)
+    path = animate_result(small, tmp_path / "arm.gif", max_frames=4)
+    assert path == tmp_path / "arm.gif"
+    assert os.listdir(tmp_path) == ["arm.gif"]  # no temporary file left
+    with Image.open(path) as image:
+        assert image.format == "GIF" and image.n_frames == 4
+    assert list(frame_indices(40, 4)) == [0, 13, 26, 39]
+    assert list(frame_indices(3, 10)) == [0, 1, 2]
+
+
+def test_animation_refuses_bad_files(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from matplotlib import animation
+
+    with pytest.raises(DescriptionError, match=r"must end in \.gif or \.mp4"):
+        check_animation_path(tmp_path / "arm.avi")
+    monkeypatch.setattr(animation.writers, "is_available", lambda name: False)
+    with pytest.raises(DescriptionError, match="needs the ffmpeg program") as info:
+        check_animation_path(tmp_path / "arm.mp4")
+    assert info.value.field == "--animate"
+    check_animation_path(tmp_path / "arm.gif")  # Pillow needs no program
+    assert os.listdir(tmp_path) == []

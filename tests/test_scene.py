@@ -169,9 +169,46 @@ def test_simulate_command_writes_results_and_plots(tmp_path: Path,
         assert f["parameters"][names.index("payload.mass")] == 2.5
     header = csv.read_text().splitlines()[0]
     assert header.startswith("t [s],") and "delta2 [m]" in header
+    phases = (tmp_path / "run.impacts.csv").read_text().splitlines()
+    assert phases[0].startswith("time [s],joint,speed [m/s],")
+    with h5py.File(out) as f:
+        assert len(phases) - 1 == f["impacts/time"].shape[0]
     assert sorted(p.name for p in plots.iterdir()) == [
-        "contact_force.png", "end_effector.png", "energy.png", "orbit_joint2.png",
-        "orbit_joint3.png"]
+        "contact_force.png", "contact_timeline_joint2.png", "contact_timeline_joint3.png",
+        "end_effector.png", "energy.png", "orbit_joint2.png", "orbit_joint3.png"]
+    # Per joint: impacts and approach speed from the table; a peak that is not located says
+    # so, and a sampled maximum is labelled as sampled.
+    for line in text.splitlines():
+        if "normal force" in line:
+            assert "(located)" in line or "not located" in line or "sampled" in line, line
+    assert "joint 2: " in text and "largest approach speed" in text
+    assert "wrote " + str(tmp_path / "run.impacts.csv") in text
+
+
+def test_output_step_flag_and_run_settings_through_set(tmp_path: Path,
+                                                       capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "run.h5"
+    assert main(["simulate", "--t-end", "0.004", "--output-step", "1e-4", "--out", str(out),
+                 "--quiet"]) == 0
+    with h5py.File(out) as f:
+        assert f["t"].shape == (41,)
+        assert f["t"][1] == pytest.approx(1e-4, rel=1e-12)
+    assert main(["simulate", "--t-end", "0.004", "--set", "run.output_step=5e-4",
+                 "--out", str(out), "--quiet"]) == 0
+    with h5py.File(out) as f:
+        assert f["t"].shape == (9,)
+    for flags, field, message in (
+            (["--output-step", "3e-7"], "--output-step", "must divide run.t_end"),
+            (["--output-step=-1e-3"], "--output-step", "must be > 0"),
+            (["--output-step", "1"], "--output-step", "must not exceed run.t_end"),
+            (["--set", "run.output_step=3e-7"], "--set run.output_step", "must divide"),
+            (["--set", "run.integrator=1"], "--set run.integrator", "not a run setting"),
+            (["--set", "run.max_steps=2.5"], "--set run.max_steps", "whole number"),
+            (["--animate", str(tmp_path / "arm.avi")], "--animate", ".gif or .mp4")):
+        assert main(["simulate", "--t-end", "0.01", *flags, "--quiet"]) == 2, flags
+        err = capsys.readouterr().err
+        assert f"{field}: " in err and message in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["run.h5"]
 
 
 def test_loading_a_generated_model_does_not_import_sympy() -> None:

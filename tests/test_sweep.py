@@ -23,6 +23,7 @@ from jointplay.errors import DescriptionError
 from jointplay.sweep import (
     TABLE_NAME,
     Case,
+    contact_metrics,
     load_sweep,
     register,
     run_sweep,
@@ -155,7 +156,18 @@ def test_local_cluster_equals_serial(tmp_path: Path, client: Any) -> None:
     assert result.ideal is not None
     err = np.linalg.norm(result.tip_position - result.ideal.tip_position, axis=1).max()
     assert err == row["max_position_error"]
-    assert row["peak_normal_force_joint2"] == result.normal_force[:, 0].max()
+    # Contact columns come from the phase table, never from the samples.
+    expected = contact_metrics(result)
+    for name in ("peak_normal_force_joint2", "max_penetration_joint2", "impacts_joint2",
+                 "max_approach_speed_joint2", "peak_note", "impacts"):
+        assert row[name] == expected[name], name
+    rows = result.impacts.for_joint(2)
+    assert row["impacts_joint2"] == len(rows) == row["impacts"] > 0
+    assert row["max_approach_speed_joint2"] == rows.speed.max()
+    if np.isnan(rows.peak_force).any():
+        assert row["peak_normal_force_joint2"] is None and "not located" in row["peak_note"]
+    else:
+        assert row["peak_normal_force_joint2"] == rows.peak_force.max()
     assert sorted(p.name for p in parallel.plots) == ["friction.mu.png",
                                                       "joint2.clearance.png"]
 
@@ -236,6 +248,8 @@ BAD = [
     ('mode = "zip"\n[parameters."friction.mu"]\nvalues = [0.1, 0.2]\n'
      '[parameters."payload.mass"]\nvalues = [1.0]', "parameters.payload.mass", "zip"),
     ('[run]\nt_end = -1.0\n[parameters."friction.mu"]\nvalues = [0.1]', "run.t_end", "> 0"),
+    ('[run]\noutput_step = 3e-7\n[parameters."friction.mu"]\nvalues = [0.1]',
+     "run.output_step", "must divide run.t_end"),
     ('[parameters."friction.mu"]\nvalues = [0.1, 0.1]', "parameters.friction.mu.values",
      "twice"),
 ]
@@ -304,3 +318,43 @@ seed = 3
     # The restitution has its own seed: the top-level seed leaves it alone.
     assert [c.swept["contact.restitution"] for c in other.cases] == \
         [c.swept["contact.restitution"] for c in one.cases]
+
+
+def test_run_output_step_of_a_sweep(tmp_path: Path) -> None:
+    """[run] output_step in a sweep file sets every case's output samples (and its key)."""
+    base = load_sweep(_write(tmp_path, GRID))
+    fine = load_sweep(_write(tmp_path, GRID + "[run]\noutput_step = 5e-4\n"))
+    assert {c.scene.run.output_step for c in fine.cases} == {5e-4}
+    assert {c.scene.run.output_step for c in base.cases} == {1e-3}
+    assert not {c.key for c in fine.cases} & {c.key for c in base.cases}
+
+
+def test_contact_metrics_from_the_table() -> None:
+    """Located peaks from a hand-made table; a table with onsets only gives None + a note."""
+    import dataclasses
+
+    from test_output import make_result
+
+    from jointplay.results import Impacts
+
+    result = make_result(n=200, ideal=False)
+    m = contact_metrics(result)
+    imp = result.impacts
+    for j in (2, 3):
+        rows = imp.for_joint(j)
+        assert m[f"peak_normal_force_joint{j}"] == rows.peak_force.max()
+        assert m[f"max_penetration_joint{j}"] == rows.max_penetration.max()
+        assert m[f"impacts_joint{j}"] == len(rows)
+        assert m[f"max_approach_speed_joint{j}"] == rows.speed.max()
+    assert m["peak_normal_force"] == imp.peak_force.max()
+    assert m["peak_normal_force"] > result.normal_force.max()  # samples miss the peak
+    assert m["max_penetration"] == imp.max_penetration.max()
+    assert m["max_approach_speed"] == imp.speed.max()
+    assert (m["impacts"], m["peak_note"]) == (6, None)
+    bare = dataclasses.replace(result, integrator="radau", impacts=Impacts(
+        imp.time, imp.joint, imp.speed, imp.eccentricity))
+    m = contact_metrics(bare)
+    assert m["peak_normal_force"] is None and m["max_penetration_joint3"] is None
+    assert m["impacts"] == 6 and m["max_approach_speed"] == imp.speed.max()
+    assert "joint 2: not located" in m["peak_note"] and "radau" in m["peak_note"]
+    json.dumps(m, allow_nan=False)  # the case file stays plain JSON
