@@ -661,8 +661,11 @@ def run_case(case: Case, *, series: bool = False,
                                                                               None))
     else:
         metrics = _metrics(result, ideal)
-        bad = [name for name, value in metrics.items() if not math.isfinite(value)]
-        if bad:  # never an "ok" row with NaN in it
+        # None marks a peak the integrator does not locate (see peak_note); anything else
+        # must be finite: never an "ok" row with NaN in it.
+        bad = [name for name, value in metrics.items()
+               if isinstance(value, float) and not math.isfinite(value)]
+        if bad:
             row.update(status="failed", error=f"robot: non-finite {', '.join(bad)}",
                        error_type="SimulationError", error_stage=_STAGE_SIMULATION)
         else:
@@ -701,7 +704,7 @@ def _read_row(out: Path, key: str) -> dict[str, Any] | None:
 
 
 _INT_METRICS = frozenset(name for name, kind in metric_columns(()) if kind == "int")
-_TEXT_FIELDS = ("error", "error_type", "error_stage", "worker", "series")
+_TEXT_FIELDS = ("error", "error_type", "error_stage", "worker", "series", "peak_note")
 
 
 def _is_number(value: Any, integer: bool = False) -> bool:
