@@ -68,8 +68,10 @@ def ignored() -> Iterator[None]:
 
 
 def ignore_in_child() -> None:
-    """For worker processes: leave Ctrl-C to the parent, which stops them in order."""
+    """For worker processes: leave Ctrl-C to the parent, which stops them in order (with
+    SIGTERM, which ends a worker at once: it has nothing of its own to clean up)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
 __all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "ignore_in_child", "ignored", "install",
