@@ -2,9 +2,9 @@
 
 Compiled code (CasADi's integrators, h5py) may turn the ``KeyboardInterrupt`` raised by
 Python's handler into an error of its own, or drop it. The command line installs
-:func:`install`, whose handler records the interrupt before raising; any layer that catches
+:func:`installed`, whose handler records the interrupt before raising; any layer that catches
 an error can then ask :func:`interrupted` and re-raise it as the interrupt it was
-(:func:`raise_if_interrupted`). Library callers that never install it see Python's default.
+(:func:`raise_if_interrupted`). Library callers that never enter it see Python's default.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from types import FrameType
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
 EXIT_TERMINATED = 143  # 128 + SIGTERM
 
-_state = {"interrupted": False}
+_state = {"interrupted": False, "status": EXIT_INTERRUPTED}
 
 
 def _on_sigint(signum: int, frame: FrameType | None) -> None:
@@ -29,21 +29,36 @@ def _on_sigint(signum: int, frame: FrameType | None) -> None:
 def _on_sigterm(signum: int, frame: FrameType | None) -> None:
     # Unwinding (not dying on the spot) lets every atomic write remove its temporary file.
     _state["interrupted"] = True
+    _state["status"] = EXIT_TERMINATED
     raise SystemExit(EXIT_TERMINATED)
 
 
-def install() -> None:
-    """Record SIGINT (then raise KeyboardInterrupt) and turn SIGTERM into an orderly exit."""
+@contextlib.contextmanager
+def installed() -> Iterator[None]:
+    """Within: record SIGINT (then raise KeyboardInterrupt) and turn SIGTERM into an orderly
+    exit. The previous handlers are restored on the way out."""
     if threading.current_thread() is not threading.main_thread():
+        yield
         return
     _state["interrupted"] = False
-    signal.signal(signal.SIGINT, _on_sigint)
-    signal.signal(signal.SIGTERM, _on_sigterm)
+    _state["status"] = EXIT_INTERRUPTED
+    previous = signal.signal(signal.SIGINT, _on_sigint), signal.signal(signal.SIGTERM,
+                                                                       _on_sigterm)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous[0])
+        signal.signal(signal.SIGTERM, previous[1])
 
 
 def interrupted() -> bool:
-    """True once SIGINT (or SIGTERM) arrived in this process since :func:`install`."""
+    """True once SIGINT (or SIGTERM) arrived since :func:`installed` was entered."""
     return _state["interrupted"]
+
+
+def exit_status() -> int:
+    """130 after Ctrl-C (SIGINT), 143 after SIGTERM."""
+    return int(_state["status"])
 
 
 def raise_if_interrupted() -> None:
@@ -74,5 +89,5 @@ def ignore_in_child() -> None:
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
-__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "ignore_in_child", "ignored", "install",
-           "interrupted", "raise_if_interrupted"]
+__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "exit_status", "ignore_in_child", "ignored",
+           "installed", "interrupted", "raise_if_interrupted"]
