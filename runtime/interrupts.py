@@ -18,17 +18,17 @@ from types import FrameType
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
 EXIT_TERMINATED = 143  # 128 + SIGTERM
 
-_state = {"interrupted": False, "status": EXIT_INTERRUPTED}
+_state: dict[str, int] = {"interrupted": 0, "status": EXIT_INTERRUPTED}
 
 
 def _on_sigint(signum: int, frame: FrameType | None) -> None:
-    _state["interrupted"] = True
+    _state["interrupted"] = 1
     raise KeyboardInterrupt
 
 
 def _on_sigterm(signum: int, frame: FrameType | None) -> None:
     # Unwinding (not dying on the spot) lets every atomic write remove its temporary file.
-    _state["interrupted"] = True
+    _state["interrupted"] = 1
     _state["status"] = EXIT_TERMINATED
     raise SystemExit(EXIT_TERMINATED)
 
@@ -40,7 +40,7 @@ def installed() -> Iterator[None]:
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    _state["interrupted"] = False
+    _state["interrupted"] = 0
     _state["status"] = EXIT_INTERRUPTED
     previous = signal.signal(signal.SIGINT, _on_sigint), signal.signal(signal.SIGTERM,
                                                                        _on_sigterm)
@@ -53,7 +53,7 @@ def installed() -> Iterator[None]:
 
 def interrupted() -> bool:
     """True once SIGINT (or SIGTERM) arrived since :func:`installed` was entered."""
-    return _state["interrupted"]
+    return bool(_state["interrupted"])
 
 
 def exit_status() -> int:
