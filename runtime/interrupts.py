@@ -18,7 +18,7 @@ from types import FrameType
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
 EXIT_TERMINATED = 143  # 128 + SIGTERM
 
-_state: dict[str, int] = {"interrupted": 0, "status": EXIT_INTERRUPTED}
+_state: dict[str, int] = {"interrupted": 0, "status": EXIT_INTERRUPTED, "installed": 0}
 
 
 def _on_sigint(signum: int, frame: FrameType | None) -> None:
@@ -44,9 +44,11 @@ def installed() -> Iterator[None]:
     _state["status"] = EXIT_INTERRUPTED
     previous = signal.signal(signal.SIGINT, _on_sigint), signal.signal(signal.SIGTERM,
                                                                        _on_sigterm)
+    _state["installed"] = 1
     try:
         yield
     finally:
+        _state["installed"] = 0
         signal.signal(signal.SIGINT, previous[0])
         signal.signal(signal.SIGTERM, previous[1])
 
@@ -67,10 +69,34 @@ def raise_if_interrupted() -> None:
         raise KeyboardInterrupt
 
 
+def _record_only(signum: int, frame: FrameType | None) -> None:
+    _state["interrupted"] = 1
+
+
 @contextlib.contextmanager
-def ignored() -> Iterator[None]:
-    """Ignore SIGINT while processes are started (they inherit it); an interrupt that
-    arrived meanwhile is raised on the way out."""
+def deferred() -> Iterator[None]:
+    """Within: a SIGINT is recorded but raised only on the way out, so that work which must
+    not be cut in the middle (starting a cluster, whose half-made state nothing could close)
+    finishes first."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = _state["interrupted"]
+    previous = signal.signal(signal.SIGINT, _record_only)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if _state["interrupted"] and not before:
+        if not _state["installed"]:  # a library caller: raise it once, remember nothing
+            _state["interrupted"] = 0
+        raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def ignoring() -> Iterator[None]:
+    """Ignore SIGINT while a process is started, which keeps it ignored (dispositions set to
+    "ignore" survive exec). Keep it brief: a Ctrl-C meanwhile is lost."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
@@ -79,7 +105,6 @@ def ignored() -> Iterator[None]:
         yield
     finally:
         signal.signal(signal.SIGINT, previous)
-    raise_if_interrupted()
 
 
 def ignore_in_child() -> None:
@@ -89,5 +114,5 @@ def ignore_in_child() -> None:
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
-__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "exit_status", "ignore_in_child", "ignored",
-           "installed", "interrupted", "raise_if_interrupted"]
+__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "ignore_in_child",
+           "ignoring", "installed", "interrupted", "raise_if_interrupted"]

@@ -314,17 +314,19 @@ def run_cli(argv: list[str], *, env: dict[str, str] | None = None, timeout: floa
 
 
 def interrupt_when(argv: list[str], ready: str, delay: float, *, sig: int = signal.SIGINT,
-                   code: str | None = None, on_stderr: bool = False,
+                   code: str | None = None, on_stderr: bool = False, group: bool = False,
                    timeout: float = 60) -> tuple[int, str]:
     """Start the command, wait for ``ready`` in its output (stdout, or stderr where progress
     bars go), then ``delay`` s, then send it ``sig``. Returns the exit status and stderr.
 
-    ``code`` replaces the command by a Python program (for probes that need a hook inside).
+    ``code`` replaces the command by a Python program (for probes that need a hook inside);
+    ``group`` signals the command's whole process group, as Ctrl-C at a terminal does.
     """
     command = [sys.executable, "-c", code] if code else [sys.executable, "-m",
                                                           "jointplay.cli", *argv]
     proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            env={**os.environ, "PYTHONUNBUFFERED": "1"})
+                            env={**os.environ, "PYTHONUNBUFFERED": "1"},
+                            start_new_session=group)
     watched = proc.stderr if on_stderr else proc.stdout
     assert watched is not None
     seen = b""
@@ -334,11 +336,14 @@ def interrupt_when(argv: list[str], ready: str, delay: float, *, sig: int = sign
             assert chunk, f"the command ended before {ready!r}"
             seen += chunk
         time.sleep(delay)
-        proc.send_signal(sig)
+        if group:
+            os.killpg(proc.pid, sig)
+        else:
+            proc.send_signal(sig)
         _, err = proc.communicate(timeout=timeout)
     finally:
         if proc.poll() is None:
-            proc.kill()
+            os.killpg(proc.pid, signal.SIGKILL) if group else proc.kill()
             proc.wait()
     return proc.returncode, (seen.decode(errors="replace") if on_stderr else "") + err.decode(
         errors="replace")
@@ -499,13 +504,17 @@ def test_interrupted_sweep_keeps_no_row(tmp_path: Path) -> None:
 
 
 @pytest.mark.slow
-def test_interrupted_sweep_with_workers_keeps_no_row(tmp_path: Path) -> None:
+@pytest.mark.parametrize(("delay", "group"), [(0.5, True), (5.0, True), (5.0, False)])
+def test_interrupted_sweep_with_workers_keeps_no_row(tmp_path: Path, delay: float,
+                                                     group: bool) -> None:
+    """Ctrl-C while the local cluster starts, and while its workers run cases: sent to the
+    whole process group (a terminal) and to the sweep's process alone."""
     sweep = tmp_path / "sweep.toml"
     sweep.write_text('scene = "default"\n[run]\nt_end = 200.0\n[parameters."friction.mu"]\n'
                      'values = [0.0, 0.1]\n', encoding="utf-8")
     out = tmp_path / "out"
     code, err = interrupt_when(["sweep", str(sweep), "--out", str(out), "--workers", "2"],
-                               "sweep ", 5.0)
+                               "sweep ", delay, group=group)
     check_contract(code, err)
     assert code == 130, err
     assert "UserWarning" not in err
@@ -522,3 +531,19 @@ def test_interrupted_identify_leaves_no_model(tmp_path: Path, workers: str) -> N
     check_contract(code, err)
     assert code == 130, err
     assert not out.exists()
+
+
+@pytest.mark.slow
+def test_interrupted_control_writes_nothing(tmp_path: Path) -> None:
+    model = tmp_path / "model"
+    proc = run_cli(["identify", "--out", str(model), "--train", "1", "--validation", "1",
+                    "--test", "1", "--duration", "0.3", "--iterations", "1,1", "--workers", "1",
+                    "--quiet"], timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    out = tmp_path / "runs.h5"
+    code, err = interrupt_when(["control", "--model", str(model), "--out", str(out)],
+                               "scene ", 1.0)
+    check_contract(code, err)
+    assert code == 130, err
+    assert not out.exists()
+    no_temporaries(tmp_path)
