@@ -547,3 +547,19 @@ def test_interrupted_control_writes_nothing(tmp_path: Path) -> None:
     assert code == 130, err
     assert not out.exists()
     no_temporaries(tmp_path)
+
+
+@pytest.mark.parametrize(("error", "cause"), [
+    (OSError(28, "No space left on device"), "no space left on device; free some space or write elsewhere"),
+    (OSError("Unable to synchronously create file (unable to open file: name = 'r.h5', "
+             "errno = 30, error message = 'Read-only file system')"),
+     "read-only file system; write elsewhere"),
+    (PermissionError(13, "Permission denied"),
+     "permission denied; write elsewhere or change the permissions"),
+])
+def test_io_errors_are_one_line(error: OSError, cause: str) -> None:
+    """The causes an I/O error is reported with, h5py's errno-in-the-text included."""
+    from jointplay.files import file_error
+
+    message = str(file_error("/data/run.h5", error))
+    assert message == f"/data/run.h5: cannot write: {cause}"
