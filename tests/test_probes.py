@@ -550,7 +550,8 @@ def test_interrupted_control_writes_nothing(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize(("error", "cause"), [
-    (OSError(28, "No space left on device"), "no space left on device; free some space or write elsewhere"),
+    (OSError(28, "No space left on device"),
+     "no space left on device; free some space or write elsewhere"),
     (OSError("Unable to synchronously create file (unable to open file: name = 'r.h5', "
              "errno = 30, error message = 'Read-only file system')"),
      "read-only file system; write elsewhere"),
