@@ -123,8 +123,12 @@ def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path) -> tuple[
         atomic_write_text(c_file, source)
         tmp_lib = entry / f".{LIBRARY_NAME}.{temp_tag()}.x.part"
         t0 = time.perf_counter()
-        proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(tmp_lib), "-lm"],
-                              capture_output=True, text=True)
+        try:
+            proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(tmp_lib), "-lm"],
+                                  capture_output=True, text=True)
+        except BaseException:  # interrupted: no half-written library left behind
+            tmp_lib.unlink(missing_ok=True)
+            raise
         elapsed = time.perf_counter() - t0
         if proc.returncode != 0:
             tmp_lib.unlink(missing_ok=True)

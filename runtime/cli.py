@@ -422,25 +422,27 @@ def main(argv: list[str] | None = None) -> int:
                         help="show the full traceback of an error")
     _add_debug_flag(parser)
     args = parser.parse_args(argv)
-    interrupts.install()
-    try:
-        code = int(args.func(args))
-        interrupts.raise_if_interrupted()  # one that a library swallowed still counts
-        return code
-    except KeyboardInterrupt:
-        return _interrupted(args)
-    except Exception as err:
-        # Compiled code may turn an interrupt into an error of its own: it is still Ctrl-C.
-        if interrupts.interrupted():
+    with interrupts.installed():
+        try:
+            code = int(args.func(args))
+            interrupts.raise_if_interrupted()  # one that a library swallowed still counts
+            return code
+        except KeyboardInterrupt:
             return _interrupted(args)
-        return _report(err, args)
+        except Exception as err:
+            # Compiled code may turn an interrupt into an error of its own: still Ctrl-C.
+            if interrupts.interrupted():
+                return _interrupted(args)
+            return _report(err, args)
 
 
 def _interrupted(args: argparse.Namespace) -> int:
     if args.debug:
         traceback.print_exc()
-    print("jointplay: interrupted", file=sys.stderr)
-    return interrupts.EXIT_INTERRUPTED
+    status = interrupts.exit_status()
+    print("jointplay: interrupted" if status == interrupts.EXIT_INTERRUPTED
+          else "jointplay: terminated", file=sys.stderr)
+    return status
 
 
 def _report(err: Exception, args: argparse.Namespace) -> int:

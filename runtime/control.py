@@ -750,8 +750,11 @@ def cmd_control(args: argparse.Namespace) -> int:
             raise DescriptionError("--plot", f"cannot create folder {plot}: {err}") from None
     if args.out:
         from jointplay.output import check_output_path
+        from jointplay.scene import scene_inputs
 
-        check_output_path(args.out, "--out")
+        check_output_path(args.out, "--out",
+                          inputs=[*scene_inputs(scene), model_dir / MODEL_FILE,
+                                  model_dir / "datasets.h5"])
     cases = test_case_scenes(model_dir, scene) if args.test_cases else []
 
     quiet = args.quiet

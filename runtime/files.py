@@ -37,14 +37,19 @@ def temp_tag() -> str:
     return f"j{_HOST}p{os.getpid()}"
 
 
-def describe_os_error(err: OSError) -> str:
-    """The cause of an I/O error in a few words (h5py hides errno in its message)."""
+def _errno(err: OSError) -> int:
+    """The error number, also where h5py hides it in its message (0 if none)."""
     if err.errno:
-        return os.strerror(err.errno).lower()
+        return int(err.errno)
+    m = re.search(r"errno = (\d+)", str(err))
+    return int(m.group(1)) if m else 0
+
+
+def describe_os_error(err: OSError) -> str:
+    """The cause of an I/O error in a few words."""
+    if _errno(err):
+        return os.strerror(_errno(err)).lower()
     text = str(err)
-    m = re.search(r"errno = (\d+)", text)
-    if m and int(m.group(1)):
-        return os.strerror(int(m.group(1))).lower()
     return text.splitlines()[0][:200] if text else type(err).__name__
 
 
@@ -55,7 +60,7 @@ def file_error(path: str | Path, err: OSError, doing: str = "cannot write") -> F
             errno.EDQUOT: "; free some space or write elsewhere",
             errno.EROFS: "; write elsewhere",
             errno.EACCES: "; write elsewhere or change the permissions",
-            errno.EFBIG: "; write elsewhere"}.get(err.errno or 0, "")
+            errno.EFBIG: "; write elsewhere"}.get(_errno(err), "")
     if not hint and "space" in cause:
         hint = "; free some space or write elsewhere"
     return FileError(str(path), f"{doing}: {cause}{hint}")

@@ -27,6 +27,7 @@ the training function only.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import hashlib
 import json
 import math
@@ -42,9 +43,11 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
+from jointplay import interrupts
+from jointplay import limits as size_limits
 from jointplay.errors import DescriptionError
 from jointplay.expressions import TableColumn, TimeFunction
-from jointplay.files import atomic_path, atomic_write_text
+from jointplay.files import atomic_path, atomic_write_text, file_error, sweep_stale, temp_tag
 from jointplay.narx import (
     Narx,
     fit_percent,
@@ -410,10 +413,19 @@ def collect(scene: Any, config: IdentifyConfig, inner: InnerLoop, limits: np.nda
             # compiled models are already loaded; workers use numpy and CasADi only.
             methods = multiprocessing.get_all_start_methods()
             context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-            with ProcessPoolExecutor(workers, mp_context=context) as pool:
+            # Workers leave Ctrl-C to this process, which stops them without waiting.
+            pool = ProcessPoolExecutor(workers, mp_context=context,
+                                       initializer=interrupts.ignore_in_child)
+            try:
                 for traj in pool.map(run_task, tasks):
                     results.append(traj)
                     bar.update(1)
+            except BaseException:
+                for process in list(getattr(pool, "_processes", {}).values()):
+                    process.terminate()
+                pool.shutdown(wait=False, cancel_futures=True)
+                raise
+            pool.shutdown()
     return results
 
 
@@ -796,7 +808,8 @@ def _floats(text: str | None, flag: str, count: int | None = None,
     return values * count if count is not None and len(values) == 1 else values
 
 
-def _ints(text: str, flag: str, size: int | None = None, low: int = 1) -> tuple[int, ...]:
+def _ints(text: str, flag: str, size: int | None = None, low: int = 1,
+          high: int | None = None) -> tuple[int, ...]:
     try:
         values = tuple(int(v) for v in text.split(",") if v.strip())
     except ValueError:
@@ -804,6 +817,8 @@ def _ints(text: str, flag: str, size: int | None = None, low: int = 1) -> tuple[
     if not values or any(v < low for v in values) or (size is not None and len(values) != size):
         what = f"{size} integers" if size else "integers"
         raise DescriptionError(flag, f"expects {what} >= {low}, got {text!r}")
+    if high is not None and max(values) > high:
+        raise DescriptionError(flag, f"every value must be at most {high}, got {text!r}")
     return values
 
 
@@ -849,20 +864,31 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False)
     joints = tuple(scene.robot.moving_joints)
     inner = inner_loop_for(scene, config.kp, config.kd)
     limits = np.asarray(config.torque_limit) if config.torque_limit else default_limits(scene)
+    created = not out.exists()
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as err:
         raise DescriptionError("--out", f"cannot create folder {out}: {err}") from None
+    sweep_stale(out)  # the staging folder of a run that was killed
     # Everything is written into a staging folder and moved into ``out`` only once training
     # and evaluation succeeded: a failed run leaves a previous model folder as it was.
-    stage = Path(tempfile.mkdtemp(prefix=".identify.", dir=out))
+    try:
+        stage = Path(tempfile.mkdtemp(prefix=f".identify.{temp_tag()}.", suffix=".part",
+                                      dir=out))
+    except OSError as err:
+        raise file_error(out, err) from None
     try:
         metrics = _identify_into(scene, stage, config, inner, limits, joints, dt, quiet)
         (out / "narx.json").unlink(missing_ok=True)  # a model only once every file is in
         for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, "narx.json"):
             os.replace(stage / name, out / name)
-    finally:
+    except BaseException:
         shutil.rmtree(stage, ignore_errors=True)
+        if created:  # leave no empty model folder behind
+            with contextlib.suppress(OSError):
+                out.rmdir()
+        raise
+    shutil.rmtree(stage, ignore_errors=True)
     return metrics
 
 
@@ -980,15 +1006,32 @@ def cmd_identify(args: argparse.Namespace) -> int:
         parent = parent.parent
     if not os.access(parent, os.W_OK):
         raise DescriptionError("--out", f"cannot write to {parent}: permission denied")
-    lags = _ints(args.lags, "--lags", 2)
-    hidden = _ints(args.hidden, "--hidden")
-    iters = _ints(args.iterations, "--iterations", 2, low=0)
+    lags = _ints(args.lags, "--lags", 2, high=size_limits.MAX_LAGS)
+    hidden = _ints(args.hidden, "--hidden", high=size_limits.MAX_HIDDEN_WIDTH)
+    if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:
+        raise DescriptionError("--hidden", f"gives {len(hidden)} layers; at most "
+                               f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
+    iters = _ints(args.iterations, "--iterations", 2, low=0, high=size_limits.MAX_ITERATIONS)
     counts = _ints(f"{args.train},{args.validation},{args.test}", "--train/--validation/--test")
+    if sum(counts) > size_limits.MAX_TRAJECTORIES:
+        raise DescriptionError("--train/--validation/--test", f"{sum(counts)} trajectories in "
+                               f"all; at most {size_limits.MAX_TRAJECTORIES} are allowed")
+    for flag, value, low, high in (("--window", args.window, 2, size_limits.MAX_WINDOW),
+                                   ("--workers", args.workers, 0, size_limits.MAX_WORKERS)):
+        if not low <= value <= high:
+            raise DescriptionError(flag, f"must be an integer from {low} to {high}, got {value}")
     if not (isinstance(args.duration, float) and math.isfinite(args.duration)
             and args.duration > 0):
         raise DescriptionError("--duration", f"must be a positive number of seconds, got "
                                f"{args.duration!r}")
     dt = scene.run.output_step
+    if args.duration > size_limits.MAX_T_END:
+        raise DescriptionError("--duration", f"must be at most {size_limits.MAX_T_END:g} s, got "
+                               f"{args.duration:g}")
+    if sum(counts) * args.duration / dt > size_limits.MAX_IDENTIFY_SAMPLES:
+        raise DescriptionError("--duration", f"{sum(counts)} trajectories of {args.duration:g} s "
+                               f"at {dt:g} s per sample are {sum(counts) * args.duration / dt:.3g} "
+                               f"samples; at most {size_limits.MAX_IDENTIFY_SAMPLES} are allowed")
     if round(args.duration / dt) < max(lags) + 2 + round(0.05 / dt):
         raise DescriptionError("--duration", f"{args.duration:g} s is too short for lags "
                                f"{lags} at {dt:g} s per sample after the 0.05 s transient")
@@ -1007,10 +1050,6 @@ def cmd_identify(args: argparse.Namespace) -> int:
         scene.with_run(t_end=config.duration)
     except DescriptionError as err:
         raise DescriptionError("--duration", err.message) from None
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as err:
-        raise DescriptionError("--out", f"cannot create folder {out}: {err}") from None
     started = time.perf_counter()
     identify(scene, out, config, quiet=args.quiet)
     if not args.quiet:

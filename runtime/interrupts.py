@@ -2,9 +2,9 @@
 
 Compiled code (CasADi's integrators, h5py) may turn the ``KeyboardInterrupt`` raised by
 Python's handler into an error of its own, or drop it. The command line installs
-:func:`install`, whose handler records the interrupt before raising; any layer that catches
+:func:`installed`, whose handler records the interrupt before raising; any layer that catches
 an error can then ask :func:`interrupted` and re-raise it as the interrupt it was
-(:func:`raise_if_interrupted`). Library callers that never install it see Python's default.
+(:func:`raise_if_interrupted`). Library callers that never enter it see Python's default.
 """
 
 from __future__ import annotations
@@ -18,32 +18,49 @@ from types import FrameType
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
 EXIT_TERMINATED = 143  # 128 + SIGTERM
 
-_state = {"interrupted": False}
+_state: dict[str, int] = {"interrupted": 0, "status": EXIT_INTERRUPTED, "installed": 0}
 
 
 def _on_sigint(signum: int, frame: FrameType | None) -> None:
-    _state["interrupted"] = True
+    _state["interrupted"] = 1
     raise KeyboardInterrupt
 
 
 def _on_sigterm(signum: int, frame: FrameType | None) -> None:
     # Unwinding (not dying on the spot) lets every atomic write remove its temporary file.
-    _state["interrupted"] = True
+    _state["interrupted"] = 1
+    _state["status"] = EXIT_TERMINATED
     raise SystemExit(EXIT_TERMINATED)
 
 
-def install() -> None:
-    """Record SIGINT (then raise KeyboardInterrupt) and turn SIGTERM into an orderly exit."""
+@contextlib.contextmanager
+def installed() -> Iterator[None]:
+    """Within: record SIGINT (then raise KeyboardInterrupt) and turn SIGTERM into an orderly
+    exit. The previous handlers are restored on the way out."""
     if threading.current_thread() is not threading.main_thread():
+        yield
         return
-    _state["interrupted"] = False
-    signal.signal(signal.SIGINT, _on_sigint)
-    signal.signal(signal.SIGTERM, _on_sigterm)
+    _state["interrupted"] = 0
+    _state["status"] = EXIT_INTERRUPTED
+    previous = signal.signal(signal.SIGINT, _on_sigint), signal.signal(signal.SIGTERM,
+                                                                       _on_sigterm)
+    _state["installed"] = 1
+    try:
+        yield
+    finally:
+        _state["installed"] = 0
+        signal.signal(signal.SIGINT, previous[0])
+        signal.signal(signal.SIGTERM, previous[1])
 
 
 def interrupted() -> bool:
-    """True once SIGINT (or SIGTERM) arrived in this process since :func:`install`."""
-    return _state["interrupted"]
+    """True once SIGINT (or SIGTERM) arrived since :func:`installed` was entered."""
+    return bool(_state["interrupted"])
+
+
+def exit_status() -> int:
+    """130 after Ctrl-C (SIGINT), 143 after SIGTERM."""
+    return int(_state["status"])
 
 
 def raise_if_interrupted() -> None:
@@ -52,10 +69,34 @@ def raise_if_interrupted() -> None:
         raise KeyboardInterrupt
 
 
+def _record_only(signum: int, frame: FrameType | None) -> None:
+    _state["interrupted"] = 1
+
+
 @contextlib.contextmanager
-def ignored() -> Iterator[None]:
-    """Ignore SIGINT while processes are started (they inherit it); an interrupt that
-    arrived meanwhile is raised on the way out."""
+def deferred() -> Iterator[None]:
+    """Within: a SIGINT is recorded but raised only on the way out, so that work which must
+    not be cut in the middle (starting a cluster, whose half-made state nothing could close)
+    finishes first."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = _state["interrupted"]
+    previous = signal.signal(signal.SIGINT, _record_only)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if _state["interrupted"] and not before:
+        if not _state["installed"]:  # a library caller: raise it once, remember nothing
+            _state["interrupted"] = 0
+        raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def ignoring() -> Iterator[None]:
+    """Ignore SIGINT while a process is started, which keeps it ignored (dispositions set to
+    "ignore" survive exec). Keep it brief: a Ctrl-C meanwhile is lost."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
@@ -64,13 +105,14 @@ def ignored() -> Iterator[None]:
         yield
     finally:
         signal.signal(signal.SIGINT, previous)
-    raise_if_interrupted()
 
 
 def ignore_in_child() -> None:
-    """For worker processes: leave Ctrl-C to the parent, which stops them in order."""
+    """For worker processes: leave Ctrl-C to the parent, which stops them in order (with
+    SIGTERM, which ends a worker at once: it has nothing of its own to clean up)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
-__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "ignore_in_child", "ignored", "install",
-           "interrupted", "raise_if_interrupted"]
+__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "ignore_in_child",
+           "ignoring", "installed", "interrupted", "raise_if_interrupted"]

@@ -949,7 +949,7 @@ def _dask_client(client: Any, scheduler: str | None, workers: int | None) -> Ite
     if client is not None:
         yield client
         return
-    from distributed import Client, LocalCluster
+    from distributed import Client
 
     with contextlib.ExitStack() as stack:
         if scheduler:
@@ -965,16 +965,46 @@ def _dask_client(client: Any, scheduler: str | None, workers: int | None) -> Ite
             option = "ignore:resource_tracker:UserWarning"
             if option not in sys.warnoptions:
                 sys.warnoptions.append(option)
-            # Worker processes inherit an ignored SIGINT: Ctrl-C at a terminal reaches the
-            # whole process group, and this process alone stops the sweep, in order.
-            with interrupts.ignored():
-                cluster = LocalCluster(n_workers=workers or default_workers(),
-                                       threads_per_worker=1, processes=True,
-                                       dashboard_address=None, silence_logs=logging.ERROR)
-            stack.callback(cluster.close)
+            cluster = stack.enter_context(_local_cluster(workers or default_workers()))
             client = Client(cluster)
         stack.callback(client.close)
         yield client
+
+
+@contextlib.contextmanager
+def _local_cluster(workers: int) -> Iterator[Any]:
+    """A local cluster whose worker processes ignore SIGINT.
+
+    Ctrl-C at a terminal reaches the whole process group; this process alone must stop the
+    sweep, in order (a worker interrupted on its own prints tracebacks and loses its case).
+    Workers are forked from a fork server started with SIGINT ignored, which they inherit;
+    this process ignores SIGINT only while that server starts, a few milliseconds.
+    """
+    import multiprocessing
+
+    import dask
+    from distributed import LocalCluster
+
+    settings = {}
+    if "forkserver" in multiprocessing.get_all_start_methods():
+        from multiprocessing import forkserver
+
+        with interrupts.ignoring():
+            forkserver.ensure_running()
+        settings["distributed.worker.multiprocessing-method"] = "forkserver"
+    # Started whole even when Ctrl-C comes meanwhile (then closed, and the interrupt raised).
+    # Worker logs only at CRITICAL: a worker that loses its scheduler when a sweep is
+    # interrupted logs errors that are no concern of the user's; failed cases come back as
+    # rows and errors.
+    cluster = None
+    try:
+        with interrupts.deferred(), dask.config.set(settings):
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                   dashboard_address=None, silence_logs=logging.CRITICAL)
+        yield cluster
+    finally:
+        if cluster is not None:
+            cluster.close()
 
 
 def _run_dask(client: Any, pending: Sequence[Case], out: Path, *, series: bool,
