@@ -16,7 +16,7 @@ compiled, and never executed: torque expressions go through the restricted parse
     [run]
     t_end = 2.0
     output_step = 1e-3
-    integrator = "cvodes"    # cvodes | idas | bdf | rk4 | radau
+    integrator = "bdf"       # bdf | cvodes | idas | rk4 | radau
 """
 
 from __future__ import annotations
@@ -66,7 +66,7 @@ class RunSettings:
 
     t_end: float = 2.0
     output_step: float = 1e-3
-    integrator: str = "cvodes"
+    integrator: str = "bdf"
     rtol: float = 1e-6
     atol: float = 1e-5
     step: float = 1e-5

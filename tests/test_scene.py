@@ -56,7 +56,7 @@ def test_default_scene_is_the_papers_example() -> None:
     np.testing.assert_allclose(scene.torques[0].numpy(t), 4 * np.sin(2 * np.pi * t), atol=1e-14)
     np.testing.assert_allclose(scene.torques[1].numpy(t), 2 * np.sin(2 * np.pi * t), atol=1e-14)
     assert (scene.run.t_end, scene.run.output_step, scene.run.integrator) == (2.0, 1e-3,
-                                                                               "cvodes")
+                                                                               "bdf")
 
 
 def test_a_scene_compiles_only_the_effects_it_asks_for(tmp_path: Path) -> None:

@@ -160,9 +160,11 @@ def test_explicit_method_beyond_its_stability_limit_stops_with_a_message() -> No
         simulate(scene)
 
 
-def test_work_limit_stops_with_a_message() -> None:
-    scene = default_scene().with_run(t_end=0.02, max_steps=20)
-    with pytest.raises(SimulationError, match=r"cvodes failed .*run\.max_steps"):
+@pytest.mark.parametrize("integrator", ["bdf", "cvodes"])
+def test_work_limit_stops_with_a_message(integrator: str) -> None:
+    scene = default_scene().with_run(t_end=0.02, max_steps=20, integrator=integrator)
+    with pytest.raises(SimulationError, match=r"too many steps between outputs: raise "
+                                              r"run\.max_steps"):
         simulate(scene)
 
 

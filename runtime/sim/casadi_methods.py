@@ -5,7 +5,7 @@ independent of jointplay's compiled BDF, used to cross-check it. Each contact fl
 quadrature of the indicator "this joint's penetration disagrees with its flag"; output
 intervals where every indicator stays zero are accepted, and in one where one does not, the
 first transition is located by Illinois regula falsi on the penetration (to
-``EVENT_TIME_TOLERANCE`` or ``GAP_TOLERANCE`` of the clearance), the flag flips there and the
+tolerances that follow rtol and atol, see ``jointplay.sim.problem``), the flag flips there and the
 integration restarts from the event. CasADi 3.8's own event support finds a crossing only
 within the integrator's last internal step and failed at stiff contact onsets.
 """
@@ -21,7 +21,6 @@ from jointplay.errors import SimulationError
 from jointplay.model import FastFunction
 from jointplay.sim.problem import (
     CHUNK_OUTPUTS,
-    EVENT_TIME_TOLERANCE,
     MAX_EVENTS_PER_OUTPUT,
     _Accumulated,
     _EventState,
@@ -195,7 +194,7 @@ def _resolve_interval(integ: _AdaptiveIntegrator, pr: _Problem, x: np.ndarray, t
         hi, x_hi, q_hi = tb, xs[0], qs[0]
         g_lo, g_hi = events.gap(x_lo), events.gap(x_hi)
         kept = 0  # +1 / -1: how many times in a row lo / hi stayed put
-        while hi - lo > EVENT_TIME_TOLERANCE:
+        while hi - lo > pr.event_time_tolerance:
             crossed = g_hi > 0
             if np.any(crossed) and np.all(g_hi[crossed] < pr.gap_tolerance[crossed]):
                 break
