@@ -48,6 +48,7 @@ import numpy as np
 
 from jointplay.errors import DescriptionError, SimulationError
 from jointplay.files import atomic_path, atomic_write_text
+from jointplay.scene import ADAPTIVE
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -58,7 +59,7 @@ if TYPE_CHECKING:
 
 DEFAULT_RTOLS: tuple[float, ...] = (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9)
 DEFAULT_STEPS: tuple[float, ...] = (4e-5, 2e-5, 1e-5, 5e-6, 2.5e-6)
-DEFAULT_METHODS: tuple[str, ...] = ("cvodes", "idas", "rk4", "radau")
+DEFAULT_METHODS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
 QUICK_T_END = 0.01
 QUICK_RTOLS: tuple[float, ...] = (1e-4, 1e-6)
 QUICK_STEPS: tuple[float, ...] = (2e-5, 1e-5)
@@ -178,7 +179,7 @@ def run_counts(result: SimulationResult | None) -> dict[str, Any]:
 
 def run_label(scene: Scene) -> str:
     run = scene.run
-    if run.integrator in ("cvodes", "idas"):
+    if run.integrator in ADAPTIVE:
         return f"{run.integrator} rtol={run.rtol:g} atol={run.atol:g}"
     return f"{run.integrator} step={run.step:g}"
 
@@ -304,7 +305,7 @@ def sweep_configurations(scene: Scene, methods: Sequence[str], rtols: Sequence[f
     """One scene per (method, tolerance or step), in table order."""
     out = []
     for method in methods:
-        if method in ("cvodes", "idas"):
+        if method in ADAPTIVE:
             out += [scene.with_run(integrator=method, rtol=r, atol=r) for r in rtols]
         else:
             out += [scene.with_run(integrator=method, step=h) for h in steps]
@@ -328,7 +329,7 @@ def work_precision(scene: Scene, model: Model, *, methods: Sequence[str] = DEFAU
             bar.set_description(run_label(config))
             timed = timed_runs(config, model, repeats)
             run = config.run
-            adaptive = run.integrator in ("cvodes", "idas")
+            adaptive = run.integrator in ADAPTIVE
             row: dict[str, Any] = {
                 "config": kind,
                 "method": run.integrator,
@@ -353,7 +354,7 @@ def work_precision(scene: Scene, model: Model, *, methods: Sequence[str] = DEFAU
 
 def _plot_work_precision(wp: WorkPrecision, path: Path) -> Path:
     fig, axes = _figure(2, 2, 10.0, 7.5)
-    markers = {"cvodes": "o", "idas": "s", "rk4": "^", "radau": "D"}
+    markers = {"bdf": "*", "cvodes": "o", "idas": "s", "rk4": "^", "radau": "D"}
     for ax, key in zip(axes.ravel(), ERROR_KEYS, strict=True):
         for r in wp.rows:
             if r["config"] == "scene settings" and r["status"] == "ok" and r[key] > 0:
@@ -659,7 +660,7 @@ def scaling_scene(robot: Any, sim_time: float) -> Scene:
     initial = {"q1": "-pi/2"} if 1 in robot.moving_joints else {}
     return scene_from_dict({
         "name": robot.name, "robot": robot.to_dict(), "torques": torques, "initial": initial,
-        "run": {"t_end": sim_time, "output_step": 1e-3, "integrator": "cvodes",
+        "run": {"t_end": sim_time, "output_step": 1e-3, "integrator": "bdf",
                 "rtol": 1e-6, "atol": 1e-6}})
 
 
@@ -772,7 +773,7 @@ def _plot_scaling(rows: list[dict[str, Any]], path: Path, sim_time: float) -> Pa
     axes[0, 0].set_ylabel("seconds (cold process, empty cache)")
     axes[0, 0].set_title("derive, emit and compile", fontsize=10)
     axes[0, 1].set_ylabel("CPU s per simulated second")
-    axes[0, 1].set_title(f"simulation ({sim_time:g} s driven motion, cvodes rtol 1e-6)",
+    axes[0, 1].set_title(f"simulation ({sim_time:g} s driven motion, bdf rtol 1e-6)",
                          fontsize=10)
     for ax in axes[0]:
         ax.set_yscale("log")
@@ -790,7 +791,7 @@ def write_scaling(rows: list[dict[str, Any]], out: Path, *, sim_time: float,
     md += ["- each case in a fresh process with an empty compile cache: sympy derivation "
            "(Kane's method), CasADi emission, gcc with the default flags",
            f"- simulation: uniform chain of 0.3 m, 1 kg rods hanging at rest, torque "
-           f"{SCALING_TORQUE} N m on every joint, {sim_time:g} s with cvodes rtol = atol = "
+           f"{SCALING_TORQUE} N m on every joint, {sim_time:g} s with bdf rtol = atol = "
            "1e-6; CPU time median over the repeats, divided by the simulated time",
            "- clearance: every joint has 0.03 mm radial clearance (Lankarani-Nikravesh "
            "contact, Coulomb friction); ideal: every joint ideal",
@@ -1130,7 +1131,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                          "steps, one repeat")
     wp.add_argument("--t-end", type=float, help="override run.t_end (s)")
     wp.add_argument("--methods", default=",".join(DEFAULT_METHODS),
-                    help="comma list of cvodes, idas, rk4, radau (default all)")
+                    help="comma list of bdf, cvodes, idas, rk4, radau (default all)")
     wp.add_argument("--rtols", help="adaptive tolerances, atol = rtol (default "
                                     f"{','.join(f'{r:g}' for r in DEFAULT_RTOLS)})")
     wp.add_argument("--steps", help="fixed steps in s, each dividing the output step (default "

@@ -333,7 +333,8 @@ def write_csv(result: SimulationResult, path: str | Path) -> list[Path]:
     :func:`impacts_csv_path` beside it (phases are events, not samples); return both paths.
 
     Each file is written atomically; the phase table first, so a samples file under its
-    final name always has its phase table beside it.
+    final name always has its phase table beside it, and a samples file that cannot be
+    written takes the phase table with it.
     """
     path = check_output_path(path)
     phases = check_output_path(impacts_csv_path(path))
@@ -345,7 +346,12 @@ def write_csv(result: SimulationResult, path: str | Path) -> list[Path]:
                    comments="", encoding="utf-8")
     headers, columns = zip(*csv_columns(result), strict=True)
     table = np.column_stack([np.asarray(c, dtype=np.float64) for c in columns])
-    with atomic_path(path) as tmp:
-        np.savetxt(tmp, table, fmt="%.17g", delimiter=",", header=",".join(headers),
-                   comments="", encoding="utf-8")
+    try:
+        with atomic_path(path) as tmp:
+            np.savetxt(tmp, table, fmt="%.17g", delimiter=",", header=",".join(headers),
+                       comments="", encoding="utf-8")
+    except BaseException:
+        # the pair is one result: without its samples the phase table must not stay behind
+        phases.unlink(missing_ok=True)
+        raise
     return [path, phases]

@@ -91,14 +91,27 @@ def no_temporaries(folder: Path) -> None:
     assert [p.name for p in folder.rglob("*.part")] == []
 
 
-def finite_hdf5(path: Path) -> None:
-    """Every number in the file is finite (a complete result)."""
-    def visit(name: str, obj: Any) -> None:
-        if isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f":
-            assert np.all(np.isfinite(obj[()])), name
+# Columns of the contact-phase table that are NaN, by definition, for a phase still in contact
+# at the end of the run (no separation, so no exit speed or restitution).
+_OPEN_PHASE_NAN = ("impacts/separation_time", "impacts/exit_speed", "impacts/restitution")
 
+
+def finite_hdf5(path: Path) -> None:
+    """Every number in the file is finite (a complete result), except the columns a phase
+    without separation leaves NaN, and only in those rows."""
     with h5py.File(path, "r") as fh:
         assert fh.attrs["format"] == "jointplay-result"
+        separated = fh["impacts/separated"][()] if "impacts/separated" in fh else None
+
+        def visit(name: str, obj: Any) -> None:
+            if not (isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f"):
+                return
+            values = obj[()]
+            if name in _OPEN_PHASE_NAN and separated is not None:
+                assert np.all(np.isfinite(values[separated.astype(bool)])), name
+                return
+            assert np.all(np.isfinite(values)), name
+
         fh.visititems(visit)
 
 
@@ -109,7 +122,7 @@ def finite_hdf5(path: Path) -> None:
     ("t_end = 2.0 ", "t_end = 1e7 ", "run.t_end", "at most"),
     ("output_step = 1.0e-3", "output_step = 1e-8", "run.output_step", "output samples"),
     ("rtol = 1.0e-6", "rtol = 1e-300", "run.rtol", "at least"),
-    ("integrator = \"cvodes\"", "integrator = \"cvodes\"\nmax_steps = 10000000000000",
+    ("integrator = \"bdf\"", "integrator = \"bdf\"\nmax_steps = 10000000000000",
      "run.max_steps", "integer from 1"),
     ("step = 1.0e-5", "step = 1e-300", "run.step", "at least"),
 ])

@@ -66,7 +66,16 @@ def driver_library() -> ctypes.CDLL:
     """driver.c compiled (or taken from the build cache) and loaded."""
     source = resources.files("jointplay.sim").joinpath("driver.c").read_text(encoding="utf-8")
     path, _ = compile_source(source, DRIVER_CFLAGS)
-    lib = ctypes.CDLL(str(path))
+    try:
+        lib = ctypes.CDLL(str(path))
+    except OSError as err:  # a damaged cache entry: rebuilt once, like a model's
+        from jointplay.build import discard_entry
+        from jointplay.model import note
+
+        note(f"the compiled integrator {path} does not load ({err}); compiling it again")
+        discard_entry(path.parent)
+        path, _ = compile_source(source, DRIVER_CFLAGS)
+        lib = ctypes.CDLL(str(path))
     lib.jp_create.restype = ctypes.c_void_p
     lib.jp_create.argtypes = [ctypes.POINTER(_Config)]
     lib.jp_free.argtypes = [ctypes.c_void_p]
@@ -261,6 +270,10 @@ class NativeIntegrator:
         cfg.table_v = _ptr(td.table_v, _dbl_p)
         cfg.rtol, cfg.atol, cfg.h_max, cfg.h_init = rtol, atol, h_max, h_init
         cfg.max_steps, cfg.max_events = max_steps, max_events
+        # Loading through the model first heals a damaged cached library (model.function
+        # rebuilds it once); the driver then calls into the library that loads.
+        for name in ("forward_dynamics", "jac_forward_dynamics", "contact")[:3 if self.nc else 2]:
+            model.function(name)
         cfg.f, _ = _function(model, "forward_dynamics")
         cfg.jac, _ = _function(model, "jac_forward_dynamics")
         if self.nc:
