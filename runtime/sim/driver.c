@@ -36,6 +36,11 @@ typedef long long jp_int; /* casadi_int of the generated code (checked from Pyth
 typedef int (*casadi_eval)(const double **arg, double **res, jp_int *iw, double *w, int mem);
 
 enum { MAX_ORDER = 5, NEWTON_MAXITER = 4, INTERIOR = 3 };
+/* Stability guard (see bdf_adapt): every STABILITY_WINDOW accepted steps, a share of error-test
+ * failures of at least 1 / STABILITY_FAILURE_SHARE at order >= 3 caps the order at
+ * STABILITY_ORDER for the next STABILITY_HOLD steps. */
+enum { STABILITY_WINDOW = 20, STABILITY_FAILURE_SHARE = 5, STABILITY_ORDER = 2,
+       STABILITY_HOLD = 50 };
 enum {
   JP_OK = 0, JP_TOO_MUCH_WORK = 1, JP_STEP_COLLAPSED = 2, JP_NONFINITE = 3,
   JP_INTERRUPTED = 4, JP_BAD_TORQUE = 5, JP_CHATTER = 6, JP_NO_MEMORY = 7
@@ -74,6 +79,7 @@ typedef struct {
   double rtol, atol, h_max, h_init;
   long max_steps;           /* steps allowed between two outputs */
   long max_events;          /* event locations allowed between two outputs */
+  int max_order;            /* highest BDF order used (1..5) */
   jp_function f, jac, contact;
 } jp_config;
 
@@ -108,6 +114,7 @@ typedef struct {
   long *open_phase;            /* per joint: row of the open phase or -1 */
   /* statistics */
   long n_steps, n_rhs, n_jac, n_lu, n_err_fail, n_newton_fail, n_events, n_onsets;
+  int order_cap, cap_steps, window_steps, recent_failures; /* stability-limit guard */
   double landing_target; /* the onset time a redone step aims at, else +inf */
   double last_safety, last_err_norm, t_old, h_abs_old; int order_old, n_equal_old;
   /* failure */
@@ -496,6 +503,7 @@ static int bdf_step(jp_sim *s, double t_bound) {
     s->last_err_norm = err_norm;
     if (err_norm > 1.0) {
       s->n_err_fail++;
+      s->recent_failures++;
       double factor = fmax(0.2, safety * pow(err_norm, -1.0 / (order + 1)));
       change_d(s, factor); h_abs *= factor; s->n_equal_steps = 0; s->have_lu = 0;
       continue;
@@ -530,6 +538,20 @@ static int bdf_step(jp_sim *s, double t_bound) {
 /* After an accepted step (and its events): choose the order and step of the next one. */
 static void bdf_adapt(jp_sim *s) {
   int order = s->order, N = s->N, nx = s->c.nx;
+  /* Stability limit: BDF of order 3 and above is not A-stable, and a lightly damped contact
+   * vibration (eigenvalues near the imaginary axis) then makes the steps saw up and down
+   * through error-test failures. Repeated failures at such an order cap it at 2 (A-stable)
+   * for a while; the cap is lifted again once the steps run clean. */
+  if (++s->window_steps >= STABILITY_WINDOW) {
+    if (s->recent_failures * STABILITY_FAILURE_SHARE >= s->window_steps && s->order >= 3)
+      s->order_cap = STABILITY_ORDER, s->cap_steps = STABILITY_HOLD;
+    s->window_steps = 0; s->recent_failures = 0;
+  }
+  if (s->cap_steps > 0 && --s->cap_steps == 0) s->order_cap = s->c.max_order;
+  if (s->order > s->order_cap) {
+    s->order = s->order_cap; s->n_equal_steps = 0; s->have_lu = 0;
+    return;
+  }
   if (s->n_equal_steps < order + 1) return;
   quad_scale(s, s->D, s->scal); /* D[0] is the current point */
   double norms[3] = {INFINITY, s->last_err_norm, INFINITY};
@@ -537,7 +559,7 @@ static void bdf_adapt(jp_sim *s) {
     for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order - 1] * s->D[order * N + i];
     norms[0] = rms(nx, s->err, s->scal);
   }
-  if (order < MAX_ORDER) {
+  if (order < s->order_cap) {
     for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order + 1] * s->D[(order + 2) * N + i];
     norms[2] = rms(nx, s->err, s->scal);
   }
@@ -686,6 +708,13 @@ static double peak_force(jp_sim *s, int j, double a, double b, double *t_peak) {
   *t_peak = x2; return f2;
 }
 
+/* A step redone to land on an onset ends within the integration error of the located root
+ * (the root came from the dense output, the landing from a new step): a gap this close to zero
+ * there, or at the start of a step, is the onset. A fraction of the local error tolerance. */
+static double landing_gap(const jp_sim *s, int j) {
+  return 0.1 * (s->c.atol + s->c.rtol) * s->c.clearance[j];
+}
+
 /* Scan the last step for events. Returns 0 when the step stands (events recorded), 1 when an
  * onset inside it needs the step redone up to *t_cut (nothing recorded), 3 when the onset is at
  * its very start (the step is redone from there with the captured speed). */
@@ -706,8 +735,7 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
   double earliest = INFINITY; int who = -1;
   for (int j = 0; j < nc; ++j) {
     int flag = s->flags[j] > 0.5, armed = s->armed[j];
-    /* round-off in the penetration: a gap this close to zero is contact */
-    double zero_gap = 64 * 2.220446049250313e-16 * c->clearance[j];
+    double zero_gap = landing_gap(s, j);
     for (int k = 1; k < NS; ++k) {
       if (flag) {
         if (dl[k][j] > 0) armed = 1;
@@ -742,7 +770,7 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
       if (s->flags[j] < 0.5) {
         /* an onset at the end of the step: the step has landed on it (to round-off) */
         if (dl[k][j] > 0 || (k == NS - 1 && s->t >= s->landing_target &&
-                             dl[k][j] > -64 * 2.220446049250313e-16 * c->clearance[j])) {
+                             dl[k][j] > -landing_gap(s, j))) {
           memcpy(s->tmp_y2, s->D, s->N * sizeof(double));
           onset(s, j, ts[k], s->tmp_y2);
         }
@@ -865,6 +893,7 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   for (int i = 0; i < c->nx; ++i) s->D[i] = x0[i] / c->scale[i];
   for (int i = 0; i < s->nquad; ++i) s->D[c->nx + i] = 0.0;
   s->t = t0; s->started = 0; s->status = JP_OK; s->n_phases = 0; s->landing_target = INFINITY;
+  s->order_cap = c->max_order; s->cap_steps = 0; s->window_steps = 0; s->recent_failures = 0;
   for (int j = 0; j < c->nc; ++j) {
     s->flags[j] = 0.0; s->v_imp[j] = 0.0; s->armed[j] = 0; s->open_phase[j] = -1;
   }

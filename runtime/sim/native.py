@@ -58,6 +58,7 @@ class _Config(ctypes.Structure):
                 ("rtol", ctypes.c_double), ("atol", ctypes.c_double),
                 ("h_max", ctypes.c_double), ("h_init", ctypes.c_double),
                 ("max_steps", ctypes.c_long), ("max_events", ctypes.c_long),
+                ("max_order", ctypes.c_int),
                 ("f", _Function), ("jac", _Function), ("contact", _Function)]
 
 
@@ -239,7 +240,8 @@ class NativeIntegrator:
     def __init__(self, model: Model, p: np.ndarray, scale: np.ndarray, ecc_index: np.ndarray,
                  clearance: np.ndarray, drive_index: np.ndarray,
                  torques: tuple[TimeFunction, ...], *, rtol: float, atol: float,
-                 max_steps: int, max_events: int, h_max: float = math.inf,
+                 max_steps: int, max_events: int, max_order: int = 5,
+                 h_max: float = math.inf,
                  h_init: float = 0.0) -> None:
         self.lib = driver_library()
         self.model = model
@@ -270,6 +272,7 @@ class NativeIntegrator:
         cfg.table_v = _ptr(td.table_v, _dbl_p)
         cfg.rtol, cfg.atol, cfg.h_max, cfg.h_init = rtol, atol, h_max, h_init
         cfg.max_steps, cfg.max_events = max_steps, max_events
+        cfg.max_order = max_order
         # Loading through the model first heals a damaged cached library (model.function
         # rebuilds it once); the driver then calls into the library that loads.
         for name in ("forward_dynamics", "jac_forward_dynamics", "contact")[:3 if self.nc else 2]:
