@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -95,3 +97,25 @@ def test_phase_energies_sum_to_the_run_dissipation() -> None:
     total = float(np.sum(phases.damping_energy) + np.sum(phases.friction_energy))
     assert float(np.sum(phases.friction_energy)) > 0
     assert total == pytest.approx(result.energy["dissipated"][-1], rel=1e-8)
+
+
+def test_table_torques_equal_the_same_expression(tmp_path: Path) -> None:
+    """Torques reach the compiled loop as data: a table holding a piecewise-linear drive and
+    the expression of the same function give the same run (to the integration tolerance)."""
+    from sim_fixtures import clearance_joint, make_scene, robot_table
+
+    from jointplay.scene import scene_from_dict
+
+    robot = robot_table(2, [{"kind": "ideal"}, clearance_joint()], restitution=0.8)
+    expression = make_scene(robot, torques={"joint1": "2*min(t, 0.05) - max(t - 0.1, 0)",
+                                            "joint2": "0.5*step(t - 0.02)"}, t_end=0.15)
+    # the step at 0.02 s as two rows a hair before it: a table is piecewise linear
+    table = tmp_path / "torques.csv"
+    table.write_text("t,joint1,joint2\n0,0,0\n0.01999999999,0.03999999998,0\n"
+                     "0.02,0.04,0.5\n0.05,0.1,0.5\n0.1,0.1,0.5\n0.15,0.05,0.5\n")
+    data = {"name": "table", "robot": robot, "torques": {"table": str(table)},
+            "run": {"t_end": 0.15, "output_step": 1e-3, "rtol": 1e-8, "atol": 1e-8}}
+    tabled = scene_from_dict(data, source="test")
+    a, b = simulate(expression), simulate(tabled)
+    np.testing.assert_allclose(a.tau, b.tau, atol=1e-6)
+    assert np.max(np.abs(a.q[:, 0] - b.q[:, 0])) < 1e-6

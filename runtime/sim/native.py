@@ -190,39 +190,31 @@ class TorqueData:
 
 
 def torque_data(torques: tuple[TimeFunction, ...]) -> TorqueData:
+    """Lay every torque out in four parallel arrays sharing one index: a program's opcodes
+    and constants, or a table's times and values (the other pair padded with zeros)."""
     kinds, starts, lengths = [], [], []
     ops: list[int] = []
     consts: list[float] = []
     table_t: list[float] = []
     table_v: list[float] = []
     for fn in torques:
-        if isinstance(fn, Expression):
-            program_ops, program_consts = postfix_program(fn)
-            kinds.append(0)
-            starts.append(len(ops))
-            lengths.append(len(program_ops))
-            ops += program_ops
-            consts += program_consts
-            # keep the table arrays aligned with the same start indices
-            table_t += [0.0] * len(program_ops)
-            table_v += [0.0] * len(program_ops)
-        elif isinstance(fn, TableColumn):
+        if isinstance(fn, TableColumn):
+            size = int(fn.times.size)
             kinds.append(1)
-            starts.append(len(ops))
-            lengths.append(int(fn.times.size))
-            ops += [0] * int(fn.times.size)
-            consts += [0.0] * int(fn.times.size)
-            table_t += [float(v) for v in fn.times]
-            table_v += [float(v) for v in fn.values]
-        else:  # any other time function: traced through its CasADi form
-            program_ops, program_consts = traced_program(fn)
+            program_ops, program_consts = [0] * size, [0.0] * size
+            times, values = [float(v) for v in fn.times], [float(v) for v in fn.values]
+        else:  # a scene expression directly, any other time function through its CasADi form
+            program_ops, program_consts = (postfix_program(fn) if isinstance(fn, Expression)
+                                           else traced_program(fn))
+            size = len(program_ops)
             kinds.append(0)
-            starts.append(len(ops))
-            lengths.append(len(program_ops))
-            ops += program_ops
-            consts += program_consts
-            table_t += [0.0] * len(program_ops)
-            table_v += [0.0] * len(program_ops)
+            times, values = [0.0] * size, [0.0] * size
+        starts.append(len(ops))
+        lengths.append(size)
+        ops += program_ops
+        consts += program_consts
+        table_t += times
+        table_v += values
     return TorqueData(*(np.ascontiguousarray(a, dtype=d) for a, d in (
         (kinds, np.int32), (starts, np.int32), (lengths, np.int32), ([*ops, 0], np.int32),
         ([*consts, 0.0], np.float64), ([*table_t, 0.0], np.float64),
