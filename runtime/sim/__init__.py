@@ -11,22 +11,22 @@ closed loops.
 from __future__ import annotations
 
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
 from jointplay.model import Model
-from jointplay.results import SimulationResult
+from jointplay.results import Impacts, SimulationResult
 from jointplay.scene import ADAPTIVE, Scene, ideal_counterpart
 from jointplay.sim.assemble import _assemble
 from jointplay.sim.bdf import native_integrator, run_bdf, torque_fields
 from jointplay.sim.casadi_methods import _AdaptiveIntegrator, _resolve_interval, _run_adaptive
+from jointplay.sim.events import _EventState
 from jointplay.sim.fixed import _run_fixed
 from jointplay.sim.native import raise_for_status
 from jointplay.sim.problem import (
     _Accumulated,
-    _EventState,
     _initial_state,
     _nearest_contact_joint,
     _parameter_vector,
@@ -35,7 +35,14 @@ from jointplay.sim.problem import (
     load_scene_model,
 )
 
-__all__ = ["Stepper", "load_scene_model", "simulate"]
+__all__ = ["METHODS", "Stepper", "load_scene_model", "simulate"]
+
+# One interface for every integration method: (problem, x0, trajectory to fill, statistics,
+# progress bar) -> the contact-phase table, or None where the method records onsets only
+# (then assembled from the trajectory's impact list).
+Method = Callable[[_Problem, np.ndarray, _Trajectory, _Accumulated, Any], "Impacts | None"]
+METHODS: dict[str, Method] = {"bdf": run_bdf, "cvodes": _run_adaptive, "idas": _run_adaptive,
+                              "rk4": _run_fixed, "radau": _run_fixed}
 
 
 def simulate(scene: Scene, *, model: Model | None = None,
@@ -74,13 +81,7 @@ def simulate(scene: Scene, *, model: Model | None = None,
     start = time.perf_counter()
     with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,
               desc=f"{scene.name} ({run.integrator})") as progress:
-        phases = None
-        if run.integrator == "bdf":
-            phases = run_bdf(pr, x0, traj, stats, progress)
-        elif run.integrator in ADAPTIVE:
-            _run_adaptive(pr, x0, traj, stats, progress)
-        else:
-            _run_fixed(pr, x0, traj, stats, progress)
+        phases = METHODS[run.integrator](pr, x0, traj, stats, progress)
     wall = time.perf_counter() - start
     counts: dict[str, Any] = dict(stats.counts)
     return _assemble(pr, traj, t, counts, wall, ideal_result, phases)

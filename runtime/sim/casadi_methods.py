@@ -19,11 +19,11 @@ import numpy as np
 
 from jointplay.errors import SimulationError
 from jointplay.model import FastFunction
+from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
     CHUNK_OUTPUTS,
     MAX_EVENTS_PER_OUTPUT,
     _Accumulated,
-    _EventState,
     _nearest_contact_joint,
     _Problem,
     _Trajectory,

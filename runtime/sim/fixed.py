@@ -11,10 +11,10 @@ import casadi as ca
 import numpy as np
 
 from jointplay.errors import SimulationError
+from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
     RADAU_NEWTON_TOLERANCE,
     _Accumulated,
-    _EventState,
     _nearest_contact_joint,
     _Problem,
     _Trajectory,

@@ -133,45 +133,6 @@ class _Trajectory:
     impacts: list[tuple[float, int, float, float, float]] = field(default_factory=list)
 
 
-class _EventState:
-    """Contact flags and captured impact speeds of every clearance joint."""
-
-    def __init__(self, pr: _Problem, x0: np.ndarray, t0: float,
-                 impacts: list[tuple[float, int, float, float, float]]) -> None:
-        self.pr = pr
-        self.flags = np.zeros(pr.nc)
-        self.v_imp = np.zeros(pr.nc)
-        self.impacts = impacts
-        if pr.nc:
-            c = pr.contact_at(x0, self.v_imp)
-            for i in np.flatnonzero(c["delta"] > 0):
-                self.onset(int(i), t0, float(c["delta_dot"][i]), x0)
-
-    def onset(self, i: int, t: float, speed: float, x: np.ndarray) -> None:
-        """Joint i (index into the clearance joints) comes into contact at state x."""
-        self.flags[i] = 1.0
-        self.v_imp[i] = speed
-        joint = int(self.pr.model.clearance_joints[i])
-        ex, ey = (float(x[self.pr.model.coordinates.index(f"{axis}{joint}")])
-                  for axis in ("ex", "ey"))
-        self.impacts.append((t, joint, speed, ex, ey))
-
-    def gap(self, x: np.ndarray) -> np.ndarray:
-        """Per joint: > 0 where the penetration disagrees with the joint's flag."""
-        delta = self.pr.contact_at(x, self.v_imp)["delta"]
-        return np.where(self.flags > 0.5, -delta, delta)
-
-    def switch(self, x: np.ndarray, t: float, joints: np.ndarray) -> None:
-        """Flip the flags of ``joints`` (indices into the clearance joints) at state x."""
-        c = self.pr.contact_at(x, self.v_imp)
-        for i in joints:
-            i = int(i)
-            if self.flags[i] < 0.5:
-                self.onset(i, t, float(c["delta_dot"][i]), x)
-            else:
-                self.flags[i] = 0.0
-
-
 def _initial_state(model: Model, scene: Scene) -> np.ndarray:
     x0 = np.zeros(model.n_state)
     n = model.n_coordinates
