@@ -311,10 +311,11 @@ def make_parser() -> argparse.ArgumentParser:
                             "(repeatable; never recompiles)")
     p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p_sim.set_defaults(func=cmd_simulate)
-    from jointplay import bench, control, identify, sweep
+    from jointplay import bench, control, identify, study, sweep
 
     identify.register(sub)
     control.register(sub)
+    study.register(sub)
     sweep.register(sub)
     bench.register(sub)
     return parser

@@ -18,12 +18,13 @@ linear ARX twin),
 The guard. A network is trustworthy only where it was trained. The step checks, every sample,
 that the internal model's regressor and its d-step prediction lie inside the training range
 (widened by a margin), that they are finite, and that the mismatch on the tracked outputs stays
-below a bound (filtered, like the mismatch the law uses: a single impact
-does not trip it; a model running away does). When a check fails, the step uses the fallback model's increment instead (the
-ARX twin runs in parallel, always advanced with the applied input), re-seeds the network's
-history from it and stays on the fallback for a hold time that doubles with each episode; when
-the fallback fails its own checks too, the outer loop lets go (v ramps to zero, the inner PD
-alone). Every intervention comes out in the step's flags, and the closed loop counts them.
+below a bound (filtered, like the mismatch the law uses: a single impact does not trip it; a
+model running away does). When a check fails, the step uses the fallback model's increment
+instead (the ARX twin runs in parallel, always advanced with the applied input), re-seeds the
+network's history from it and stays on the fallback for a hold time that doubles with each
+episode; when the fallback fails its own checks too, the outer loop lets go (v ramps to zero,
+the inner PD alone). Every intervention comes out in the step's flags, and the closed loop
+counts them.
 
 The step is one CasADi SX function, generated to C and compiled through the robot models'
 cache. Its cost is what the controller costs: see benchmarks/control_step.py.
@@ -50,15 +51,17 @@ STEP_NAME = "imc_step"
 # What the flags output reports, one entry per sample (1.0 when it happened).
 FLAGS = ("model_distrusted", "on_fallback_model", "inner_loop_only", "input_at_trust_bound",
          "torque_at_limit")
-# The C is tiny and compiled once per model: -O2 is worth its extra second here.
-STEP_CFLAGS = ("-O2", "-fPIC", "-shared", "-fno-math-errno")
+# -O1 as for the robot models: -O2 compiled the 10-step controller 2.5x longer (79 s against
+# 31 s) and was not measurably faster (benchmarks/control_step.py).
+STEP_CFLAGS = ("-O1", "-fPIC", "-shared", "-fno-math-errno")
 
 
 @dataclass(frozen=True)
 class ControllerSettings:
     """The controller's tuning; every field has a command-line flag of the same name."""
 
-    horizon: int = 10  # d: samples ahead the prediction is matched
+    horizon: int = 5  # d: samples ahead the prediction is matched (5: as good as 10, half
+    # the cost; 3 lost 4x in acceleration on one of two seeds: docs/control.md)
     regularisation: float = 1e-3  # lam, in units of the scaled outputs per (N m)^2
     setpoint_filter: float = 0.0  # a
     mismatch_filter: float = 0.9  # b
@@ -544,10 +547,19 @@ def _loop_functions(ctrl: Controller) -> tuple[ca.Function, ca.Function]:
     return ca.Function("loop", [x], [nxt]), ca.Function("loop_jac", [x], [ca.jacobian(nxt, x)])
 
 
-def _radius(jac: np.ndarray) -> float:
-    if not np.all(np.isfinite(jac)):
+def _radius(jac: np.ndarray, ctrl: Controller) -> float:
+    """Spectral radius of the loop while the primary model is in charge.
+
+    The fallback model runs in parallel, driven by the applied input but feeding nothing
+    back, and the hold counters are bookkeeping: the Jacobian is block-triangular, and their
+    eigenvalues (the fallback's own free-run poles, and 1 for the episode counter) say
+    nothing about this loop. They are left out."""
+    keep = [i for i, name in enumerate(ctrl.layout["state"])
+            if not name.startswith(("y_hat_fallback", "e_f_fallback", "fallback_"))]
+    sub = jac[np.ix_(keep, keep)]
+    if not np.all(np.isfinite(sub)):
         return math.inf
-    return float(np.max(np.abs(np.linalg.eigvals(jac))))
+    return float(np.max(np.abs(np.linalg.eigvals(sub))))
 
 
 def nominal_spectral_radius(ctrl: Controller, settle: int = 3000) -> float:
@@ -559,13 +571,13 @@ def nominal_spectral_radius(ctrl: Controller, settle: int = 3000) -> float:
         state = np.asarray(loop(state)).ravel()
         if not np.all(np.isfinite(state)):
             return math.inf
-    return _radius(np.asarray(loop_jac(state)))
+    return _radius(np.asarray(loop_jac(state)), ctrl)
 
 
 def local_spectral_radii(ctrl: Controller, states: np.ndarray) -> np.ndarray:
     """The same linearisation at controller states visited along a closed-loop run."""
     _, loop_jac = _loop_functions(ctrl)
-    return np.array([_radius(np.asarray(loop_jac(x))) for x in states])
+    return np.array([_radius(np.asarray(loop_jac(x)), ctrl) for x in states])
 
 
 __all__ = ["FLAGS", "STEP_NAME", "Controller", "ControllerSettings", "affine_rollout",
