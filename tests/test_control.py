@@ -23,6 +23,7 @@ from jointplay.control import (
     compare,
     compile_controller,
     horizon_gain,
+    load_twin,
     nominal_spectral_radius,
     resolve_settings,
 )
@@ -191,7 +192,7 @@ def test_compiled_step_equals_casadi_and_loop_is_stable() -> None:
     for _ in range(5):
         args = [rng.normal(0, 0.01, model.n_outputs), rng.normal(0, 0.01, model.n_outputs),
                 rng.normal(0, 1, 2), rng.normal(0, 0.01, ctrl.n_state)]
-        compiled = ctrl.step(*args)
+        compiled = [*ctrl.step(*args), ctrl.last_flags]
         symbolic = [np.asarray(o).ravel() for o in ctrl.function(*args)]
         for a, b in zip(compiled, symbolic, strict=True):
             assert np.max(np.abs(a - b)) <= 1e-12 * max(1.0, float(np.max(np.abs(b))))
@@ -362,13 +363,14 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     trajectories, meta = read_datasets(out / "datasets.h5")
     assert [t.split for t in trajectories] == ["train", "train", "validation", "test"]
     assert trajectories[-1].family == "chirp" and meta["sample_time"] == 1e-3
+    assert (out / "arx.json").is_file()
     short = scene.with_run(t_end=0.06)
-    result = compare(short, model, ControllerSettings(horizon=3),
-                     controllers=("open loop", "PD", "computed torque", "AIMNC"))
-    assert set(result.metrics) == {"open loop", "PD", "computed torque", "AIMNC"}
+    result = compare(short, model, ControllerSettings(horizon=3), arx=load_twin(out, model))
+    assert set(result.metrics) == {"open loop", "PD", "computed torque", "ARX-IMC",
+                                   "neural IMC"}
     for m in result.metrics.values():
         assert all(np.isfinite(v) for v in m.values())
-    assert result.per_call_us > 0
+    assert all(us > 0 for us in result.per_call_us.values())
     # A failed rerun into the same folder leaves the finished model as it was.
     before = {name: (out / name).read_bytes() for name in ("narx.json", "metrics.json")}
     import jointplay.identify as identify_module
@@ -384,8 +386,8 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     finally:
         identify_module.train_narx = original
     assert {name: (out / name).read_bytes() for name in before} == before
-    assert sorted(p.name for p in out.iterdir()) == ["datasets.h5", "metrics.json", "narx.json",
-                                                      "report.md"]
+    assert sorted(p.name for p in out.iterdir()) == ["arx.json", "datasets.h5", "metrics.json",
+                                                      "narx.json", "report.md"]
 
 
 def test_training_data_with_nan_is_refused() -> None:
