@@ -51,9 +51,11 @@ STEP_NAME = "imc_step"
 # What the flags output reports, one entry per sample (1.0 when it happened).
 FLAGS = ("model_distrusted", "on_fallback_model", "inner_loop_only", "input_at_trust_bound",
          "torque_at_limit")
-# -O1 as for the robot models: -O2 compiled the 10-step controller 2.5x longer (79 s against
-# 31 s) and was not measurably faster (benchmarks/control_step.py).
-STEP_CFLAGS = ("-O1", "-fPIC", "-shared", "-fno-math-errno")
+# The loop kernel is a few kilobytes: -O3 compiles it in about a second and vectorises its
+# column sums (2x faster than -O2 here, benchmarks/control_step.py). CasADi's straight-line
+# code (iterations > 1) keeps the models' -O1: -O2 compiled it 2.5x longer for no gain.
+STEP_CFLAGS = ("-O3", "-fPIC", "-shared", "-fno-math-errno")
+SX_CFLAGS = ("-O1", "-fPIC", "-shared", "-fno-math-errno")
 
 
 @dataclass(frozen=True)
@@ -508,32 +510,45 @@ def generate_c(model: Narx, settings: ControllerSettings, fallback: Narx | None 
 
 
 def compile_controller(model: Narx, settings: ControllerSettings, fallback: Narx | None = None,
-                       compiled: bool = True) -> Controller:
-    """Build, generate, compile (through the cache) and load the controller step."""
+                       compiled: bool = True, kernel: bool = True) -> Controller:
+    """Build, generate, compile (through the cache) and load the controller step.
+
+    ``kernel``: compile the loop kernel (jointplay.imc_kernel) rather than CasADi's
+    straight-line code for the same function (one Gauss-Newton iteration only)."""
     from jointplay.build import compile_source
     from jointplay.model import FastFunction
 
     settings = resolve_settings(model, settings)
-    source, fn, layout = generate_c(model, settings, fallback)
+    if kernel and settings.iterations == 1:
+        from jointplay.imc_kernel import kernel_library_source
+
+        fn, layout = build_step(model, settings, fallback)
+        body = kernel_library_source(model, settings, fallback, fn, STEP_NAME)
+        source = _header(model, fallback, settings, layout, body) + body
+        cflags = STEP_CFLAGS
+    else:
+        source, fn, layout = generate_c(model, settings, fallback)
+        cflags = SX_CFLAGS
     library, seconds = (None, 0.0)
     external = fn
     if compiled:
-        library, seconds = compile_source(source, cflags=STEP_CFLAGS)
+        library, seconds = compile_source(source, cflags=cflags)
         external = ca.external(STEP_NAME, str(library))
     return Controller(model, fallback if settings.guard else None, settings, fn, library,
                       seconds, source, FastFunction(external), len(layout["state"]), layout)
 
 
 def per_call_us(ctrl: Controller, repeat: int = 5, number: int = 20000) -> float:
-    """Median time of one compiled step through the buffer path, in microseconds."""
+    """Median CPU time of one compiled step through the buffer path, in microseconds (CPU
+    time of this process: on a shared machine wall time also counts the others' work)."""
     f = ctrl.fast
     f.inputs[3][:] = ctrl.initial_state(np.zeros(ctrl.model.n_outputs))
     best = []
     for _ in range(repeat):
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         for _ in range(number):
             f.trigger()
-        best.append((time.perf_counter() - t0) / number)
+        best.append((time.process_time() - t0) / number)
     return float(np.median(best) * 1e6)
 
 

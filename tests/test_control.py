@@ -353,10 +353,21 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
                             one_step_iterations=3, multi_step_iterations=2, window=20,
                             workers=1)
     out = tmp_path / "model"
-    metrics = identify(scene, out, config, quiet=True)
-    for name in ("narx.json", "datasets.h5", "metrics.json", "report.md"):
+    # So little data and training cannot beat persistence: the model is refused, kept as
+    # narx.rejected.json with the report saying why, and control will not load it.
+    from jointplay.identify import ModelRejected
+    from jointplay.narx import REJECTED_FILE
+
+    with pytest.raises(ModelRejected, match="worse than persistence"):
+        identify(scene, out, config, quiet=True)
+    for name in (REJECTED_FILE, "arx.json", "datasets.h5", "metrics.json", "report.md"):
         assert (out / name).is_file()
-    model = load_narx(out)
+    assert not (out / "narx.json").exists()
+    assert "REJECTED" in (out / "report.md").read_text()
+    with pytest.raises(DescriptionError, match="identification rejected its model"):
+        load_narx(out)
+    metrics = json.loads((out / "metrics.json").read_text())
+    model = load_narx(out, filename=REJECTED_FILE)  # explicitly, for the plumbing below
     check_robot(model, scene.robot, scene.run.output_step, out)
     assert model.hidden == (4, 4) and model.output_names[:4] == ("q2", "q3", "dq2", "dq3")
     assert set(metrics["test"]) == {"narx", "arx", "persistence"}
@@ -372,7 +383,7 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
         assert all(np.isfinite(v) for v in m.values())
     assert all(us > 0 for us in result.per_call_us.values())
     # A failed rerun into the same folder leaves the finished model as it was.
-    before = {name: (out / name).read_bytes() for name in ("narx.json", "metrics.json")}
+    before = {name: (out / name).read_bytes() for name in (REJECTED_FILE, "metrics.json")}
     import jointplay.identify as identify_module
 
     def failing(*args: Any, **kwargs: Any) -> None:
@@ -387,7 +398,7 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
         identify_module.train_narx = original
     assert {name: (out / name).read_bytes() for name in before} == before
     assert sorted(p.name for p in out.iterdir()) == ["arx.json", "datasets.h5", "metrics.json",
-                                                      "narx.json", "report.md"]
+                                                      REJECTED_FILE, "report.md"]
 
 
 def test_training_data_with_nan_is_refused() -> None:
