@@ -6,10 +6,14 @@ Variants, each generated, compiled (through the cache) and called through FastFu
 preallocated buffers, median of 5 x 20 000 calls:
 
 - ``trivial``: a function that doubles two numbers (the Python-to-C call overhead);
-- ``before``: the step as it was (the network only, no guard, horizon 10, gcc -O1);
-- ``guarded, horizon 10``: the guarded network step with the ARX fallback at the old horizon;
-- ``after (default)``: the guarded step at the default settings (horizon 5);
-- ``ARX-IMC``: the same law with the linear twin (constant matrices).
+- ``before``: the step as it was: CasADi's straight-line SX code, the network only, no guard,
+  horizon 10, gcc -O1;
+- the guarded step (ARX fallback) as CasADi SX code at the default horizon 5 (gcc -O1);
+- the loop kernel (jointplay.imc_kernel, gcc -O3) at horizon 10 and at the default 5;
+- ``ARX-IMC``: the same law with the linear twin (constant matrices), loop kernel.
+
+Times are CPU seconds of this process (``time.process_time``), so other work on a shared
+machine inflates them less than wall time.
 
 Without ``--model`` a random network of the default shape (10 outputs, lags 2/2, hidden 13,
 14, two inputs) stands in: the cost does not depend on the weights. Writes control_step.md and
@@ -96,26 +100,32 @@ def main() -> None:
     trivial = FastFunction(ca.external("trivial", str(lib)))
     times = []
     for _ in range(5):
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         for _ in range(20000):
             trivial.trigger()
-        times.append((time.perf_counter() - t0) / 20000)
+        times.append((time.process_time() - t0) / 20000)
     rows.append({"variant": "trivial (call overhead)", "horizon": "-", "guard": "-",
-                 "operations": 2, "compile_s": 0.0, "us_per_call": float(np.median(times)) * 1e6})
-    variants = [("before", model, None, ControllerSettings(horizon=10, guard=False,
-                                                           tracked=TRACKED)),
-                ("guarded, horizon 10", model, twin, ControllerSettings(horizon=10,
-                                                                        tracked=TRACKED)),
-                ("after (default)", model, twin, ControllerSettings(tracked=TRACKED)),
-                ("ARX-IMC (default)", twin, None, ControllerSettings(tracked=TRACKED))]
-    for label, m, fallback, settings in variants:
+                 "code": "SX", "sx_operations": 2, "compile_s": 0.0,
+                 "us_per_call": float(np.median(times)) * 1e6})
+    variants = [
+        ("before: CasADi SX code, network only", model, None, False,
+         ControllerSettings(horizon=10, guard=False, tracked=TRACKED)),
+        ("CasADi SX code, guarded", model, twin, False, ControllerSettings(tracked=TRACKED)),
+        ("loop kernel, guarded, horizon 10", model, twin, True,
+         ControllerSettings(horizon=10, tracked=TRACKED)),
+        ("after: loop kernel, guarded (default)", model, twin, True,
+         ControllerSettings(tracked=TRACKED)),
+        ("ARX-IMC, loop kernel (default)", twin, None, True, ControllerSettings(
+            tracked=TRACKED))]
+    for label, m, fallback, kernel, settings in variants:
         settings = resolve_settings(m, settings)
         _, fn, _ = generate_c(m, settings, fallback)
-        ctrl = compile_controller(m, settings, fallback=fallback)
+        ctrl = compile_controller(m, settings, fallback=fallback, kernel=kernel)
         rows.append({"variant": label, "horizon": settings.horizon,
                      "guard": "on" if settings.guard else "off",
-                     "operations": fn.n_instructions(), "compile_s": ctrl.compile_seconds,
-                     "us_per_call": per_call_us(ctrl)})
+                     "code": "loops" if kernel else "SX",
+                     "sx_operations": fn.n_instructions(),
+                     "compile_s": ctrl.compile_seconds, "us_per_call": per_call_us(ctrl)})
         print(f"{label}: {rows[-1]['us_per_call']:.2f} us", flush=True)
     before = rows[1]["us_per_call"]
     out = Path(args.out)
@@ -129,10 +139,12 @@ def main() -> None:
     lines = [f"Compiled controller step ({what}); "
              f"gcc {' '.join(STEP_CFLAGS)}; {platform.processor() or platform.machine()}, "
              f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f} at the end", "",
-             "| variant | horizon | guard | SX operations | compile s | µs per call | vs before |",
-             "|---|---|---|---|---|---|---|"]
+             "| variant | horizon | guard | code | SX operations | compile s | CPU µs per call | "
+             "vs before |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        lines.append(f"| {r['variant']} | {r['horizon']} | {r['guard']} | {r['operations']} | "
+        lines.append(f"| {r['variant']} | {r['horizon']} | {r['guard']} | {r['code']} | "
+                     f"{r['sx_operations']} | "
                      f"{r['compile_s']:.1f} | {r['us_per_call']:.2f} | "
                      f"{before / r['us_per_call']:.2f}x |")
     text = "\n".join(lines) + "\n"

@@ -427,6 +427,7 @@ def build_step(model: Narx, settings: ControllerSettings, fallback: Narx | None 
     new_hist = ca.vertcat(y_next, hist[: (na - 1) * ny])
     parts = []
     if fallback is not None:
+        assert hist_f is not None
         yf_next = back.predict(v_new)
         new_hist_f = ca.vertcat(yf_next, hist_f[: (naf - 1) * ny])
         # Off the network, its history follows the fallback's (a sane restart point).

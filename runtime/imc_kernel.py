@@ -99,26 +99,26 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
              "  }"]
     for i in range(len(model.weights)):
         n_in, n_out = widths[i], widths[i + 1]
-        w, b = f"{prefix}W{i}", f"{prefix}B{i}"
+        wname, bias = f"{prefix}W{i}", f"{prefix}B{i}"
         # One pass over the weights for the value and every tangent direction.
         tangents = "".join(f" da[{k * width_max} + i] += wji * dh{k};" for k in range(nd))
         loads = " ".join(f"const double dh{k} = dh[{k * width_max} + j];" for k in range(nd))
         lines += [
-            f"  for (i = 0; i < {n_out}; ++i) a[i] = {b}[i];",
+            f"  for (i = 0; i < {n_out}; ++i) a[i] = {bias}[i];",
             "  if (tangent) {",
             f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {n_out}; ++i) "
             f"da[k * {width_max} + i] = 0;",
             f"    for (j = 0; j < {n_in}; ++j) {{",
             f"      const double hj = h[j]; {loads}",
             f"      for (i = 0; i < {n_out}; ++i) {{",
-            f"        const double wji = {w}[j * {n_out} + i];",
+            f"        const double wji = {wname}[j * {n_out} + i];",
             f"        a[i] += wji * hj;{tangents}",
             "      }",
             "    }",
             "  } else {",
             f"    for (j = 0; j < {n_in}; ++j) {{",
             "      const double hj = h[j];",
-            f"      for (i = 0; i < {n_out}; ++i) a[i] += {w}[j * {n_out} + i] * hj;",
+            f"      for (i = 0; i < {n_out}; ++i) a[i] += {wname}[j * {n_out} + i] * hj;",
             "    }",
             "  }"]
         if i < last:
@@ -315,6 +315,7 @@ def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | No
     o_yd = o_eff + (ny if fallback is not None else 0)
     o_hold = o_yd + ny
     n_state = o_hold + 2
+    nbf = fallback.input_lags if fallback is not None else 1
     n_phi_max = max(model.n_regressor, fallback.n_regressor if fallback is not None else 0)
     a_d = s.setpoint_filter ** s.horizon
     b = s.mismatch_filter
@@ -363,7 +364,7 @@ static int {name}_kernel(const double** arg, double** res) {{
   m_eval(phi, 0, yn, 0, 0);
   {f'''for (i = 0; i < {naf * ny}; ++i) phi[i] = histf[i];
   for (i = 0; i < {nu}; ++i) phi[{naf * ny} + i] = vnew[i];
-  for (i = 0; i < {(fallback.input_lags - 1) * nu}; ++i) phi[{naf * ny + nu} + i] = upast[i];
+  for (i = 0; i < {(nbf - 1) * nu}; ++i) phi[{naf * ny + nu} + i] = upast[i];
   f_eval(phi, 0, yfn, 0, 0);''' if fb else ""}
   {{
     /* next state: network history, fallback history, inputs, filters, setpoint, counters */

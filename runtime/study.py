@@ -182,19 +182,16 @@ def _run_unit(index: int) -> list[dict[str, Any]]:
 
 def _dummy_model(scene: Any) -> Any:
     """The baselines need only the inner loop's gains: a model-shaped holder of them."""
-    from jointplay.identify import DEFAULT_KD, DEFAULT_KP
+    from types import SimpleNamespace
 
-    class Holder:
-        pass
-    h = Holder()
+    from jointplay.identify import DEFAULT_KD, DEFAULT_KP, output_names
+
     joints = list(scene.robot.moving_joints)
-    h.context = {"plant": {"inner_loop": {"joints": joints, "kp": [DEFAULT_KP] * len(joints),
-                                          "kd": [DEFAULT_KD] * len(joints)}}}
-    from jointplay.identify import output_names
-
     names, _ = output_names(joints)
-    h.output_index = names.index  # type: ignore[attr-defined]
-    return h
+    return SimpleNamespace(
+        context={"plant": {"inner_loop": {"joints": joints, "kp": [DEFAULT_KP] * len(joints),
+                                          "kd": [DEFAULT_KD] * len(joints)}}},
+        output_index=names.index)
 
 
 def _pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[Any]:
@@ -299,10 +296,11 @@ def goal_checks(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case
     for c in cases[1:]:
         worse = []
         for key, label in GOAL_METRICS:
-            n, p = summary.get((c.name, NEURAL)), summary.get((c.name, "PD"))
-            if n and p and n[f"worst_{key}"] > 1.1 * p[f"median_{key}"]:
-                worse.append(f"{label} {n[f'worst_{key}']:.3g} vs PD {p[f'median_{key}']:.3g}"
-                             f" ({n[f'worst_{key}'] / p[f'median_{key}']:.2g}x)")
+            ns, ps = summary.get((c.name, NEURAL)), summary.get((c.name, "PD"))
+            if ns and ps and ns[f"worst_{key}"] > 1.1 * ps[f"median_{key}"]:
+                worse.append(f"{label} {ns[f'worst_{key}']:.3g} vs PD "
+                             f"{ps[f'median_{key}']:.3g} "
+                             f"({ns[f'worst_{key}'] / ps[f'median_{key}']:.2g}x)")
         lines.append(f"- {c.name}: neural IMC worst seed "
                      + ("within 10 % of PD or better on every metric" if not worse
                         else "worse than PD by more than 10 %: " + "; ".join(worse)))
@@ -386,12 +384,12 @@ def cmd_study(args: argparse.Namespace) -> int:
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
     models: dict[float, list[Path]] = {}
-    for c in sorted({c.clearance for c in cases}):
-        n = args.seeds if math.isclose(c, nominal, rel_tol=1e-9) else min(args.seeds,
-                                                                         args.clearance_seeds)
-        robot_scene = scenes[next(k.name for k in cases if k.clearance == c)]
-        models[c] = ensure_models(robot_scene, out / "models" / f"{c * 1e6:g}um", n,
-                                  identify_args, args.quiet)
+    for size in sorted({c.clearance for c in cases}):
+        n = args.seeds if math.isclose(size, nominal, rel_tol=1e-9) else min(
+            args.seeds, args.clearance_seeds)
+        robot_scene = scenes[next(k.name for k in cases if k.clearance == size)]
+        models[size] = ensure_models(robot_scene, out / "models" / f"{size * 1e6:g}um", n,
+                                     identify_args, args.quiet)
     if not models[nominal]:
         raise DescriptionError("--seeds", "no seed gave a usable model; see the reports in "
                                f"{out / 'models'}")
@@ -432,7 +430,8 @@ def cmd_study(args: argparse.Namespace) -> int:
         f"# Controller study: {scene.name}",
         "",
         f"{args.seeds} training seeds at {nominal * 1e6:g} µm ("
-        f"{', '.join(f'{c * 1e6:g} µm: {len(p)}' for c, p in models.items())} usable models); "
+        f"{', '.join(f'{size * 1e6:g} µm: {len(p)}' for size, p in models.items())} usable "
+        "models); "
         f"cases: {', '.join(c.name for c in cases)}; controller settings: horizon "
         f"{settings.horizon}, guard {'on' if settings.guard else 'OFF'}. Baselines run once per "
         "case (they do not depend on the seed). Worst = the largest value over the seeds.",
