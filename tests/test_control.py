@@ -141,7 +141,7 @@ def test_horizon_jacobian_equals_finite_differences() -> None:
 # ---- the controller ---------------------------------------------------------------------------
 
 def _closed_loop_on_model(model: Narx, settings: ControllerSettings, d0: np.ndarray,
-                          steps: int) -> tuple[np.ndarray, np.ndarray, object]:
+                          steps: int) -> tuple[np.ndarray, np.ndarray, Any]:
     """The network itself as the plant (a perfect model, no disturbance), r = 0."""
     ctrl = compile_controller(model, settings)
     y = np.tile(d0, (model.output_lags, 1))
@@ -173,13 +173,15 @@ def test_perfect_model_tracks_exactly(iterations: int) -> None:
                                   mismatch_filter=0.5, tracked=("q2", "q3"),
                                   iterations=iterations)
     d0 = np.array([0.02, -0.015, 0.0, 0.0, 0.0])
-    ys, targets, _ = _closed_loop_on_model(model, settings, d0, 40)
+    ys, targets, ctrl = _closed_loop_on_model(model, settings, d0, 40)
     err = np.max(np.abs(ys[:, :2] - targets[:, :2]))
     if iterations > 1:
         assert err < 1e-12
     else:
         assert err < 2e-2 * np.max(np.abs(d0))
     assert np.max(np.abs(ys[-1, :2])) < 1e-6  # and the filtered setpoint goes to zero
+    # The linearisation agrees with what the loop does: it converges, and its radius is < 1.
+    assert nominal_spectral_radius(ctrl, settle=200) < 1
 
 
 def test_compiled_step_equals_casadi_and_loop_is_stable() -> None:
