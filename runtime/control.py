@@ -519,16 +519,19 @@ def load_twin(model_dir: Path, narx: Narx) -> Narx:
     return replace(arx, context=narx.context)
 
 
-def settings_from_args(args: argparse.Namespace, narx: Narx) -> ControllerSettings:
+def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> ControllerSettings:
+    """The settings the flags give; resolved against ``narx`` when given (defaults filled
+    from it, every value checked), else as given (each model resolves them for itself)."""
     tracked = tuple(n.strip() for n in args.track.split(",") if n.strip()) if args.track else ()
-    return resolve_settings(narx, ControllerSettings(
+    settings = ControllerSettings(
         horizon=args.horizon, regularisation=args.lambda_, setpoint_filter=args.setpoint_filter,
         mismatch_filter=args.mismatch_filter, tracked=tracked,
         scales=_floats(args.scales, "--scales"),
         torque_limit=_floats(args.torque_limit, "--torque-limit"),
         rate_limit=_floats(args.rate_limit, "--rate-limit"), iterations=args.iterations,
         guard=not args.no_guard, trust_input=args.trust_input, trust_range=args.trust_range,
-        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold))
+        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold)
+    return resolve_settings(narx, settings) if narx is not None else settings
 
 
 def cmd_control(args: argparse.Namespace) -> int:

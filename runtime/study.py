@@ -393,8 +393,10 @@ def cmd_study(args: argparse.Namespace) -> int:
     if not models[nominal]:
         raise DescriptionError("--seeds", "no seed gave a usable model; see the reports in "
                                f"{out / 'models'}")
-    first = load_narx(models[nominal][0])
-    settings = settings_from_args(args, first)
+    # Checked against the first model; each model then fills the defaults (tracked outputs,
+    # their scales) from its own training data.
+    resolved = settings_from_args(args, load_narx(models[nominal][0]))
+    settings = settings_from_args(args, None)
     # Compile every controller once, before the workers fork (they then load it from the
     # cache instead of compiling it twice at the same time).
     from jointplay.imc import compile_controller
@@ -433,7 +435,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         f"{', '.join(f'{size * 1e6:g} µm: {len(p)}' for size, p in models.items())} usable "
         "models); "
         f"cases: {', '.join(c.name for c in cases)}; controller settings: horizon "
-        f"{settings.horizon}, guard {'on' if settings.guard else 'OFF'}. Baselines run once per "
+        f"{resolved.horizon}, guard {'on' if resolved.guard else 'OFF'}. Baselines run once per "
         "case (they do not depend on the seed). Worst = the largest value over the seeds.",
         "",
         summary_table(summary, cases),
