@@ -398,10 +398,11 @@ def make_parser() -> argparse.ArgumentParser:
                             "run.output_step=1e-6")
     p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p_sim.set_defaults(func=cmd_simulate)
-    from jointplay import bench, control, identify, sweep
+    from jointplay import bench, control, identify, study, sweep
 
     identify.register(sub)
     control.register(sub)
+    study.register(sub)
     sweep.register(sub)
     bench.register(sub)
     return parser

@@ -1,395 +1,115 @@
-"""The approximate internal-model-based neural controller (AIMNC), its baselines and metrics.
+"""Closed loops on the clearance robot: the internal-model controllers, their baselines, metrics.
 
-Structure (see docs/control.md for the reasoning). The plant the network identified is the
-clearance robot under a joint PD around the ideal robot's motion; its input is the torque v
-added to the PD's, its outputs y the deviations from the ideal robot. At every sample k the
-controller
+Controllers, each against the ideal-joint robot's motion under the scene's torques:
 
-1. compares the measured deviation with the internal model's free-run prediction,
-   e(k) = y(k) - y^(k), and filters it, e_f(k) = b e_f(k-1) + (1 - b) e(k) (unity DC gain);
-2. runs the network d samples ahead with the input held, linearised about the previous input:
-   y^(k+d) ~ N0(k) + J(k) dv, with N0 the prediction at v(k) = v(k-1) and J = dN/dv (CasADi);
-3. solves the regularised inverse on the tracked outputs (rows of C, scaled),
-   dv = ((CJ)'(CJ) + lam I)^-1 (CJ)' C (y_d(k+d) - e_f(k) - N0(k)),
-   with the setpoint filter y_d(k+1) = a y_d(k) + (1 - a) r(k+1), r = 0 in deviation
-   coordinates (the reference is the ideal motion itself);
-4. limits the rate of v and the total actuator torque (feedforward + PD + v), keeping the
-   limited v as the model's input (no wind-up), and advances the internal model with it.
+- open loop: the scene's torques only;
+- PD: the inner loop alone;
+- computed torque with the ideal-joint model;
+- ARX-IMC: the internal-model law with the linear ARX twin inside;
+- neural IMC: the same law with the NARX network inside, guarded (see jointplay.imc), the ARX
+  twin as its fallback.
 
-With d = 1 and C = I this is the textbook one-step law. The horizon d is what makes it work on a
-robot: torque reaches position through two integrations, so the one-step gain is tiny, its
-inverse cancels the sampling zero near -1 (ringing), and the network cannot resolve a 1 ms
-response of a journal that flies across its clearance. Ten samples ahead the response is the
-well-identified, contact-averaged one.
-
-The step (network, rollout, Jacobian, solve, filters, limits, and the inner PD) is one CasADi
-function, generated to C and compiled through the same cache as the robot models.
+A run is declared diverged when its end-effector error leaves a bound (by default twice the
+open loop's largest error: doing nothing does better) or the plant cannot be integrated; it
+stops there. The stability verdict printed by ``jointplay control`` rests on the realised runs
+(bounded or not, and how often the guard acted), with the linearisations (at the nominal
+equilibrium and at states visited along the run) as supporting evidence.
 """
 
 from __future__ import annotations
 
 import argparse
-import hashlib
 import json
 import math
+import sys
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field
-from importlib.metadata import version
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-import casadi as ca
 import numpy as np
 
-from jointplay.errors import DescriptionError
+from jointplay.errors import DescriptionError, SimulationError
 from jointplay.files import atomic_path, atomic_write_text
-from jointplay.narx import MODEL_FILE, Narx, check_robot, load_narx
+from jointplay.imc import (
+    FLAGS,
+    Controller,
+    ControllerSettings,
+    _inner_gains,
+    build_step,
+    compile_controller,
+    default_tracked,
+    generate_c,
+    horizon_gain,
+    local_spectral_radii,
+    nominal_spectral_radius,
+    per_call_us,
+    resolve_settings,
+)
+from jointplay.narx import ARX_FILE, MODEL_FILE, Narx, check_robot, load_narx
 
-if TYPE_CHECKING:
-    from matplotlib.figure import Figure
-
-STEP_NAME = "aimnc_step"
 DEFAULT_TRANSIENT = 0.05  # s: journals settling from e = 0, reported separately
-CONTROLLERS = ("open loop", "PD", "computed torque", "AIMNC")
-
-
-@dataclass(frozen=True)
-class ControllerSettings:
-    """The controller's tuning; every field has a command-line flag of the same name."""
-
-    horizon: int = 10  # d: samples ahead the prediction is matched
-    regularisation: float = 1e-3  # lam, in units of the scaled outputs per (N m)^2
-    setpoint_filter: float = 0.0  # a
-    mismatch_filter: float = 0.9  # b
-    tracked: tuple[str, ...] = ()  # outputs in C; default: see default_tracked
-    scales: tuple[float, ...] = ()  # error of each tracked output that counts as 1
-    torque_limit: tuple[float, ...] = ()  # |feedforward + PD + v| per joint, N m
-    rate_limit: tuple[float, ...] = ()  # |dv/dt| per joint, N m/s
-    iterations: int = 1  # Gauss-Newton steps on the linearisation (1: the AIMNC law)
-
-
-@dataclass
-class Controller:
-    """A compiled controller step, bound to preallocated buffers."""
-
-    narx: Narx
-    settings: ControllerSettings
-    function: ca.Function  # the CasADi step (uncompiled), for checks and analysis
-    library: Path | None
-    compile_seconds: float
-    source: str
-    fast: Any = None  # FastFunction over the compiled step
-    n_state: int = 0
-    layout: dict[str, Any] = field(default_factory=dict)
-
-    def initial_state(self, deviation: np.ndarray) -> np.ndarray:
-        """Internal model started at the measured deviation, no added torque, no mismatch."""
-        m = self.narx
-        state = np.zeros(self.n_state)
-        ny, nu = m.n_outputs, m.n_inputs
-        state[: m.output_lags * ny] = np.tile(deviation, m.output_lags)
-        off = m.output_lags * ny + m.input_lags * nu + ny
-        state[off: off + ny] = deviation
-        return state
-
-    def step(self, y: np.ndarray, r: np.ndarray, tau_ff: np.ndarray,
-             state: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(added torque, next state, v, predicted deviation) through the compiled code."""
-        f = self.fast
-        f.inputs[0][:] = y
-        f.inputs[1][:] = r
-        f.inputs[2][:] = tau_ff
-        f.inputs[3][:] = state
-        f.trigger()
-        return (f.outputs[0].copy(), f.outputs[1].copy(), f.outputs[2].copy(),
-                f.outputs[3].copy())
-
-
-# ---- building the step ------------------------------------------------------------------------
-
-def horizon_gain(narx: Narx, horizon: int) -> np.ndarray:
-    """d y^(k+d) / d v with v held for ``horizon`` samples, from rest (ny x nu)."""
-    f = narx.casadi_function()
-    ny, nu = narx.n_outputs, narx.n_inputs
-    v = ca.MX.sym("v", nu)
-    ys: list[Any] = [ca.DM.zeros(ny)] * narx.output_lags
-    us: list[Any] = [v] + [ca.DM.zeros(nu)] * (narx.input_lags - 1)
-    for _ in range(horizon):
-        nxt = f(ca.vertcat(*ys, *us))
-        ys = [nxt, *ys[:-1]]
-        us = [v, *us[:-1]]
-    return np.asarray(ca.Function("gain", [v], [ca.jacobian(ys[0], v)])(np.zeros(nu)))
-
-
-def default_tracked(narx: Narx, horizon: int) -> tuple[str, ...]:
-    """The end effector's position and velocity along the axis the torques move it most, and
-    the angle and speed of the last nu - 1 moving joints.
-
-    Near a stretched configuration (the paper's arm hangs almost straight) the other axis runs
-    along the arm, where the joints have next to no authority: asking for it makes the inverse
-    ill-conditioned. Velocities are tracked with the positions because they give the loop its
-    damping; the joint rows pin the configuration the end-effector rows leave free.
-    """
-    joints = narx.context.get("plant", {}).get("inner_loop", {}).get("joints", [])
-    names = narx.output_names
-    if not joints or not {"tip_x", "tip_y", "tip_vx", "tip_vy"} <= set(names):
-        return tuple(n for n in names if n.startswith("q"))[: narx.n_inputs] \
-            or names[: narx.n_inputs]
-    gain = horizon_gain(narx, horizon)
-    axis = max("xy", key=lambda a: float(np.linalg.norm(gain[narx.output_index(f"tip_{a}")])))
-    out = [f"tip_{axis}", f"tip_v{axis}"]
-    for j in joints[len(joints) - (narx.n_inputs - 1):] if narx.n_inputs > 1 else []:
-        out += [f"q{j}", f"dq{j}"]
-    return tuple(out)
-
-
-def resolve_settings(narx: Narx, settings: ControllerSettings) -> ControllerSettings:
-    """Fill defaults from the model and check every value against it (errors name the flag)."""
-    plant = narx.context.get("plant", {})
-    nu = narx.n_inputs
-    tracked = settings.tracked or default_tracked(narx, max(1, settings.horizon))
-    for name in tracked:
-        if name not in narx.output_names:
-            raise DescriptionError("--track", f"{name!r} is not an output of the model "
-                                   f"(outputs: {', '.join(narx.output_names)})")
-    if len(set(tracked)) != len(tracked):
-        raise DescriptionError("--track", "names an output twice")
-    scales = settings.scales or tuple(float(narx.output_scale[narx.output_index(n)])
-                                      for n in tracked)
-    if len(scales) != len(tracked) or not all(s > 0 and math.isfinite(s) for s in scales):
-        raise DescriptionError("--scales", f"needs one positive number per tracked output "
-                               f"({len(tracked)}), got {list(scales)}")
-    limits = settings.torque_limit or tuple(plant.get("torque_limit", ())) or (math.inf,) * nu
-    if len(limits) != nu or not all(v > 0 for v in limits):
-        raise DescriptionError("--torque-limit", f"needs {nu} positive values, got "
-                               f"{list(limits)}")
-    rates = settings.rate_limit or tuple(10.0 * v if math.isfinite(v) else math.inf
-                                         for v in limits)
-    if len(rates) != nu or not all(v > 0 for v in rates):
-        raise DescriptionError("--rate-limit", f"needs {nu} positive values, got {list(rates)}")
-    for flag, value, ok, allowed in (
-            ("--horizon", settings.horizon, isinstance(settings.horizon, int)
-             and 1 <= settings.horizon <= 500, "an integer from 1 to 500"),
-            ("--lambda", settings.regularisation, math.isfinite(settings.regularisation)
-             and settings.regularisation >= 0, "a finite number >= 0"),
-            ("--setpoint-filter", settings.setpoint_filter,
-             0 <= settings.setpoint_filter < 1, "a number in [0, 1)"),
-            ("--mismatch-filter", settings.mismatch_filter,
-             0 <= settings.mismatch_filter < 1, "a number in [0, 1)"),
-            ("--iterations", settings.iterations, isinstance(settings.iterations, int)
-             and 1 <= settings.iterations <= 20, "an integer from 1 to 20")):
-        if not ok:
-            raise DescriptionError(flag, f"must be {allowed}, got {value!r}")
-    return ControllerSettings(settings.horizon, settings.regularisation,
-                              settings.setpoint_filter, settings.mismatch_filter,
-                              tuple(tracked), tuple(float(s) for s in scales),
-                              tuple(float(v) for v in limits), tuple(float(v) for v in rates),
-                              settings.iterations)
-
-
-def _inner_gains(narx: Narx) -> tuple[list[int], list[int], np.ndarray, np.ndarray]:
-    """Output indices of the PD's angle and speed deviations, and its gains."""
-    inner = narx.context.get("plant", {}).get("inner_loop", {})
-    joints = inner.get("joints", [])
-    if not joints:
-        return [], [], np.zeros(0), np.zeros(0)
-    q = [narx.output_index(f"q{j}") for j in joints]
-    dq = [narx.output_index(f"dq{j}") for j in joints]
-    return q, dq, np.asarray(inner["kp"], dtype=float), np.asarray(inner["kd"], dtype=float)
-
-
-def build_step(narx: Narx, settings: ControllerSettings,
-               sym: Any = ca.SX) -> tuple[ca.Function, dict[str, Any]]:
-    """The controller step as a CasADi function (see the module docstring for the law).
-
-    Inputs: y (measured outputs), r (the reference's outputs), tau_ff (the feedforward torque
-    at this sample, for the actuator limit) and state. Outputs: tau (torque to add to the
-    feedforward: PD + v), state_next, v, y_pred (the model's deviation at k+1).
-    """
-    s = settings
-    m = narx
-    ny, nu, na, nb, d = m.n_outputs, m.n_inputs, m.output_lags, m.input_lags, s.horizon
-    if len(s.torque_limit) != nu:
-        raise ValueError("resolve the settings first (resolve_settings)")
-    net = m.casadi_function("narx_network")
-    n_state = na * ny + nb * nu + 2 * ny
-
-    # d-step rollout with the input held at v: y^(k+d) and y^(k+1).
-    yh = sym.sym("y_hist", na * ny)
-    uh = sym.sym("u_past", nb * nu)  # v(k-1) ... v(k-nb)
-    v = sym.sym("v", nu)
-    ys = [yh[i * ny:(i + 1) * ny] for i in range(na)]
-    us = [v] + [uh[i * nu:(i + 1) * nu] for i in range(nb - 1)]
-    for _ in range(d):
-        nxt = net(ca.vertcat(*ys, *us))
-        ys = [nxt, *ys[:-1]]
-        us = [v, *us[:-1]]
-    rollout = ca.Function("aimnc_rollout", [yh, uh, v], [ys[0]], ["y_hist", "u_past", "v"],
-                          ["y_end"])
-    dv = sym.sym("dv", nu)
-    vprev_sym = sym.sym("v_prev", nu)
-    y_end = rollout(yh, uh, vprev_sym + dv)
-    linear = ca.Function("aimnc_linearised", [yh, uh, vprev_sym, dv],
-                         [y_end, ca.jacobian(y_end, dv)],
-                         ["y_hist", "u_past", "v_prev", "dv"], ["n", "j"])
-
-    y = sym.sym("y", ny)
-    r = sym.sym("r", ny)
-    tau_ff = sym.sym("tau_ff", nu)
-    state = sym.sym("state", n_state)
-    hist = state[: na * ny]
-    upast = state[na * ny: na * ny + nb * nu]
-    e_f_prev = state[na * ny + nb * nu: na * ny + nb * nu + ny]
-    y_d = state[na * ny + nb * nu + ny:]
-    v_prev = upast[:nu]
-
-    dev = y - r
-    e = dev - hist[:ny]
-    e_f = s.mismatch_filter * e_f_prev + (1 - s.mismatch_filter) * e
-    target = (s.setpoint_filter ** d) * y_d
-    rows = [m.output_index(name) for name in s.tracked]
-    c = np.zeros((len(rows), ny))
-    for i, (row, scale) in enumerate(zip(rows, s.scales, strict=True)):
-        c[i, row] = 1.0 / scale
-    cm = ca.DM(c)
-    lam = s.regularisation * ca.DM.eye(nu)
-    step = sym.zeros(nu, 1)
-    for _ in range(s.iterations):
-        n_val, jac = linear(hist, upast, v_prev, step)
-        cj = ca.mtimes(cm, jac)
-        residual = ca.mtimes(cm, target - e_f - n_val)
-        rhs = ca.mtimes(cj.T, residual) - s.regularisation * step
-        step = step + ca.solve(ca.mtimes(cj.T, cj) + lam, rhs)
-    rate = ca.DM([rl * m.sample_time for rl in s.rate_limit])
-    step = ca.fmin(ca.fmax(step, -rate), rate)
-    q_idx, dq_idx, kp, kd = _inner_gains(m)
-    inner = (-ca.DM(kp) * dev[q_idx] - ca.DM(kd) * dev[dq_idx]) if q_idx else sym.zeros(nu, 1)
-    limit = ca.DM([lim if math.isfinite(lim) else 1e300 for lim in s.torque_limit])
-    v_new = ca.fmin(ca.fmax(v_prev + step, -limit - tau_ff - inner), limit - tau_ff - inner)
-    total = ca.fmin(ca.fmax(tau_ff + inner + v_new, -limit), limit)
-    tau = total - tau_ff
-    y_next = net(ca.vertcat(*[hist[i * ny:(i + 1) * ny] for i in range(na)], v_new,
-                            *[upast[i * nu:(i + 1) * nu] for i in range(nb - 1)]))
-    new_hist = ca.vertcat(y_next, hist[: (na - 1) * ny])
-    new_upast = ca.vertcat(v_new, upast[: (nb - 1) * nu])
-    y_d_next = s.setpoint_filter * y_d
-    state_next = ca.vertcat(new_hist, new_upast, e_f, y_d_next)
-    fn = ca.Function(STEP_NAME, [y, r, tau_ff, state], [tau, state_next, v_new, y_next],
-                     ["y", "r", "tau_ff", "state"], ["tau", "state_next", "v", "y_pred"])
-    layout = {
-        "inputs": {"y": list(m.output_names), "r": list(m.output_names),
-                   "tau_ff": list(m.input_names)},
-        "state": ([f"y_hat[k-{i}].{n}" for i in range(na) for n in m.output_names]
-                  + [f"v[k-{i + 1}].{n}" for i in range(nb) for n in m.input_names]
-                  + [f"e_f.{n}" for n in m.output_names]
-                  + [f"y_d.{n}" for n in m.output_names]),
-        "outputs": {"tau": list(m.input_names), "v": list(m.input_names),
-                    "y_pred": list(m.output_names)},
-    }
-    return fn, layout
-
-
-def _header(narx: Narx, settings: ControllerSettings, layout: dict[str, Any], body: str) -> str:
-    settings_text = json.dumps(asdict(settings), default=str)
-    return (
-        "/* GENERATED FILE: DO NOT EDIT.\n"
-        " * Regenerated by `jointplay control` from the model folder's narx.json.\n"
-        f" * controller: {STEP_NAME} (approximate internal-model neural control)\n"
-        f" * generator: jointplay.control {version('jointplay')}, casadi {version('casadi')}\n"
-        f" * network checksum: {narx.checksum()}\n"
-        f" * robot hash: {narx.context.get('robot', {}).get('robot_hash', '?')}\n"
-        f" * code sha256: {hashlib.sha256(body.encode()).hexdigest()}\n"
-        f" * settings: {settings_text}\n"
-        f" * inputs: y[{len(layout['inputs']['y'])}], r[{len(layout['inputs']['r'])}], "
-        f"tau_ff[{len(layout['inputs']['tau_ff'])}], state[{len(layout['state'])}]\n"
-        f" * outputs: tau[{len(layout['outputs']['tau'])}], state_next[{len(layout['state'])}]"
-        f", v[{len(layout['outputs']['v'])}], y_pred[{len(layout['outputs']['y_pred'])}]\n"
-        f" * outputs y: {', '.join(layout['inputs']['y'])}\n"
-        " */\n")
-
-
-def generate_c(narx: Narx, settings: ControllerSettings) -> tuple[str, ca.Function,
-                                                                 dict[str, Any]]:
-    fn, layout = build_step(narx, settings)
-    gen = ca.CodeGenerator("aimnc.c", {"with_header": False, "verbose": False})
-    gen.add(fn)
-    body = gen.dump()
-    return _header(narx, settings, layout, body) + body, fn, layout
-
-
-def compile_controller(narx: Narx, settings: ControllerSettings,
-                       compiled: bool = True) -> Controller:
-    """Build, generate, compile (through the cache) and load the controller step."""
-    from jointplay.build import compile_source
-    from jointplay.model import FastFunction
-
-    settings = resolve_settings(narx, settings)
-    source, fn, layout = generate_c(narx, settings)
-    library, seconds = (None, 0.0)
-    external = fn
-    if compiled:
-        library, seconds = compile_source(source)
-        external = ca.external(STEP_NAME, str(library))
-    ctrl = Controller(narx, settings, fn, library, seconds, source, FastFunction(external),
-                      len(layout["state"]), layout)
-    return ctrl
-
-
-def per_call_us(ctrl: Controller, repeat: int = 5, number: int = 20000) -> float:
-    """Median time of one compiled step through the buffer path, in microseconds."""
-    f = ctrl.fast
-    f.inputs[3][:] = ctrl.initial_state(np.zeros(ctrl.narx.n_outputs))
-    best = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        for _ in range(number):
-            f.trigger()
-        best.append((time.perf_counter() - t0) / number)
-    return float(np.median(best) * 1e6)
-
-
-def nominal_spectral_radius(ctrl: Controller, settle: int = 3000) -> float:
-    """Spectral radius of the loop with the network itself as the plant, linearised at the
-    equilibrium it settles to: below 1 means nominally (perfect-model) stable."""
-    fn = ctrl.function
-    ny = ctrl.narx.n_outputs
-    x = ca.MX.sym("x", ctrl.n_state)
-    zeros_y = ca.DM.zeros(ny)
-    zeros_u = ca.DM.zeros(ctrl.narx.n_inputs)
-    nxt = fn(x[:ny], zeros_y, zeros_u, x)[1]
-    loop = ca.Function("loop", [x], [nxt])
-    loop_jac = ca.Function("loop_jac", [x], [ca.jacobian(nxt, x)])
-    state = ctrl.initial_state(np.zeros(ny))
-    for _ in range(settle):
-        state = np.asarray(loop(state)).ravel()
-        if not np.all(np.isfinite(state)):
-            return math.inf
-    jac = np.asarray(loop_jac(state))
-    return float(np.max(np.abs(np.linalg.eigvals(jac))))
+NEURAL, LINEAR = "neural IMC", "ARX-IMC"
+CONTROLLERS = ("open loop", "PD", "computed torque", LINEAR, NEURAL)
+MODEL_BASED = (LINEAR, NEURAL)
+DIVERGENCE_FACTOR = 2.0  # x the open loop's largest tip error
+EXIT_DIVERGED = 3
 
 
 # ---- closed loop ------------------------------------------------------------------------------
 
 @dataclass
 class Run:
-    """One closed-loop (or open-loop) run: absolute outputs and the torque added."""
+    """One closed-loop (or open-loop) run: absolute outputs and the torque added.
+
+    A diverged run stops where it diverged: its arrays are shorter than the reference."""
 
     name: str
     t: np.ndarray
     y: np.ndarray
     tau: np.ndarray  # (N+1, nu) torque added to the scene's from each sample (last row 0)
-    v: np.ndarray  # the outer loop's part (AIMNC), else zeros
+    v: np.ndarray  # the outer loop's part (internal-model controllers), else zeros
     impacts: int
     seconds: float
+    diverged: str = ""  # empty, or where and why the run was stopped
+    flags: np.ndarray = field(default_factory=lambda: np.zeros((0, len(FLAGS))))
+    states: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # controller states
+
+    @property
+    def guard_counts(self) -> dict[str, int]:
+        """Samples on which each guard flag was raised; 'episodes' counts distinct
+        interventions (the network distrusted after having been trusted)."""
+        if self.flags.size == 0:
+            return {}
+        out = {name: int(np.sum(self.flags[:, i] > 0.5)) for i, name in enumerate(FLAGS)}
+        distrusted = self.flags[:, 0] > 0.5
+        out["episodes"] = int(np.sum(distrusted[1:] & ~distrusted[:-1]) + distrusted[0])
+        return out
 
 
 Law = Callable[[int, np.ndarray], np.ndarray]
 
 
+@dataclass(frozen=True)
+class LoopConditions:
+    """What the loop is exposed to beyond the scene: an unknown torque step on the plant,
+    noise on every measured signal the controllers see, and a delay of the actuators."""
+
+    disturbance: tuple[float, ...] = ()  # N m per driven joint, from disturbance_time on
+    disturbance_time: float = 1.0
+    noise: tuple[float, ...] = ()  # standard deviation per output (plant units); () none
+    delay: int = 0  # samples between a law's output and the actuator
+    seed: int = 0
+
+
 def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
-             clearance_model: Any | None = None) -> Run:
-    """Step the scene's clearance robot with ``law(k, y)`` added to the scene's torques."""
+             clearance_model: Any | None = None, *, limit: float = math.inf,
+             conditions: LoopConditions = LoopConditions()) -> Run:
+    """Step the scene's clearance robot with ``law(k, y)`` added to the scene's torques.
+
+    ``limit``: the run stops, marked diverged, once the end-effector position error exceeds
+    it (m), as it does when the plant can no longer be integrated."""
     from jointplay.identify import measure
     from jointplay.simulation import Stepper
 
@@ -397,31 +117,62 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
     joints = scene.robot.moving_joints
     index = [stepper.model.coordinates.index(f"q{j}") for j in joints]
     n = scene.run.n_outputs
+    dt = scene.run.output_step
+    nj = len(joints)
     y = np.zeros_like(reference)
-    tau = np.zeros((n + 1, len(joints)))
+    tau = np.zeros((n + 1, nj))
+    applied = [np.zeros(nj)] * conditions.delay
+    rng = np.random.default_rng(conditions.seed)
+    noise = np.asarray(conditions.noise, dtype=float) if conditions.noise else None
+    dist = np.asarray(conditions.disturbance, dtype=float) if conditions.disturbance else None
+    tip = slice(2 * nj, 2 * nj + 2)
+    diverged = ""
+    last = n
     start = time.perf_counter()
     for k in range(n + 1):
         y[k] = measure(stepper, index)
+        error = float(np.linalg.norm(y[k, tip] - reference[k, tip]))
+        if not np.all(np.isfinite(y[k])) or error > limit:
+            diverged = (f"end-effector error {error:.3g} m at t = {k * dt:.3f} s exceeds the "
+                        f"divergence bound {limit:.3g} m")
+            last = k
+            break
         if k == n:
             break
-        tau[k] = law(k, y[k])
-        stepper.step(tau[k])
-    t = np.arange(n + 1) * scene.run.output_step
-    return Run(name, t, y, tau, np.zeros_like(tau), len(stepper.impacts),
-               time.perf_counter() - start)
+        seen = y[k] + rng.normal(0.0, noise) if noise is not None else y[k]
+        tau[k] = law(k, seen)
+        out = tau[k]
+        if conditions.delay:
+            applied.append(tau[k])
+            out = applied.pop(0)
+        if dist is not None and k * dt >= conditions.disturbance_time - 1e-12:
+            out = out + dist
+        try:
+            stepper.step(out)
+        except SimulationError as err:
+            diverged = f"the plant could not be integrated: {err}"
+            last = k
+            break
+    keep = slice(0, last + 1)
+    t = np.arange(n + 1) * dt
+    return Run(name, t[keep], y[keep], tau[keep], np.zeros_like(tau[keep]),
+               len(stepper.impacts), time.perf_counter() - start, diverged)
 
 
-def aimnc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
-              log: dict[str, list[np.ndarray]]) -> Law:
+def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
+            log: dict[str, list[np.ndarray]]) -> Law:
+    """The compiled internal-model step as a law; logs v, the prediction, flags, states."""
     state: list[np.ndarray] = []
 
     def law(k: int, y: np.ndarray) -> np.ndarray:
         if k == 0:
             state[:] = [ctrl.initial_state(y - reference[0])]
+        log["states"].append(state[0])
         tau, nxt, v, pred = ctrl.step(y, reference[k], tau_ff[k], state[0])
         state[0] = nxt
         log["v"].append(v)
         log["y_pred"].append(pred)
+        log["flags"].append(ctrl.last_flags)
         return tau
     return law
 
@@ -477,21 +228,34 @@ _SLICES = {"position": slice(0, 2), "velocity": slice(2, 4), "acceleration": sli
 def tip_errors(run: Run, reference: np.ndarray, nj: int) -> dict[str, np.ndarray]:
     """|end-effector error| per sample (Euclidean norm over x, y) for each quantity."""
     base = 2 * nj
+    ref = reference[: run.y.shape[0]]
     return {k: np.linalg.norm(run.y[:, base + s.start: base + s.stop]
-                              - reference[:, base + s.start: base + s.stop], axis=1)
+                              - ref[:, base + s.start: base + s.stop], axis=1)
             for k, s in _SLICES.items()}
 
 
+GUARD_METRICS = {"guard_episodes": "episodes", "distrusted_samples": "model_distrusted",
+                 "fallback_samples": "on_fallback_model", "inner_only_samples": "inner_loop_only",
+                 "input_bound_samples": "input_at_trust_bound"}
+
+
 def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int) -> dict[str, float]:
+    """Maxima and RMS of the end-effector errors (whole run and after ``transient`` samples),
+    the largest added torque, impacts, whether the run diverged and the guard's counts."""
     err = tip_errors(run, reference, nj)
     out: dict[str, float] = {}
     for k, e in err.items():
+        after = e[transient:] if e.size > transient else e
         out[f"max_{k}"] = float(np.max(e))
-        out[f"max_{k}_after"] = float(np.max(e[transient:]))
+        out[f"max_{k}_after"] = float(np.max(after))
         out[f"rms_{k}"] = float(np.sqrt(np.mean(e ** 2)))
-        out[f"rms_{k}_after"] = float(np.sqrt(np.mean(e[transient:] ** 2)))
+        out[f"rms_{k}_after"] = float(np.sqrt(np.mean(after ** 2)))
     out["max_torque_added"] = float(np.max(np.abs(run.tau)))
     out["impacts"] = float(run.impacts)
+    out["diverged"] = 1.0 if run.diverged else 0.0
+    counts = run.guard_counts
+    for key, name in GUARD_METRICS.items():
+        out[key] = float(counts.get(name, 0))
     return out
 
 
@@ -509,7 +273,8 @@ def metrics_table(metrics: dict[str, dict[str, float]], transient_s: float) -> s
         cells = [f"{mt[k]:.3g}" for k, _ in cols]
         cells += [f"{mt['max_velocity_after']:.3g}", f"{mt['max_acceleration_after']:.3g}",
                   f"{mt['rms_acceleration_after']:.3g}", f"{mt['impacts']:.0f}"]
-        lines.append(f"| {name} | " + " | ".join(cells) + " |")
+        label = f"{name} (DIVERGED)" if mt.get("diverged") else name
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
     if base is not None:
         for name, mt in metrics.items():
             if name == "open loop":
@@ -521,91 +286,6 @@ def metrics_table(metrics: dict[str, dict[str, float]], transient_s: float) -> s
     return "\n".join(lines)
 
 
-# ---- plots ------------------------------------------------------------------------------------
-
-def _figure(rows: int, cols: int, width: float, height: float) -> tuple[Figure, np.ndarray]:
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(width, height), layout="constrained")
-    FigureCanvasAgg(fig)
-    return fig, fig.subplots(rows, cols, squeeze=False, sharex=True)
-
-
-def _save(fig: Figure, path: Path) -> Path:
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, format="png", dpi=130)
-    return path
-
-
-def plot_runs(runs: dict[str, Run], reference: np.ndarray, joints: Sequence[int],
-              folder: Path, scene_name: str) -> list[Path]:
-    """Figures like the paper's 10 (responses) and 11 (errors), and the torques."""
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as err:
-        raise DescriptionError("--plot", f"cannot create folder {folder}: {err}") from None
-    nj = len(joints)
-    base = 2 * nj
-    t = next(iter(runs.values())).t
-    labels = (("displacement", "m"), ("velocity", "m/s"), ("acceleration", "m/s²"))
-    colors = {"open loop": "C3", "PD": "C2", "computed torque": "C4", "AIMNC": "C0"}
-    paths = []
-    fig, axes = _figure(3, 2, 12, 9)
-    for row, (label, unit) in enumerate(labels):
-        for c, comp in enumerate("xy"):
-            ax = axes[row, c]
-            col = base + 2 * row + c
-            ax.plot(t, reference[:, col], "k--", lw=0.9, label="ideal joints (reference)")
-            for name in ("open loop", "AIMNC"):
-                if name in runs:
-                    ax.plot(t, runs[name].y[:, col], color=colors[name], lw=1.0,
-                            label="clearance, " + ("no control" if name == "open loop"
-                                                   else "AIMNC"))
-            ax.set_ylabel(f"{comp} {label} [{unit}]")
-            ax.grid(True, alpha=0.3)
-    for ax in axes[-1]:
-        ax.set_xlabel("time [s]")
-    fig.suptitle(f"{scene_name}: end-effector response with and without control")
-    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=3)
-    paths.append(_save(fig, folder / "control_response.png"))
-
-    fig, axes = _figure(3, 1, 10, 9)
-    for row, (label, unit) in enumerate(labels):
-        ax = axes[row, 0]
-        floor = math.inf
-        for name, run in runs.items():
-            e = tip_errors(run, reference, nj)[METRICS[row]]
-            floor = min(floor, 0.01 * float(np.median(e[1:])) if e.size > 1 else 1e-12)
-            ax.semilogy(t[1:], np.maximum(e[1:], 1e-15), color=colors.get(name, "C5"),
-                        lw=1.2 if name in ("open loop", "AIMNC") else 0.7, label=name)
-        if math.isfinite(floor) and floor > 0:
-            ax.set_ylim(bottom=floor)  # both runs start on the reference: e(0) = 0
-        ax.set_ylabel(f"|{label} error| [{unit}]")
-        ax.grid(True, which="both", alpha=0.3)
-    axes[-1, 0].set_xlabel("time [s]")
-    fig.suptitle(f"{scene_name}: end-effector error vs the ideal-joint robot")
-    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=4)
-    paths.append(_save(fig, folder / "control_error.png"))
-
-    fig, axes = _figure(nj, 1, 10, 2.6 * nj + 1)
-    for j in range(nj):
-        ax = axes[j, 0]
-        for name, run in runs.items():
-            if name == "open loop":
-                continue
-            ax.plot(t, run.tau[:, j], color=colors.get(name, "C5"), lw=0.9,
-                    label=f"{name}: added torque")
-        if "AIMNC" in runs:
-            ax.plot(t, runs["AIMNC"].v[:, j], color="C1", lw=0.9, label="AIMNC: outer loop v")
-        ax.set_ylabel(f"joint {joints[j]} torque [N m]")
-        ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel("time [s]")
-    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=4)
-    paths.append(_save(fig, folder / "control_torque.png"))
-    return paths
-
-
 # ---- the whole comparison -----------------------------------------------------------------
 
 @dataclass
@@ -614,50 +294,148 @@ class Comparison:
     reference: np.ndarray
     metrics: dict[str, dict[str, float]]
     transient: int
-    per_call_us: float
-    spectral_radius: float
-    controller: Controller
+    limit: float  # divergence bound on the tip error, m
+    controllers: dict[str, Controller] = field(default_factory=dict)
+    per_call_us: dict[str, float] = field(default_factory=dict)
+    nominal_radius: dict[str, float] = field(default_factory=dict)
+    local_radius: dict[str, np.ndarray] = field(default_factory=dict)
+    tau_ff: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+
+    @property
+    def controller(self) -> Controller:
+        """The neural controller (or the only internal-model controller there is)."""
+        return self.controllers.get(NEURAL) or next(iter(self.controllers.values()))
 
 
-def compare(scene: Any, narx: Narx, settings: ControllerSettings, *,
+def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx | None = None,
             transient: float = DEFAULT_TRANSIENT, ct_omega: float = 15.0,
             ct_zeta: float = 0.2, pd_kp: Sequence[float] = (), pd_kd: Sequence[float] = (),
             controllers: Sequence[str] = CONTROLLERS, quiet: bool = True,
-            analyse: bool = True) -> Comparison:
+            analyse: bool = True, conditions: LoopConditions = LoopConditions(),
+            limit: float | None = None, divergence_factor: float = DIVERGENCE_FACTOR,
+            compiled: dict[str, Controller] | None = None) -> Comparison:
     """Run the scene with every controller against the ideal robot's motion.
 
-    ``analyse`` also measures the compiled step's cost and the nominal spectral radius.
+    Without ``limit`` the open loop runs first and sets the divergence bound
+    (``divergence_factor`` x its largest tip error). ``arx`` is the linear twin: the
+    ARX-IMC's model and the neural controller's fallback (without it there is no ARX-IMC and
+    the neural controller falls back to the inner loop alone). ``analyse`` also measures each
+    compiled step's cost and its linearised loop's spectral radius (nominal, and along the
+    run).
     """
     from jointplay.identify import ideal_reference, reference_outputs
     from jointplay.simulation import load_scene_model
 
     ideal = ideal_reference(scene)
     reference = reference_outputs(ideal)
-    ctrl = compile_controller(narx, settings)
-    cost = per_call_us(ctrl) if analyse else math.nan
-    radius = nominal_spectral_radius(ctrl) if analyse else math.nan
     model = load_scene_model(scene)
     nj = len(scene.robot.moving_joints)
+    names = [c for c in controllers if arx is not None or c != LINEAR]
+    ctrls: dict[str, Controller] = dict(compiled or {})
+    for name in names:
+        if name == NEURAL and name not in ctrls:
+            ctrls[name] = compile_controller(narx, settings, fallback=arx)
+        elif name == LINEAR and name not in ctrls and arx is not None:
+            ctrls[name] = compile_controller(arx, settings)
     runs: dict[str, Run] = {}
-    for name in controllers:
-        log: dict[str, list[np.ndarray]] = {"v": [], "y_pred": []}
+    if limit is None:
+        names = ["open loop", *[c for c in names if c != "open loop"]]
+    for name in names:
+        log: dict[str, list[np.ndarray]] = {"v": [], "y_pred": [], "flags": [], "states": []}
         if name == "open loop":
             law: Law = lambda k, y: np.zeros(nj)  # noqa: E731
         elif name == "PD":
             law = pd_law(narx, reference, pd_kp, pd_kd)
         elif name == "computed torque":
             law = computed_torque_law(scene, ideal, reference, ct_omega, ct_zeta)
+        elif name in ctrls:
+            law = imc_law(ctrls[name], reference, ideal.tau, log)
         else:
-            law = aimnc_law(ctrl, reference, ideal.tau, log)
-        run = run_loop(scene, reference, law, name, model)
+            raise ValueError(f"unknown controller {name!r}")
+        bound = math.inf if limit is None and name == "open loop" else (
+            limit if limit is not None else divergence_factor * float(
+                np.max(tip_errors(runs["open loop"], reference, nj)["position"])))
+        run = run_loop(scene, reference, law, name, model, limit=bound, conditions=conditions)
         if log["v"]:
-            run.v[: len(log["v"])] = np.array(log["v"])
+            n = run.y.shape[0]
+            run.v[: min(n, len(log["v"]))] = np.array(log["v"])[:n]
+            run.flags = np.array(log["flags"])[:n]
+            run.states = np.array(log["states"])[:n]
         runs[name] = run
         if not quiet:
-            print(f"  {name}: {run.seconds:.1f} s, {run.impacts} impacts", flush=True)
+            note = f"; DIVERGED: {run.diverged}" if run.diverged else ""
+            print(f"  {name}: {run.seconds:.1f} s, {run.impacts} impacts{note}", flush=True)
+    if limit is None:
+        limit = divergence_factor * float(np.max(tip_errors(runs["open loop"], reference,
+                                                            nj)["position"]))
     k0 = max(0, round(transient / scene.run.output_step))
     metrics = {name: run_metrics(run, reference, nj, k0) for name, run in runs.items()}
-    return Comparison(runs, reference, metrics, k0, cost, radius, ctrl)
+    result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau)
+    if analyse:
+        for name, ctrl in ctrls.items():
+            if name not in runs:
+                continue
+            result.per_call_us[name] = per_call_us(ctrl)
+            states = runs[name].states
+            picks = states[np.linspace(0, len(states) - 1, min(8, len(states))).astype(int)] \
+                if len(states) else states
+            nominal, local = stability_radii(ctrl, picks)
+            result.nominal_radius[name] = nominal
+            result.local_radius[name] = local
+    return result
+
+
+def stability_radii(ctrl: Controller, states: np.ndarray) -> tuple[float, np.ndarray]:
+    """Nominal spectral radius and the radii at the given visited controller states."""
+    return nominal_spectral_radius(ctrl), local_spectral_radii(ctrl, states)
+
+
+MARGINAL = 1e-3  # a radius this close to 1 is an integrator the verdict cannot decide on
+
+
+def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
+    """What can be said about the loop's stability, and whether it calls for a warning."""
+    counts = run.guard_counts
+    duration = float(run.t[-1]) if run.t.size else 0.0
+    if run.diverged:
+        return f"{name}: DIVERGED ({run.diverged}); the run was stopped", True
+    parts: list[str] = []
+    warn = False
+    worse = run.y.shape[0] and comparison.metrics[name]["max_position"] > \
+        comparison.limit / DIVERGENCE_FACTOR
+    if counts.get("episodes", 0):
+        warn = True
+        parts.append(f"bounded over the {duration:g} s run only with the guard: the network was "
+                     f"distrusted {counts['episodes']} time(s) ({counts['on_fallback_model']} "
+                     f"samples on the ARX fallback, {counts['inner_loop_only']} with the inner "
+                     "loop alone)")
+    else:
+        parts.append(f"bounded over the {duration:g} s run, no fallback")
+    if counts.get("input_at_trust_bound", 0):
+        warn = True
+        parts.append(f"v held at the trust bound (training range) on "
+                     f"{counts['input_at_trust_bound']} samples")
+    if worse:
+        warn = True
+        parts.append("its largest tip error exceeds the open loop's")
+    nominal = comparison.nominal_radius.get(name)
+    local = comparison.local_radius.get(name)
+    if nominal is not None:
+        if nominal < 1 - MARGINAL:
+            lin = f"nominal linearisation stable (spectral radius {nominal:.4f})"
+        elif nominal <= 1 + MARGINAL:
+            lin = (f"nominal linearisation marginal (spectral radius {nominal:.4f}, within "
+                   f"{MARGINAL:g} of 1: an integrating mode the tracked outputs do not see; "
+                   "undecided)")
+        else:
+            lin = f"nominal linearisation unstable (spectral radius {nominal:.4f})"
+        if local is not None and local.size:
+            lin += (f"; at {local.size} states along the run {np.min(local):.4f} to "
+                    f"{np.max(local):.4f}")
+            if np.max(local) > 1 + MARGINAL:
+                lin += " (above 1 at some: stability beyond this run is not established)"
+        parts.append(lin)
+    return f"{name}: " + "; ".join(parts), warn
 
 
 def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any]) -> None:
@@ -669,9 +447,11 @@ def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any]) -> None
         f.create_dataset("reference", data=comparison.reference)
         for name, run in comparison.runs.items():
             g = f.create_group(name)
-            for key in ("t", "y", "tau", "v"):
+            for key in ("t", "y", "tau", "v", "flags"):
                 g.create_dataset(key, data=getattr(run, key))
             g.attrs["metrics"] = json.dumps(comparison.metrics[name])
+            g.attrs["diverged"] = run.diverged
+            g.attrs["flag_names"] = json.dumps(list(FLAGS))
 
 
 # ---- the command ------------------------------------------------------------------------------
@@ -716,26 +496,61 @@ def test_case_scenes(model_dir: Path, scene: Any) -> list[tuple[str, Any]]:
     return out
 
 
-def cmd_control(args: argparse.Namespace) -> int:
-    """``jointplay control``: validate, compile, run every controller, report and plot."""
-    from jointplay.identify import _load_scene_arg
+def load_twin(model_dir: Path, narx: Narx) -> Narx:
+    """The ARX twin of a model folder: arx.json, or (folders written before it existed) a
+    least-squares fit on the stored training runs, as identify makes it."""
+    from dataclasses import replace
 
-    scene = _load_scene_arg(args.scene, args.quiet)
-    model_dir = Path(args.model)
-    narx = load_narx(model_dir)
-    check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
+    if (model_dir / ARX_FILE).is_file():
+        return load_narx(model_dir, filename=ARX_FILE)
+    from jointplay.identify import _segments, fit_arx, read_datasets
+
+    path = model_dir / "datasets.h5"
+    if not path.is_file():
+        raise DescriptionError("--model", f"{model_dir} has neither {ARX_FILE} nor datasets.h5 "
+                               "for the ARX baseline: run `jointplay identify` again")
+    trajectories, _ = read_datasets(path)
+    skip = max(0, round(narx.context.get("plant", {}).get("transient", DEFAULT_TRANSIENT)
+                        / narx.sample_time))
+    names = {"output_names": narx.output_names, "output_units": narx.output_units,
+             "input_names": narx.input_names, "input_units": narx.input_units}
+    arx = fit_arx(_segments([t for t in trajectories if t.split == "train"], skip), names,
+                  narx.output_lags, narx.input_lags, narx.sample_time)
+    return replace(arx, context=narx.context)
+
+
+def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> ControllerSettings:
+    """The settings the flags give; resolved against ``narx`` when given (defaults filled
+    from it, every value checked), else as given (each model resolves them for itself)."""
     tracked = tuple(n.strip() for n in args.track.split(",") if n.strip()) if args.track else ()
     settings = ControllerSettings(
         horizon=args.horizon, regularisation=args.lambda_, setpoint_filter=args.setpoint_filter,
         mismatch_filter=args.mismatch_filter, tracked=tracked,
         scales=_floats(args.scales, "--scales"),
         torque_limit=_floats(args.torque_limit, "--torque-limit"),
-        rate_limit=_floats(args.rate_limit, "--rate-limit"), iterations=args.iterations)
-    settings = resolve_settings(narx, settings)
+        rate_limit=_floats(args.rate_limit, "--rate-limit"), iterations=args.iterations,
+        guard=not args.no_guard, trust_input=args.trust_input, trust_range=args.trust_range,
+        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold)
+    return resolve_settings(narx, settings) if narx is not None else settings
+
+
+def cmd_control(args: argparse.Namespace) -> int:
+    """``jointplay control``: validate, compile, run every controller, report and plot.
+
+    Exit status 3 when an internal-model controller diverged."""
+    from jointplay.identify import _load_scene_arg
+
+    scene = _load_scene_arg(args.scene, args.quiet)
+    model_dir = Path(args.model)
+    narx = load_narx(model_dir)
+    check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
+    arx = load_twin(model_dir, narx)
+    settings = settings_from_args(args, narx)
     nj = len(scene.robot.moving_joints)
     pd_kp = _floats(args.pd_kp, "--pd-kp", nj)
     pd_kd = _floats(args.pd_kd, "--pd-kd", nj, positive=False)
-    for flag, value in (("--ct-omega", args.ct_omega), ("--ct-zeta", args.ct_zeta)):
+    for flag, value in (("--ct-omega", args.ct_omega), ("--ct-zeta", args.ct_zeta),
+                        ("--divergence-factor", args.divergence_factor)):
         if not (math.isfinite(value) and value > 0):
             raise DescriptionError(flag, f"must be a positive number, got {value}")
     if not (math.isfinite(args.transient) and 0 <= args.transient < scene.run.t_end):
@@ -761,105 +576,106 @@ def cmd_control(args: argparse.Namespace) -> int:
     if not quiet:
         print(f"scene {scene.name}: reference = ideal-joint robot under the scene's torques; "
               f"plant = compiled clearance model; controller every {scene.run.output_step:g} s")
-    comparison = compare(scene, narx, settings, transient=args.transient,
+    comparison = compare(scene, narx, settings, arx=arx, transient=args.transient,
                          ct_omega=args.ct_omega, ct_zeta=args.ct_zeta, pd_kp=pd_kp,
-                         pd_kd=pd_kd, quiet=quiet)
-    table = metrics_table(comparison.metrics, args.transient)
-    ctrl = comparison.controller
+                         pd_kd=pd_kd, quiet=quiet, divergence_factor=args.divergence_factor)
+    inner = narx.context["plant"]["inner_loop"]
+    alpha = narx.context.get("training", {}).get("metrics", {}).get("residual_weight")
     lines = [
         "",
         f"End-effector errors vs the ideal-joint robot ({scene.name}, {scene.run.t_end:g} s; "
         "norms over x, y):",
         "",
-        table,
+        metrics_table(comparison.metrics, args.transient),
         "",
-        f"AIMNC: horizon {settings.horizon}, lambda {settings.regularisation:g}, setpoint "
-        f"filter {settings.setpoint_filter:g}, mismatch filter {settings.mismatch_filter:g}, "
-        f"tracked {', '.join(settings.tracked)}; inner PD kp "
-        f"{narx.context['plant']['inner_loop']['kp']}, kd "
-        f"{narx.context['plant']['inner_loop']['kd']}; PD baseline kp "
-        f"{list(pd_kp) or narx.context['plant']['inner_loop']['kp']}, kd "
-        f"{list(pd_kd) or narx.context['plant']['inner_loop']['kd']}; computed torque omega "
-        f"{args.ct_omega:g} rad/s, zeta {args.ct_zeta:g}",
-        f"compiled controller step: {comparison.per_call_us:.2f} us per call (buffer path; "
-        f"compile {ctrl.compile_seconds:.2f} s, 0 if cached); nominal loop spectral radius "
-        f"{comparison.spectral_radius:.6f} "
-        f"({'stable' if comparison.spectral_radius < 1 else 'NOT stable'})",
+        f"internal-model controllers: horizon {settings.horizon}, lambda "
+        f"{settings.regularisation:g}, setpoint filter {settings.setpoint_filter:g}, mismatch "
+        f"filter {settings.mismatch_filter:g}, tracked {', '.join(settings.tracked)}; guard "
+        + (f"on (|v| <= {settings.trust_input:g} x training, range margin "
+           f"{settings.trust_range:g}, mismatch <= {settings.trust_mismatch:g}, hold "
+           f"{settings.fallback_hold})" if settings.guard else "OFF")
+        + f"; inner PD kp {inner['kp']}, kd {inner['kd']}; PD baseline kp "
+        f"{list(pd_kp) or inner['kp']}, kd {list(pd_kd) or inner['kd']}; computed torque "
+        f"omega {args.ct_omega:g} rad/s, zeta {args.ct_zeta:g}; network residual weight "
+        f"{alpha if alpha is not None else 'not recorded'}",
+        "compiled step: " + ", ".join(
+            f"{name} {us:.2f} us per call" for name, us in comparison.per_call_us.items())
+        + f" (buffer path); divergence bound {comparison.limit:.3g} m (x"
+        f"{args.divergence_factor:g} the open loop's largest tip error)",
+        "",
+        "Stability:",
     ]
+    warnings = []
+    diverged = False
+    for name in MODEL_BASED:
+        if name in comparison.runs:
+            text, warn = verdict(name, comparison.runs[name], comparison)
+            lines.append(f"- {text}")
+            diverged |= bool(comparison.runs[name].diverged)
+            if warn:
+                warnings.append(text)
     if scene.name == "paper_4dof":
-        lines.append("paper (its robot, with control): max |Δp| 2.4e-4 m, max |Δv| 7.7e-3 m/s, "
-                     "acceleration error reduced tenfold")
+        lines += ["", "paper (its robot, with control): max |Δp| 2.4e-4 m, max |Δv| 7.7e-3 m/s, "
+                      "acceleration error reduced tenfold"]
     case_rows = []
     for label, case_scene in cases:
-        sub = compare(case_scene, narx, settings, transient=args.transient,
-                      controllers=("PD", "AIMNC"), quiet=True, analyse=False)
-        pd_m, ai_m = sub.metrics["PD"], sub.metrics["AIMNC"]
-        bounded = bool(np.all(np.isfinite(sub.runs["AIMNC"].y))) and \
-            ai_m["max_position"] < 10 * pd_m["max_position"]
-        case_rows.append(f"| {label} | {pd_m['max_position']:.3g} | {ai_m['max_position']:.3g} "
-                         f"| {pd_m['max_velocity_after']:.3g} | "
-                         f"{ai_m['max_velocity_after']:.3g} | "
-                         f"{np.max(np.abs(sub.runs['AIMNC'].v)):.3g} | "
-                         f"{'yes' if bounded else 'NO'} |")
+        sub = compare(case_scene, narx, settings, arx=arx, transient=args.transient,
+                      controllers=("PD", LINEAR, NEURAL), quiet=True, analyse=False,
+                      compiled=comparison.controllers)
+        cells = []
+        for name in ("PD", LINEAR, NEURAL):
+            mt = sub.metrics.get(name)
+            cells += [f"{mt['max_position']:.3g}" if mt else "-",
+                      f"{mt['max_velocity_after']:.3g}" if mt else "-"]
+        states = [("DIVERGED" if sub.runs[n].diverged else "bounded") for n in MODEL_BASED
+                  if n in sub.runs]
+        diverged |= any(sub.runs[n].diverged for n in MODEL_BASED if n in sub.runs)
+        case_rows.append(f"| {label} | " + " | ".join(cells) + f" | {', '.join(states)} |")
     if case_rows:
-        lines += ["", "Closed loop on the stored test excitations (never used in training):", "",
-                  "| case | PD max \\|Δp\\| [m] | AIMNC max \\|Δp\\| [m] | PD max \\|Δv\\| after "
-                  "[m/s] | AIMNC max \\|Δv\\| after [m/s] | AIMNC max \\|v\\| [N m] | bounded |",
-                  "|---|---|---|---|---|---|---|", *case_rows]
+        lines += ["", "Closed loop on the stored test excitations (never used in training; "
+                      "max |Δp| [m], max |Δv| after the transient [m/s]):", "",
+                  "| case | PD Δp | PD Δv | ARX-IMC Δp | ARX-IMC Δv | neural Δp | neural Δv | "
+                  "ARX-IMC, neural |", "|---|---|---|---|---|---|---|---|", *case_rows]
     text = "\n".join(lines)
     written = []
     if args.plot:
-        written += [str(p) for p in plot_runs(comparison.runs, comparison.reference,
-                                              scene.robot.moving_joints, Path(args.plot),
-                                              scene.name)]
+        from jointplay.control_plots import plot_comparison
+
+        written += [str(p) for p in plot_comparison(comparison, scene, Path(args.plot))]
         atomic_write_text(Path(args.plot) / "control.md", text.strip() + "\n")
         written.append(str(Path(args.plot) / "control.md"))
     if args.out:
         write_runs(Path(args.out), comparison,
                    {"settings": asdict(settings), "scene": scene.name,
                     "per_call_us": comparison.per_call_us,
-                    "spectral_radius": comparison.spectral_radius,
-                    "network_checksum": narx.checksum()})
+                    "nominal_radius": comparison.nominal_radius,
+                    "network_checksum": narx.checksum(), "arx_checksum": arx.checksum()})
         written.append(args.out)
     if not quiet:
         print(text)
         for path in written:
             print(f"wrote {path}")
-    return 0
+    for text in warnings:
+        print(f"jointplay: warning: {text}", file=sys.stderr)
+    return EXIT_DIVERGED if diverged else 0
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add ``control`` to a ``jointplay`` argument parser's subcommands."""
     d = ControllerSettings()
     p = subparsers.add_parser(
-        "control", help="closed-loop runs of the neural controller and baselines against the "
-                        "ideal robot's motion",
+        "control", help="closed-loop runs of the internal-model controllers and baselines "
+                        "against the ideal robot's motion",
         description="Track the ideal-joint robot's motion with the clearance robot: open loop, "
-                    "PD, computed torque (ideal model) and the approximate internal-model "
-                    "neural controller (compiled), side by side.")
+                    "PD, computed torque (ideal model), internal-model control with the linear "
+                    "ARX twin, and with the guarded NARX network (compiled), side by side. "
+                    "Exit status 3 when an internal-model controller diverged.")
     p.add_argument("scene", nargs="?", help="scene file (TOML); default: the paper scene")
     p.add_argument("--model", required=True, metavar="MODEL_DIR",
                    help="folder written by `jointplay identify`")
     p.add_argument("--plot", metavar="DIR", help="write figures and the table (control.md) here")
     p.add_argument("--out", metavar="RUN.h5", help="write every run and the metrics (HDF5)")
-    p.add_argument("--horizon", type=int, default=d.horizon,
-                   help="samples ahead the prediction is matched (default %(default)s)")
-    p.add_argument("--lambda", dest="lambda_", type=float, default=d.regularisation,
-                   help="regularisation of the inverse (default %(default)s)")
-    p.add_argument("--setpoint-filter", type=float, default=d.setpoint_filter,
-                   help="a in y_d(k+1) = a y_d(k) + (1 - a) r(k+1) (default %(default)s)")
-    p.add_argument("--mismatch-filter", type=float, default=d.mismatch_filter,
-                   help="b of the first-order mismatch filter (default %(default)s)")
-    p.add_argument("--iterations", type=int, default=d.iterations,
-                   help="linearisations per step (default %(default)s: the AIMNC law)")
-    p.add_argument("--track", help="outputs the controller matches, e.g. q2,q3 (default: the "
-                                   "moving joints' angles)")
-    p.add_argument("--scales", help="error of each tracked output that counts as 1 (default: "
-                                    "its spread in the training data)")
-    p.add_argument("--torque-limit", help="actuator limits per driven joint, N m (default: "
-                                          "the model's)")
-    p.add_argument("--rate-limit", help="limit on the outer loop's torque rate per driven "
-                                        "joint, N m/s (default: 10 x the torque limit)")
+    add_settings_arguments(p, d)
     p.add_argument("--pd-kp", help="PD baseline stiffness per driven joint, N m/rad (default: "
                                    "the inner loop's)")
     p.add_argument("--pd-kd", help="PD baseline damping per driven joint, N m s/rad (default: "
@@ -871,14 +687,58 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--transient", type=float, default=DEFAULT_TRANSIENT,
                    help="seconds at the start reported separately (journals settling; "
                         "default %(default)s)")
+    p.add_argument("--divergence-factor", type=float, default=DIVERGENCE_FACTOR,
+                   help="a run whose tip error exceeds this x the open loop's largest is "
+                        "stopped as diverged (default %(default)s)")
     p.add_argument("--test-cases", action="store_true",
-                   help="also run PD and AIMNC on the model's stored test excitations")
+                   help="also run PD and both internal-model controllers on the model's stored "
+                        "test excitations")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
     p.set_defaults(func=cmd_control)
     return p
 
 
-__all__ = ["CONTROLLERS", "Comparison", "Controller", "ControllerSettings", "Run",
-           "build_step", "compare", "compile_controller", "computed_torque_law",
-           "generate_c", "metrics_table", "nominal_spectral_radius", "per_call_us", "plot_runs",
-           "register", "resolve_settings", "run_loop", "run_metrics"]
+def add_settings_arguments(p: argparse.ArgumentParser, d: ControllerSettings) -> None:
+    """The controller's tuning flags (shared with the study command)."""
+    p.add_argument("--horizon", type=int, default=d.horizon,
+                   help="samples ahead the prediction is matched (default %(default)s)")
+    p.add_argument("--lambda", dest="lambda_", type=float, default=d.regularisation,
+                   help="regularisation of the inverse (default %(default)s)")
+    p.add_argument("--setpoint-filter", type=float, default=d.setpoint_filter,
+                   help="a in y_d(k+1) = a y_d(k) + (1 - a) r(k+1) (default %(default)s)")
+    p.add_argument("--mismatch-filter", type=float, default=d.mismatch_filter,
+                   help="b of the first-order mismatch filter (default %(default)s)")
+    p.add_argument("--iterations", type=int, default=d.iterations,
+                   help="linearisations per step (default %(default)s: the AIMNC law)")
+    p.add_argument("--track", help="outputs the controller matches, e.g. q2,q3 (default: the "
+                                   "end effector's position and velocity along the axis the "
+                                   "torques move it most, and the last joint's angle and "
+                                   "speed)")
+    p.add_argument("--scales", help="error of each tracked output that counts as 1 (default: "
+                                    "its spread in the training data)")
+    p.add_argument("--torque-limit", help="actuator limits per driven joint, N m (default: "
+                                          "the model's)")
+    p.add_argument("--rate-limit", help="limit on the outer loop's torque rate per driven "
+                                        "joint, N m/s (default: 10 x the torque limit)")
+    p.add_argument("--no-guard", action="store_true",
+                   help="run the network without its trust region and fallback (to see what "
+                        "the guard prevents; a diverging loop is still stopped and reported)")
+    p.add_argument("--trust-input", type=float, default=d.trust_input,
+                   help="|v| kept within this x the largest |v| in training (default "
+                        "%(default)s)")
+    p.add_argument("--trust-range", type=float, default=d.trust_range,
+                   help="the internal model's regressor and prediction must stay in the "
+                        "training range widened by this x its width (default %(default)s)")
+    p.add_argument("--trust-mismatch", type=float, default=d.trust_mismatch,
+                   help="largest scaled mismatch on a tracked output before the network is "
+                        "distrusted (default %(default)s)")
+    p.add_argument("--fallback-hold", type=int, default=d.fallback_hold,
+                   help="samples on the fallback after a first intervention, doubling with "
+                        "each further one (default %(default)s)")
+
+
+__all__ = ["CONTROLLERS", "LINEAR", "NEURAL", "Comparison", "Controller", "ControllerSettings",
+           "LoopConditions", "Run", "build_step", "compare", "compile_controller",
+           "computed_torque_law", "default_tracked", "generate_c", "horizon_gain", "load_twin",
+           "metrics_table", "nominal_spectral_radius", "per_call_us", "register",
+           "resolve_settings", "run_loop", "run_metrics", "verdict"]

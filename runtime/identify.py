@@ -45,16 +45,20 @@ import numpy as np
 
 from jointplay import interrupts
 from jointplay import limits as size_limits
-from jointplay.errors import DescriptionError
+from jointplay.errors import DescriptionError, JointplayError
 from jointplay.expressions import TableColumn, TimeFunction
 from jointplay.files import atomic_path, atomic_write_text, file_error, sweep_stale, temp_tag
 from jointplay.narx import (
+    ARX_FILE,
+    MODEL_FILE,
+    REJECTED_FILE,
     Narx,
     fit_percent,
     nrmse,
     robot_identity,
     save_narx,
 )
+from jointplay.twin import describe, judge, select_residual
 
 DATASETS_FILE = "datasets.h5"
 METRICS_FILE = "metrics.json"
@@ -70,6 +74,10 @@ DEFAULT_KP = 200.0  # N m/rad
 DEFAULT_KD = 5.0  # N m s/rad
 # Torque limit of each actuator, as a multiple of the scene's peak torque on that joint.
 LIMIT_FACTOR = 2.5
+
+
+class ModelRejected(JointplayError):
+    """Identification finished but its model is worse than persistence or ARX on validation."""
 
 
 # ---- excitation signals ---------------------------------------------------------------------
@@ -879,8 +887,10 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False)
         raise file_error(out, err) from None
     try:
         metrics = _identify_into(scene, stage, config, inner, limits, joints, dt, quiet)
-        (out / "narx.json").unlink(missing_ok=True)  # a model only once every file is in
-        for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, "narx.json"):
+        for name in (MODEL_FILE, REJECTED_FILE):  # a model only once every file is in
+            (out / name).unlink(missing_ok=True)
+        for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, ARX_FILE,
+                     REJECTED_FILE if "rejected" in metrics else MODEL_FILE):
             os.replace(stage / name, out / name)
     except BaseException:
         shutil.rmtree(stage, ignore_errors=True)
@@ -889,6 +899,8 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False)
                 out.rmdir()
         raise
     shutil.rmtree(stage, ignore_errors=True)
+    if "rejected" in metrics:
+        raise ModelRejected(f"{out}: the identified model is not usable: {metrics['rejected']}")
     return metrics
 
 
@@ -932,16 +944,28 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
                     "sample_time": dt, "robot": identity, "plant": context["plant"],
                     "config": context["training"]})
     split = {s: [t for t in trajectories if t.split == s] for s in SPLITS}
-    model, history = train_narx(split["train"], split["validation"], config, names, dt,
-                                context, quiet)
-    t2 = time.perf_counter()
     skip = max(0, round(config.transient / dt))
+    x_train, _ = _regress(_segments(split["train"], skip), config.output_lags,
+                          config.input_lags,
+                          np.asarray(output_increments(names_out), dtype=float))
+    # What the model has seen: the controller's guard keeps the internal model inside it.
+    context["training_range"] = {"regressor_min": x_train.min(0).tolist(),
+                                 "regressor_max": x_train.max(0).tolist()}
+    trained, history = train_narx(split["train"], split["validation"], config, names, dt,
+                                  context, quiet)
+    t2 = time.perf_counter()
     arx = fit_arx(_segments(split["train"], skip), names, config.output_lags,
                   config.input_lags, dt)
+    arx = replace(arx, context={**context, "model": "linear ARX twin (least squares)"})
+    seg_val = _segments(split["validation"], skip)
+    model, selection = select_residual(trained, arx, seg_val, config.window)
+    verdict = judge(model, arx, selection, seg_val, config.window)
     metrics: dict[str, Any] = {
         "test": evaluate({"narx": model, "arx": arx, "persistence": None}, split["test"], skip,
                          model.history),
-        "validation": evaluate({"narx": model}, split["validation"], skip, model.history),
+        "validation": evaluate({"narx": model, "arx": arx, "persistence": None},
+                               split["validation"], skip, model.history),
+        "residual": describe(selection, verdict),
         "outputs": list(names_out),
         "training_history": history,
         "seconds": {"simulate": t1 - t0, "train": t2 - t1},
@@ -953,11 +977,16 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     report = identify_report(scene, model, metrics, config)
     atomic_write_text(out / REPORT_FILE, report)
     summary = {"test_free_run_nrmse": metrics["test"]["narx"]["free_run"]["nrmse"],
-               "test_one_step_nrmse": metrics["test"]["narx"]["one_step"]["nrmse"]}
+               "test_one_step_nrmse": metrics["test"]["narx"]["one_step"]["nrmse"],
+               "residual_weight": selection.alpha}
     model = replace(model, context={**model.context,
                                     "training": {**model.context["training"],
                                                  "metrics": summary}})
-    save_narx(model, out)  # last: its presence marks a complete model folder
+    save_narx(arx, out, ARX_FILE)
+    # last: the presence of narx.json marks a complete, usable model folder
+    save_narx(model, out, MODEL_FILE if verdict.usable else REJECTED_FILE)
+    if not verdict.usable:
+        metrics["rejected"] = verdict.message()
     return metrics
 
 
@@ -991,6 +1020,25 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
         metrics_table(metrics["test"], metrics["outputs"], "fit"),
         "",
     ]
+    res = metrics.get("residual")
+    if res:
+        tried = ", ".join(f"{a}: {v:.4g}" for a, v in res["free_run_loss_by_alpha"].items())
+        lines += [
+            "Network = ARX + alpha x (nonlinear residual), alpha chosen on the validation "
+            f"trajectories by the free-run loss over {config.window}-sample windows: "
+            f"alpha = {res['alpha']:g} (loss by alpha: {tried}; persistence "
+            f"{res['free_run_loss_persistence']:.4g}). "
+            + ("The residual improves on the linear model on validation."
+               if res["alpha"] > 0 and res["free_run_loss"] < res["free_run_loss_arx"]
+               else "The residual does not improve on the linear model on validation: the "
+                    "saved network is the ARX model."),
+            f"Validation, mean one-step NRMSE: model {res['one_step_nrmse']:.4g}, ARX "
+            f"{res['one_step_nrmse_arx']:.4g}, persistence "
+            f"{res['one_step_nrmse_persistence']:.4g}.",
+            "",
+        ]
+        if not res["usable"]:
+            lines += ["**REJECTED**: " + "; ".join(res["problems"]) + ".", ""]
     return "\n".join(lines)
 
 
@@ -1051,7 +1099,12 @@ def cmd_identify(args: argparse.Namespace) -> int:
     except DescriptionError as err:
         raise DescriptionError("--duration", err.message) from None
     started = time.perf_counter()
-    identify(scene, out, config, quiet=args.quiet)
+    try:
+        identify(scene, out, config, quiet=args.quiet)
+    except ModelRejected:
+        if not args.quiet:
+            print((out / REPORT_FILE).read_text(encoding="utf-8"))
+        raise
     if not args.quiet:
         print((out / REPORT_FILE).read_text(encoding="utf-8"))
         print(f"wrote {out}/narx.json, datasets.h5, metrics.json, report.md in "
@@ -1107,6 +1160,7 @@ __all__ = [
     "Chirp",
     "IdentifyConfig",
     "InnerLoop",
+    "ModelRejected",
     "Multisine",
     "Trajectory",
     "aprbs",

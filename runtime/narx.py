@@ -38,6 +38,8 @@ from jointplay.files import atomic_write_text
 FORMAT = "jointplay-narx"
 FORMAT_VERSION = 1
 MODEL_FILE = "narx.json"
+ARX_FILE = "arx.json"  # the linear twin: same regressor, least squares, same format
+REJECTED_FILE = "narx.rejected.json"  # a model identify judged unusable (kept to inspect)
 ACTIVATIONS = ("tanh",)
 
 
@@ -279,9 +281,9 @@ def _shape_problems(m: Narx) -> list[str]:
 
 # ---- saving and loading ---------------------------------------------------------------------
 
-def save_narx(model: Narx, folder: str | Path) -> Path:
-    """Write ``narx.json`` into ``folder`` (atomically); return its path."""
-    path = Path(folder) / MODEL_FILE
+def save_narx(model: Narx, folder: str | Path, filename: str = MODEL_FILE) -> Path:
+    """Write ``narx.json`` (or ``filename``) into ``folder`` (atomically); return its path."""
+    path = Path(folder) / filename
     text = json.dumps(model.to_dict(), indent=1, allow_nan=False)
     atomic_write_text(path, text + "\n")
     return path
@@ -348,14 +350,19 @@ def narx_from_dict(data: Any, path: Path, flag: str = "--model") -> Narx:
     return model
 
 
-def load_narx(folder: str | Path, flag: str = "--model") -> Narx:
-    """Read and validate ``folder/narx.json``."""
+def load_narx(folder: str | Path, flag: str = "--model", filename: str = MODEL_FILE) -> Narx:
+    """Read and validate ``folder/narx.json`` (or ``folder/filename``)."""
     folder = Path(folder)
     if not folder.is_dir():
         what = "is not a folder" if folder.exists() else "does not exist"
         raise _fail(folder, f"{what}; give the folder written by `jointplay identify ... --out "
                             "MODEL_DIR`", flag)
-    path = folder / MODEL_FILE
+    path = folder / filename
+    if filename == MODEL_FILE and not path.is_file() and (folder / REJECTED_FILE).is_file():
+        raise _fail(folder, f"identification rejected its model ({REJECTED_FILE}: worse than "
+                            "persistence or the linear ARX model on validation; report.md says "
+                            f"by how much and what to change): {RETRAIN} with more data or "
+                            "iterations", flag)
     if not path.is_file():
         raise _fail(folder, f"has no {MODEL_FILE} (the trained network); it is not a model "
                             f"folder, or training did not finish: {RETRAIN}", flag)
@@ -420,5 +427,6 @@ def fit_percent(predicted: np.ndarray, measured: np.ndarray) -> np.ndarray:
 
 
 
-__all__ = ["FORMAT", "FORMAT_VERSION", "MODEL_FILE", "Narx", "check_robot", "fit_percent",
+__all__ = ["ARX_FILE", "FORMAT", "FORMAT_VERSION", "MODEL_FILE", "REJECTED_FILE", "Narx",
+           "check_robot", "fit_percent",
            "load_narx", "narx_from_dict", "nrmse", "robot_identity", "save_narx"]

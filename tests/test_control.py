@@ -23,6 +23,7 @@ from jointplay.control import (
     compare,
     compile_controller,
     horizon_gain,
+    load_twin,
     nominal_spectral_radius,
     resolve_settings,
 )
@@ -140,7 +141,7 @@ def test_horizon_jacobian_equals_finite_differences() -> None:
 # ---- the controller ---------------------------------------------------------------------------
 
 def _closed_loop_on_model(model: Narx, settings: ControllerSettings, d0: np.ndarray,
-                          steps: int) -> tuple[np.ndarray, np.ndarray, object]:
+                          steps: int) -> tuple[np.ndarray, np.ndarray, Any]:
     """The network itself as the plant (a perfect model, no disturbance), r = 0."""
     ctrl = compile_controller(model, settings)
     y = np.tile(d0, (model.output_lags, 1))
@@ -172,13 +173,15 @@ def test_perfect_model_tracks_exactly(iterations: int) -> None:
                                   mismatch_filter=0.5, tracked=("q2", "q3"),
                                   iterations=iterations)
     d0 = np.array([0.02, -0.015, 0.0, 0.0, 0.0])
-    ys, targets, _ = _closed_loop_on_model(model, settings, d0, 40)
+    ys, targets, ctrl = _closed_loop_on_model(model, settings, d0, 40)
     err = np.max(np.abs(ys[:, :2] - targets[:, :2]))
     if iterations > 1:
         assert err < 1e-12
     else:
         assert err < 2e-2 * np.max(np.abs(d0))
     assert np.max(np.abs(ys[-1, :2])) < 1e-6  # and the filtered setpoint goes to zero
+    # The linearisation agrees with what the loop does: it converges, and its radius is < 1.
+    assert nominal_spectral_radius(ctrl, settle=200) < 1
 
 
 def test_compiled_step_equals_casadi_and_loop_is_stable() -> None:
@@ -191,7 +194,7 @@ def test_compiled_step_equals_casadi_and_loop_is_stable() -> None:
     for _ in range(5):
         args = [rng.normal(0, 0.01, model.n_outputs), rng.normal(0, 0.01, model.n_outputs),
                 rng.normal(0, 1, 2), rng.normal(0, 0.01, ctrl.n_state)]
-        compiled = ctrl.step(*args)
+        compiled = [*ctrl.step(*args), ctrl.last_flags]
         symbolic = [np.asarray(o).ravel() for o in ctrl.function(*args)]
         for a, b in zip(compiled, symbolic, strict=True):
             assert np.max(np.abs(a - b)) <= 1e-12 * max(1.0, float(np.max(np.abs(b))))
@@ -352,25 +355,37 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
                             one_step_iterations=3, multi_step_iterations=2, window=20,
                             workers=1)
     out = tmp_path / "model"
-    metrics = identify(scene, out, config, quiet=True)
-    for name in ("narx.json", "datasets.h5", "metrics.json", "report.md"):
+    # So little data and training cannot beat persistence: the model is refused, kept as
+    # narx.rejected.json with the report saying why, and control will not load it.
+    from jointplay.identify import ModelRejected
+    from jointplay.narx import REJECTED_FILE
+
+    with pytest.raises(ModelRejected, match="worse than persistence"):
+        identify(scene, out, config, quiet=True)
+    for name in (REJECTED_FILE, "arx.json", "datasets.h5", "metrics.json", "report.md"):
         assert (out / name).is_file()
-    model = load_narx(out)
+    assert not (out / "narx.json").exists()
+    assert "REJECTED" in (out / "report.md").read_text()
+    with pytest.raises(DescriptionError, match="identification rejected its model"):
+        load_narx(out)
+    metrics = json.loads((out / "metrics.json").read_text())
+    model = load_narx(out, filename=REJECTED_FILE)  # explicitly, for the plumbing below
     check_robot(model, scene.robot, scene.run.output_step, out)
     assert model.hidden == (4, 4) and model.output_names[:4] == ("q2", "q3", "dq2", "dq3")
     assert set(metrics["test"]) == {"narx", "arx", "persistence"}
     trajectories, meta = read_datasets(out / "datasets.h5")
     assert [t.split for t in trajectories] == ["train", "train", "validation", "test"]
     assert trajectories[-1].family == "chirp" and meta["sample_time"] == 1e-3
+    assert (out / "arx.json").is_file()
     short = scene.with_run(t_end=0.06)
-    result = compare(short, model, ControllerSettings(horizon=3),
-                     controllers=("open loop", "PD", "computed torque", "AIMNC"))
-    assert set(result.metrics) == {"open loop", "PD", "computed torque", "AIMNC"}
+    result = compare(short, model, ControllerSettings(horizon=3), arx=load_twin(out, model))
+    assert set(result.metrics) == {"open loop", "PD", "computed torque", "ARX-IMC",
+                                   "neural IMC"}
     for m in result.metrics.values():
         assert all(np.isfinite(v) for v in m.values())
-    assert result.per_call_us > 0
+    assert all(us > 0 for us in result.per_call_us.values())
     # A failed rerun into the same folder leaves the finished model as it was.
-    before = {name: (out / name).read_bytes() for name in ("narx.json", "metrics.json")}
+    before = {name: (out / name).read_bytes() for name in (REJECTED_FILE, "metrics.json")}
     import jointplay.identify as identify_module
 
     def failing(*args: Any, **kwargs: Any) -> None:
@@ -384,8 +399,8 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     finally:
         identify_module.train_narx = original
     assert {name: (out / name).read_bytes() for name in before} == before
-    assert sorted(p.name for p in out.iterdir()) == ["datasets.h5", "metrics.json", "narx.json",
-                                                      "report.md"]
+    assert sorted(p.name for p in out.iterdir()) == ["arx.json", "datasets.h5", "metrics.json",
+                                                      REJECTED_FILE, "report.md"]
 
 
 def test_training_data_with_nan_is_refused() -> None:

@@ -1,0 +1,156 @@
+"""Cost of one compiled controller step, before and after the structural changes.
+
+    python benchmarks/control_step.py --out out/bench/control_step [--model MODEL_DIR]
+
+Variants, each generated, compiled (through the cache) and called through FastFunction's
+preallocated buffers, median of 5 x 20 000 calls:
+
+- ``trivial``: a function that doubles two numbers (the Python-to-C call overhead);
+- ``before``: the step as it was: CasADi's straight-line SX code, the network only, no guard,
+  horizon 10, gcc -O1;
+- the guarded step (ARX fallback) as CasADi SX code at the default horizon 5 (gcc -O1);
+- the loop kernel (jointplay.imc_kernel, gcc -O3) at horizon 10 and at the default 5;
+- ``ARX-IMC``: the same law with the linear twin (constant matrices), loop kernel.
+
+Times are CPU seconds of this process (``time.process_time``), so other work on a shared
+machine inflates them less than wall time.
+
+Without ``--model`` a random network of the default shape (10 outputs, lags 2/2, hidden 13,
+14, two inputs) stands in: the cost does not depend on the weights. Writes control_step.md and
+control_step.csv with the machine's load average.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import os
+import platform
+import time
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+
+from jointplay.build import compile_source
+from jointplay.files import atomic_write_text
+from jointplay.imc import (
+    STEP_CFLAGS,
+    ControllerSettings,
+    compile_controller,
+    generate_c,
+    per_call_us,
+    resolve_settings,
+)
+from jointplay.model import FastFunction
+from jointplay.narx import Narx
+
+NAMES = ("q2", "q3", "dq2", "dq3", "tip_x", "tip_y", "tip_vx", "tip_vy", "tip_ax", "tip_ay")
+TRACKED = ("tip_x", "tip_vx", "q3", "dq3")
+
+
+def random_model(seed: int = 0, hidden: tuple[int, ...] = (13, 14)) -> Narx:
+    rng = np.random.default_rng(seed)
+    ny, nu, na, nb = len(NAMES), 2, 2, 2
+    n_phi = na * ny + nb * nu
+    widths = [n_phi, *hidden, ny]
+    weights = tuple(rng.normal(0, 0.3, (widths[i + 1], widths[i])) for i in range(len(widths) - 1))
+    biases = tuple(rng.normal(0, 0.1, w.shape[0]) for w in weights)
+    return Narx(output_names=NAMES, output_units=("-",) * ny, input_names=("v2", "v3"),
+                input_units=("N m",) * 2, output_lags=na, input_lags=nb, weights=weights,
+                biases=biases, regressor_mean=np.zeros(n_phi), regressor_scale=np.ones(n_phi),
+                increment_mean=np.zeros(ny), increment_scale=np.full(ny, 1e-3),
+                output_scale=np.ones(ny), sample_time=1e-3,
+                context={"plant": {"inner_loop": {"joints": [2, 3], "kp": [200.0, 200.0],
+                                                  "kd": [5.0, 5.0]},
+                                   "torque_limit": [10.0, 5.0]}},
+                increment=tuple(not n.startswith("tip_a") for n in NAMES),
+                linear=rng.normal(0, 0.1, (ny, n_phi)))
+
+
+def linear_twin(model: Narx) -> Narx:
+    from dataclasses import replace
+
+    rng = np.random.default_rng(1)
+    return replace(model, weights=(rng.normal(0, 0.1, (model.n_outputs, model.n_regressor)),),
+                   biases=(np.zeros(model.n_outputs),), linear=None)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--model", help="a model folder (default: a random network of the "
+                                        "default shape)")
+    args = parser.parse_args()
+    if args.model:
+        from jointplay.control import load_twin
+        from jointplay.narx import load_narx
+
+        model = load_narx(args.model)
+        twin = load_twin(Path(args.model), model)
+    else:
+        model = random_model()
+        twin = linear_twin(model)
+    rows = []
+    x = ca.SX.sym("x", 2)
+    gen = ca.CodeGenerator("trivial.c", {"with_header": False})
+    gen.add(ca.Function("trivial", [x], [2 * x]))
+    lib, _ = compile_source(gen.dump())
+    trivial = FastFunction(ca.external("trivial", str(lib)))
+    times = []
+    for _ in range(5):
+        t0 = time.process_time()
+        for _ in range(20000):
+            trivial.trigger()
+        times.append((time.process_time() - t0) / 20000)
+    rows.append({"variant": "trivial (call overhead)", "horizon": "-", "guard": "-",
+                 "code": "SX", "sx_operations": 2, "compile_s": 0.0,
+                 "us_per_call": float(np.median(times)) * 1e6})
+    variants = [
+        ("before: CasADi SX code, network only", model, None, False,
+         ControllerSettings(horizon=10, guard=False, tracked=TRACKED)),
+        ("CasADi SX code, guarded", model, twin, False, ControllerSettings(tracked=TRACKED)),
+        ("loop kernel, guarded, horizon 10", model, twin, True,
+         ControllerSettings(horizon=10, tracked=TRACKED)),
+        ("after: loop kernel, guarded (default)", model, twin, True,
+         ControllerSettings(tracked=TRACKED)),
+        ("ARX-IMC, loop kernel (default)", twin, None, True, ControllerSettings(
+            tracked=TRACKED))]
+    for label, m, fallback, kernel, settings in variants:
+        settings = resolve_settings(m, settings)
+        _, fn, _ = generate_c(m, settings, fallback)
+        ctrl = compile_controller(m, settings, fallback=fallback, kernel=kernel)
+        rows.append({"variant": label, "horizon": settings.horizon,
+                     "guard": "on" if settings.guard else "off",
+                     "code": "loops" if kernel else "SX",
+                     "sx_operations": fn.n_instructions(),
+                     "compile_s": ctrl.compile_seconds, "us_per_call": per_call_us(ctrl)})
+        print(f"{label}: {rows[-1]['us_per_call']:.2f} us", flush=True)
+    before = rows[1]["us_per_call"]
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=list(rows[0]))
+    writer.writeheader()
+    writer.writerows(rows)
+    atomic_write_text(out / "control_step.csv", buf.getvalue())
+    what = f"model {args.model}" if args.model else "random network of the default shape"
+    lines = [f"Compiled controller step ({what}); "
+             f"gcc {' '.join(STEP_CFLAGS)}; {platform.processor() or platform.machine()}, "
+             f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f} at the end", "",
+             "| variant | horizon | guard | code | SX operations | compile s | CPU µs per call | "
+             "vs before |",
+             "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['variant']} | {r['horizon']} | {r['guard']} | {r['code']} | "
+                     f"{r['sx_operations']} | "
+                     f"{r['compile_s']:.1f} | {r['us_per_call']:.2f} | "
+                     f"{before / r['us_per_call']:.2f}x |")
+    text = "\n".join(lines) + "\n"
+    atomic_write_text(out / "control_step.md", text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
