@@ -58,8 +58,10 @@ def test_work_precision_quick(tmp_path: Path) -> None:
                      "--steps", "1e-5") == 0
     header, rows = read_csv(out / "work_precision.csv")
     assert header == bench.WP_CSV_KEYS
-    # cvodes and idas at two tolerances, rk4 and radau at one step, then the scene's settings
+    # bdf, cvodes and idas at two tolerances, rk4 and radau at one step, then the scene's
+    # settings
     assert [(r["config"], r["method"], r["rtol"] or r["step"]) for r in rows[:-1]] == [
+        ("sweep", "bdf", "0.0001"), ("sweep", "bdf", "1e-06"),
         ("sweep", "cvodes", "0.0001"), ("sweep", "cvodes", "1e-06"),
         ("sweep", "idas", "0.0001"), ("sweep", "idas", "1e-06"),
         ("sweep", "rk4", "1e-05"), ("sweep", "radau", "1e-05")]

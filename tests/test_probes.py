@@ -504,7 +504,9 @@ def test_cache_heals(tmp_path: Path, one_link_cache: tuple[Path, Path], damage: 
 
 def test_interrupted_sweep_keeps_no_row(tmp_path: Path) -> None:
     sweep = tmp_path / "sweep.toml"
-    sweep.write_text('scene = "default"\n[run]\nt_end = 200.0\n[parameters."friction.mu"]\n'
+    sweep.write_text('scene = "default"\n[run]\nt_end = 2000.0\noutput_step = 0.01\n'
+                     'integrator = "cvodes"\n'
+                     '[parameters."friction.mu"]\n'
                      'values = [0.0, 0.1]\n', encoding="utf-8")
     out = tmp_path / "out"
     code, err = interrupt_when(["sweep", str(sweep), "--out", str(out), "--workers", "0"],
@@ -523,7 +525,9 @@ def test_interrupted_sweep_with_workers_keeps_no_row(tmp_path: Path, delay: floa
     """Ctrl-C while the local cluster starts, and while its workers run cases: sent to the
     whole process group (a terminal) and to the sweep's process alone."""
     sweep = tmp_path / "sweep.toml"
-    sweep.write_text('scene = "default"\n[run]\nt_end = 200.0\n[parameters."friction.mu"]\n'
+    sweep.write_text('scene = "default"\n[run]\nt_end = 2000.0\noutput_step = 0.01\n'
+                     'integrator = "cvodes"\n'
+                     '[parameters."friction.mu"]\n'
                      'values = [0.0, 0.1]\n', encoding="utf-8")
     out = tmp_path / "out"
     code, err = interrupt_when(["sweep", str(sweep), "--out", str(out), "--workers", "2"],
