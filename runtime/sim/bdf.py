@@ -15,6 +15,9 @@ from jointplay.results import Impacts
 from jointplay.sim.native import NativeIntegrator, raise_for_status
 from jointplay.sim.problem import MAX_EVENTS_PER_OUTPUT, _Accumulated, _Problem, _Trajectory
 
+# Calls into C per run (see run_bdf).
+PROGRESS_CALLS = 20
+
 
 def native_integrator(pr: _Problem, *, max_step: float = math.inf) -> NativeIntegrator:
     model = pr.model
@@ -86,7 +89,34 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
     traj.x[0] = x0
     _, speeds = integ.flags()
     traj.v_imp[0] = speeds
-    values, v_out, status = integ.integrate(float(t[-1]), t)
+    nx = pr.nx
+    # A run is a few calls, each over a fixed share of the simulated time (never tied to the
+    # output step, so outputs never change the integration): enough for a progress bar and a
+    # prompt Ctrl-C between calls, while each call stays whole in C.
+    bounds = np.linspace(0.0, float(t[-1]), PROGRESS_CALLS + 1)[1:]
+    done = 0
+    for bound in bounds:
+        upto = int(np.searchsorted(t, bound, side="right"))
+        values, v_out, status = integ.integrate(float(bound), t[done:upto])
+        if status:
+            _add_counts(stats, integ)
+            raise_for_status(status, integ, torque_fields(pr),
+                             lambda: _joint_at_failure(pr, integ))
+        rows = slice(done + 1, upto + 1)
+        traj.x[rows] = values[:, :nx]
+        traj.work[rows] = values[:, nx]
+        if pr.nc:  # per joint: impulse, damping energy, friction energy
+            per_joint = values[:, nx + 1:].reshape(upto - done, pr.nc, 3)
+            traj.dissipated[rows] = per_joint[:, :, 1:].sum(axis=(1, 2))
+        traj.v_imp[rows] = v_out
+        progress.update(upto - done)
+        done = upto
+    _add_counts(stats, integ)
+    rows = close_open_phases(integ, pr, integ.phases(), integ.current())
+    return phase_table(pr, rows, float(t[-1]))
+
+
+def _add_counts(stats: _Accumulated, integ: NativeIntegrator) -> None:
     counts = integ.stats()
     for key in ("steps", "rhs_evaluations", "jacobian_evaluations", "error_test_failures",
                 "events", "impacts"):
@@ -94,19 +124,6 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
     stats.counts["integrator_calls"] += 1
     stats.counts["lu_decompositions"] = counts["lu_decompositions"]
     stats.counts["newton_failures"] = counts["newton_failures"]
-    if status:
-        raise_for_status(status, integ, torque_fields(pr),
-                         lambda: _joint_at_failure(pr, integ))
-    nx = pr.nx
-    traj.x[1:] = values[:, :nx]
-    traj.work[1:] = values[:, nx]
-    if pr.nc:  # per joint: impulse, damping energy, friction energy
-        per_joint = values[:, nx + 1:].reshape(n_out, pr.nc, 3)
-        traj.dissipated[1:] = per_joint[:, :, 1:].sum(axis=(1, 2))
-    traj.v_imp[1:] = v_out
-    progress.update(n_out)
-    rows = close_open_phases(integ, pr, integ.phases(), integ.current())
-    return phase_table(pr, rows, float(t[-1]))
 
 
 def _joint_at_failure(pr: _Problem, integ: NativeIntegrator) -> int | None:

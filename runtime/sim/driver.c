@@ -459,7 +459,9 @@ static int bdf_step(jp_sim *s, double t_bound) {
       s->status = JP_STEP_COLLAPSED; s->fail_t = s->t; s->fail_h = h_abs; return 1;
     }
     double h = h_abs, t_new = s->t + h;
-    if (t_new > t_bound) {
+    /* land on the bound, stretching a step that would leave a sliver of it: a remainder of
+     * round-off size would otherwise be a step of its own, below the smallest allowed */
+    if (t_new > t_bound || t_bound - t_new < 1e-3 * h) {
       t_new = t_bound; h = t_new - s->t;
       change_d(s, h / h_abs); h_abs = h; s->have_lu = 0;
     }
