@@ -502,12 +502,17 @@ def test_cache_heals(tmp_path: Path, one_link_cache: tuple[Path, Path], damage: 
     assert proc.returncode == 0 and proc.stderr == "", proc.stderr  # healed for good
 
 
-def test_interrupted_sweep_keeps_no_row(tmp_path: Path) -> None:
+def long_sweep(tmp_path: Path) -> Path:
+    """Two cases that each run long enough to be interrupted (the CVODES route, 2000 s)."""
     sweep = tmp_path / "sweep.toml"
     sweep.write_text('scene = "default"\n[run]\nt_end = 2000.0\noutput_step = 0.01\n'
-                     'integrator = "cvodes"\n'
-                     '[parameters."friction.mu"]\n'
-                     'values = [0.0, 0.1]\n', encoding="utf-8")
+                     'integrator = "cvodes"\n[parameters."friction.mu"]\nvalues = [0.0, 0.1]\n',
+                     encoding="utf-8")
+    return sweep
+
+
+def test_interrupted_sweep_keeps_no_row(tmp_path: Path) -> None:
+    sweep = long_sweep(tmp_path)
     out = tmp_path / "out"
     code, err = interrupt_when(["sweep", str(sweep), "--out", str(out), "--workers", "0"],
                                "sweep ", 1.5)
@@ -524,11 +529,7 @@ def test_interrupted_sweep_with_workers_keeps_no_row(tmp_path: Path, delay: floa
                                                      group: bool) -> None:
     """Ctrl-C while the local cluster starts, and while its workers run cases: sent to the
     whole process group (a terminal) and to the sweep's process alone."""
-    sweep = tmp_path / "sweep.toml"
-    sweep.write_text('scene = "default"\n[run]\nt_end = 2000.0\noutput_step = 0.01\n'
-                     'integrator = "cvodes"\n'
-                     '[parameters."friction.mu"]\n'
-                     'values = [0.0, 0.1]\n', encoding="utf-8")
+    sweep = long_sweep(tmp_path)
     out = tmp_path / "out"
     code, err = interrupt_when(["sweep", str(sweep), "--out", str(out), "--workers", "2"],
                                "sweep ", delay, group=group)
