@@ -6,20 +6,25 @@ steps, the event search, the impact-speed capture and the per-phase records all 
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
 
 from jointplay.results import Impacts
 from jointplay.sim.native import NativeIntegrator, raise_for_status
-from jointplay.sim.problem import MAX_EVENTS_PER_OUTPUT, _Accumulated, _Problem, _Trajectory
+from jointplay.sim.problem import (
+    MAX_EVENTS_PER_OUTPUT,
+    _Accumulated,
+    _nearest_contact_joint,
+    _Problem,
+    _Trajectory,
+)
 
 # Calls into C per run (see run_bdf).
 PROGRESS_CALLS = 20
 
 
-def native_integrator(pr: _Problem, *, max_step: float = math.inf) -> NativeIntegrator:
+def native_integrator(pr: _Problem) -> NativeIntegrator:
     model = pr.model
     run = pr.scene.run
     ecc = np.array([[model.coordinates.index(f"ex{j}"), model.coordinates.index(f"ey{j}")]
@@ -28,13 +33,7 @@ def native_integrator(pr: _Problem, *, max_step: float = math.inf) -> NativeInte
     return NativeIntegrator(model, pr.p, pr.scale, ecc, clearance,
                             np.asarray(pr.angle_index, dtype=np.int32), pr.torques,
                             rtol=run.rtol, atol=run.atol, max_steps=run.max_steps,
-                            max_events=MAX_EVENTS_PER_OUTPUT, h_max=max_step)
-
-
-def nearest_joint(pr: _Problem, x: np.ndarray, v_imp: np.ndarray) -> int | None:
-    from jointplay.sim.problem import _nearest_contact_joint
-
-    return _nearest_contact_joint(pr, x, v_imp)
+                            max_events=MAX_EVENTS_PER_OUTPUT)
 
 
 def torque_fields(pr: _Problem) -> list[str]:
@@ -129,4 +128,4 @@ def _add_counts(stats: _Accumulated, integ: NativeIntegrator) -> None:
 def _joint_at_failure(pr: _Problem, integ: NativeIntegrator) -> int | None:
     current = integ.current()[:pr.nx]
     _, speeds = integ.flags()
-    return nearest_joint(pr, current, speeds)
+    return _nearest_contact_joint(pr, current, speeds)

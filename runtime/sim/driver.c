@@ -933,7 +933,6 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
   sigaction(SIGINT, &action, &previous);
   long next = 0, steps_since_output = 0, events_since_output = 0;
   double bound = t_end;
-  int redo_joint = -1;
   s->status = JP_OK;
   if (!s->started) {
     memcpy(s->tmp_y, s->D, N * sizeof(double));
@@ -955,7 +954,6 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
       memcpy(s->D, s->D_save, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
       s->t = s->t_old; s->h_abs = s->h_abs_old; s->order = s->order_old;
       s->n_equal_steps = s->n_equal_old; s->have_lu = 0; s->n_steps--;
-      redo_joint = cut_joint;
       if (ev == 1) {
         bound = t_cut; s->landing_target = t_cut;
       } else {
@@ -968,7 +966,6 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
       }
       continue;
     }
-    (void)redo_joint;
     if (s->t >= bound) { bound = t_end; s->landing_target = INFINITY; }
     while (next < n_out && t_out[next] <= s->t) {
       dense(s, t_out[next], s->tmp_y);
