@@ -8,7 +8,7 @@ temporary compile cache:
 * sympy derivation time (Kane's method), CasADi emission time (SX graphs + C text);
 * the C file size, split into the part behind ``jac_forward_dynamics`` (its own body plus the
   ``residual_jacobian`` it calls) and the rest;
-* gcc compile time with the project's default flags (``jointplay.build.DEFAULT_CFLAGS``);
+* gcc compile time with the project's default flags (``jointplay.store.build.DEFAULT_CFLAGS``);
 * per-call cost of ``forward_dynamics`` and ``jac_forward_dynamics`` through
   ``FastFunction.trigger`` (inputs written in place; median over repeated batches), through
   ``FastFunction.__call__`` with numpy arrays, and through the plain CasADi ``Function`` call.
@@ -139,11 +139,17 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
         import casadi as ca
         import numpy as np
 
-        from jointplay.build import DEFAULT_CFLAGS, compile_source
+        from jointplay.common.files import atomic_write_text
         from jointplay.derive import emit
-        from jointplay.files import atomic_write_text
-        from jointplay.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME, FastFunction, load_model
-        from jointplay.robotio import robot_to_toml
+        from jointplay.robot.robotio import robot_to_toml
+        from jointplay.store.build import DEFAULT_CFLAGS, compile_source
+        from jointplay.store.model import (
+            LAYOUT_NAME,
+            ROBOT_NAME,
+            SOURCE_NAME,
+            FastFunction,
+            load_model,
+        )
         import_s = time.perf_counter() - t_import
 
         robot = _robot(spec["structure"], spec["k"])
@@ -368,7 +374,7 @@ def write_atomic(path: Path, text: str) -> None:
 
 
 def machine_facts() -> dict[str, str]:
-    from jointplay.build import DEFAULT_CFLAGS, compiler_version
+    from jointplay.store.build import DEFAULT_CFLAGS, compiler_version
 
     cpu = cpu_name()
     import casadi

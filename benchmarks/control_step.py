@@ -9,7 +9,7 @@ preallocated buffers, median of 5 x 20 000 calls:
 - ``before``: the step as it was: CasADi's straight-line SX code, the network only, no guard,
   horizon 10, gcc -O1;
 - the guarded step (ARX fallback) as CasADi SX code at the default horizon 5 (gcc -O1);
-- the loop kernel (jointplay.imc_kernel, gcc -O3) at horizon 10 and at the default 5;
+- the loop kernel (jointplay.neural.imc_kernel, gcc -O3) at horizon 10 and at the default 5;
 - ``ARX-IMC``: the same law with the linear twin (constant matrices), loop kernel.
 
 Times are CPU seconds of this process (``time.process_time``), so other work on a shared
@@ -33,9 +33,8 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
-from jointplay.build import compile_source
-from jointplay.files import atomic_write_text
-from jointplay.imc import (
+from jointplay.common.files import atomic_write_text
+from jointplay.neural.imc import (
     STEP_CFLAGS,
     ControllerSettings,
     compile_controller,
@@ -43,8 +42,9 @@ from jointplay.imc import (
     per_call_us,
     resolve_settings,
 )
-from jointplay.model import FastFunction
-from jointplay.narx import Narx
+from jointplay.neural.narx import Narx
+from jointplay.store.build import compile_source
+from jointplay.store.model import FastFunction
 
 NAMES = ("q2", "q3", "dq2", "dq3", "tip_x", "tip_y", "tip_vx", "tip_vy", "tip_ax", "tip_ay")
 TRACKED = ("tip_x", "tip_vx", "q3", "dq3")
@@ -84,8 +84,8 @@ def main() -> None:
                                         "default shape)")
     args = parser.parse_args()
     if args.model:
-        from jointplay.control import load_twin
-        from jointplay.narx import load_narx
+        from jointplay.neural.control import load_twin
+        from jointplay.neural.narx import load_narx
 
         model = load_narx(args.model)
         twin = load_twin(Path(args.model), model)

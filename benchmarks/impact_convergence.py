@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.scene import default_scene, load_scene
+from jointplay.scene.definition import default_scene, load_scene
 from jointplay.sim import load_scene_model, simulate
 
 TOLERANCES = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)

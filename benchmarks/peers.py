@@ -75,7 +75,7 @@ from jointplay.bench import (
     tip_errors,
     to_csv,
 )
-from jointplay.files import atomic_write_text
+from jointplay.common.files import atomic_write_text
 
 REFERENCE_RTOL = 1e-10
 JOINTPLAY_RTOLS = (1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 1e-9)
@@ -630,7 +630,7 @@ def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
                       ) -> tuple[list[dict[str, Any]], dict[str, Any]]:
     import pinocchio as pin
 
-    from jointplay.scene import ideal_counterpart
+    from jointplay.scene.definition import ideal_counterpart
     from jointplay.simulation import load_scene_model
 
     ideal_scene = scene.with_robot(ideal_counterpart(scene.robot))
@@ -775,7 +775,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="a small smoke run")
     args = parser.parse_args(argv)
 
-    from jointplay.scene import default_scene, load_scene
+    from jointplay.scene.definition import default_scene, load_scene
     from jointplay.simulation import load_scene_model
 
     scene = load_scene(args.scene) if args.scene else default_scene()

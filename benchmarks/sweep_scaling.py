@@ -62,7 +62,7 @@ def _sweep(cases: int, t_end: float) -> Any:
 
 def _loop(sweep: Any) -> tuple[float, float]:
     """Elapsed wall and CPU seconds of a plain loop over the cases."""
-    from jointplay.errors import SimulationError
+    from jointplay.common.errors import SimulationError
     from jointplay.simulation import load_scene_model, simulate
 
     model = load_scene_model(sweep.scene)
@@ -168,7 +168,7 @@ def main(argv: list[str] | None = None) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = measure(counts, args.cases, args.t_end)
-    from jointplay.files import atomic_write_text
+    from jointplay.common.files import atomic_write_text
 
     buf = io.StringIO()
     writer = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")

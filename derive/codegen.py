@@ -29,13 +29,13 @@ from typing import Any
 import casadi as ca
 import sympy as sp
 
-from jointplay.derive.stamp import provenance
+from jointplay.common.files import atomic_write_text
 from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
-from jointplay.description import Robot
-from jointplay.files import atomic_write_text
-from jointplay.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
-from jointplay.robotio import robot_to_toml
+from jointplay.robot.description import Robot
+from jointplay.robot.robotio import robot_to_toml
+from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
+from jointplay.store.stamp import provenance
 
 
 @dataclass

@@ -30,7 +30,7 @@ import sympy as sp
 from sympy.physics import mechanics as me
 
 from jointplay.derive import laws
-from jointplay.description import Parameter, parameter_layout
+from jointplay.robot.description import Parameter, parameter_layout
 
 
 @dataclass(frozen=True)

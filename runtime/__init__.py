@@ -4,8 +4,15 @@ The flat public API. This package is the runtime: it loads and evaluates generat
 never imports sympy. Deriving new models lives in :mod:`jointplay.derive`.
 """
 
-from jointplay.build import cache_root, compile_source
-from jointplay.description import (
+from jointplay.common.errors import (
+    BuildError,
+    DescriptionError,
+    GeneratedCodeError,
+    JointplayError,
+    SimulationError,
+)
+from jointplay.results.records import Impacts, SimulationResult
+from jointplay.robot.description import (
     Contact,
     Friction,
     Gravity,
@@ -19,17 +26,8 @@ from jointplay.description import (
     uniform_chain,
     with_parameters,
 )
-from jointplay.errors import (
-    BuildError,
-    DescriptionError,
-    GeneratedCodeError,
-    JointplayError,
-    SimulationError,
-)
-from jointplay.model import FastFunction, Model, load_model
-from jointplay.results import Impacts, SimulationResult
-from jointplay.robotio import robot_to_toml
-from jointplay.scene import (
+from jointplay.robot.robotio import robot_to_toml
+from jointplay.scene.definition import (
     RunSettings,
     Scene,
     default_scene,
@@ -38,6 +36,8 @@ from jointplay.scene import (
     scene_from_dict,
 )
 from jointplay.sim import Stepper, load_scene_model, simulate
+from jointplay.store.build import cache_root, compile_source
+from jointplay.store.model import FastFunction, Model, load_model
 
 __version__ = "0.1.0"
 

@@ -7,8 +7,8 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.results import SimulationResult
-from jointplay.scene import Scene, scene_from_dict
+from jointplay.results.records import SimulationResult
+from jointplay.scene.definition import Scene, scene_from_dict
 
 STEEL_E = 207e9
 STEEL_NU = 0.3

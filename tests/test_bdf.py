@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jointplay.scene import default_scene
+from jointplay.scene.definition import default_scene
 from jointplay.sim import simulate
 
 
@@ -104,7 +104,7 @@ def test_table_torques_equal_the_same_expression(tmp_path: Path) -> None:
     the expression of the same function give the same run (to the integration tolerance)."""
     from sim_fixtures import clearance_joint, make_scene, robot_table
 
-    from jointplay.scene import scene_from_dict
+    from jointplay.scene.definition import scene_from_dict
 
     robot = robot_table(2, [{"kind": "ideal"}, clearance_joint()], restitution=0.8)
     expression = make_scene(robot, torques={"joint1": "2*min(t, 0.05) - max(t - 0.1, 0)",

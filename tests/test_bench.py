@@ -17,8 +17,8 @@ import numpy as np
 import pytest
 
 from jointplay import bench
-from jointplay.errors import DescriptionError
-from jointplay.scene import default_scene
+from jointplay.common.errors import DescriptionError
+from jointplay.scene.definition import default_scene
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
@@ -107,7 +107,8 @@ def test_fidelity_quick_with_missing_surrogate_module(tmp_path: Path,
     assert float(rows[1]["err_position"]) > 0
     surrogate_row = rows[6]
     assert surrogate_row["status"] == "skipped"
-    assert "jointplay.narx" in surrogate_row["note"] and "not importable" in surrogate_row["note"]
+    assert "jointplay.neural.narx" in surrogate_row["note"]
+    assert "not importable" in surrogate_row["note"]
     assert "not importable" in capsys.readouterr().err
     assert_png(out / "fidelity.png")
     assert_markdown_table(out / "fidelity.md", "model", len(rows))
@@ -116,7 +117,7 @@ def test_fidelity_quick_with_missing_surrogate_module(tmp_path: Path,
 def test_fidelity_surrogate_hook(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Skipped without a model; with one, the module's loader is called and its rollout of
     the scene is scored like every other row."""
-    from jointplay.scene import ideal_counterpart
+    from jointplay.scene.definition import ideal_counterpart
     from jointplay.simulation import load_scene_model, simulate
 
     row = bench.surrogate_row(cast(Any, None), None, cast(Any, None))

@@ -10,7 +10,13 @@ import numpy as np
 import pytest
 
 from jointplay import generated, load_model
-from jointplay.build import DEFAULT_CFLAGS, LIBRARY_NAME, MARKER_NAME, build_key, compile_source
+from jointplay.store.build import (
+    DEFAULT_CFLAGS,
+    LIBRARY_NAME,
+    MARKER_NAME,
+    build_key,
+    compile_source,
+)
 
 SOURCE = (generated.folders()["paper_4dof"] / "model.c").read_text()
 

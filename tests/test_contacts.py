@@ -14,8 +14,8 @@ import pytest
 from test_output import make_result
 
 from jointplay.cli import contact_lines
-from jointplay.contacts import joint_contact, joint_contacts, overall
-from jointplay.results import Impacts, SimulationResult
+from jointplay.results.contacts import joint_contact, joint_contacts, overall
+from jointplay.results.records import Impacts, SimulationResult
 
 
 @pytest.fixture(scope="module")

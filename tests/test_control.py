@@ -18,7 +18,8 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from jointplay.control import (
+from jointplay.common.errors import DescriptionError
+from jointplay.neural.control import (
     ControllerSettings,
     compare,
     compile_controller,
@@ -27,8 +28,7 @@ from jointplay.control import (
     nominal_spectral_radius,
     resolve_settings,
 )
-from jointplay.errors import DescriptionError
-from jointplay.narx import Narx, check_robot, load_narx, robot_identity, save_narx
+from jointplay.neural.narx import Narx, check_robot, load_narx, robot_identity, save_narx
 
 OUTPUTS = ("q2", "q3", "dq2", "dq3", "tip_ax")
 
@@ -265,7 +265,7 @@ def test_bad_model_folders_name_the_problem(tmp_path: Path, case: str, expected:
         broken = replace(model)  # valid object; break the file consistently (with checksum)
         data = broken.to_dict()
         data["layers"][1]["weight"] = data["layers"][1]["weight"][:-1]
-        from jointplay.narx import _checksum
+        from jointplay.neural.narx import _checksum
 
         content = {k: data[k] for k in ("outputs", "inputs", "output_lags", "input_lags",
                                         "sample_time", "activation", "layers", "linear",
@@ -284,8 +284,8 @@ def test_bad_model_folders_name_the_problem(tmp_path: Path, case: str, expected:
 
 
 def test_model_for_another_robot_is_refused() -> None:
-    from jointplay.description import with_parameters
-    from jointplay.scene import default_scene
+    from jointplay.robot.description import with_parameters
+    from jointplay.scene.definition import default_scene
 
     robot = default_scene().robot
     model = random_narx(17, context={"robot": robot_identity(robot), "plant": {}})
@@ -302,7 +302,7 @@ def test_model_for_another_robot_is_refused() -> None:
 
 
 def _parser() -> argparse.ArgumentParser:
-    from jointplay import control, identify
+    from jointplay.neural import control, identify
 
     parser = argparse.ArgumentParser(prog="jointplay")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -338,7 +338,8 @@ def test_control_rejects_bad_settings_for_the_model(tmp_path: Path) -> None:
 
 
 def test_import_jointplay_stays_free_of_torch() -> None:
-    code = ("import sys, jointplay, jointplay.narx, jointplay.control, jointplay.identify; "
+    code = ("import sys, jointplay, jointplay.neural.narx, jointplay.neural.control, "
+            "jointplay.neural.identify; "
             "sys.exit('torch' in sys.modules)")
     assert subprocess.run([sys.executable, "-c", code], check=False).returncode == 0
 
@@ -347,8 +348,8 @@ def test_import_jointplay_stays_free_of_torch() -> None:
 
 def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     pytest.importorskip("torch")
-    from jointplay.identify import IdentifyConfig, identify, read_datasets
-    from jointplay.scene import default_scene
+    from jointplay.neural.identify import IdentifyConfig, identify, read_datasets
+    from jointplay.scene.definition import default_scene
 
     scene = default_scene()
     config = IdentifyConfig(duration=0.12, n_train=2, n_validation=1, n_test=1, hidden=(4, 4),
@@ -357,8 +358,8 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     out = tmp_path / "model"
     # So little data and training cannot beat persistence: the model is refused, kept as
     # narx.rejected.json with the report saying why, and control will not load it.
-    from jointplay.identify import ModelRejected
-    from jointplay.narx import REJECTED_FILE
+    from jointplay.neural.identify import ModelRejected
+    from jointplay.neural.narx import REJECTED_FILE
 
     with pytest.raises(ModelRejected, match="worse than persistence"):
         identify(scene, out, config, quiet=True)
@@ -386,7 +387,7 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     assert all(us > 0 for us in result.per_call_us.values())
     # A failed rerun into the same folder leaves the finished model as it was.
     before = {name: (out / name).read_bytes() for name in (REJECTED_FILE, "metrics.json")}
-    import jointplay.identify as identify_module
+    import jointplay.neural.identify as identify_module
 
     def failing(*args: Any, **kwargs: Any) -> None:
         raise RuntimeError("training failed")
@@ -404,7 +405,7 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
 
 
 def test_training_data_with_nan_is_refused() -> None:
-    from jointplay.identify import Trajectory, check_finite
+    from jointplay.neural.identify import Trajectory, check_finite
 
     n = 5
     good = Trajectory(split="train", family="multisine", seed=0, t=np.arange(n) * 1e-3,

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from test_control import random_narx
 
-from jointplay.control import (
+from jointplay.neural.control import (
     NEURAL,
     ControllerSettings,
     compare,
@@ -22,9 +22,9 @@ from jointplay.control import (
     load_twin,
     verdict,
 )
-from jointplay.imc import FLAGS, input_bound, training_box
-from jointplay.narx import Narx, load_narx
-from jointplay.twin import Selection, blend, judge, select_residual, window_loss, windows
+from jointplay.neural.imc import FLAGS, input_bound, training_box
+from jointplay.neural.narx import Narx, load_narx
+from jointplay.neural.twin import Selection, blend, judge, select_residual, window_loss, windows
 
 
 def linear_twin(model: Narx, seed: int = 30) -> Narx:
@@ -151,8 +151,8 @@ def test_a_model_worse_than_persistence_is_refused_with_what_to_change() -> None
 @pytest.fixture(scope="session")
 def identified(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Narx, Narx]:
     pytest.importorskip("torch")
-    from jointplay.identify import IdentifyConfig, identify
-    from jointplay.scene import default_scene
+    from jointplay.neural.identify import IdentifyConfig, identify
+    from jointplay.scene.definition import default_scene
 
     out = tmp_path_factory.mktemp("model")
     identify(default_scene(), out, IdentifyConfig(
@@ -177,7 +177,7 @@ def _damaged(narx: Narx) -> Narx:
 @pytest.mark.slow
 def test_neural_controller_beats_pd_on_the_default_scene(
         identified: tuple[Path, Narx, Narx]) -> None:
-    from jointplay.scene import default_scene
+    from jointplay.scene.definition import default_scene
 
     _, narx, arx = identified
     scene = default_scene().with_run(t_end=1.0)
@@ -196,7 +196,7 @@ def test_neural_controller_beats_pd_on_the_default_scene(
                    "by the plant's integration error")
 def test_neural_controller_beats_pd_on_acceleration_with_a_converged_plant(
         identified: tuple[Path, Narx, Narx]) -> None:
-    from jointplay.scene import default_scene
+    from jointplay.scene.definition import default_scene
 
     _, narx, arx = identified
     scene = default_scene().with_run(t_end=1.0, rtol=1e-8, atol=1e-8)
@@ -209,7 +209,7 @@ def test_neural_controller_beats_pd_on_acceleration_with_a_converged_plant(
 @pytest.mark.slow
 def test_guard_keeps_a_damaged_model_bounded_and_divergence_is_reported(
         identified: tuple[Path, Narx, Narx]) -> None:
-    from jointplay.scene import default_scene
+    from jointplay.scene.definition import default_scene
 
     _, narx, arx = identified
     scene = default_scene().with_run(t_end=1.0)

@@ -11,7 +11,7 @@ import pytest
 
 import jointplay
 from jointplay import DescriptionError, load_robot, robot_from_flags, uniform_chain, with_parameters
-from jointplay.robotio import robot_to_toml
+from jointplay.robot.robotio import robot_to_toml
 
 PAPER = Path(jointplay.__file__).parent / "robots" / "paper_4dof.toml"
 

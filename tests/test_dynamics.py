@@ -29,7 +29,7 @@ import pytest
 
 import jointplay
 from jointplay import Contact, Friction, Gravity, Joint, Link, Model, Robot
-from jointplay.derive import model_for
+from jointplay.store.lookup import model_for
 
 LAWS = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 FRICTIONS = ("none", "linear", "smooth")

@@ -13,9 +13,9 @@ import casadi as ca
 import numpy as np
 import pytest
 
-import jointplay.expressions as expressions
-from jointplay.errors import DescriptionError
-from jointplay.expressions import (
+import jointplay.scene.torques as expressions
+from jointplay.common.errors import DescriptionError
+from jointplay.scene.torques import (
     Expression,
     TableColumn,
     TimeFunction,

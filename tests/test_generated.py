@@ -11,7 +11,7 @@ import sympy
 from jointplay import generated, load_robot
 from jointplay.derive import emit
 from jointplay.derive.codegen import write_generated
-from jointplay.model import read_generated
+from jointplay.store.model import read_generated
 
 FOLDERS = generated.folders()
 
@@ -52,7 +52,7 @@ def test_hand_edited_source_is_refused(tmp_path) -> None:  # type: ignore[no-unt
         (tmp_path / f).write_text((folder / f).read_text())
     text = (tmp_path / "model.c").read_text()
     (tmp_path / "model.c").write_text(text.replace("input hash: ", "input hash: 0", 1)[:-1])
-    from jointplay.errors import GeneratedCodeError
+    from jointplay.common.errors import GeneratedCodeError
 
     with pytest.raises(GeneratedCodeError, match="input hash"):
         read_generated(tmp_path)

@@ -14,17 +14,27 @@ import h5py
 import numpy as np
 import pytest
 
-from jointplay.animate import animate_result, arm_points, check_animation_path, frame_indices
-from jointplay.errors import DescriptionError
-from jointplay.output import (
+from jointplay.common.errors import DescriptionError
+from jointplay.results.animate import (
+    animate_result,
+    arm_points,
+    check_animation_path,
+    frame_indices,
+)
+from jointplay.results.plots import (
+    first_burst,
+    impact_positions,
+    plot_contact_timeline,
+    plot_result,
+)
+from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult
+from jointplay.results.write import (
     IMPACT_COLUMNS,
     impacts_csv_path,
     read_hdf5,
     write_csv,
     write_hdf5,
 )
-from jointplay.plots import first_burst, impact_positions, plot_contact_timeline, plot_result
-from jointplay.results import PHASE_FIELDS, Impacts, SimulationResult
 
 LENGTHS = np.array([0.40, 0.30, 0.25, 0.15])
 MASSES = np.array([2.0, 1.5, 1.0, 0.5])
@@ -499,7 +509,8 @@ def test_plots_without_ideal_or_clearance(tmp_path: Path) -> None:
 
 
 def test_plots_module_imports_no_matplotlib() -> None:
-    code = ("import sys, jointplay.plots, jointplay.output, jointplay.animate, jointplay.export; "
+    code = ("import sys, jointplay.results.plots, jointplay.results.write, "
+            "jointplay.results.animate, jointplay.results.export; "
             "assert not {'matplotlib', 'pandas', 'xarray'} & set(sys.modules)")
     subprocess.run([sys.executable, "-c", code], check=True)
 
@@ -516,7 +527,7 @@ def test_contact_timeline_marks_located_peaks_or_says_not_located(
         result: SimulationResult, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """With a filled table the located peaks are drawn (stems up to each peak); with onset
     columns only, the figure says the peaks are not located and draws no peak."""
-    import jointplay.plots as plots
+    import jointplay.results.plots as plots
 
     figures: list[Any] = []
     original = plots._save

@@ -28,7 +28,7 @@ import numpy as np
 import pytest
 
 from jointplay.cli import main
-from jointplay.files import STALE_AGE_S, sweep_stale, temp_tag
+from jointplay.common.files import STALE_AGE_S, sweep_stale, temp_tag
 
 ROOT = Path(__file__).resolve().parents[1]
 PAPER_SCENE = (ROOT / "scenes" / "paper_4dof.toml").read_text(encoding="utf-8")
@@ -387,7 +387,7 @@ def test_interrupt_during_integration(tmp_path: Path) -> None:
 
 _WRITE_HOOK = """
 import os, signal, sys
-import jointplay.output as output
+import jointplay.results.write as output
 real = output._write_group
 def interrupted(group, *args):
     os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C in the middle of the HDF5 write
@@ -578,7 +578,7 @@ def test_interrupted_control_writes_nothing(tmp_path: Path) -> None:
 ])
 def test_io_errors_are_one_line(error: OSError, cause: str) -> None:
     """The causes an I/O error is reported with, h5py's errno-in-the-text included."""
-    from jointplay.files import file_error
+    from jointplay.common.files import file_error
 
     message = str(file_error("/data/run.h5", error))
     assert message == f"/data/run.h5: cannot write: {cause}"

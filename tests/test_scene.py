@@ -11,8 +11,8 @@ import pytest
 
 import jointplay.simulation
 from jointplay.cli import main
-from jointplay.errors import DescriptionError
-from jointplay.scene import default_scene, load_scene
+from jointplay.common.errors import DescriptionError
+from jointplay.scene.definition import default_scene, load_scene
 from jointplay.simulation import load_scene_model
 
 ROBOT = """
@@ -217,7 +217,7 @@ def test_loading_a_generated_model_does_not_import_sympy() -> None:
     import sys
 
     code = ("import sys\n"
-            "from jointplay.scene import default_scene\n"
+            "from jointplay.scene.definition import default_scene\n"
             "from jointplay.simulation import load_scene_model, simulate\n"
             "scene = default_scene().with_run(t_end=0.002)\n"
             "simulate(scene, model=load_scene_model(scene))\n"

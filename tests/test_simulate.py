@@ -21,8 +21,8 @@ from sim_fixtures import (
     robot_table,
 )
 
-from jointplay.errors import SimulationError
-from jointplay.scene import default_scene
+from jointplay.common.errors import SimulationError
+from jointplay.scene.definition import default_scene
 from jointplay.simulation import Stepper, simulate
 
 LAWS = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")

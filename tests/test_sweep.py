@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from jointplay.errors import DescriptionError
+from jointplay.common.errors import DescriptionError
 from jointplay.sweep import (
     TABLE_NAME,
     Case,
@@ -130,7 +130,7 @@ def _columns(table: Any) -> dict[str, list[Any]]:
 
 
 def test_local_cluster_equals_serial(tmp_path: Path, client: Any) -> None:
-    from jointplay.output import read_hdf5
+    from jointplay.results.write import read_hdf5
 
     sweep = load_sweep(_write(tmp_path, GRID))
     assert len(sweep.cases) == 6
@@ -335,7 +335,7 @@ def test_contact_metrics_from_the_table() -> None:
 
     from test_output import make_result
 
-    from jointplay.results import Impacts
+    from jointplay.results.records import Impacts
 
     result = make_result(n=200, ideal=False)
     m = contact_metrics(result)

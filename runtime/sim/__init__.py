@@ -16,9 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.model import Model
-from jointplay.results import Impacts, SimulationResult
-from jointplay.scene import ADAPTIVE, Scene, ideal_counterpart
+from jointplay.results.records import Impacts, SimulationResult
+from jointplay.scene.definition import ADAPTIVE, Scene, ideal_counterpart
 from jointplay.sim.assemble import _assemble
 from jointplay.sim.bdf import native_integrator, run_bdf, torque_fields
 from jointplay.sim.casadi_methods import _AdaptiveIntegrator, _resolve_interval, _run_adaptive
@@ -34,6 +33,7 @@ from jointplay.sim.problem import (
     _Trajectory,
     load_scene_model,
 )
+from jointplay.store.model import Model
 
 __all__ = ["METHODS", "Stepper", "load_scene_model", "simulate"]
 

@@ -9,10 +9,10 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.model import Model
-from jointplay.results import Impacts, SimulationResult
+from jointplay.results.records import Impacts, SimulationResult
 from jointplay.sim.native import map_function
 from jointplay.sim.problem import _Problem, _Trajectory
+from jointplay.store.model import Model
 
 
 def _mapped(model: Model, name: str, columns: Sequence[np.ndarray]) -> list[np.ndarray]:

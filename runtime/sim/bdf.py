@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.results import Impacts
+from jointplay.results.records import Impacts
 from jointplay.sim.native import NativeIntegrator, raise_for_status
 from jointplay.sim.problem import (
     MAX_EVENTS_PER_OUTPUT,

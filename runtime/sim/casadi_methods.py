@@ -17,8 +17,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from jointplay.errors import SimulationError
-from jointplay.model import FastFunction
+from jointplay.common.errors import SimulationError
 from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
     CHUNK_OUTPUTS,
@@ -28,6 +27,7 @@ from jointplay.sim.problem import (
     _Problem,
     _Trajectory,
 )
+from jointplay.store.model import FastFunction
 
 
 class _AdaptiveIntegrator:

@@ -10,7 +10,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from jointplay.errors import SimulationError
+from jointplay.common.errors import SimulationError
 from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
     RADAU_NEWTON_TOLERANCE,

@@ -19,10 +19,10 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.build import compile_source
-from jointplay.errors import SimulationError
-from jointplay.expressions import Expression, TableColumn, TimeFunction, postfix_program
-from jointplay.model import Model
+from jointplay.common.errors import SimulationError
+from jointplay.scene.torques import Expression, TableColumn, TimeFunction, postfix_program
+from jointplay.store.build import compile_source
+from jointplay.store.model import Model
 
 # driver.c's status codes (enum at its top) and what each means to a user.
 OK, TOO_MUCH_WORK, STEP_COLLAPSED, NONFINITE, INTERRUPTED, BAD_TORQUE, CHATTER, NO_MEMORY = \
@@ -70,8 +70,8 @@ def driver_library() -> ctypes.CDLL:
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as err:  # a damaged cache entry: rebuilt once, like a model's
-        from jointplay.build import discard_entry
-        from jointplay.model import note
+        from jointplay.store.build import discard_entry
+        from jointplay.store.model import note
 
         note(f"the compiled integrator {path} does not load ({err}); compiling it again")
         discard_entry(path.parent)
@@ -148,7 +148,7 @@ def traced_program(fn: TimeFunction) -> tuple[list[int], list[float]]:
     """
     import casadi as ca
 
-    from jointplay.expressions import OPCODES
+    from jointplay.scene.torques import OPCODES
 
     codes = {getattr(ca, name): OPCODES[op] for name, op in _SX_OPS.items()}
     t = ca.SX.sym("t")

@@ -14,8 +14,8 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from jointplay.model import Model
-from jointplay.scene import Scene, ideal_counterpart
+from jointplay.scene.definition import Scene, ideal_counterpart
+from jointplay.store.model import Model
 
 # The CVODES / IDAS route locates an onset or separation to EVENT_TIME_FRACTION * rtol of
 # RATE_SCALE_TIME, or once the penetration is within EVENT_GAP_FRACTION * atol of the
@@ -170,7 +170,7 @@ def load_scene_model(scene: Scene, *, ideal: bool = False) -> Model:
     A model already generated (checked in, or in the cache) is loaded without sympy; a new
     structure is derived once.
     """
-    from jointplay.derive import model_for
+    from jointplay.store.lookup import model_for
 
     robot = ideal_counterpart(scene.robot) if ideal else scene.robot
     return model_for(robot)

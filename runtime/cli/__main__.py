@@ -1,0 +1,7 @@
+"""``python -m jointplay.cli``: the ``jointplay`` command."""
+
+import sys
+
+from jointplay.cli import main
+
+sys.exit(main())

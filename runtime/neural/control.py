@@ -1,0 +1,744 @@
+"""Closed loops on the clearance robot: the internal-model controllers, their baselines, metrics.
+
+Controllers, each against the ideal-joint robot's motion under the scene's torques:
+
+- open loop: the scene's torques only;
+- PD: the inner loop alone;
+- computed torque with the ideal-joint model;
+- ARX-IMC: the internal-model law with the linear ARX twin inside;
+- neural IMC: the same law with the NARX network inside, guarded (see jointplay.neural.imc), the ARX
+  twin as its fallback.
+
+A run is declared diverged when its end-effector error leaves a bound (by default twice the
+open loop's largest error: doing nothing does better) or the plant cannot be integrated; it
+stops there. The stability verdict printed by ``jointplay control`` rests on the realised runs
+(bounded or not, and how often the guard acted), with the linearisations (at the nominal
+equilibrium and at states visited along the run) as supporting evidence.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointplay.common.errors import DescriptionError, SimulationError
+from jointplay.common.files import atomic_path, atomic_write_text
+from jointplay.neural.imc import (
+    FLAGS,
+    Controller,
+    ControllerSettings,
+    _inner_gains,
+    build_step,
+    compile_controller,
+    default_tracked,
+    generate_c,
+    horizon_gain,
+    local_spectral_radii,
+    nominal_spectral_radius,
+    per_call_us,
+    resolve_settings,
+)
+from jointplay.neural.narx import ARX_FILE, MODEL_FILE, Narx, check_robot, load_narx
+
+DEFAULT_TRANSIENT = 0.05  # s: journals settling from e = 0, reported separately
+NEURAL, LINEAR = "neural IMC", "ARX-IMC"
+CONTROLLERS = ("open loop", "PD", "computed torque", LINEAR, NEURAL)
+MODEL_BASED = (LINEAR, NEURAL)
+DIVERGENCE_FACTOR = 2.0  # x the open loop's largest tip error
+EXIT_DIVERGED = 3
+
+
+# ---- closed loop ------------------------------------------------------------------------------
+
+@dataclass
+class Run:
+    """One closed-loop (or open-loop) run: absolute outputs and the torque added.
+
+    A diverged run stops where it diverged: its arrays are shorter than the reference."""
+
+    name: str
+    t: np.ndarray
+    y: np.ndarray
+    tau: np.ndarray  # (N+1, nu) torque added to the scene's from each sample (last row 0)
+    v: np.ndarray  # the outer loop's part (internal-model controllers), else zeros
+    impacts: int
+    seconds: float
+    diverged: str = ""  # empty, or where and why the run was stopped
+    flags: np.ndarray = field(default_factory=lambda: np.zeros((0, len(FLAGS))))
+    states: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # controller states
+
+    @property
+    def guard_counts(self) -> dict[str, int]:
+        """Samples on which each guard flag was raised; 'episodes' counts distinct
+        interventions (the network distrusted after having been trusted)."""
+        if self.flags.size == 0:
+            return {}
+        out = {name: int(np.sum(self.flags[:, i] > 0.5)) for i, name in enumerate(FLAGS)}
+        distrusted = self.flags[:, 0] > 0.5
+        out["episodes"] = int(np.sum(distrusted[1:] & ~distrusted[:-1]) + distrusted[0])
+        return out
+
+
+Law = Callable[[int, np.ndarray], np.ndarray]
+
+
+@dataclass(frozen=True)
+class LoopConditions:
+    """What the loop is exposed to beyond the scene: an unknown torque step on the plant,
+    noise on every measured signal the controllers see, and a delay of the actuators."""
+
+    disturbance: tuple[float, ...] = ()  # N m per driven joint, from disturbance_time on
+    disturbance_time: float = 1.0
+    noise: tuple[float, ...] = ()  # standard deviation per output (plant units); () none
+    delay: int = 0  # samples between a law's output and the actuator
+    seed: int = 0
+
+
+def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
+             clearance_model: Any | None = None, *, limit: float = math.inf,
+             conditions: LoopConditions = LoopConditions()) -> Run:
+    """Step the scene's clearance robot with ``law(k, y)`` added to the scene's torques.
+
+    ``limit``: the run stops, marked diverged, once the end-effector position error exceeds
+    it (m), as it does when the plant can no longer be integrated."""
+    from jointplay.neural.identify import measure
+    from jointplay.simulation import Stepper
+
+    stepper = Stepper(scene, model=clearance_model)
+    joints = scene.robot.moving_joints
+    index = [stepper.model.coordinates.index(f"q{j}") for j in joints]
+    n = scene.run.n_outputs
+    dt = scene.run.output_step
+    nj = len(joints)
+    y = np.zeros_like(reference)
+    tau = np.zeros((n + 1, nj))
+    applied = [np.zeros(nj)] * conditions.delay
+    rng = np.random.default_rng(conditions.seed)
+    noise = np.asarray(conditions.noise, dtype=float) if conditions.noise else None
+    dist = np.asarray(conditions.disturbance, dtype=float) if conditions.disturbance else None
+    tip = slice(2 * nj, 2 * nj + 2)
+    diverged = ""
+    last = n
+    start = time.perf_counter()
+    for k in range(n + 1):
+        y[k] = measure(stepper, index)
+        error = float(np.linalg.norm(y[k, tip] - reference[k, tip]))
+        if not np.all(np.isfinite(y[k])) or error > limit:
+            diverged = (f"end-effector error {error:.3g} m at t = {k * dt:.3f} s exceeds the "
+                        f"divergence bound {limit:.3g} m")
+            last = k
+            break
+        if k == n:
+            break
+        seen = y[k] + rng.normal(0.0, noise) if noise is not None else y[k]
+        tau[k] = law(k, seen)
+        out = tau[k]
+        if conditions.delay:
+            applied.append(tau[k])
+            out = applied.pop(0)
+        if dist is not None and k * dt >= conditions.disturbance_time - 1e-12:
+            out = out + dist
+        try:
+            stepper.step(out)
+        except SimulationError as err:
+            diverged = f"the plant could not be integrated: {err}"
+            last = k
+            break
+    keep = slice(0, last + 1)
+    t = np.arange(n + 1) * dt
+    return Run(name, t[keep], y[keep], tau[keep], np.zeros_like(tau[keep]),
+               len(stepper.impacts), time.perf_counter() - start, diverged)
+
+
+def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
+            log: dict[str, list[np.ndarray]]) -> Law:
+    """The compiled internal-model step as a law; logs v, the prediction, flags, states."""
+    state: list[np.ndarray] = []
+
+    def law(k: int, y: np.ndarray) -> np.ndarray:
+        if k == 0:
+            state[:] = [ctrl.initial_state(y - reference[0])]
+        log["states"].append(state[0])
+        tau, nxt, v, pred = ctrl.step(y, reference[k], tau_ff[k], state[0])
+        state[0] = nxt
+        log["v"].append(v)
+        log["y_pred"].append(pred)
+        log["flags"].append(ctrl.last_flags)
+        return tau
+    return law
+
+
+def pd_law(narx: Narx, reference: np.ndarray, kp: Sequence[float] = (),
+           kd: Sequence[float] = ()) -> Law:
+    """PD on the moving joints around the reference (default: the inner loop's gains)."""
+    q, dq, kp0, kd0 = _inner_gains(narx)
+    p_gain = np.asarray(kp, dtype=float) if len(kp) else kp0
+    d_gain = np.asarray(kd, dtype=float) if len(kd) else kd0
+
+    def law(k: int, y: np.ndarray) -> np.ndarray:
+        dev = y - reference[k]
+        return np.asarray(-p_gain * dev[q] - d_gain * dev[dq])
+    return law
+
+
+def computed_torque_law(scene: Any, ideal: Any, reference: np.ndarray, omega: float,
+                        zeta: float) -> Law:
+    """Computed torque with the ideal-joint model: tau = M(q)(qdd_r + kd e' + kp e) - f0(q,
+    qdot); the scene's torque at the sample is subtracted because the stepper adds it."""
+    from jointplay.scene.definition import ideal_counterpart
+    from jointplay.simulation import load_scene_model
+
+    model = load_scene_model(scene, ideal=True)
+    p = np.asarray(ideal_counterpart(scene.robot).parameter_values(), dtype=float)
+    nj = len(scene.robot.moving_joints)
+    no_contact = np.zeros(0)
+    zero = np.zeros(nj)
+    kp, kd = omega ** 2, 2 * zeta * omega
+    qdd_r = ideal.udot
+    tau_scene = ideal.tau
+
+    def law(k: int, y: np.ndarray) -> np.ndarray:
+        q, qd = y[:nj], y[nj:2 * nj]
+        e, ed = reference[k, :nj] - q, reference[k, nj:2 * nj] - qd
+        x = np.concatenate([q, qd])
+        a = qdd_r[k] + kd * ed + kp * e
+        f0 = model.forcing(x, zero, p, no_contact)
+        b = np.column_stack([model.forcing(x, unit, p, no_contact) - f0
+                             for unit in np.eye(nj)])  # f is affine in the torques
+        tau = np.linalg.solve(b, model.mass_matrix(q, p) @ a - f0)
+        return np.asarray(tau - tau_scene[k])
+    return law
+
+
+# ---- metrics ----------------------------------------------------------------------------------
+
+METRICS = ("position", "velocity", "acceleration")
+_SLICES = {"position": slice(0, 2), "velocity": slice(2, 4), "acceleration": slice(4, 6)}
+
+
+def tip_errors(run: Run, reference: np.ndarray, nj: int) -> dict[str, np.ndarray]:
+    """|end-effector error| per sample (Euclidean norm over x, y) for each quantity."""
+    base = 2 * nj
+    ref = reference[: run.y.shape[0]]
+    return {k: np.linalg.norm(run.y[:, base + s.start: base + s.stop]
+                              - ref[:, base + s.start: base + s.stop], axis=1)
+            for k, s in _SLICES.items()}
+
+
+GUARD_METRICS = {"guard_episodes": "episodes", "distrusted_samples": "model_distrusted",
+                 "fallback_samples": "on_fallback_model", "inner_only_samples": "inner_loop_only",
+                 "input_bound_samples": "input_at_trust_bound"}
+
+
+def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int) -> dict[str, float]:
+    """Maxima and RMS of the end-effector errors (whole run and after ``transient`` samples),
+    the largest added torque, impacts, whether the run diverged and the guard's counts."""
+    err = tip_errors(run, reference, nj)
+    out: dict[str, float] = {}
+    for k, e in err.items():
+        after = e[transient:] if e.size > transient else e
+        out[f"max_{k}"] = float(np.max(e))
+        out[f"max_{k}_after"] = float(np.max(after))
+        out[f"rms_{k}"] = float(np.sqrt(np.mean(e ** 2)))
+        out[f"rms_{k}_after"] = float(np.sqrt(np.mean(after ** 2)))
+    out["max_torque_added"] = float(np.max(np.abs(run.tau)))
+    out["impacts"] = float(run.impacts)
+    out["diverged"] = 1.0 if run.diverged else 0.0
+    counts = run.guard_counts
+    for key, name in GUARD_METRICS.items():
+        out[key] = float(counts.get(name, 0))
+    return out
+
+
+def metrics_table(metrics: dict[str, dict[str, float]], transient_s: float) -> str:
+    """Markdown table: every controller side by side, and the open-loop / controller ratio."""
+    cols = [("max_position", "max \\|Δp\\| [m]"), ("max_velocity", "max \\|Δv\\| [m/s]"),
+            ("max_acceleration", "max \\|Δa\\| [m/s²]"),
+            ("rms_acceleration", "RMS \\|Δa\\| [m/s²]")]
+    ms = f"{transient_s * 1e3:g} ms"
+    head = ("| controller | " + " | ".join(f"{label}" for _, label in cols)
+            + f" | after {ms}: max \\|Δv\\| | max \\|Δa\\| | RMS \\|Δa\\| | impacts |")
+    lines = [head, "|---" * (len(cols) + 5) + "|"]
+    base = metrics.get("open loop")
+    for name, mt in metrics.items():
+        cells = [f"{mt[k]:.3g}" for k, _ in cols]
+        cells += [f"{mt['max_velocity_after']:.3g}", f"{mt['max_acceleration_after']:.3g}",
+                  f"{mt['rms_acceleration_after']:.3g}", f"{mt['impacts']:.0f}"]
+        label = f"{name} (DIVERGED)" if mt.get("diverged") else name
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    if base is not None:
+        for name, mt in metrics.items():
+            if name == "open loop":
+                continue
+            keys = [k for k, _ in cols] + ["max_velocity_after", "max_acceleration_after",
+                                            "rms_acceleration_after"]
+            cells = [f"{base[k] / mt[k]:.3g}x" if mt[k] > 0 else "-" for k in keys]
+            lines.append(f"| reduction, {name} | " + " | ".join(cells) + " | |")
+    return "\n".join(lines)
+
+
+# ---- the whole comparison -----------------------------------------------------------------
+
+@dataclass
+class Comparison:
+    runs: dict[str, Run]
+    reference: np.ndarray
+    metrics: dict[str, dict[str, float]]
+    transient: int
+    limit: float  # divergence bound on the tip error, m
+    controllers: dict[str, Controller] = field(default_factory=dict)
+    per_call_us: dict[str, float] = field(default_factory=dict)
+    nominal_radius: dict[str, float] = field(default_factory=dict)
+    local_radius: dict[str, np.ndarray] = field(default_factory=dict)
+    tau_ff: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+
+    @property
+    def controller(self) -> Controller:
+        """The neural controller (or the only internal-model controller there is)."""
+        return self.controllers.get(NEURAL) or next(iter(self.controllers.values()))
+
+
+def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx | None = None,
+            transient: float = DEFAULT_TRANSIENT, ct_omega: float = 15.0,
+            ct_zeta: float = 0.2, pd_kp: Sequence[float] = (), pd_kd: Sequence[float] = (),
+            controllers: Sequence[str] = CONTROLLERS, quiet: bool = True,
+            analyse: bool = True, conditions: LoopConditions = LoopConditions(),
+            limit: float | None = None, divergence_factor: float = DIVERGENCE_FACTOR,
+            compiled: dict[str, Controller] | None = None) -> Comparison:
+    """Run the scene with every controller against the ideal robot's motion.
+
+    Without ``limit`` the open loop runs first and sets the divergence bound
+    (``divergence_factor`` x its largest tip error). ``arx`` is the linear twin: the
+    ARX-IMC's model and the neural controller's fallback (without it there is no ARX-IMC and
+    the neural controller falls back to the inner loop alone). ``analyse`` also measures each
+    compiled step's cost and its linearised loop's spectral radius (nominal, and along the
+    run).
+    """
+    from jointplay.neural.identify import ideal_reference, reference_outputs
+    from jointplay.simulation import load_scene_model
+
+    ideal = ideal_reference(scene)
+    reference = reference_outputs(ideal)
+    model = load_scene_model(scene)
+    nj = len(scene.robot.moving_joints)
+    names = [c for c in controllers if arx is not None or c != LINEAR]
+    ctrls: dict[str, Controller] = dict(compiled or {})
+    for name in names:
+        if name == NEURAL and name not in ctrls:
+            ctrls[name] = compile_controller(narx, settings, fallback=arx)
+        elif name == LINEAR and name not in ctrls and arx is not None:
+            ctrls[name] = compile_controller(arx, settings)
+    runs: dict[str, Run] = {}
+    if limit is None:
+        names = ["open loop", *[c for c in names if c != "open loop"]]
+    for name in names:
+        log: dict[str, list[np.ndarray]] = {"v": [], "y_pred": [], "flags": [], "states": []}
+        if name == "open loop":
+            law: Law = lambda k, y: np.zeros(nj)  # noqa: E731
+        elif name == "PD":
+            law = pd_law(narx, reference, pd_kp, pd_kd)
+        elif name == "computed torque":
+            law = computed_torque_law(scene, ideal, reference, ct_omega, ct_zeta)
+        elif name in ctrls:
+            law = imc_law(ctrls[name], reference, ideal.tau, log)
+        else:
+            raise ValueError(f"unknown controller {name!r}")
+        bound = math.inf if limit is None and name == "open loop" else (
+            limit if limit is not None else divergence_factor * float(
+                np.max(tip_errors(runs["open loop"], reference, nj)["position"])))
+        run = run_loop(scene, reference, law, name, model, limit=bound, conditions=conditions)
+        if log["v"]:
+            n = run.y.shape[0]
+            run.v[: min(n, len(log["v"]))] = np.array(log["v"])[:n]
+            run.flags = np.array(log["flags"])[:n]
+            run.states = np.array(log["states"])[:n]
+        runs[name] = run
+        if not quiet:
+            note = f"; DIVERGED: {run.diverged}" if run.diverged else ""
+            print(f"  {name}: {run.seconds:.1f} s, {run.impacts} impacts{note}", flush=True)
+    if limit is None:
+        limit = divergence_factor * float(np.max(tip_errors(runs["open loop"], reference,
+                                                            nj)["position"]))
+    k0 = max(0, round(transient / scene.run.output_step))
+    metrics = {name: run_metrics(run, reference, nj, k0) for name, run in runs.items()}
+    result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau)
+    if analyse:
+        for name, ctrl in ctrls.items():
+            if name not in runs:
+                continue
+            result.per_call_us[name] = per_call_us(ctrl)
+            states = runs[name].states
+            picks = states[np.linspace(0, len(states) - 1, min(8, len(states))).astype(int)] \
+                if len(states) else states
+            nominal, local = stability_radii(ctrl, picks)
+            result.nominal_radius[name] = nominal
+            result.local_radius[name] = local
+    return result
+
+
+def stability_radii(ctrl: Controller, states: np.ndarray) -> tuple[float, np.ndarray]:
+    """Nominal spectral radius and the radii at the given visited controller states."""
+    return nominal_spectral_radius(ctrl), local_spectral_radii(ctrl, states)
+
+
+MARGINAL = 1e-3  # a radius this close to 1 is an integrator the verdict cannot decide on
+
+
+def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
+    """What can be said about the loop's stability, and whether it calls for a warning."""
+    counts = run.guard_counts
+    duration = float(run.t[-1]) if run.t.size else 0.0
+    if run.diverged:
+        return f"{name}: DIVERGED ({run.diverged}); the run was stopped", True
+    parts: list[str] = []
+    warn = False
+    worse = run.y.shape[0] and comparison.metrics[name]["max_position"] > \
+        comparison.limit / DIVERGENCE_FACTOR
+    if counts.get("episodes", 0):
+        warn = True
+        parts.append(f"bounded over the {duration:g} s run only with the guard: the network was "
+                     f"distrusted {counts['episodes']} time(s) ({counts['on_fallback_model']} "
+                     f"samples on the ARX fallback, {counts['inner_loop_only']} with the inner "
+                     "loop alone)")
+    else:
+        parts.append(f"bounded over the {duration:g} s run, no fallback")
+    if counts.get("input_at_trust_bound", 0):
+        warn = True
+        parts.append(f"v held at the trust bound (training range) on "
+                     f"{counts['input_at_trust_bound']} samples")
+    if worse:
+        warn = True
+        parts.append("its largest tip error exceeds the open loop's")
+    nominal = comparison.nominal_radius.get(name)
+    local = comparison.local_radius.get(name)
+    if nominal is not None:
+        if nominal < 1 - MARGINAL:
+            lin = f"nominal linearisation stable (spectral radius {nominal:.4f})"
+        elif nominal <= 1 + MARGINAL:
+            lin = (f"nominal linearisation marginal (spectral radius {nominal:.4f}, within "
+                   f"{MARGINAL:g} of 1: an integrating mode the tracked outputs do not see; "
+                   "undecided)")
+        else:
+            lin = f"nominal linearisation unstable (spectral radius {nominal:.4f})"
+        if local is not None and local.size:
+            lin += (f"; at {local.size} states along the run {np.min(local):.4f} to "
+                    f"{np.max(local):.4f}")
+            if np.max(local) > 1 + MARGINAL:
+                lin += " (above 1 at some: stability beyond this run is not established)"
+        parts.append(lin)
+    return f"{name}: " + "; ".join(parts), warn
+
+
+def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any]) -> None:
+    import h5py
+
+    with atomic_path(path) as tmp, h5py.File(tmp, "w") as f:
+        f.attrs["format"] = "jointplay-control"
+        f.attrs["meta"] = json.dumps(meta, default=str)
+        f.create_dataset("reference", data=comparison.reference)
+        for name, run in comparison.runs.items():
+            g = f.create_group(name)
+            for key in ("t", "y", "tau", "v", "flags"):
+                g.create_dataset(key, data=getattr(run, key))
+            g.attrs["metrics"] = json.dumps(comparison.metrics[name])
+            g.attrs["diverged"] = run.diverged
+            g.attrs["flag_names"] = json.dumps(list(FLAGS))
+
+
+# ---- the command ------------------------------------------------------------------------------
+
+def _floats(text: str | None, flag: str, count: int | None = None,
+            positive: bool = True) -> tuple[float, ...]:
+    from jointplay.neural.identify import _floats as parse
+
+    return parse(text, flag, count, positive)
+
+
+def test_case_scenes(model_dir: Path, scene: Any) -> list[tuple[str, Any]]:
+    """Scenes driven by the base torques of the stored test trajectories."""
+    from jointplay.neural.identify import Chirp, Multisine, read_datasets, with_torques
+    from jointplay.scene.torques import TableColumn, parse_expression
+
+    path = model_dir / "datasets.h5"
+    if not path.is_file():
+        raise DescriptionError("--test-cases", f"{path} is missing; the model folder has no "
+                               "stored test trajectories (run `jointplay identify` again)")
+    trajectories, meta = read_datasets(path)
+    out = []
+    for tr in (t for t in trajectories if t.split == "test"):
+        torques: list[Any] = []
+        for i, desc in enumerate(tr.description.get("base", [])):
+            kind = desc.get("kind")
+            if kind == "multisine":
+                torques.append(Multisine(np.array(desc["amplitude"]), np.array(desc["frequency"]),
+                                         np.array(desc["phase"])))
+            elif kind == "chirp":
+                torques.append(Chirp(desc["amplitude"], desc["f0"], desc["f1"],
+                                     desc["duration"], desc["phase"]))
+            elif kind == "steps":
+                torques.append(TableColumn(f"joint{i}", np.array(desc["times"]),
+                                           np.array(desc["values"])))
+            else:
+                torques.append(parse_expression(desc["text"], field="torques",
+                                                constants=scene.constants))
+        duration = float(tr.t[-1])
+        out.append((f"test {tr.family}", with_torques(scene.with_run(t_end=duration), torques)))
+    del meta
+    return out
+
+
+def load_twin(model_dir: Path, narx: Narx) -> Narx:
+    """The ARX twin of a model folder: arx.json, or (folders written before it existed) a
+    least-squares fit on the stored training runs, as identify makes it."""
+    from dataclasses import replace
+
+    if (model_dir / ARX_FILE).is_file():
+        return load_narx(model_dir, filename=ARX_FILE)
+    from jointplay.neural.identify import _segments, fit_arx, read_datasets
+
+    path = model_dir / "datasets.h5"
+    if not path.is_file():
+        raise DescriptionError("--model", f"{model_dir} has neither {ARX_FILE} nor datasets.h5 "
+                               "for the ARX baseline: run `jointplay identify` again")
+    trajectories, _ = read_datasets(path)
+    skip = max(0, round(narx.context.get("plant", {}).get("transient", DEFAULT_TRANSIENT)
+                        / narx.sample_time))
+    names = {"output_names": narx.output_names, "output_units": narx.output_units,
+             "input_names": narx.input_names, "input_units": narx.input_units}
+    arx = fit_arx(_segments([t for t in trajectories if t.split == "train"], skip), names,
+                  narx.output_lags, narx.input_lags, narx.sample_time)
+    return replace(arx, context=narx.context)
+
+
+def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> ControllerSettings:
+    """The settings the flags give; resolved against ``narx`` when given (defaults filled
+    from it, every value checked), else as given (each model resolves them for itself)."""
+    tracked = tuple(n.strip() for n in args.track.split(",") if n.strip()) if args.track else ()
+    settings = ControllerSettings(
+        horizon=args.horizon, regularisation=args.lambda_, setpoint_filter=args.setpoint_filter,
+        mismatch_filter=args.mismatch_filter, tracked=tracked,
+        scales=_floats(args.scales, "--scales"),
+        torque_limit=_floats(args.torque_limit, "--torque-limit"),
+        rate_limit=_floats(args.rate_limit, "--rate-limit"), iterations=args.iterations,
+        guard=not args.no_guard, trust_input=args.trust_input, trust_range=args.trust_range,
+        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold)
+    return resolve_settings(narx, settings) if narx is not None else settings
+
+
+def cmd_control(args: argparse.Namespace) -> int:
+    """``jointplay control``: validate, compile, run every controller, report and plot.
+
+    Exit status 3 when an internal-model controller diverged."""
+    from jointplay.neural.identify import _load_scene_arg
+
+    scene = _load_scene_arg(args.scene, args.quiet)
+    model_dir = Path(args.model)
+    narx = load_narx(model_dir)
+    check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
+    arx = load_twin(model_dir, narx)
+    settings = settings_from_args(args, narx)
+    nj = len(scene.robot.moving_joints)
+    pd_kp = _floats(args.pd_kp, "--pd-kp", nj)
+    pd_kd = _floats(args.pd_kd, "--pd-kd", nj, positive=False)
+    for flag, value in (("--ct-omega", args.ct_omega), ("--ct-zeta", args.ct_zeta),
+                        ("--divergence-factor", args.divergence_factor)):
+        if not (math.isfinite(value) and value > 0):
+            raise DescriptionError(flag, f"must be a positive number, got {value}")
+    if not (math.isfinite(args.transient) and 0 <= args.transient < scene.run.t_end):
+        raise DescriptionError("--transient", f"must be in [0, run.t_end), got {args.transient}")
+    if args.plot:
+        plot = Path(args.plot)
+        if plot.exists() and not plot.is_dir():
+            raise DescriptionError("--plot", f"{plot} exists and is not a folder")
+        try:
+            plot.mkdir(parents=True, exist_ok=True)
+        except OSError as err:
+            raise DescriptionError("--plot", f"cannot create folder {plot}: {err}") from None
+    if args.out:
+        from jointplay.results.write import check_output_path
+        from jointplay.scene.definition import scene_inputs
+
+        check_output_path(args.out, "--out",
+                          inputs=[*scene_inputs(scene), model_dir / MODEL_FILE,
+                                  model_dir / "datasets.h5"])
+    cases = test_case_scenes(model_dir, scene) if args.test_cases else []
+
+    quiet = args.quiet
+    if not quiet:
+        print(f"scene {scene.name}: reference = ideal-joint robot under the scene's torques; "
+              f"plant = compiled clearance model; controller every {scene.run.output_step:g} s")
+    comparison = compare(scene, narx, settings, arx=arx, transient=args.transient,
+                         ct_omega=args.ct_omega, ct_zeta=args.ct_zeta, pd_kp=pd_kp,
+                         pd_kd=pd_kd, quiet=quiet, divergence_factor=args.divergence_factor)
+    inner = narx.context["plant"]["inner_loop"]
+    alpha = narx.context.get("training", {}).get("metrics", {}).get("residual_weight")
+    lines = [
+        "",
+        f"End-effector errors vs the ideal-joint robot ({scene.name}, {scene.run.t_end:g} s; "
+        "norms over x, y):",
+        "",
+        metrics_table(comparison.metrics, args.transient),
+        "",
+        f"internal-model controllers: horizon {settings.horizon}, lambda "
+        f"{settings.regularisation:g}, setpoint filter {settings.setpoint_filter:g}, mismatch "
+        f"filter {settings.mismatch_filter:g}, tracked {', '.join(settings.tracked)}; guard "
+        + (f"on (|v| <= {settings.trust_input:g} x training, range margin "
+           f"{settings.trust_range:g}, mismatch <= {settings.trust_mismatch:g}, hold "
+           f"{settings.fallback_hold})" if settings.guard else "OFF")
+        + f"; inner PD kp {inner['kp']}, kd {inner['kd']}; PD baseline kp "
+        f"{list(pd_kp) or inner['kp']}, kd {list(pd_kd) or inner['kd']}; computed torque "
+        f"omega {args.ct_omega:g} rad/s, zeta {args.ct_zeta:g}; network residual weight "
+        f"{alpha if alpha is not None else 'not recorded'}",
+        "compiled step: " + ", ".join(
+            f"{name} {us:.2f} us per call" for name, us in comparison.per_call_us.items())
+        + f" (buffer path); divergence bound {comparison.limit:.3g} m (x"
+        f"{args.divergence_factor:g} the open loop's largest tip error)",
+        "",
+        "Stability:",
+    ]
+    warnings = []
+    diverged = False
+    for name in MODEL_BASED:
+        if name in comparison.runs:
+            text, warn = verdict(name, comparison.runs[name], comparison)
+            lines.append(f"- {text}")
+            diverged |= bool(comparison.runs[name].diverged)
+            if warn:
+                warnings.append(text)
+    if scene.name == "paper_4dof":
+        lines += ["", "paper (its robot, with control): max |Δp| 2.4e-4 m, max |Δv| 7.7e-3 m/s, "
+                      "acceleration error reduced tenfold"]
+    case_rows = []
+    for label, case_scene in cases:
+        sub = compare(case_scene, narx, settings, arx=arx, transient=args.transient,
+                      controllers=("PD", LINEAR, NEURAL), quiet=True, analyse=False,
+                      compiled=comparison.controllers)
+        cells = []
+        for name in ("PD", LINEAR, NEURAL):
+            mt = sub.metrics.get(name)
+            cells += [f"{mt['max_position']:.3g}" if mt else "-",
+                      f"{mt['max_velocity_after']:.3g}" if mt else "-"]
+        states = [("DIVERGED" if sub.runs[n].diverged else "bounded") for n in MODEL_BASED
+                  if n in sub.runs]
+        diverged |= any(sub.runs[n].diverged for n in MODEL_BASED if n in sub.runs)
+        case_rows.append(f"| {label} | " + " | ".join(cells) + f" | {', '.join(states)} |")
+    if case_rows:
+        lines += ["", "Closed loop on the stored test excitations (never used in training; "
+                      "max |Δp| [m], max |Δv| after the transient [m/s]):", "",
+                  "| case | PD Δp | PD Δv | ARX-IMC Δp | ARX-IMC Δv | neural Δp | neural Δv | "
+                  "ARX-IMC, neural |", "|---|---|---|---|---|---|---|---|", *case_rows]
+    text = "\n".join(lines)
+    written = []
+    if args.plot:
+        from jointplay.neural.control_plots import plot_comparison
+
+        written += [str(p) for p in plot_comparison(comparison, scene, Path(args.plot))]
+        atomic_write_text(Path(args.plot) / "control.md", text.strip() + "\n")
+        written.append(str(Path(args.plot) / "control.md"))
+    if args.out:
+        write_runs(Path(args.out), comparison,
+                   {"settings": asdict(settings), "scene": scene.name,
+                    "per_call_us": comparison.per_call_us,
+                    "nominal_radius": comparison.nominal_radius,
+                    "network_checksum": narx.checksum(), "arx_checksum": arx.checksum()})
+        written.append(args.out)
+    if not quiet:
+        print(text)
+        for path in written:
+            print(f"wrote {path}")
+    for text in warnings:
+        print(f"jointplay: warning: {text}", file=sys.stderr)
+    return EXIT_DIVERGED if diverged else 0
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    """Add ``control`` to a ``jointplay`` argument parser's subcommands."""
+    d = ControllerSettings()
+    p = subparsers.add_parser(
+        "control", help="closed-loop runs of the internal-model controllers and baselines "
+                        "against the ideal robot's motion",
+        description="Track the ideal-joint robot's motion with the clearance robot: open loop, "
+                    "PD, computed torque (ideal model), internal-model control with the linear "
+                    "ARX twin, and with the guarded NARX network (compiled), side by side. "
+                    "Exit status 3 when an internal-model controller diverged.")
+    p.add_argument("scene", nargs="?", help="scene file (TOML); default: the paper scene")
+    p.add_argument("--model", required=True, metavar="MODEL_DIR",
+                   help="folder written by `jointplay identify`")
+    p.add_argument("--plot", metavar="DIR", help="write figures and the table (control.md) here")
+    p.add_argument("--out", metavar="RUN.h5", help="write every run and the metrics (HDF5)")
+    add_settings_arguments(p, d)
+    p.add_argument("--pd-kp", help="PD baseline stiffness per driven joint, N m/rad (default: "
+                                   "the inner loop's)")
+    p.add_argument("--pd-kd", help="PD baseline damping per driven joint, N m s/rad (default: "
+                                   "the inner loop's)")
+    p.add_argument("--ct-omega", type=float, default=15.0,
+                   help="computed-torque baseline bandwidth, rad/s (default %(default)s)")
+    p.add_argument("--ct-zeta", type=float, default=0.2,
+                   help="computed-torque baseline damping ratio (default %(default)s)")
+    p.add_argument("--transient", type=float, default=DEFAULT_TRANSIENT,
+                   help="seconds at the start reported separately (journals settling; "
+                        "default %(default)s)")
+    p.add_argument("--divergence-factor", type=float, default=DIVERGENCE_FACTOR,
+                   help="a run whose tip error exceeds this x the open loop's largest is "
+                        "stopped as diverged (default %(default)s)")
+    p.add_argument("--test-cases", action="store_true",
+                   help="also run PD and both internal-model controllers on the model's stored "
+                        "test excitations")
+    p.add_argument("--quiet", action="store_true", help="no progress, no report")
+    p.set_defaults(func=cmd_control)
+    return p
+
+
+def add_settings_arguments(p: argparse.ArgumentParser, d: ControllerSettings) -> None:
+    """The controller's tuning flags (shared with the study command)."""
+    p.add_argument("--horizon", type=int, default=d.horizon,
+                   help="samples ahead the prediction is matched (default %(default)s)")
+    p.add_argument("--lambda", dest="lambda_", type=float, default=d.regularisation,
+                   help="regularisation of the inverse (default %(default)s)")
+    p.add_argument("--setpoint-filter", type=float, default=d.setpoint_filter,
+                   help="a in y_d(k+1) = a y_d(k) + (1 - a) r(k+1) (default %(default)s)")
+    p.add_argument("--mismatch-filter", type=float, default=d.mismatch_filter,
+                   help="b of the first-order mismatch filter (default %(default)s)")
+    p.add_argument("--iterations", type=int, default=d.iterations,
+                   help="linearisations per step (default %(default)s: the AIMNC law)")
+    p.add_argument("--track", help="outputs the controller matches, e.g. q2,q3 (default: the "
+                                   "end effector's position and velocity along the axis the "
+                                   "torques move it most, and the last joint's angle and "
+                                   "speed)")
+    p.add_argument("--scales", help="error of each tracked output that counts as 1 (default: "
+                                    "its spread in the training data)")
+    p.add_argument("--torque-limit", help="actuator limits per driven joint, N m (default: "
+                                          "the model's)")
+    p.add_argument("--rate-limit", help="limit on the outer loop's torque rate per driven "
+                                        "joint, N m/s (default: 10 x the torque limit)")
+    p.add_argument("--no-guard", action="store_true",
+                   help="run the network without its trust region and fallback (to see what "
+                        "the guard prevents; a diverging loop is still stopped and reported)")
+    p.add_argument("--trust-input", type=float, default=d.trust_input,
+                   help="|v| kept within this x the largest |v| in training (default "
+                        "%(default)s)")
+    p.add_argument("--trust-range", type=float, default=d.trust_range,
+                   help="the internal model's regressor and prediction must stay in the "
+                        "training range widened by this x its width (default %(default)s)")
+    p.add_argument("--trust-mismatch", type=float, default=d.trust_mismatch,
+                   help="largest scaled mismatch on a tracked output before the network is "
+                        "distrusted (default %(default)s)")
+    p.add_argument("--fallback-hold", type=int, default=d.fallback_hold,
+                   help="samples on the fallback after a first intervention, doubling with "
+                        "each further one (default %(default)s)")
+
+
+__all__ = ["CONTROLLERS", "LINEAR", "NEURAL", "Comparison", "Controller", "ControllerSettings",
+           "LoopConditions", "Run", "build_step", "compare", "compile_controller",
+           "computed_torque_law", "default_tracked", "generate_c", "horizon_gain", "load_twin",
+           "metrics_table", "nominal_spectral_radius", "per_call_us", "register",
+           "resolve_settings", "run_loop", "run_metrics", "verdict"]

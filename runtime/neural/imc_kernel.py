@@ -1,0 +1,422 @@
+"""The controller step as loops over small dense matrices, in C: the same law, a fraction of
+the cost.
+
+CasADi's SX code for the step is straight-line: every multiply-add of the d-step rollout and
+of its forward derivative is one line, about 5 400 operations per step of the horizon (29 000
+at d = 5). That code no longer fits the instruction cache, and its cost is the cost of reading
+it. The structure is simple, though: each step of the rollout is the same network, and the
+rollout's Jacobian is the product of the per-step Jacobians, carried forward as nu tangent
+directions through the same layers. Written as loops over the weight matrices (constants in
+the file, hexadecimal floats, so exact), the step is a few kilobytes of code the compiler can
+keep in cache and vectorise.
+
+The CasADi function (jointplay.neural.imc.build_step) stays the definition: the kernel is generated
+from the same model and settings, exported under the same C interface (so it loads and runs
+through the same buffers), and the tests check that the two agree to 1e-12 on random states,
+guard on and off, with and without the fallback. The kernel covers one Gauss-Newton iteration
+(the AIMNC law, the default); more iterations use CasADi's code.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import casadi as ca
+import numpy as np
+
+from jointplay.neural.imc import (
+    ControllerSettings,
+    _inner_gains,
+    affine_rollout,
+    input_bound,
+    is_linear,
+    training_box,
+)
+from jointplay.neural.narx import Narx
+
+# tanh through expm1: half the cost of libm's tanh here, within 4e-16 of it, exact in sign and
+# saturation (|x| > 20 gives +-1, where tanh is 1 to double precision).
+TANH = """#include <math.h>
+static inline double jp_tanh(double x) {
+  double e;
+  if (x > 20) return 1;
+  if (x < -20) return -1;
+  e = expm1(2 * x);
+  return e / (e + 2);
+}
+"""
+
+
+def _c(x: float) -> str:
+    """An exact C literal for a float64."""
+    if math.isinf(x):
+        return "1e300" if x > 0 else "-1e300"
+    return float(x).hex()
+
+
+def _array(name: str, values: Any) -> str:
+    flat = np.asarray(values, dtype=float).ravel()
+    if flat.size == 0:
+        return f"static const double {name}[1] = {{0}};\n"
+    body = ", ".join(_c(v) for v in flat)
+    return f"static const double {name}[{flat.size}] = {{{body}}};\n"
+
+
+def _network(prefix: str, model: Narx, nd: int) -> str:
+    """C for one network: ``{prefix}eval(phi, dphi, y, dy, tangent)``; ``dphi`` holds ``nd``
+    tangent directions (direction-major), ``dy`` likewise."""
+    ny, nphi = model.n_outputs, model.n_regressor
+    out = [_array(f"{prefix}MU", model.regressor_mean),
+           _array(f"{prefix}ISG", 1.0 / model.regressor_scale),
+           _array(f"{prefix}TM", model.increment_mean),
+           _array(f"{prefix}TS", model.increment_scale),
+           _array(f"{prefix}CARRY", model.carry)]
+    # Weights stored transposed (column by column): the products below are then sums of
+    # scaled columns, n_out independent accumulators the compiler vectorises without
+    # reassociating any sum (a row-by-row dot product is one serial chain of additions).
+    for i, (w, b) in enumerate(zip(model.weights, model.biases, strict=True)):
+        out += [_array(f"{prefix}W{i}", w.T), _array(f"{prefix}B{i}", b)]
+    if model.linear is not None:
+        out.append(_array(f"{prefix}L", model.linear.T))
+    widths = [nphi, *[w.shape[0] for w in model.weights]]
+    width_max = max(widths)
+    last = len(model.weights) - 1
+    lines = [f"static void {prefix}eval(const double* phi, const double* dphi, double* y, "
+             "double* dy, int tangent) {",
+             f"  double z[{nphi}], dz[{nd * nphi}], h[{width_max}], dh[{nd * width_max}];",
+             f"  double a[{width_max}], da[{nd * width_max}];",
+             "  int i, j, k;",
+             f"  for (i = 0; i < {nphi}; ++i) z[i] = (phi[i] - {prefix}MU[i]) * {prefix}ISG[i];",
+             "  if (tangent) {",
+             f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {nphi}; ++i)",
+             f"      dz[k * {nphi} + i] = dphi[k * {nphi} + i] * {prefix}ISG[i];",
+             "  }",
+             f"  for (i = 0; i < {nphi}; ++i) h[i] = z[i];",
+             "  if (tangent) {",
+             f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {nphi}; ++i)",
+             f"      dh[k * {width_max} + i] = dz[k * {nphi} + i];",
+             "  }"]
+    for i in range(len(model.weights)):
+        n_in, n_out = widths[i], widths[i + 1]
+        wname, bias = f"{prefix}W{i}", f"{prefix}B{i}"
+        # One pass over the weights for the value and every tangent direction.
+        tangents = "".join(f" da[{k * width_max} + i] += wji * dh{k};" for k in range(nd))
+        loads = " ".join(f"const double dh{k} = dh[{k * width_max} + j];" for k in range(nd))
+        lines += [
+            f"  for (i = 0; i < {n_out}; ++i) a[i] = {bias}[i];",
+            "  if (tangent) {",
+            f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {n_out}; ++i) "
+            f"da[k * {width_max} + i] = 0;",
+            f"    for (j = 0; j < {n_in}; ++j) {{",
+            f"      const double hj = h[j]; {loads}",
+            f"      for (i = 0; i < {n_out}; ++i) {{",
+            f"        const double wji = {wname}[j * {n_out} + i];",
+            f"        a[i] += wji * hj;{tangents}",
+            "      }",
+            "    }",
+            "  } else {",
+            f"    for (j = 0; j < {n_in}; ++j) {{",
+            "      const double hj = h[j];",
+            f"      for (i = 0; i < {n_out}; ++i) a[i] += {wname}[j * {n_out} + i] * hj;",
+            "    }",
+            "  }"]
+        if i < last:
+            lines += [
+                f"  for (i = 0; i < {n_out}; ++i) h[i] = jp_tanh(a[i]);",
+                "  if (tangent) {",
+                f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {n_out}; ++i)",
+                f"      dh[k * {width_max} + i] = (1 - h[i] * h[i]) * da[k * {width_max} + i];",
+                "  }"]
+    if model.linear is not None:
+        tangents = "".join(f" da[{k * width_max} + i] += lji * dz{k};" for k in range(nd))
+        loads = " ".join(f"const double dz{k} = dz[{k * nphi} + j];" for k in range(nd))
+        lines += [
+            "  if (tangent) {",
+            f"    for (j = 0; j < {nphi}; ++j) {{",
+            f"      const double zj = z[j]; {loads}",
+            f"      for (i = 0; i < {ny}; ++i) {{",
+            f"        const double lji = {prefix}L[j * {ny} + i];",
+            f"        a[i] += lji * zj;{tangents}",
+            "      }",
+            "    }",
+            "  } else {",
+            f"    for (j = 0; j < {nphi}; ++j) {{",
+            "      const double zj = z[j];",
+            f"      for (i = 0; i < {ny}; ++i) a[i] += {prefix}L[j * {ny} + i] * zj;",
+            "    }",
+            "  }"]
+    lines += [
+        f"  for (i = 0; i < {ny}; ++i)",
+        f"    y[i] = {prefix}CARRY[i] * phi[i] + {prefix}TM[i] + {prefix}TS[i] * a[i];",
+        "  if (tangent) {",
+        f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {ny}; ++i)",
+        f"      dy[k * {ny} + i] = {prefix}CARRY[i] * dphi[k * {nphi} + i] + "
+        f"{prefix}TS[i] * da[k * {width_max} + i];",
+        "  }",
+        "}"]
+    return "".join(out) + "\n".join(lines) + "\n"
+
+
+def _branch(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
+            scales: tuple[float, ...]) -> str:
+    """C for one internal model's increment and trust:
+    ``{prefix}branch(hist, upast, v_prev, e_f, target, step) -> ok``."""
+    ny, nu, na, nb, d = (model.n_outputs, model.n_inputs, model.output_lags,
+                         model.input_lags, s.horizon)
+    nphi = model.n_regressor
+    nt = len(rows)
+    lo, hi = training_box(model, s.trust_range)
+    out = [_array(f"{prefix}LO", lo), _array(f"{prefix}HI", hi)]
+    lines = [f"static int {prefix}branch(const double* hist, const double* upast, "
+             "const double* vp, const double* ef, const double* target, double* step) {",
+             f"  double n0[{ny}], res[{nt}];",
+             "  int i, j, k, ok = 1;"]
+    if is_linear(model):
+        mh, mu, mv, c = affine_rollout(model, d)
+        cm = np.zeros((nt, ny))
+        for i, (row, scale) in enumerate(zip(rows, scales, strict=True)):
+            cm[i, row] = 1.0 / scale
+        cj = cm @ mv
+        gain = np.linalg.solve(cj.T @ cj + s.regularisation * np.eye(nu), cj.T)
+        out += [_array(f"{prefix}MH", mh), _array(f"{prefix}MUP", mu), _array(f"{prefix}MV", mv),
+                _array(f"{prefix}MC", c), _array(f"{prefix}G", gain)]
+        lines += [
+            f"  for (i = 0; i < {ny}; ++i) {{",
+            f"    double s = {prefix}MC[i];",
+            f"    for (j = 0; j < {na * ny}; ++j) s += {prefix}MH[i * {na * ny} + j] * hist[j];",
+            f"    for (j = 0; j < {nb * nu}; ++j) s += {prefix}MUP[i * {nb * nu} + j] * upast[j];",
+            f"    for (j = 0; j < {nu}; ++j) s += {prefix}MV[i * {nu} + j] * vp[j];",
+            "    n0[i] = s;",
+            "  }"]
+        for i, (row, scale) in enumerate(zip(rows, scales, strict=True)):
+            lines.append(f"  res[{i}] = (target[{row}] - ef[{row}] - n0[{row}]) * "
+                         f"{_c(1.0 / scale)};")
+        lines += [
+            f"  for (i = 0; i < {nu}; ++i) {{",
+            "    double s = 0;",
+            f"    for (j = 0; j < {nt}; ++j) s += {prefix}G[i * {nt} + j] * res[j];",
+            "    step[i] = s;",
+            "  }"]
+    else:
+        lines += [
+            f"  double phi[{nphi}], dphi[{nu * nphi}], ys[{na * ny}], dys[{nu * na * ny}];",
+            f"  double yn[{ny}], dyn[{nu * ny}], us[{nb * nu}], dus[{nu * nb * nu}];",
+            f"  double cj[{nt * nu}], a[{nu * nu}], b[{nu}];",
+            f"  for (i = 0; i < {na * ny}; ++i) ys[i] = hist[i];",
+            f"  for (i = 0; i < {nu * na * ny}; ++i) dys[i] = 0;",
+            f"  for (i = 0; i < {nu}; ++i) us[i] = vp[i];",
+            f"  for (i = {nu}; i < {nb * nu}; ++i) us[i] = upast[i - {nu}];",
+            f"  for (i = 0; i < {nu * nb * nu}; ++i) dus[i] = 0;",
+            f"  for (k = 0; k < {nu}; ++k) dus[k * {nb * nu} + k] = 1;",
+            f"  for (int t = 0; t < {d}; ++t) {{",
+            f"    for (i = 0; i < {na * ny}; ++i) phi[i] = ys[i];",
+            f"    for (i = 0; i < {nb * nu}; ++i) phi[{na * ny} + i] = us[i];",
+            f"    for (k = 0; k < {nu}; ++k) {{",
+            f"      for (i = 0; i < {na * ny}; ++i) dphi[k * {nphi} + i] = dys[k * {na * ny} + i];",
+            f"      for (i = 0; i < {nb * nu}; ++i) dphi[k * {nphi} + {na * ny} + i] = "
+            f"dus[k * {nb * nu} + i];",
+            "    }",
+            f"    {prefix}eval(phi, dphi, yn, dyn, 1);",
+            f"    for (i = {na * ny} - 1; i >= {ny}; --i) ys[i] = ys[i - {ny}];",
+            f"    for (i = 0; i < {ny}; ++i) ys[i] = yn[i];",
+            f"    for (k = 0; k < {nu}; ++k) {{",
+            f"      for (i = {na * ny} - 1; i >= {ny}; --i) dys[k * {na * ny} + i] = "
+            f"dys[k * {na * ny} + i - {ny}];",
+            f"      for (i = 0; i < {ny}; ++i) dys[k * {na * ny} + i] = dyn[k * {ny} + i];",
+            f"      for (i = {nb * nu} - 1; i >= {nu}; --i) dus[k * {nb * nu} + i] = "
+            f"dus[k * {nb * nu} + i - {nu}];",
+            f"      for (i = 0; i < {nu}; ++i) dus[k * {nb * nu} + i] = (i == k);",
+            "    }",
+            f"    for (i = {nb * nu} - 1; i >= {nu}; --i) us[i] = us[i - {nu}];",
+            f"    for (i = 0; i < {nu}; ++i) us[i] = vp[i];",
+            "  }",
+            f"  for (i = 0; i < {ny}; ++i) n0[i] = ys[i];"]
+        for i, (row, scale) in enumerate(zip(rows, scales, strict=True)):
+            lines.append(f"  res[{i}] = (target[{row}] - ef[{row}] - n0[{row}]) * "
+                         f"{_c(1.0 / scale)};")
+            lines.append(f"  for (k = 0; k < {nu}; ++k) cj[{i} * {nu} + k] = "
+                         f"dys[k * {na * ny} + {row}] * {_c(1.0 / scale)};")
+        lines += [
+            # (CJ)'(CJ) + lam I, (CJ)' res; solved by Cholesky (symmetric positive definite)
+            f"  for (i = 0; i < {nu}; ++i) {{",
+            "    double s = 0;",
+            f"    for (j = 0; j < {nt}; ++j) s += cj[j * {nu} + i] * res[j];",
+            "    b[i] = s;",
+            f"    for (k = 0; k < {nu}; ++k) {{",
+            f"      double q = (i == k) ? {_c(s.regularisation)} : 0.0;",
+            f"      for (j = 0; j < {nt}; ++j) q += cj[j * {nu} + i] * cj[j * {nu} + k];",
+            f"      a[i * {nu} + k] = q;",
+            "    }",
+            "  }",
+            f"  for (i = 0; i < {nu}; ++i) {{",
+            "    for (k = 0; k <= i; ++k) {",
+            f"      double q = a[i * {nu} + k];",
+            f"      for (j = 0; j < k; ++j) q -= a[i * {nu} + j] * a[k * {nu} + j];",
+            f"      if (i == k) a[i * {nu} + i] = sqrt(q); else a[i * {nu} + k] = q / "
+            f"a[k * {nu} + k];",
+            "    }",
+            "  }",
+            f"  for (i = 0; i < {nu}; ++i) {{",
+            "    double q = b[i];",
+            f"    for (j = 0; j < i; ++j) q -= a[i * {nu} + j] * step[j];",
+            f"    step[i] = q / a[i * {nu} + i];",
+            "  }",
+            f"  for (i = {nu} - 1; i >= 0; --i) {{",
+            "    double q = step[i];",
+            f"    for (j = i + 1; j < {nu}; ++j) q -= a[j * {nu} + i] * step[j];",
+            f"    step[i] = q / a[i * {nu} + i];",
+            "  }"]
+    if s.guard:
+        lines += [
+            f"  for (i = 0; i < {na * ny}; ++i) ok &= (hist[i] - {prefix}LO[i] >= 0) & "
+            f"({prefix}HI[i] - hist[i] >= 0);",
+            f"  for (i = 0; i < {nu}; ++i) ok &= (vp[i] - {prefix}LO[{na * ny} + i] >= 0) & "
+            f"({prefix}HI[{na * ny} + i] - vp[i] >= 0);",
+            f"  for (i = 0; i < {(nb - 1) * nu}; ++i) ok &= "
+            f"(upast[i] - {prefix}LO[{na * ny + nu} + i] >= 0) & "
+            f"({prefix}HI[{na * ny + nu} + i] - upast[i] >= 0);",
+            f"  for (i = 0; i < {ny}; ++i) ok &= (n0[i] - {prefix}LO[i] >= 0) & "
+            f"({prefix}HI[i] - n0[i] >= 0);"]
+        for row, scale in zip(rows, scales, strict=True):
+            lines.append(f"  ok &= ({_c(s.trust_mismatch)} - fabs(ef[{row}] * "
+                         f"{_c(1.0 / scale)}) >= 0);")
+        lines.append(f"  for (i = 0; i < {nu}; ++i) ok &= (fabs(step[i]) < 1e300);")
+    lines += ["  return ok;", "}"]
+    return "".join(out) + "\n".join(lines) + "\n"
+
+
+def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | None,
+                  name: str) -> str:
+    """C of ``name``'s computation: ``static int {name}_kernel(arg, res)``."""
+    s = settings
+    if s.iterations != 1:
+        raise ValueError("the loop kernel implements one Gauss-Newton iteration")
+    if fallback is not None and not s.guard:
+        fallback = None
+    ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
+    naf = fallback.output_lags if fallback is not None else 0
+    rows = [model.output_index(n) for n in s.tracked]
+    parts = [TANH, _network("m_", model, nu), _branch("m_", model, s, rows,
+                                                                     s.scales)]
+    if fallback is not None:
+        parts += [_network("f_", fallback, nu), _branch("f_", fallback, s, rows, s.scales)]
+    q_idx, dq_idx, kp, kd = _inner_gains(model)
+    rate = [r * model.sample_time for r in s.rate_limit]
+    limit = [lim if math.isfinite(lim) else 1e300 for lim in s.torque_limit]
+    bound = input_bound(model, s.trust_input) if s.guard else np.full(nu, 1e300)
+    parts += [_array("RATE", rate), _array("LIMIT", limit), _array("BOUND", bound),
+              _array("KP", kp if len(kp) else np.zeros(nu)),
+              _array("KD", kd if len(kd) else np.zeros(nu))]
+    o_hist, o_histf = 0, na * ny
+    o_up = o_histf + naf * ny
+    o_ef = o_up + nb * nu
+    o_eff = o_ef + ny
+    o_yd = o_eff + (ny if fallback is not None else 0)
+    o_hold = o_yd + ny
+    n_state = o_hold + 2
+    nbf = fallback.input_lags if fallback is not None else 1
+    n_phi_max = max(model.n_regressor, fallback.n_regressor if fallback is not None else 0)
+    a_d = s.setpoint_filter ** s.horizon
+    b = s.mismatch_filter
+    inner = "\n".join(
+        f"  inner[{i}] = -KP[{i}] * dev[{q}] - KD[{i}] * dev[{dq}];"
+        for i, (q, dq) in enumerate(zip(q_idx, dq_idx, strict=True))) if q_idx else \
+        f"  for (i = 0; i < {nu}; ++i) inner[i] = 0;"
+    fb = fallback is not None
+    body = f"""
+static int {name}_kernel(const double** arg, double** res) {{
+  const double *y = arg[0], *r = arg[1], *ff = arg[2], *x = arg[3];
+  double *tau = res[0], *xn = res[1], *vout = res[2], *ypred = res[3], *flags = res[4];
+  double dev[{ny}], ef[{ny}], eff[{ny}], target[{ny}], dvm[{nu}], dvf[{nu}], step[{nu}];
+  double vtry[{nu}], vtr[{nu}], vnew[{nu}], inner[{nu}], phi[{n_phi_max}];
+  double yn[{ny}], yfn[{ny}];
+  const double *hist = x + {o_hist}, *histf = x + {o_histf}, *upast = x + {o_up};
+  const double *vp = upast;
+  double hold = x[{o_hold}], episodes = x[{o_hold + 1}];
+  int i, okm, okf = 0, use_main, use_back, at_bound = 0, at_limit = 0;
+  for (i = 0; i < {ny}; ++i) {{
+    dev[i] = y[i] - r[i];
+    ef[i] = {_c(b)} * x[{o_ef} + i] + {_c(1 - b)} * (dev[i] - hist[i]);
+    {f"eff[i] = {_c(b)} * x[{o_eff} + i] + {_c(1 - b)} * (dev[i] - histf[i]);" if fb else
+     "eff[i] = 0;"}
+    target[i] = {_c(a_d)} * x[{o_yd} + i];
+  }}
+  okm = m_branch(hist, upast, vp, ef, target, dvm);
+  use_main = okm && hold <= 0;
+  {"okf = f_branch(histf, upast, vp, eff, target, dvf);" if fb else ""}
+  use_back = !use_main && okf;
+{inner}
+  for (i = 0; i < {nu}; ++i) {{
+    step[i] = use_main ? dvm[i] : (use_back ? dvf[i] : -vp[i]);
+    step[i] = fmin(fmax(step[i], -RATE[i]), RATE[i]);
+    vtry[i] = vp[i] + step[i];
+    vtr[i] = {"fmin(fmax(vtry[i], -BOUND[i]), BOUND[i])" if s.guard else "vtry[i]"};
+    vnew[i] = fmin(fmax(vtr[i], -LIMIT[i] - ff[i] - inner[i]), LIMIT[i] - ff[i] - inner[i]);
+    tau[i] = fmin(fmax(ff[i] + inner[i] + vnew[i], -LIMIT[i]), LIMIT[i]) - ff[i];
+    vout[i] = vnew[i];
+    at_bound |= fabs(vtr[i] - vtry[i]) > 0;
+    at_limit |= fabs(vnew[i] - vtr[i]) > 0;
+  }}
+  for (i = 0; i < {na * ny}; ++i) phi[i] = hist[i];
+  for (i = 0; i < {nu}; ++i) phi[{na * ny} + i] = vnew[i];
+  for (i = 0; i < {(nb - 1) * nu}; ++i) phi[{na * ny + nu} + i] = upast[i];
+  m_eval(phi, 0, yn, 0, 0);
+  {f'''for (i = 0; i < {naf * ny}; ++i) phi[i] = histf[i];
+  for (i = 0; i < {nu}; ++i) phi[{naf * ny} + i] = vnew[i];
+  for (i = 0; i < {(nbf - 1) * nu}; ++i) phi[{naf * ny + nu} + i] = upast[i];
+  f_eval(phi, 0, yfn, 0, 0);''' if fb else ""}
+  {{
+    /* next state: network history, fallback history, inputs, filters, setpoint, counters */
+    int reseed = {"!use_main" if fb and naf == na else "0"};
+    for (i = 0; i < {ny}; ++i) xn[i] = reseed ? yfn[i] : yn[i];
+    for (i = {ny}; i < {na * ny}; ++i) xn[i] = reseed ? histf[i - {ny}] : hist[i - {ny}];
+    {f'''for (i = 0; i < {ny}; ++i) xn[{o_histf} + i] = yfn[i];
+    for (i = {ny}; i < {naf * ny}; ++i) xn[{o_histf} + i] = histf[i - {ny}];''' if fb else ""}
+    for (i = 0; i < {nu}; ++i) xn[{o_up} + i] = vnew[i];
+    for (i = {nu}; i < {nb * nu}; ++i) xn[{o_up} + i] = upast[i - {nu}];
+    for (i = 0; i < {ny}; ++i) xn[{o_ef} + i] = {"use_main ? ef[i] : eff[i]" if fb else "ef[i]"};
+    {f"for (i = 0; i < {ny}; ++i) xn[{o_eff} + i] = eff[i];" if fb else ""}
+    for (i = 0; i < {ny}; ++i) xn[{o_yd} + i] = {_c(s.setpoint_filter)} * x[{o_yd} + i];
+    {{
+      int distrusted = !okm, first = distrusted && hold <= 0;
+      double ep = episodes + (first ? 1 : 0), e1 = fmin(fmax(ep - 1, 0), 6);
+      double length = {_c(float(s.fallback_hold))} * ldexp(1.0, (int) floor(e1));
+      xn[{o_hold}] = distrusted ? length : fmax(hold - 1, 0);
+      xn[{o_hold + 1}] = ep;
+      flags[0] = distrusted;
+    }}
+    for (i = 0; i < {ny}; ++i) ypred[i] = xn[i];
+  }}
+  flags[1] = use_back;
+  flags[2] = !(use_main || use_back);
+  flags[3] = at_bound;
+  flags[4] = at_limit;
+  return 0;
+}}
+"""
+    assert n_state == o_hold + 2
+    return "".join(parts) + body
+
+
+def kernel_library_source(model: Narx, settings: ControllerSettings, fallback: Narx | None,
+                          function: ca.Function, name: str) -> str:
+    """A complete C file: CasADi's interface for ``function``'s signature (names, sparsity,
+    work) around the loop kernel."""
+    y, r, ff, x = (ca.SX.sym(n, function.nnz_in(i)) for i, n in enumerate(
+        ("y", "r", "tau_ff", "state")))
+    outs = [ca.SX.zeros(function.nnz_out(i), 1) for i in range(function.n_out())]
+    shell = ca.Function(name, [y, r, ff, x], outs, function.name_in(), function.name_out())
+    gen = ca.CodeGenerator(f"{name}.c", {"with_header": False, "verbose": False})
+    gen.add(shell)
+    code = gen.dump()
+    call = "  return casadi_f0(arg, res, iw, w, mem);"
+    if call not in code:
+        raise RuntimeError("unexpected CasADi code layout: cannot attach the loop kernel")
+    code = code.replace(call, f"  return {name}_kernel(arg, res);")
+    marker = "static int casadi_f0("
+    kernel = kernel_source(model, settings, fallback, name)
+    return code.replace(marker, kernel + "\n" + marker, 1)
+
+
+__all__ = ["kernel_library_source", "kernel_source"]

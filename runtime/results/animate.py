@@ -1,0 +1,183 @@
+"""An animation of a simulated arm, each journal's orbit magnified in an inset.
+
+The play of a clearance joint is micrometres on an arm of decimetres: drawn to scale it is
+invisible. So the arm is drawn to scale, and beside it one inset per clearance joint shows
+the journal centre inside its clearance circle in micrometres, with a trail of the recent
+orbit and every impact onset so far, so a person can watch the journal rattle and settle.
+
+Written through matplotlib's animation writers: Pillow for ``.gif`` (always available),
+ffmpeg for ``.mp4`` (only where an ``ffmpeg`` executable is on PATH). The file is written
+under a temporary name and renamed when complete.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointplay.common.errors import DescriptionError
+from jointplay.common.files import atomic_path
+from jointplay.results.records import SimulationResult
+from jointplay.results.write import check_output_path
+
+FORMATS = (".gif", ".mp4")
+FPS = 25
+MAX_FRAMES = 250  # 10 s at 25 frames per second; longer runs skip samples between frames
+DPI = 80
+TRAIL = 0.05  # the orbit trail covers this fraction of the run
+
+
+def check_animation_path(path: str | Path, flag: str = "--animate") -> Path:
+    """Refuse, before anything runs, a file the animation could not be written to."""
+    path = check_output_path(path, flag)
+    if path.suffix.lower() not in FORMATS:
+        raise DescriptionError(flag, f"must end in .gif or .mp4, got {path.name!r}", None)
+    if path.suffix.lower() == ".mp4":
+        from matplotlib import animation
+
+        if not animation.writers.is_available("ffmpeg"):
+            raise DescriptionError(flag, "writing .mp4 needs the ffmpeg program, which is not "
+                                   "on PATH; install ffmpeg or write a .gif", None)
+    return path
+
+
+def arm_points(result: SimulationResult) -> np.ndarray:
+    """(N, links + 1, 2) m: the base, then the end of every link, at every output sample.
+
+    Kinematics as derived (see jointplay.derive.symbolic): absolute angles are sums of the
+    relative joint angles (a coordinate q_i, or a locked joint's joint{i}.angle); link i
+    starts at the previous link's end plus the eccentricity e_i of a clearance joint.
+    """
+    names = result.coordinate_names
+    params = dict(zip(result.parameter_names, np.asarray(result.parameters, dtype=float),
+                      strict=True))
+    n_links = sum(1 for name in params if name.startswith("link") and name.endswith(".length"))
+    n = result.n_samples
+    theta = np.zeros(n)
+    points = np.zeros((n, n_links + 1, 2))
+    for i in range(1, n_links + 1):
+        if f"q{i}" in names:
+            theta = theta + result.q[:, names.index(f"q{i}")]
+        else:
+            theta = theta + params.get(f"joint{i}.angle", 0.0)
+        start = points[:, i - 1].copy()
+        if f"ex{i}" in names:
+            start += result.q[:, [names.index(f"ex{i}"), names.index(f"ey{i}")]]
+        length = params[f"link{i}.length"]
+        points[:, i] = start + length * np.stack([np.cos(theta), np.sin(theta)], axis=1)
+    return points
+
+
+def frame_indices(n_samples: int, max_frames: int = MAX_FRAMES) -> np.ndarray:
+    """Output samples shown as frames: all of them, or evenly spaced ones up to the limit."""
+    count = min(n_samples, max_frames)
+    return np.unique(np.round(np.linspace(0, n_samples - 1, count)).astype(int))
+
+
+def _figure(result: SimulationResult, points: np.ndarray) -> tuple[Any, dict[str, Any]]:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    nc = len(result.clearance_joints)
+    fig = Figure(figsize=(7.5 + 2.6 * (nc > 0), 6.0), dpi=DPI, layout="constrained")
+    FigureCanvasAgg(fig)
+    grid = fig.add_gridspec(max(nc, 1), 2, width_ratios=(3.0, 1.15 if nc else 0.01))
+    arm = fig.add_subplot(grid[:, 0])
+    reach = 1.08 * float(np.max(np.linalg.norm(points, axis=2)))
+    arm.set_xlim(-reach, reach)
+    arm.set_ylim(-reach, reach)
+    arm.set_aspect("equal")
+    arm.grid(True, alpha=0.3)
+    arm.set_xlabel("x [m]")
+    arm.set_ylabel("y [m]")
+    tip_path = result.tip_position
+    arm.plot(tip_path[:, 0], tip_path[:, 1], color="0.75", lw=0.8, zorder=0, label="tip path")
+    (links,) = arm.plot([], [], "-o", color="0.2", lw=3.0, ms=5, mfc="w", zorder=2,
+                        label="links")
+    markers = []
+    insets = []
+    for k, joint in enumerate(result.clearance_joints):
+        color = f"C{(k * 2 + 3) % 10}"
+        (marker,) = arm.plot([], [], "o", ms=13, mfc="none", mec=color, mew=2.2, zorder=3,
+                             label=f"joint {joint} (clearance)")
+        markers.append(marker)
+        ax = fig.add_subplot(grid[k, 1])
+        c_um = 1e6 * float(result.radial_clearance[k])
+        angle = np.linspace(0.0, 2.0 * np.pi, 181)
+        ax.plot(c_um * np.cos(angle), c_um * np.sin(angle), color="0.3", lw=1.2)
+        lim = 1.25 * max(c_um, 1e6 * float(np.max(np.linalg.norm(result.eccentricity[:, k],
+                                                                  axis=1))))
+        ax.set_xlim(-lim, lim)
+        ax.set_ylim(-lim, lim)
+        ax.set_aspect("equal")
+        ax.tick_params(labelsize=7)
+        ax.set_title(f"joint {joint}: journal centre [µm]\nc = {c_um:.3g} µm", fontsize=8,
+                     color=color)
+        for side in ax.spines.values():
+            side.set_edgecolor(color)
+            side.set_linewidth(1.8)
+        (trail,) = ax.plot([], [], color="C0", lw=0.8, alpha=0.8)
+        (hits,) = ax.plot([], [], "x", color="C3", ms=4, mew=1.0)
+        (now,) = ax.plot([], [], "o", color=color, ms=6, mec="k")
+        insets.append((trail, hits, now))
+    arm.legend(loc="upper left", fontsize=8)
+    title = arm.set_title("")
+    return fig, {"links": links, "markers": markers, "insets": insets, "title": title}
+
+
+def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS,
+                   max_frames: int = MAX_FRAMES, quiet: bool = True) -> Path:
+    """Write the animation of ``result`` to ``path`` (.gif or .mp4); return the path."""
+    from matplotlib import animation
+    from tqdm import tqdm
+
+    path = check_animation_path(path)
+    points = arm_points(result)
+    frames = frame_indices(result.n_samples, max_frames)
+    fig, art = _figure(result, points)
+    t = result.t
+    span = float(t[-1] - t[0]) if t.size > 1 else 1.0
+    speed = (span / max(len(frames) - 1, 1)) * fps  # simulated seconds per video second
+    joints = np.asarray(result.impacts.joint)
+    um = 1e6
+
+    def draw(i: int) -> list[Any]:
+        art["links"].set_data(points[i, :, 0], points[i, :, 1])
+        for k, joint in enumerate(result.clearance_joints):
+            at = points[i, joint - 1]  # the bearing centre: the end of the previous link
+            art["markers"][k].set_data([at[0]], [at[1]])
+            trail, hits, now = art["insets"][k]
+            first = int(np.searchsorted(t, t[i] - TRAIL * span))
+            e = um * result.eccentricity[first:i + 1, k]
+            trail.set_data(e[:, 0], e[:, 1])
+            seen = (joints == joint) & (result.impacts.time <= t[i])
+            onset = um * np.asarray(result.impacts.eccentricity)[seen].reshape(-1, 2)
+            hits.set_data(onset[:, 0], onset[:, 1])
+            now.set_data([e[-1, 0]], [e[-1, 1]])
+        art["title"].set_text(f"{result.scene_name}: t = {t[i]:.4f} s "
+                              f"(played at {speed:.3g} x real time)")
+        return [art["links"], *art["markers"]]
+
+    # Lay the figure out once: the constrained layout would be solved again on every frame.
+    draw(int(frames[0]))
+    fig.canvas.draw()
+    fig.set_layout_engine("none")
+    if path.suffix.lower() == ".gif":
+        writer: Any = animation.PillowWriter(fps=fps)
+    else:
+        writer = animation.FFMpegWriter(fps=fps, codec="libx264",
+                                        extra_args=["-pix_fmt", "yuv420p"])
+    # The writer directly, not FuncAnimation: that draws each frame twice more than needed.
+    with tqdm(total=len(frames), disable=quiet, unit="frame", desc="animation",
+              dynamic_ncols=True) as bar, atomic_path(path, suffix=f".part{path.suffix}") as tmp, \
+            writer.saving(fig, str(tmp), DPI):
+        for i in frames:
+            draw(int(i))
+            writer.grab_frame()
+            bar.update(1)
+    return path
+
+
+__all__ = ["animate_result", "arm_points", "check_animation_path", "frame_indices"]

@@ -1,0 +1,145 @@
+"""What a simulation returns: every quantity as numpy arrays over the output times.
+
+Arrays are float64, indexed by output sample first. ``nc`` is the number of clearance joints
+(``clearance_joints`` gives their 1-based joint numbers, in the order of the second axis).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+# Columns of the contact-phase table beyond the four an impact always had, with their units.
+PHASE_FIELDS: tuple[tuple[str, str, str], ...] = (
+    ("onset_angle", "rad", "position of the onset on the bearing, atan2(ey, ex)"),
+    ("peak_force", "N", "largest normal force of the phase (located on the dense output)"),
+    ("peak_force_time", "s", "when it occurs"),
+    ("max_penetration", "m", "largest penetration of the phase (d(delta)/dt = 0, located)"),
+    ("max_penetration_time", "s", "when it occurs"),
+    ("separation_time", "s", "end of the phase (located); NaN while still in contact at the end"),
+    ("exit_speed", "m/s", "separation speed -d(delta)/dt at separation; NaN without separation"),
+    ("duration", "s", "separation_time - time, or the run's end - time without separation"),
+    ("restitution", "1", "effective restitution exit_speed / speed; NaN without separation"),
+    ("impulse", "N s", "integral of the normal force over the phase"),
+    ("damping_energy", "J", "energy taken out by the hysteresis damping during the phase"),
+    ("friction_energy", "J", "energy taken out by friction during the phase"),
+    ("separated", "bool", "True: ended in separation; False: still in continuous contact"),
+)
+
+
+def _empty(n: int = 0) -> np.ndarray:
+    return np.full(n, np.nan)
+
+
+@dataclass(frozen=True)
+class Impacts:
+    """One row per contact phase (an impact and what follows until separation), onset order.
+
+    Every time and extremum is located (events on the penetration and its rate, maxima on the
+    integrator's dense output), never read off the output samples. ``time``, ``joint``,
+    ``speed`` and ``eccentricity`` describe the onset; the rest (see :data:`PHASE_FIELDS`)
+    describe the phase. Runs with a fixed-step method fill only the onset columns (the rest
+    NaN); see the README.
+    """
+
+    time: np.ndarray  # (m,) s, onset of contact located by event detection
+    joint: np.ndarray  # (m,) int, 1-based joint number
+    speed: np.ndarray  # (m,) m/s, normal approach speed d(delta)/dt at onset (before flooring)
+    eccentricity: np.ndarray  # (m, 2) m, journal centre minus bearing centre at onset
+    onset_angle: np.ndarray = field(default_factory=_empty)
+    peak_force: np.ndarray = field(default_factory=_empty)
+    peak_force_time: np.ndarray = field(default_factory=_empty)
+    max_penetration: np.ndarray = field(default_factory=_empty)
+    max_penetration_time: np.ndarray = field(default_factory=_empty)
+    separation_time: np.ndarray = field(default_factory=_empty)
+    exit_speed: np.ndarray = field(default_factory=_empty)
+    duration: np.ndarray = field(default_factory=_empty)
+    restitution: np.ndarray = field(default_factory=_empty)
+    impulse: np.ndarray = field(default_factory=_empty)
+    damping_energy: np.ndarray = field(default_factory=_empty)
+    friction_energy: np.ndarray = field(default_factory=_empty)
+    separated: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+
+    def __post_init__(self) -> None:
+        # Tables built from the four onset columns alone get NaN phase columns of their length.
+        m = int(np.asarray(self.time).size)
+        for name, _, _ in PHASE_FIELDS:
+            value = np.asarray(getattr(self, name))
+            if value.size != m:
+                fill = np.zeros(m, dtype=bool) if name == "separated" else _empty(m)
+                object.__setattr__(self, name, fill)
+        if np.asarray(self.eccentricity).size == 0:
+            object.__setattr__(self, "eccentricity", np.zeros((m, 2)) if m == 0
+                               else np.full((m, 2), np.nan))
+
+    def __len__(self) -> int:
+        return int(self.time.size)
+
+    def for_joint(self, joint: int) -> Impacts:
+        """The rows of one clearance joint (1-based joint number)."""
+        rows = np.asarray(self.joint) == joint
+        return Impacts(**{name: np.asarray(getattr(self, name))[rows]
+                          for name in self.column_names()})
+
+    @staticmethod
+    def column_names() -> tuple[str, ...]:
+        return ("time", "joint", "speed", "eccentricity",
+                *(name for name, _, _ in PHASE_FIELDS))
+
+    def to_pandas(self) -> Any:
+        """A ``pandas.DataFrame``, one row per phase (see
+        :func:`jointplay.results.export.impacts_frame`)."""
+        from jointplay.results.export import impacts_frame
+
+        return impacts_frame(self)
+
+
+@dataclass(frozen=True)
+class SimulationResult:
+    """A simulated trajectory and everything derived from it (SI units throughout)."""
+
+    scene_name: str
+    integrator: str  # "cvodes", "idas", "rk4" or "radau"
+    t: np.ndarray  # (N,) s
+    coordinate_names: list[str]  # e.g. ["q2", "q3", "ex2", "ey2", "ex3", "ey3"]
+    q: np.ndarray  # (N, n) coordinates: rad for angles, m for eccentricities
+    u: np.ndarray  # (N, n) their time derivatives
+    udot: np.ndarray  # (N, n) accelerations (from the model at each output sample)
+    tau: np.ndarray  # (N, ntau) N m, drive torque of each moving joint
+    torque_joints: list[int]  # 1-based joints the columns of tau belong to
+    tip_position: np.ndarray  # (N, 2) m, end effector (tip of the last link, payload)
+    tip_velocity: np.ndarray  # (N, 2) m/s
+    tip_acceleration: np.ndarray  # (N, 2) m/s^2
+    clearance_joints: list[int]
+    radial_clearance: np.ndarray  # (nc,) m, Rb - Rj of each clearance joint
+    eccentricity: np.ndarray  # (N, nc, 2) m, journal centre minus bearing centre
+    penetration: np.ndarray  # (N, nc) m, |e| - c (negative: no contact)
+    penetration_rate: np.ndarray  # (N, nc) m/s
+    normal_force: np.ndarray  # (N, nc) N, >= 0
+    friction_force: np.ndarray  # (N, nc) N, on the journal along the tangent
+    contact_force: np.ndarray  # (N, nc, 2) N, total contact force on the journal, x and y
+    sliding_speed: np.ndarray  # (N, nc) m/s
+    impacts: Impacts
+    # Energy (J), each (N,): kinetic, gravity (potential), contact (elastic potential), total
+    # (their sum), drive_work (work done by the drive torques since t0), dissipated (by contact
+    # damping and friction since t0), and balance = total - total[0] - drive_work + dissipated,
+    # which is zero for an exact solution.
+    energy: dict[str, np.ndarray]
+    parameter_names: list[str]
+    parameters: np.ndarray  # the parameter vector the run used
+    stats: dict[str, Any]  # solver statistics: steps, rhs / jacobian evaluations, events, wall time
+    metadata: dict[str, Any] = field(default_factory=dict)  # scene text, versions, model hash
+    ideal: SimulationResult | None = None  # the same scene with ideal joints (--compare-ideal)
+
+    @property
+    def n_samples(self) -> int:
+        return int(self.t.size)
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` with dimensions time, joint, coordinate (see
+        :func:`jointplay.results.export.result_dataset`)."""
+        from jointplay.results.export import result_dataset
+
+        return result_dataset(self)
