@@ -48,7 +48,8 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from jointplay.bench import cpu_name, per_call_seconds
+from jointplay.bench import cpu_name
+from jointplay.common.timing import per_call_seconds
 
 PAPER = "paper"
 STRUCTURES = ("clearance", "ideal")

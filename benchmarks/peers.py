@@ -67,7 +67,6 @@ from jointplay.bench import (
     final_state_error,
     machine_facts,
     markdown_table,
-    per_call_seconds,
     prepare_out_dir,
     run_counts,
     state_scale,
@@ -76,6 +75,7 @@ from jointplay.bench import (
     to_csv,
 )
 from jointplay.common.files import atomic_write_text
+from jointplay.common.timing import per_call_seconds
 
 REFERENCE_RTOL = 1e-10
 JOINTPLAY_RTOLS = (1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 1e-9)

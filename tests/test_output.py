@@ -530,13 +530,13 @@ def test_contact_timeline_marks_located_peaks_or_says_not_located(
     import jointplay.results.plots as plots
 
     figures: list[Any] = []
-    original = plots._save
+    original = plots.save
 
     def keep(fig: Any, path: Path) -> Path:
         figures.append(fig)
         return original(fig, path)
 
-    monkeypatch.setattr(plots, "_save", keep)
+    monkeypatch.setattr(plots, "save", keep)
     plot_contact_timeline(result, 0, tmp_path / "a.png")
     onsets = result.impacts
     bare = dataclasses.replace(result, integrator="rk4", impacts=Impacts(

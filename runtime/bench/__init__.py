@@ -39,7 +39,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -47,12 +47,11 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from jointplay.common.errors import DescriptionError, SimulationError
-from jointplay.common.files import atomic_path, atomic_write_text
+from jointplay.common.figures import figure, save
+from jointplay.common.files import atomic_write_text
 from jointplay.scene.definition import ADAPTIVE
 
 if TYPE_CHECKING:
-    from matplotlib.figure import Figure
-
     from jointplay.results.records import SimulationResult
     from jointplay.scene.definition import Scene
     from jointplay.store.model import Model
@@ -229,37 +228,6 @@ def reference_solution(scene: Scene, model: Model, *, rtol: float = REFERENCE_RT
                      agreement=all_errors(second.result, ref.result))
 
 
-def per_call_seconds(fn: Callable[[], Any], repeats: int = 7, batch_s: float = 0.05) -> float:
-    """Median seconds per call over ``repeats`` batches sized to take about ``batch_s``
-    (batch size calibrated first; the garbage collector off while timing)."""
-    import gc
-
-    fn()
-    number = 1
-    while True:
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fn()
-        elapsed = time.perf_counter() - t0
-        if elapsed >= batch_s / 4 or number >= 1 << 22:
-            break
-        number *= 4
-    number = max(1, int(number * batch_s / max(elapsed, 1e-9)))
-    samples = []
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        for _ in range(repeats):
-            t0 = time.perf_counter()
-            for _ in range(number):
-                fn()
-            samples.append((time.perf_counter() - t0) / number)
-    finally:
-        if enabled:
-            gc.enable()
-    return statistics.median(samples)
-
-
 # ---- work-precision -----------------------------------------------------------------------
 
 WP_COLUMNS: list[tuple[str, str, str]] = [
@@ -353,7 +321,7 @@ def work_precision(scene: Scene, model: Model, *, methods: Sequence[str] = DEFAU
 
 
 def _plot_work_precision(wp: WorkPrecision, path: Path) -> Path:
-    fig, axes = _figure(2, 2, 10.0, 7.5)
+    fig, axes = figure(2, 2, 10.0, 7.5)
     markers = {"bdf": "*", "cvodes": "o", "idas": "s", "rk4": "^", "radau": "D"}
     for ax, key in zip(axes.ravel(), ERROR_KEYS, strict=True):
         for r in wp.rows:
@@ -387,7 +355,7 @@ def _plot_work_precision(wp: WorkPrecision, path: Path) -> Path:
     axes[0, 0].legend(fontsize=8)
     fig.suptitle(f"Work-precision: {wp.scene.name}, {wp.scene.run.t_end:g} s; reference "
                  f"{wp.reference.label}", fontsize=10)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def write_work_precision(wp: WorkPrecision, out: Path, command: str = "") -> list[Path]:
@@ -583,7 +551,7 @@ def surrogate_row(scene: Scene, model_dir: Path | None, reference: SimulationRes
 
 
 def _plot_fidelity(fid: Fidelity, path: Path) -> Path:
-    fig, axes = _figure(1, 3, 13.0, 4.2)
+    fig, axes = figure(1, 3, 13.0, 4.2)
     for ax, (key, _, unit) in zip(axes[0], TIP_ERRORS, strict=True):
         for i, row in enumerate(r for r in fid.rows if r["status"] == "ok"):
             err = row[f"err_{key}"]
@@ -606,7 +574,7 @@ def _plot_fidelity(fid: Fidelity, path: Path) -> Path:
         fig.legend(handles, labels, loc="outside lower center", ncol=2, fontsize=7)
     fig.suptitle(f"Fidelity ladder: {fid.scene.name}, {fid.scene.run.t_end:g} s; errors "
                  f"against the full model at {fid.reference_label}", fontsize=10)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def write_fidelity(fid: Fidelity, out: Path, command: str = "") -> list[Path]:
@@ -756,7 +724,7 @@ def scaling(links: Sequence[int], structures: Sequence[str] = STRUCTURES, *,
 
 
 def _plot_scaling(rows: list[dict[str, Any]], path: Path, sim_time: float) -> Path:
-    fig, axes = _figure(1, 2, 11.0, 4.2)
+    fig, axes = figure(1, 2, 11.0, 4.2)
     styles = {"clearance": "-", "ideal": "--"}
     for structure in dict.fromkeys(r["structure"] for r in rows):
         ok = [r for r in rows if r["structure"] == structure and "build_s" in r]
@@ -780,7 +748,7 @@ def _plot_scaling(rows: list[dict[str, Any]], path: Path, sim_time: float) -> Pa
         ax.set_xlabel("links k")
         ax.grid(True, which="both", alpha=0.25)
         ax.legend(fontsize=7)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def write_scaling(rows: list[dict[str, Any]], out: Path, *, sim_time: float,
@@ -840,22 +808,6 @@ def to_csv(rows: Sequence[dict[str, Any]], keys: Sequence[str]) -> str:
         writer.writerow({k: ("" if v is None else repr(v) if isinstance(v, float) else v)
                          for k, v in row.items() if k in keys})
     return buf.getvalue()
-
-
-def _figure(rows: int, cols: int, width: float, height: float) -> tuple[Figure, Any]:
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(width, height), layout="constrained")
-    FigureCanvasAgg(fig)
-    axes = fig.subplots(rows, cols, squeeze=False)
-    return fig, axes
-
-
-def _save(fig: Figure, path: Path) -> Path:
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, format="png", dpi=130)
-    return path
 
 
 def cpu_name() -> str:

@@ -25,6 +25,7 @@ import numpy as np
 
 from jointplay.common import interrupts
 from jointplay.common.errors import DescriptionError, JointplayError
+from jointplay.common.timing import per_call_seconds
 from jointplay.robot.description import Robot, load_robot, robot_from_flags
 
 EXIT_BAD_INPUT = 2
@@ -115,16 +116,6 @@ def cmd_inspect(args: argparse.Namespace) -> int:
     return 0
 
 
-def _per_call_us(fast: Any, repeat: int = 5, number: int = 20000) -> float:
-    best = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fast.trigger()
-        best.append((time.perf_counter() - t0) / number)
-    return float(np.median(best) * 1e6)
-
-
 def cmd_build(args: argparse.Namespace) -> int:
     robot = _robot_from_args(args)
     from jointplay.store.lookup import generated_folder
@@ -164,8 +155,9 @@ def cmd_build(args: argparse.Namespace) -> int:
     for fast, args_ in ((fd, (x, tau, p, np.zeros(len(model.clearance_joints)))),
                         (jac, (x, tau, p, np.zeros(len(model.clearance_joints)), []))):
         fast(*args_)
-    print(f"  per call (compiled, buffer path): forward_dynamics {_per_call_us(fd):.2f} us, "
-          f"jac_forward_dynamics {_per_call_us(jac):.2f} us")
+    fd_us, jac_us = (1e6 * per_call_seconds(f.trigger) for f in (fd, jac))
+    print(f"  per call (compiled, buffer path): forward_dynamics {fd_us:.2f} us, "
+          f"jac_forward_dynamics {jac_us:.2f} us")
     return 0
 
 

@@ -13,14 +13,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.files import atomic_path
+from jointplay.common.figures import figure, save
 from jointplay.results.records import Impacts, SimulationResult
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
-    from matplotlib.figure import Figure
 
-DPI = 130
 _XY = (("x", "C0"), ("y", "C3"))
 _PREFIXES = ((1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n"))
 
@@ -42,24 +40,6 @@ def plot_result(result: SimulationResult, folder: str | Path) -> list[Path]:
                                            folder / f"contact_timeline_joint{joint}.png"))
     paths.append(plot_energy(result, folder / "energy.png"))
     return paths
-
-
-def _figure(rows: int, cols: int, width: float, height: float,
-            sharex: bool = True) -> tuple[Figure, np.ndarray]:
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(width, height), layout="constrained")
-    FigureCanvasAgg(fig)
-    axes = fig.subplots(rows, cols, squeeze=False, sharex=sharex)
-    return fig, axes
-
-
-def _save(fig: Figure, path: Path) -> Path:
-    """Save through a temporary name so a reader never sees a half-written PNG."""
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, format="png", dpi=DPI)
-    return path
 
 
 def _scale(values: np.ndarray) -> tuple[float, str]:
@@ -84,7 +64,7 @@ def plot_end_effector(result: SimulationResult, path: Path) -> Path:
     ideal = result.ideal
     rows = (("displacement", "tip_position", "m"), ("velocity", "tip_velocity", "m/s"),
             ("acceleration", "tip_acceleration", "m/s²"))
-    fig, axes = _figure(3, 2 if ideal else 1, 12 if ideal else 7, 9.5)
+    fig, axes = figure(3, 2 if ideal else 1, 12 if ideal else 7, 9.5, sharex=True)
     for row, (label, name, unit) in enumerate(rows):
         ax = axes[row, 0]
         for c, (comp, color) in enumerate(_XY):
@@ -109,7 +89,7 @@ def plot_end_effector(result: SimulationResult, path: Path) -> Path:
         _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: end-effector response")
     fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=3)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def impact_positions(result: SimulationResult, k: int) -> np.ndarray:
@@ -124,7 +104,7 @@ def plot_orbit(result: SimulationResult, k: int, path: Path) -> Path:
     c = um * float(result.radial_clearance[k])
     ex, ey = um * result.eccentricity[:, k, 0], um * result.eccentricity[:, k, 1]
     hits = um * impact_positions(result, k)
-    fig, axes = _figure(1, 1, 8.5, 6.0, sharex=False)
+    fig, axes = figure(1, 1, 8.5, 6.0)
     ax = axes[0, 0]
     angle = np.linspace(0.0, 2.0 * np.pi, 361)
     ax.plot(c * np.cos(angle), c * np.sin(angle), color="0.3", lw=1.5,
@@ -144,7 +124,7 @@ def plot_orbit(result: SimulationResult, k: int, path: Path) -> Path:
     ax.set_ylabel("eccentricity $e_y$ [µm]")
     ax.set_title(f"{result.scene_name}: journal orbit, joint {joint}")
     ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_contact_force(result: SimulationResult, path: Path) -> Path:
@@ -152,7 +132,7 @@ def plot_contact_force(result: SimulationResult, path: Path) -> Path:
     from matplotlib.transforms import blended_transform_factory
 
     nc = len(result.clearance_joints)
-    fig, axes = _figure(nc, 1, 10, 1.0 + 2.6 * nc)
+    fig, axes = figure(nc, 1, 10, 1.0 + 2.6 * nc, sharex=True)
     for k, joint in enumerate(result.clearance_joints):
         ax: Any = axes[k, 0]
         ax.plot(result.t, result.normal_force[:, k], color="C0", lw=1.2, label="normal $F_n$")
@@ -167,12 +147,12 @@ def plot_contact_force(result: SimulationResult, path: Path) -> Path:
         _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: contact forces")
     fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=3)
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_energy(result: SimulationResult, path: Path) -> Path:
     """Energy components, and the balance residual that is zero for an exact solution."""
-    fig, axes = _figure(2, 1, 11, 7)
+    fig, axes = figure(2, 1, 11, 7, sharex=True)
     top, bottom = axes[0, 0], axes[1, 0]
     for name, values in result.energy.items():
         if name == "total":
@@ -191,7 +171,7 @@ def plot_energy(result: SimulationResult, path: Path) -> Path:
     for ax in (top, bottom):
         _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: energy")
-    return _save(fig, path)
+    return save(fig, path)
 
 
 # The first impact burst ends at the first gap between phases longer than this fraction of
@@ -240,7 +220,7 @@ def plot_contact_timeline(result: SimulationResult, k: int, path: Path) -> Path:
     step = float(np.median(np.diff(result.t))) if result.n_samples > 1 else 0.0
     peaks = rows.peak_force[np.isfinite(rows.peak_force)]
     factor, prefix = _scale(np.r_[force, peaks, 0.0])
-    fig, axes = _figure(2, 1, 11, 7.5, sharex=False)
+    fig, axes = figure(2, 1, 11, 7.5, sharex=False)
     full, zoom = axes[0, 0], axes[1, 0]
     sampled = f"sampled every {step * 1e3:.3g} ms" if step else "sampled"
     for ax in (full, zoom):
@@ -277,4 +257,4 @@ def plot_contact_timeline(result: SimulationResult, k: int, path: Path) -> Path:
         zoom.set_title("no impacts")
     fig.legend(*full.get_legend_handles_labels(), loc="outside lower center", ncols=4)
     fig.suptitle(f"{result.scene_name}: contact timeline, joint {joint}")
-    return _save(fig, path)
+    return save(fig, path)

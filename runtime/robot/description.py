@@ -11,7 +11,6 @@ runtime share the one definition of the parameter vector below.
 
 from __future__ import annotations
 
-import difflib
 import hashlib
 import json
 import math
@@ -22,6 +21,7 @@ from pathlib import Path
 from typing import Any, Literal
 
 from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
 
 JointKind = Literal["ideal", "clearance", "locked", "locked_clearance"]
 ContactLaw = Literal["lankarani-nikravesh", "hunt-crossley", "gonthier", "flores"]
@@ -394,8 +394,7 @@ def check_keys(table: Any, allowed: Sequence[str], where: str,
                                f"must be a table, got {type(table).__name__}", source)
     for key in table:
         if key not in allowed:
-            close = difflib.get_close_matches(key, allowed, n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else ""
+            hint = did_you_mean(key, allowed)
             prefix = f"{where}." if where else ""
             raise DescriptionError(f"{prefix}{key}",
                                    f"unknown key (allowed: {', '.join(allowed)}){hint}", source)
@@ -450,8 +449,7 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
                                    f"a joint has one kind, got {kind}; a locked joint with play "
                                    "is kind = \"locked_clearance\"")
         if kind not in JOINT_KINDS:
-            close = difflib.get_close_matches(str(kind), JOINT_KINDS, n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else ""
+            hint = did_you_mean(str(kind), JOINT_KINDS)
             raise DescriptionError(f"joints[{i}].kind",
                                    f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
         joints.append(Joint(**_numbers(raw, f"joints[{i}]")))
@@ -587,8 +585,7 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
     gravity = list(robot.gravity.vector)
     for name, value in values.items():
         if name not in known:
-            close = difflib.get_close_matches(name, sorted(known), n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else ""
+            hint = did_you_mean(name, sorted(known))
             raise DescriptionError(name, f"is not a parameter of this model{hint}")
         head, _, attr = name.partition(".")
         if head.startswith("link"):

@@ -21,7 +21,6 @@ compiled, and never executed: torque expressions go through the restricted parse
 
 from __future__ import annotations
 
-import difflib
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
@@ -30,6 +29,7 @@ from typing import Any
 
 from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
 from jointplay.robot.description import (
     Joint,
     JointKind,
@@ -136,8 +136,7 @@ def _validate_run(run: RunSettings, source: str | None) -> None:
     for name in ("t_end", "output_step", "rtol", "atol", "step"):
         _positive_number(getattr(run, name), f"run.{name}", source)
     if run.integrator not in INTEGRATORS:
-        close = difflib.get_close_matches(str(run.integrator), INTEGRATORS, n=1)
-        hint = f"; did you mean {close[0]!r}?" if close else ""
+        hint = did_you_mean(str(run.integrator), INTEGRATORS)
         raise _error("run.integrator", f"must be one of {', '.join(INTEGRATORS)}, got "
                      f"{run.integrator!r}{hint}", source)
     for name, low, high in (("t_end", 0.0, limits.MAX_T_END),

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import ast
 import csv
-import difflib
 import math
 import numbers
 from collections.abc import Callable, Mapping
@@ -28,6 +27,7 @@ import casadi as ca
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
 
 __all__ = [
     "FUNCTIONS",
@@ -476,9 +476,8 @@ class _Validator:
 
 def _suggest(name: str, known: list[str]) -> str:
     """A "did you mean" hint; case is ignored so that ``Pi`` or ``SIN`` find their match."""
-    by_lower = {k.lower(): k for k in reversed(known)}
-    close = difflib.get_close_matches(name.lower(), list(by_lower), n=1, cutoff=0.6)
-    return f" (did you mean {by_lower[close[0]]!r}?)" if close else ""
+    hint = did_you_mean(name, list(reversed(known)))
+    return f" ({hint[2:]})" if hint else ""
 
 
 def _check_constants(field: str, constants: Mapping[str, float],

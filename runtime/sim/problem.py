@@ -14,6 +14,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
+from jointplay.common.hints import did_you_mean
 from jointplay.scene.definition import Scene, ideal_counterpart
 from jointplay.store.model import Model
 
@@ -154,10 +155,8 @@ def _parameter_vector(model: Model, scene: Scene,
         vec = defaults.copy()
         for name, value in parameters.items():
             if name not in model.parameters:
-                import difflib
 
-                close = difflib.get_close_matches(name, model.parameters, n=1)
-                hint = f"; did you mean {close[0]!r}?" if close else ""
+                hint = did_you_mean(name, model.parameters)
                 raise KeyError(f"{name!r} is not a parameter of this model{hint}")
             vec[model.parameters.index(name)] = float(value)
         return vec

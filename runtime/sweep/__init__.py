@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import difflib
 import hashlib
 import itertools
 import json
@@ -43,6 +42,7 @@ import numpy as np
 
 from jointplay.common import interrupts, limits
 from jointplay.common.errors import DescriptionError, JointplayError, SimulationError
+from jointplay.common.hints import did_you_mean
 from jointplay.robot.description import (
     Robot,
     check_keys,
@@ -158,11 +158,6 @@ def _error(field_name: str, message: str, source: str | None) -> DescriptionErro
     return DescriptionError(field_name, message, source)
 
 
-def _hint(word: str, choices: Iterable[str]) -> str:
-    close = difflib.get_close_matches(word, list(choices), n=1)
-    return f"; did you mean {close[0]!r}?" if close else ""
-
-
 def _number(value: Any, where: str, source: str | None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise _error(where, f"must be a finite number, got {value!r}", source)
@@ -226,7 +221,7 @@ def _check_name(name: str, robot: Robot, source: str | None) -> None:
                      "an effect on changes the model's structure, which a sweep cannot do",
                      source)
     raise _error(where, "is not a parameter of the base scene's model"
-                 f"{_hint(name, known + aliases)}", source)
+                 f"{did_you_mean(name, known + aliases)}", source)
 
 
 def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None) -> Axis:
@@ -270,7 +265,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
         spacing = spec.get("spacing", "linear")
         if spacing not in SPACINGS:
             raise _error(f"{where}.spacing", f"must be one of {', '.join(SPACINGS)}, got "
-                         f"{spacing!r}{_hint(str(spacing), SPACINGS)}", source)
+                         f"{spacing!r}{did_you_mean(str(spacing), SPACINGS)}", source)
         if num > 1 and start == stop:
             raise _error(f"{where}.stop", f"the range is empty (start = stop = {start}); for "
                          "one value use values = [x] or num = 1", source)
@@ -285,7 +280,7 @@ def _axis(name: str, spec: Any, defaults: Mapping[str, Any], source: str | None)
     dist = spec["distribution"]
     if dist not in DISTRIBUTIONS:
         raise _error(f"{where}.distribution", f"must be one of {', '.join(DISTRIBUTIONS)}, "
-                     f"got {dist!r}{_hint(str(dist), DISTRIBUTIONS)}", source)
+                     f"got {dist!r}{did_you_mean(str(dist), DISTRIBUTIONS)}", source)
     params = DISTRIBUTIONS[dist]
     check_keys(spec, (*RANDOM_KEYS, *params), where, source)
     for key in params:
@@ -441,7 +436,7 @@ def sweep_from_dict(data: Mapping[str, Any], *, source: str | None = None,
     mode = data.get("mode", "product")
     if mode not in MODES:
         raise _error("mode", f"must be one of {', '.join(MODES)}, got {mode!r}"
-                     f"{_hint(str(mode), MODES)}", source)
+                     f"{did_you_mean(str(mode), MODES)}", source)
     defaults: dict[str, Any] = {"seed": _integer(data.get("seed", 0), "seed", source, 0)}
     if "count" in data:
         defaults["count"] = _integer(data["count"], "count", source, 1, MAX_CASES)
