@@ -34,6 +34,7 @@ from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.robot.description import Robot
 from jointplay.robot.robotio import robot_to_toml
+from jointplay.store.layout import Layout
 from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.store.stamp import provenance
 
@@ -205,9 +206,9 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
                                      _slot("acceleration", 2, "m/s^2", "tip acceleration")]},
     }
     layout = {
-        "structure": model.structure,
-        "coordinates": [vars(c) for c in model.coordinates],
-        "parameters": [vars(prm) for prm in model.parameters],
+        "structure": model.structure.as_dict(),
+        "coordinates": [c.as_dict() for c in model.coordinates],
+        "parameters": [prm.as_dict() for prm in model.parameters],
         "torque_joints": model.torque_joints,
         "clearance_joints": [c.index for c in model.clearance],
         "functions": functions,
@@ -331,8 +332,10 @@ def emit(robot: Robot) -> Emitted:
     for fn in functions:
         gen.add(fn)
     body = gen.dump()
-    prov = {**provenance(structure), "code_sha256": hashlib.sha256(body.encode()).hexdigest()}
-    layout = {"name": robot.name, "provenance": prov, **layout}
+    prov = {**provenance(structure.as_dict()),
+            "code_sha256": hashlib.sha256(body.encode()).hexdigest()}
+    # Through the runtime's own type: what is written is what the loader reads back.
+    layout = Layout.from_dict({"name": robot.name, "provenance": prov, **layout}).as_dict()
     source = header(prov, robot.name, layout) + body
     t2 = time.perf_counter()
     return Emitted(source=source, layout=layout,

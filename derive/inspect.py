@@ -53,9 +53,9 @@ def sections(model: SymbolicModel, simplify: bool = False) -> list[tuple[str, li
             ("delta", law.penetration, "penetration (contact while > 0)"),
             ("delta_dot", law.penetration_rate, "normal rate"),
             ("v_t", law.sliding_speed, "sliding speed of the contact points"),
-            ("x(ce)", law.damping_factor, f"damping factor, {model.structure['contact_law']}"),
+            ("x(ce)", law.damping_factor, f"damping factor, {model.structure.contact_law}"),
             ("F_n", law.normal_force, "normal force"),
-            ("c_d", law.friction_factor, f"friction correction, {model.structure['friction']}"),
+            ("c_d", law.friction_factor, f"friction correction, {model.structure.friction}"),
             (str(c.force_t), law.friction_force, "friction force on the journal"),
             (str(c.force_x), law.force_x, "contact force on the journal, x"),
             (str(c.force_y), law.force_y, "contact force on the journal, y"),
@@ -71,10 +71,10 @@ def render(model: SymbolicModel, fmt: str = "text", simplify: bool = False,
         raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
     parts: list[str] = []
     structure = model.structure
-    summary = (f"{structure['links']} links, joints {structure['joints']}, gravity "
-               f"{'on' if structure['gravity'] else 'off'}, contact law "
-               f"{structure['contact_law']}, friction {structure['friction']}, drive "
-               f"{'on' if structure['drive'] else 'off'}")
+    summary = (f"{structure.links} links, joints {list(structure.joints)}, gravity "
+               f"{'on' if structure.gravity else 'off'}, contact law "
+               f"{structure.contact_law}, friction {structure.friction}, drive "
+               f"{'on' if structure.drive else 'off'}")
     if fmt == "markdown":
         parts.append(f"# {title or 'jointplay model'}\n\n{summary}\n")
     elif fmt == "latex":

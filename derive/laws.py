@@ -42,6 +42,8 @@ from typing import Any
 
 import sympy as sp
 
+from jointplay.robot.structure import Structure
+
 # |e| is floored at this fraction of the radial clearance (see module docstring).
 ECCENTRICITY_FLOOR = sp.Rational(1, 10**6)
 # The friction direction v_t / max(|v_t|, v0, DIRECTION_FLOOR * v1) (see module docstring).
@@ -104,7 +106,7 @@ def friction_ramp(ramp: str, speed: sp.Expr, v0: sp.Expr, v1: sp.Expr) -> sp.Exp
 
 
 def contact_terms(
-    structure: dict[str, Any],
+    structure: Structure,
     joint: int,
     ex: Any,
     ey: Any,
@@ -131,17 +133,18 @@ def contact_terms(
     # Contact points: bearing centre + Rb n (on link i-1), journal centre + Rj n (on link i).
     sliding = tx * vx + ty * vy + omega_journal * rj - omega_bearing * rb
 
-    x_ce = damping_factor(structure["contact_law"], P("contact.restitution"))
+    if structure.contact_law is None:
+        raise ValueError("contact terms asked of a structure without clearance")
+    x_ce = damping_factor(structure.contact_law, P("contact.restitution"))
     approach = sp.Max(impact_speed, P("contact.impact_speed_floor"))
     normal = sp.Max(
         stiffness * penetration_power(penetration, n_exp) * (1 + x_ce * rate / approach), 0)
 
-    friction_kind = structure["friction"]
-    if friction_kind == "none":
+    if structure.friction_ramp is None:
         c_d: sp.Expr = sp.Integer(0)
         friction: sp.Expr = sp.Integer(0)
     else:
-        ramp = friction_kind.split("-", 1)[1]
+        ramp = structure.friction_ramp
         v0, v1 = P("friction.v0"), P("friction.v1")
         speed = sp.Abs(sliding)
         c_d = friction_ramp(ramp, speed, v0, v1)

@@ -30,14 +30,13 @@ import sympy as sp
 from sympy.physics import mechanics as me
 
 from jointplay.derive import laws
-from jointplay.robot.description import Parameter, parameter_layout
-
-
-@dataclass(frozen=True)
-class Coordinate:
-    name: str  # e.g. "q2", "ex3"
-    unit: str
-    doc: str
+from jointplay.robot.structure import (
+    Coordinate,
+    Parameter,
+    Structure,
+    coordinate_layout,
+    parameter_layout,
+)
 
 
 @dataclass
@@ -54,7 +53,7 @@ class ClearanceJointTerms:
 
 @dataclass
 class SymbolicModel:
-    structure: dict[str, Any]
+    structure: Structure
     coordinates: list[Coordinate]
     q: list[sp.Expr]  # dynamic symbols q(t)
     u: list[sp.Expr]  # dynamic symbols u(t) = dq/dt
@@ -79,12 +78,12 @@ class SymbolicModel:
         return sp.Add(*[c.law.potential for c in self.clearance])
 
 
-def derive(structure: dict[str, Any]) -> SymbolicModel:
+def derive(structure: Structure) -> SymbolicModel:
     """Derive the equations of motion for a robot structure (see ``Robot.structure()``)."""
     import time
 
     t0 = time.perf_counter()
-    kinds: list[str] = list(structure["joints"])
+    kinds: list[str] = list(structure.joints)
     params = parameter_layout(structure)
     psym = {p.name: sp.Symbol(p.symbol, real=True) for p in params}
 
@@ -98,30 +97,21 @@ def derive(structure: dict[str, Any]) -> SymbolicModel:
     angles: list[Any] = []
     angle_speeds: list[Any] = []
     ecc: dict[int, tuple[Any, Any, Any, Any]] = {}
-    coords_info: list[Coordinate] = []
-    ecc_info: list[Coordinate] = []
     for i, kind in enumerate(kinds, start=1):
         if kind in ("ideal", "clearance"):
             angles.append(me.dynamicsymbols(f"q{i}"))
             angle_speeds.append(me.dynamicsymbols(f"u{i}"))
-            coords_info.append(Coordinate(f"q{i}", "rad",
-                                          f"angle of link {i} relative to "
-                                          f"{f'link {i - 1}' if i > 1 else 'the ground'}"))
         if kind in ("clearance", "locked_clearance"):
             ex, ey = me.dynamicsymbols(f"e_x{i} e_y{i}")
             vx, vy = me.dynamicsymbols(f"v_x{i} v_y{i}")
             ecc[i] = (ex, ey, vx, vy)
-            ecc_info += [
-                Coordinate(f"ex{i}", "m", f"joint {i}: journal centre minus bearing centre, x"),
-                Coordinate(f"ey{i}", "m", f"joint {i}: journal centre minus bearing centre, y"),
-            ]
     q = list(angles) + [s for i in sorted(ecc) for s in ecc[i][:2]]
     u = list(angle_speeds) + [s for i in sorted(ecc) for s in ecc[i][2:]]
 
-    drive = bool(structure["drive"])
+    drive = structure.drive
     torques: list[sp.Symbol] = []
     torque_joints: list[int] = []
-    gravity = (P("gravity.x") * N.x + P("gravity.y") * N.y) if structure["gravity"] else None
+    gravity = (P("gravity.x") * N.x + P("gravity.y") * N.y) if structure.gravity else None
 
     bodies: list[Any] = []
     loads: list[tuple[Any, Any]] = []
@@ -207,8 +197,8 @@ def derive(structure: dict[str, Any]) -> SymbolicModel:
     t3 = time.perf_counter()
 
     return SymbolicModel(
-        structure=dict(structure),
-        coordinates=coords_info + ecc_info,
+        structure=structure,
+        coordinates=coordinate_layout(structure),
         q=q,
         u=u,
         parameters=params,

@@ -4,6 +4,7 @@ The flat public API. This package is the runtime: it loads and evaluates generat
 never imports sympy. Deriving new models lives in :mod:`jointplay.derive`.
 """
 
+from jointplay import _moved
 from jointplay.common.errors import (
     BuildError,
     DescriptionError,
@@ -18,7 +19,6 @@ from jointplay.robot.description import (
     Gravity,
     Joint,
     Link,
-    Parameter,
     Robot,
     load_robot,
     robot_from_dict,
@@ -27,6 +27,7 @@ from jointplay.robot.description import (
     with_parameters,
 )
 from jointplay.robot.robotio import robot_to_toml
+from jointplay.robot.structure import Coordinate, Parameter, Structure
 from jointplay.scene.definition import (
     RunSettings,
     Scene,
@@ -41,9 +42,12 @@ from jointplay.store.model import FastFunction, Model, load_model
 
 __version__ = "0.1.0"
 
+_moved.install()
+
 __all__ = [
     "BuildError",
     "Contact",
+    "Coordinate",
     "DescriptionError",
     "FastFunction",
     "Friction",
@@ -61,6 +65,7 @@ __all__ = [
     "SimulationError",
     "SimulationResult",
     "Stepper",
+    "Structure",
     "__version__",
     "cache_root",
     "compile_source",

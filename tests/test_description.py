@@ -18,7 +18,7 @@ PAPER = Path(jointplay.__file__).parent / "robots" / "paper_4dof.toml"
 
 def test_paper_robot_structure_and_parameters() -> None:
     robot = jointplay.default_robot()
-    assert robot.structure() == {
+    assert robot.structure().as_dict() == {
         "links": 4, "joints": ["locked", "clearance", "clearance", "locked"], "gravity": True,
         "contact_law": "lankarani-nikravesh", "friction": "coulomb-linear", "drive": True}
     assert robot.moving_joints == (2, 3)

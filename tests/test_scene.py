@@ -64,7 +64,7 @@ def test_a_scene_compiles_only_the_effects_it_asks_for(tmp_path: Path) -> None:
                        ROBOT + '[robot.friction]\nlaw = "none"\n')
     model = load_scene_model(load_scene(path))
     assert not [p for p in model.parameters if p.startswith("friction.")]
-    assert model.structure["friction"] == "none"
+    assert model.structure.friction == "none"
     assert model.coordinates == ["q1", "q2", "ex2", "ey2"]  # joint 1 ideal: no play terms
     with_friction = load_scene_model(load_scene(write_scene(tmp_path, "", ROBOT)))
     assert "friction.mu" in with_friction.parameters

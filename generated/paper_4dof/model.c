@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+0773b2a8f19d, casadi 3.8.2, sympy 1.14.0
- * input hash: e06b490033f389ebaede2b2019b92833002fefb5dd744afadabac6b7237cc64f
+ * generator: jointplay.derive 0.1.0+e8287ed6c8ec, casadi 3.8.2, sympy 1.14.0
+ * input hash: e502cecebb044c8d6eb4352ed4e51bbd1341282aa8943dc19ae929ebfbd1739e
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

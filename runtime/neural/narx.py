@@ -386,7 +386,7 @@ def robot_identity(robot: Any) -> dict[str, str]:
 
     values = dict(zip([p.name for p in robot.parameters()], robot.parameter_values(),
                       strict=True))
-    text = canonical_json({"structure": robot.structure(), "parameters": values})
+    text = canonical_json({"structure": robot.structure().as_dict(), "parameters": values})
     return {"name": robot.name, "structure_hash": robot.structure_hash(),
             "robot_hash": hashlib.sha256(text.encode()).hexdigest()}
 

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from jointplay.results.write import _ARRAYS, IMPACT_COLUMNS, coordinate_unit
+from jointplay.results.write import _ARRAYS, IMPACT_COLUMNS
 
 if TYPE_CHECKING:
     from jointplay.results.records import Impacts, SimulationResult
@@ -44,7 +44,7 @@ def result_dataset(result: SimulationResult) -> Any:
 
     units = {name: unit for name, unit, _ in _ARRAYS}
     docs = {name: doc for name, _, doc in _ARRAYS}
-    coord_units = [coordinate_unit(n) for n in result.coordinate_names]
+    coord_units = result.coordinate_units
     data_vars: dict[str, Any] = {}
     for name, dims in _DIMS.items():
         unit = units[name]

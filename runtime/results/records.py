@@ -137,6 +137,25 @@ class SimulationResult:
     def n_samples(self) -> int:
         return int(self.t.size)
 
+    @property
+    def eccentricity_columns(self) -> dict[int, tuple[int, int]]:
+        """Columns of (ex, ey) in q, u and udot for each clearance joint.
+
+        The model's coordinate order (:func:`jointplay.robot.structure.coordinate_layout`):
+        the joint angles first, then (ex, ey) joint by joint in ``clearance_joints`` order.
+        """
+        first = len(self.coordinate_names) - 2 * len(self.clearance_joints)
+        return {j: (first + 2 * k, first + 2 * k + 1) for k, j in enumerate(self.clearance_joints)}
+
+    @property
+    def coordinate_units(self) -> list[str]:
+        """SI unit of each coordinate: rad for angles, m for eccentricities."""
+        units = ["rad"] * len(self.coordinate_names)
+        for columns in self.eccentricity_columns.values():
+            for c in columns:
+                units[c] = "m"
+        return units
+
     def to_xarray(self) -> Any:
         """An ``xarray.Dataset`` with dimensions time, joint, coordinate (see
         :func:`jointplay.results.export.result_dataset`)."""

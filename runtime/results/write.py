@@ -69,11 +69,6 @@ _IMPACTS: list[tuple[str, str, str]] = [
 IMPACT_COLUMNS: tuple[tuple[str, str, str], ...] = (*_IMPACTS, *PHASE_FIELDS)
 
 
-def coordinate_unit(name: str) -> str:
-    """SI unit of a generalized coordinate from its name: eccentricities are lengths."""
-    return "m" if name.startswith(("ex", "ey")) else "rad"
-
-
 def check_output_path(path: str | Path, flag: str = "--out",
                       inputs: Iterable[str | Path | None] = ()) -> Path:
     """Fail early, before any work, if ``path`` cannot become a file.
@@ -198,7 +193,7 @@ def _write_group(group: Any, r: SimulationResult, compress: bool) -> None:
     group.attrs["scene_name"] = r.scene_name
     group.attrs["integrator"] = r.integrator
     group.attrs["coordinate_names"] = _strings(r.coordinate_names)
-    units = [coordinate_unit(n) for n in r.coordinate_names]
+    units = r.coordinate_units
     group.attrs["coordinate_units"] = _strings(units)
     group.attrs["clearance_joints"] = np.asarray(r.clearance_joints, dtype=np.int64)
     group.attrs["torque_joints"] = np.asarray(r.torque_joints, dtype=np.int64)
@@ -294,7 +289,7 @@ def csv_columns(result: SimulationResult) -> Iterator[tuple[str, np.ndarray]]:
 
 
 def _motion_columns(r: SimulationResult, prefix: str) -> Iterator[tuple[str, np.ndarray]]:
-    units = [coordinate_unit(n) for n in r.coordinate_names]
+    units = r.coordinate_units
     for i, (name, unit) in enumerate(zip(r.coordinate_names, units, strict=True)):
         yield f"{prefix}{name} [{unit}]", r.q[:, i]
     for i, (name, unit) in enumerate(zip(r.coordinate_names, units, strict=True)):

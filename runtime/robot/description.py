@@ -22,13 +22,18 @@ from typing import Any, Literal
 
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
+from jointplay.robot.structure import (
+    JOINT_KINDS,
+    JointKind,
+    Parameter,
+    Structure,
+    parameter_layout,
+)
 
-JointKind = Literal["ideal", "clearance", "locked", "locked_clearance"]
 ContactLaw = Literal["lankarani-nikravesh", "hunt-crossley", "gonthier", "flores"]
 FrictionLaw = Literal["none", "coulomb"]
 FrictionRamp = Literal["linear", "smooth"]
 
-JOINT_KINDS: tuple[str, ...] = ("ideal", "clearance", "locked", "locked_clearance")
 CONTACT_LAWS: tuple[str, ...] = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 FRICTION_LAWS: tuple[str, ...] = ("none", "coulomb")
 FRICTION_RAMPS: tuple[str, ...] = ("linear", "smooth")
@@ -141,47 +146,42 @@ class Robot:
         """1-based indices of joints with eccentricity coordinates."""
         return tuple(i + 1 for i, j in enumerate(self.joints) if j.has_clearance)
 
-    def structure(self) -> dict[str, Any]:
+    def structure(self) -> Structure:
         """The compile-time part: what changes the generated code. Numbers are absent."""
         has_clearance = bool(self.clearance_joints)
-        return {
-            "links": self.n_links,
-            "joints": [j.kind for j in self.joints],
-            "gravity": self.gravity.enabled,
-            "contact_law": self.contact.law if has_clearance else None,
-            "friction": (
-                f"{self.friction.law}-{self.friction.ramp}"
-                if has_clearance and self.friction.law != "none"
-                else "none"
-            ),
-            "drive": self.drive,
-        }
+        friction = has_clearance and self.friction.law != "none"
+        return Structure(
+            links=self.n_links,
+            joints=tuple(j.kind for j in self.joints),
+            gravity=self.gravity.enabled,
+            contact_law=self.contact.law if has_clearance else None,
+            friction_law=self.friction.law if friction else "none",
+            friction_ramp=self.friction.ramp if friction else None,
+            drive=self.drive,
+        )
 
     def structure_hash(self) -> str:
-        return hashlib.sha256(canonical_json(self.structure()).encode()).hexdigest()
+        return hashlib.sha256(canonical_json(self.structure().as_dict()).encode()).hexdigest()
 
     def parameters(self) -> list[Parameter]:
         return parameter_layout(self.structure())
 
     def parameter_values(self) -> list[float]:
-        """The parameter vector, in the order of :meth:`parameters`."""
-        return [float(self._value_of(p.name)) for p in self.parameters()]
+        """The parameter vector, in the order of :meth:`parameters`: the one source of every
+        default a model or a simulation starts from."""
+        return [float(self.value_of(p)) for p in self.parameters()]
 
-    def _value_of(self, name: str) -> float:
-        head, _, attr = name.partition(".")
-        if head.startswith("link"):
-            return getattr(self.links[int(head[4:]) - 1], attr)
-        if head.startswith("joint"):
-            return getattr(self.joints[int(head[5:]) - 1], attr)
-        if head == "payload":
+    def value_of(self, parameter: Parameter) -> float:
+        """The number this description gives for one slot of the parameter vector."""
+        if parameter.owner == "link":
+            return float(getattr(self.links[_index(parameter) - 1], parameter.attribute))
+        if parameter.owner == "joint":
+            return float(getattr(self.joints[_index(parameter) - 1], parameter.attribute))
+        if parameter.owner == "payload":
             return self.payload_mass
-        if head == "gravity":
-            return self.gravity.vector[0 if attr == "x" else 1]
-        if head == "contact":
-            return getattr(self.contact, attr)
-        if head == "friction":
-            return getattr(self.friction, attr)
-        raise KeyError(name)
+        if parameter.owner == "gravity":
+            return self.gravity.vector["xy".index(parameter.attribute)]
+        return float(getattr(getattr(self, parameter.owner), parameter.attribute))
 
     def to_dict(self) -> dict[str, Any]:
         """A TOML-ready dictionary that :func:`robot_from_dict` reads back unchanged."""
@@ -213,75 +213,10 @@ def canonical_json(obj: Any) -> str:
     return json.dumps(obj, sort_keys=True, separators=(",", ":"))
 
 
-# --------------------------------------------------------------------------------------------
-# The parameter vector
-# --------------------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class Parameter:
-    name: str  # dotted name, e.g. "link2.mass", "joint3.bearing_radius", "friction.mu"
-    symbol: str  # LaTeX-friendly symbol used in the derived equations
-    unit: str
-    doc: str
-
-
-def parameter_layout(structure: Mapping[str, Any]) -> list[Parameter]:
-    """Every number the model takes at run time, in slot order, for a given structure.
-
-    Only the parameters of effects the structure compiles are present.
-    """
-    out: list[Parameter] = []
-    k = int(structure["links"])
-    for i in range(1, k + 1):
-        out += [
-            Parameter(f"link{i}.length", f"L_{{{i}}}", "m", f"length of link {i}"),
-            Parameter(f"link{i}.mass", f"m_{{{i}}}", "kg", f"mass of link {i}"),
-            Parameter(f"link{i}.inertia", f"I_{{{i}}}", "kg m^2",
-                      f"moment of inertia of link {i} about its centre of mass"),
-            Parameter(f"link{i}.com", f"c_{{{i}}}", "m",
-                      f"distance of link {i}'s centre of mass from joint {i}, along the link"),
-        ]
-    out.append(Parameter("payload.mass", "m_{p}", "kg",
-                         "point payload at the tip of the last link"))
-    if structure["gravity"]:
-        out += [
-            Parameter("gravity.x", "g_{x}", "m/s^2", "gravity, x component"),
-            Parameter("gravity.y", "g_{y}", "m/s^2", "gravity, y component"),
-        ]
-    for i, kind in enumerate(structure["joints"], start=1):
-        if kind in ("locked", "locked_clearance"):
-            out.append(Parameter(f"joint{i}.angle", f"\\phi_{{{i}}}", "rad",
-                                 f"fixed relative angle of locked joint {i}"))
-        if kind in ("clearance", "locked_clearance"):
-            out += [
-                Parameter(f"joint{i}.bearing_radius", f"R_{{b{i}}}", "m",
-                          f"bearing (hole) radius of joint {i}, on link {i - 1}"),
-                Parameter(f"joint{i}.journal_radius", f"R_{{j{i}}}", "m",
-                          f"journal (pin) radius of joint {i}, on link {i}"),
-                Parameter(f"joint{i}.bearing_E", f"E_{{b{i}}}", "Pa",
-                          f"Young's modulus of joint {i}'s bearing"),
-                Parameter(f"joint{i}.bearing_nu", f"\\nu_{{b{i}}}", "1",
-                          f"Poisson's ratio of joint {i}'s bearing"),
-                Parameter(f"joint{i}.journal_E", f"E_{{j{i}}}", "Pa",
-                          f"Young's modulus of joint {i}'s journal"),
-                Parameter(f"joint{i}.journal_nu", f"\\nu_{{j{i}}}", "1",
-                          f"Poisson's ratio of joint {i}'s journal"),
-            ]
-    if structure["contact_law"] is not None:
-        out += [
-            Parameter("contact.exponent", "n", "1", "Hertz exponent n of F_n = K d^n"),
-            Parameter("contact.restitution", "c_{e}", "1", "coefficient of restitution"),
-            Parameter("contact.impact_speed_floor", "v_{min}", "m/s",
-                      "floor of the captured impact speed (grazing contact)"),
-        ]
-    if structure["friction"] != "none":
-        out += [
-            Parameter("friction.mu", "\\mu", "1", "Coulomb friction coefficient"),
-            Parameter("friction.v0", "v_{0}", "m/s", "sliding speed below which friction is 0"),
-            Parameter("friction.v1", "v_{1}", "m/s", "sliding speed above which friction is full"),
-        ]
-    return out
+def _index(parameter: Parameter) -> int:
+    if parameter.index is None:
+        raise ValueError(f"parameter {parameter.name} names no link or joint")
+    return parameter.index
 
 
 # --------------------------------------------------------------------------------------------
@@ -576,38 +511,35 @@ def robot_from_flags(
 
 def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
     """A copy of ``robot`` with named parameters changed (structure unchanged)."""
-    known = {p.name for p in robot.parameters()}
+    known = {p.name: p for p in robot.parameters()}
     links = [vars(link).copy() for link in robot.links]
     joints = [vars(j).copy() for j in robot.joints]
-    top: dict[str, Any] = {}
-    contact = vars(robot.contact).copy()
-    friction = vars(robot.friction).copy()
+    effects = {"contact": vars(robot.contact).copy(), "friction": vars(robot.friction).copy()}
     gravity = list(robot.gravity.vector)
+    payload = robot.payload_mass
     for name, value in values.items():
         if name not in known:
-            hint = did_you_mean(name, sorted(known))
-            raise DescriptionError(name, f"is not a parameter of this model{hint}")
-        head, _, attr = name.partition(".")
-        if head.startswith("link"):
-            links[int(head[4:]) - 1][attr] = value
-        elif head.startswith("joint"):
-            joints[int(head[5:]) - 1][attr] = value
-        elif head == "payload":
-            top["payload_mass"] = value
-        elif head == "gravity":
-            gravity["xy".index(attr)] = value
-        elif head == "contact":
-            contact[attr] = value
+            raise DescriptionError(name, "is not a parameter of this model"
+                                   + did_you_mean(name, sorted(known)))
+        prm = known[name]
+        if prm.owner == "link":
+            links[_index(prm) - 1][prm.attribute] = value
+        elif prm.owner == "joint":
+            joints[_index(prm) - 1][prm.attribute] = value
+        elif prm.owner == "payload":
+            payload = value
+        elif prm.owner == "gravity":
+            gravity["xy".index(prm.attribute)] = value
         else:
-            friction[attr] = value
+            effects[prm.owner][prm.attribute] = value
     return replace(
         robot,
         links=tuple(Link(**d) for d in links),
         joints=tuple(Joint(**d) for d in joints),
         gravity=Gravity(robot.gravity.enabled, (gravity[0], gravity[1])),
-        contact=Contact(**contact),
-        friction=Friction(**friction),
-        **top,
+        contact=Contact(**effects["contact"]),
+        friction=Friction(**effects["friction"]),
+        payload_mass=payload,
     )
 
 

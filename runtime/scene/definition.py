@@ -39,6 +39,7 @@ from jointplay.robot.description import (
     read_toml,
     robot_from_dict,
 )
+from jointplay.robot.structure import coordinate_layout
 from jointplay.scene.torques import (
     FUNCTIONS,
     TimeFunction,
@@ -271,10 +272,7 @@ def scene_inputs(scene: Scene) -> list[Path]:
 
 def coordinate_names(robot: Robot) -> list[str]:
     """Generalised coordinates in model order: moving angles, then (ex, ey) per clearance."""
-    names = [f"q{j}" for j in robot.moving_joints]
-    for j in robot.clearance_joints:
-        names += [f"ex{j}", f"ey{j}"]
-    return names
+    return [c.name for c in coordinate_layout(robot.structure())]
 
 
 def _initial(raw: Any, robot: Robot, constants: Mapping[str, float],

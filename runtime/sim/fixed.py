@@ -78,7 +78,7 @@ def _run_fixed(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumula
     x = x0.copy()
     traj.x[0] = x
     traj.v_imp[0] = events.v_imp
-    newton_iterations = pr.model.layout.data["functions"]["radau_step"]["newton_iterations"]
+    newton_iterations = pr.model.layout.functions["radau_step"].newton_iterations
     evals_per_step = 4 if method == "rk4" else 3 * (1 + newton_iterations)
 
     def stage_torques(t_start: np.ndarray) -> np.ndarray:

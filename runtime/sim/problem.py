@@ -59,11 +59,11 @@ def _scaling(model: Model, p: np.ndarray) -> np.ndarray:
     """Per-state scale: 1 for angles, the joint's radial clearance for eccentricities."""
     scale = np.ones(model.n_state)
     n = model.n_coordinates
-    for i, name in enumerate(model.coordinates):
-        if name.startswith(("ex", "ey")):
-            j = int(name[2:])
-            rb = p[model.parameters.index(f"joint{j}.bearing_radius")]
-            rj = p[model.parameters.index(f"joint{j}.journal_radius")]
+    layout = model.layout
+    for i, coordinate in enumerate(layout.coordinates):
+        if coordinate.kind != "angle":
+            rb = p[layout.parameter_slot("joint", coordinate.joint, "bearing_radius")]
+            rj = p[layout.parameter_slot("joint", coordinate.joint, "journal_radius")]
             scale[i] = rb - rj
             scale[n + i] = (rb - rj) / RATE_SCALE_TIME
     return scale

@@ -30,7 +30,7 @@ def generated_folder(robot: Robot) -> Path:
     damaged file, a half-written one) is generated again, with a one-line note, under a lock
     so that concurrent runs repair it once.
     """
-    prov = provenance(robot.structure())
+    prov = provenance(robot.structure().as_dict())
     folder = generated.find(prov["input_hash"])
     if folder is not None:
         return folder

@@ -11,7 +11,6 @@ import hashlib
 import json
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -19,7 +18,9 @@ import casadi as ca
 import numpy as np
 
 from jointplay.common.errors import GeneratedCodeError
+from jointplay.robot.structure import Structure
 from jointplay.store.build import DEFAULT_CFLAGS, compile_source
+from jointplay.store.layout import Layout
 
 SOURCE_NAME = "model.c"
 LAYOUT_NAME = "layout.json"
@@ -93,25 +94,6 @@ class FastFunction:
         return out[:, 0] if self._squeeze[i] else out
 
 
-@dataclass(frozen=True)
-class Layout:
-    """What layout.json says: coordinates, parameters and every function's slots."""
-
-    data: dict[str, Any]
-
-    @property
-    def coordinate_names(self) -> list[str]:
-        return [c["name"] for c in self.data["coordinates"]]
-
-    @property
-    def parameter_names(self) -> list[str]:
-        return [p["name"] for p in self.data["parameters"]]
-
-    @property
-    def input_hash(self) -> str:
-        return str(self.data["provenance"]["input_hash"])
-
-
 class Model:
     """A loaded, compiled robot model. Create it with :func:`load_model`."""
 
@@ -122,12 +104,12 @@ class Model:
         self.library = library
         self.layout = layout
         self.compile_seconds = compile_seconds
-        self.name: str = layout.data["name"]
-        self.structure: dict[str, Any] = layout.data["structure"]
+        self.name: str = layout.name
+        self.structure: Structure = layout.structure
         self.coordinates = layout.coordinate_names
         self.parameters = layout.parameter_names
-        self.torque_joints: list[int] = layout.data["torque_joints"]
-        self.clearance_joints: list[int] = layout.data["clearance_joints"]
+        self.torque_joints: list[int] = list(layout.torque_joints)
+        self.clearance_joints: list[int] = list(layout.clearance_joints)
         self.n_coordinates = len(self.coordinates)
         self.n_state = 2 * self.n_coordinates
         self.default_parameters = default_parameters
@@ -142,18 +124,17 @@ class Model:
     def function(self, name: str) -> FastFunction:
         """The compiled function ``name`` (see layout.json), loaded on first use."""
         if name not in self._functions:
-            functions = self.layout.data["functions"]
-            jacobians = {f.get("jacobian") for f in functions.values()}
+            functions = self.layout.functions
+            jacobians = {f.jacobian for f in functions.values()}
             if name not in functions and name not in jacobians:
                 raise KeyError(f"{name!r} is not a function of this model; it has "
-                               f"{', '.join(self.layout.data['functions'])}")
+                               f"{', '.join(self.layout.functions)}")
             try:
                 fn = ca.external(name, str(self.library))
             except RuntimeError as err:
                 fn = self._rebuilt_external(name, err)
             if name in functions:
-                matrices = frozenset(s["name"] for s in functions[name]["outputs"]
-                                     if s.get("matrix"))
+                matrices = frozenset(s.name for s in functions[name].outputs if s.matrix)
             else:  # a Jacobian: every block is a matrix
                 matrices = frozenset(fn.name_out())
             self._functions[name] = FastFunction(fn, matrices)
@@ -243,36 +224,13 @@ class Model:
         return dict(zip(fn.function.name_out(), fn(x, udot, p), strict=True))
 
 
-_LAYOUT_KEYS: dict[str, type] = {"name": str, "structure": dict, "coordinates": list,
-                                 "parameters": list, "torque_joints": list,
-                                 "clearance_joints": list, "functions": dict,
-                                 "provenance": dict}
-
-
-def _check_layout(path: Path, data: Any) -> Layout:
-    """The layout, once its shape is what the loader reads (not, say, ``{}``)."""
-    if not isinstance(data, dict):
-        raise GeneratedCodeError(f"{path} is not a layout (a JSON object is expected); "
-                                 "regenerate it with `jointplay derive`")
-    for key, kind in _LAYOUT_KEYS.items():
-        if not isinstance(data.get(key), kind):
-            raise GeneratedCodeError(f"{path} has no valid {key!r} entry; regenerate it with "
-                                     "`jointplay derive`")
-    names = [*data["coordinates"], *data["parameters"]]
-    if not all(isinstance(c, dict) and isinstance(c.get("name"), str) for c in names) or \
-            not isinstance(data["provenance"].get("input_hash"), str):
-        raise GeneratedCodeError(f"{path} has malformed coordinates, parameters or "
-                                 "provenance; regenerate it with `jointplay derive`")
-    return Layout(data)
-
-
 def read_generated(folder: str | Path) -> tuple[str, Layout]:
     """Read and cross-check model.c and layout.json of a generated folder."""
     folder = Path(folder)
     try:
         source = (folder / SOURCE_NAME).read_text(encoding="utf-8")
-        layout = _check_layout(folder / LAYOUT_NAME, json.loads(
-            (folder / LAYOUT_NAME).read_text(encoding="utf-8")))
+        layout = Layout.from_dict(json.loads((folder / LAYOUT_NAME).read_text(encoding="utf-8")),
+                                  str(folder / LAYOUT_NAME))
     except FileNotFoundError as err:
         raise GeneratedCodeError(f"{folder} is not a generated model: {err.filename} is "
                                  "missing; regenerate it with `jointplay derive`") from None
@@ -291,7 +249,7 @@ def read_generated(folder: str | Path) -> tuple[str, Layout]:
         raise GeneratedCodeError(f"{folder}: the input hash of {SOURCE_NAME} does not match "
                                  f"{LAYOUT_NAME}; regenerate the folder with `jointplay derive`")
     body = source[source.find("*/\n") + 3:]
-    if hashlib.sha256(body.encode()).hexdigest() != layout.data["provenance"].get("code_sha256"):
+    if hashlib.sha256(body.encode()).hexdigest() != layout.provenance.get("code_sha256"):
         raise GeneratedCodeError(f"{folder / SOURCE_NAME} was edited after it was generated "
                                  "(its checksum does not match layout.json); regenerate it "
                                  "with `jointplay derive` instead of editing it")

@@ -46,10 +46,10 @@ from jointplay.common.hints import did_you_mean
 from jointplay.robot.description import (
     Robot,
     check_keys,
-    parameter_layout,
     read_toml,
     with_parameters,
 )
+from jointplay.robot.structure import Structure, parameter_layout
 from jointplay.scene.definition import (
     RunSettings,
     Scene,
@@ -200,9 +200,9 @@ def _check_name(name: str, robot: Robot, source: str | None) -> None:
                      "code), and every case of a sweep shares one compiled model: run one "
                      "sweep per value", source)
     n = robot.n_links
-    superset = {p.name for p in parameter_layout({
-        "links": n, "joints": ["locked_clearance"] * n, "gravity": True,
-        "contact_law": "flores", "friction": "coulomb-linear", "drive": True})}
+    superset = {p.name for p in parameter_layout(Structure(
+        links=n, joints=("locked_clearance",) * n, gravity=True, contact_law="flores",
+        friction_law="coulomb", friction_ramp="linear", drive=True))}
     if name in superset:
         head, _, attr = name.partition(".")
         if head == "gravity":
@@ -402,7 +402,7 @@ def case_key(scene: Scene, robot: Robot) -> str:
     """Hash of the full parameter vector, the structure, the base scene and the run."""
     doc = {
         "version": KEY_VERSION,
-        "structure": robot.structure(),
+        "structure": robot.structure().as_dict(),
         "parameters": {p.name: _hex(v) for p, v in zip(robot.parameters(),
                                                          robot.parameter_values(), strict=True)},
         "scene": _scene_fingerprint(scene),

@@ -1,0 +1,71 @@
+"""Module paths of the flat layout, kept importable for a while with a DeprecationWarning.
+
+``import jointplay.control`` still works and hands out the module's names, but warns that
+the module is now :mod:`jointplay.neural.control`. The public API (``jointplay.*``) did not
+move; only the private module paths did.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.abc
+import importlib.machinery
+import importlib.util
+import sys
+import types
+import warnings
+from typing import Any
+
+MOVED = {
+    "jointplay.errors": "jointplay.common.errors",
+    "jointplay.files": "jointplay.common.files",
+    "jointplay.interrupts": "jointplay.common.interrupts",
+    "jointplay.limits": "jointplay.common.limits",
+    "jointplay.description": "jointplay.robot.description",
+    "jointplay.robotio": "jointplay.robot.robotio",
+    "jointplay.model": "jointplay.store.model",
+    "jointplay.build": "jointplay.store.build",
+    "jointplay.expressions": "jointplay.scene.torques",
+    "jointplay.output": "jointplay.results.write",
+    "jointplay.export": "jointplay.results.export",
+    "jointplay.contacts": "jointplay.results.contacts",
+    "jointplay.plots": "jointplay.results.plots",
+    "jointplay.animate": "jointplay.results.animate",
+    "jointplay.narx": "jointplay.neural.narx",
+    "jointplay.identify": "jointplay.neural.identify",
+    "jointplay.twin": "jointplay.neural.twin",
+    "jointplay.imc": "jointplay.neural.imc",
+    "jointplay.imc_kernel": "jointplay.neural.imc_kernel",
+    "jointplay.control": "jointplay.neural.control",
+    "jointplay.control_plots": "jointplay.neural.control_plots",
+    "jointplay.study": "jointplay.neural.study",
+}
+
+
+class _Forwarder(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Finds an old path and loads a small module that forwards every name to the new one
+    (the real module is not registered under two names: its ``__spec__`` stays its own)."""
+
+    def find_spec(self, fullname: str, path: Any = None,
+                  target: Any = None) -> importlib.machinery.ModuleSpec | None:
+        if fullname not in MOVED:
+            return None
+        return importlib.util.spec_from_loader(fullname, self)
+
+    def create_module(self, spec: importlib.machinery.ModuleSpec) -> types.ModuleType:
+        new = MOVED[spec.name]
+        warnings.warn(f"{spec.name} moved to {new}; import it from there",
+                      DeprecationWarning, stacklevel=2)
+        target = importlib.import_module(new)
+        module = types.ModuleType(spec.name, target.__doc__)
+        module.__getattr__ = lambda name: getattr(target, name)  # type: ignore[method-assign]
+        module.__dir__ = lambda: dir(target)  # type: ignore[method-assign]
+        return module
+
+    def exec_module(self, module: types.ModuleType) -> None:
+        pass
+
+
+def install() -> None:
+    if not any(isinstance(f, _Forwarder) for f in sys.meta_path):
+        sys.meta_path.append(_Forwarder())
