@@ -38,6 +38,7 @@ from jointplay.scene.definition import (
 )
 from jointplay.sim import Stepper, load_scene_model, simulate
 from jointplay.store.build import cache_root, compile_source
+from jointplay.store.lookup import generated_folder, model_for
 from jointplay.store.model import FastFunction, Model, load_model
 
 __version__ = "0.1.0"
@@ -71,11 +72,13 @@ __all__ = [
     "compile_source",
     "default_robot",
     "default_scene",
+    "generated_folder",
     "ideal_counterpart",
     "load_model",
     "load_robot",
     "load_scene",
     "load_scene_model",
+    "model_for",
     "robot_from_dict",
     "robot_from_flags",
     "robot_to_toml",
