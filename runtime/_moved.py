@@ -25,7 +25,7 @@ MOVED = {
     "jointplay.robotio": "jointplay.robot.robotio",
     "jointplay.model": "jointplay.store.model",
     "jointplay.build": "jointplay.store.build",
-    "jointplay.expressions": "jointplay.scene.torques",
+    "jointplay.expressions": "jointplay.scene.expressions",
     "jointplay.output": "jointplay.results.write",
     "jointplay.export": "jointplay.results.export",
     "jointplay.contacts": "jointplay.results.contacts",

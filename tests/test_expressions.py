@@ -13,15 +13,12 @@ import casadi as ca
 import numpy as np
 import pytest
 
-import jointplay.scene.torques as expressions
+import jointplay.scene.expressions as expressions
+import jointplay.scene.tables as tables
+import jointplay.sim.postfix as postfix
 from jointplay.common.errors import DescriptionError
-from jointplay.scene.torques import (
-    Expression,
-    TableColumn,
-    TimeFunction,
-    load_torque_table,
-    parse_expression,
-)
+from jointplay.scene.expressions import Expression, TimeFunction, parse_expression
+from jointplay.scene.tables import TableColumn, load_torque_table
 
 FIELD = "torques.joint2"
 RTOL = 1e-14
@@ -266,8 +263,9 @@ def test_numpy_scalar_constants_are_accepted() -> None:
 # --- Never executes code -----------------------------------------------------------------------
 
 
-def test_module_source_has_no_eval_exec_or_compile_calls() -> None:
-    source = Path(expressions.__file__).read_text()
+@pytest.mark.parametrize("module", [expressions, tables, postfix])
+def test_module_source_has_no_eval_exec_or_compile_calls(module: Any) -> None:
+    source = Path(module.__file__).read_text()
     assert not re.search(r"\b(eval|exec|compile)\s*\(", source)
     called = {node.func.id for node in ast.walk(ast.parse(source))
               if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)}

@@ -466,7 +466,8 @@ def _floats(text: str | None, flag: str, count: int | None = None,
 def test_case_scenes(model_dir: Path, scene: Any) -> list[tuple[str, Any]]:
     """Scenes driven by the base torques of the stored test trajectories."""
     from jointplay.neural.identify import Chirp, Multisine, read_datasets, with_torques
-    from jointplay.scene.torques import TableColumn, parse_expression
+    from jointplay.scene.expressions import parse_expression
+    from jointplay.scene.tables import TableColumn
 
     path = model_dir / "datasets.h5"
     if not path.is_file():

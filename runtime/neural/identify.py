@@ -58,7 +58,8 @@ from jointplay.neural.narx import (
     save_narx,
 )
 from jointplay.neural.twin import describe, judge, select_residual
-from jointplay.scene.torques import TableColumn, TimeFunction
+from jointplay.scene.expressions import TimeFunction
+from jointplay.scene.tables import TableColumn
 
 DATASETS_FILE = "datasets.h5"
 METRICS_FILE = "metrics.json"

@@ -2,7 +2,8 @@
 
 A scene is a TOML file of data. It is validated completely before anything is derived or
 compiled, and never executed: torque expressions go through the restricted parser of
-:mod:`jointplay.scene.torques`. Every error names the file, the field and what is allowed.
+:mod:`jointplay.scene.expressions` and :mod:`jointplay.scene.tables`. Every error names the
+file, the field and what is allowed.
 
     name = "two_link"
     [robot]                  # a robot description (see README), or robot = "robot.toml"
@@ -40,12 +41,8 @@ from jointplay.robot.description import (
     robot_from_dict,
 )
 from jointplay.robot.structure import coordinate_layout
-from jointplay.scene.torques import (
-    FUNCTIONS,
-    TimeFunction,
-    load_torque_table,
-    parse_expression,
-)
+from jointplay.scene.expressions import FUNCTIONS, TimeFunction, parse_expression
+from jointplay.scene.tables import load_torque_table
 
 INTEGRATORS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
 ADAPTIVE: tuple[str, ...] = ("bdf", "cvodes", "idas")

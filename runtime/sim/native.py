@@ -20,7 +20,9 @@ from typing import Any
 import numpy as np
 
 from jointplay.common.errors import SimulationError
-from jointplay.scene.torques import Expression, TableColumn, TimeFunction, postfix_program
+from jointplay.scene.expressions import Expression, TimeFunction
+from jointplay.scene.tables import TableColumn
+from jointplay.sim.postfix import postfix_program
 from jointplay.store.build import compile_source
 from jointplay.store.model import Model
 
@@ -148,7 +150,7 @@ def traced_program(fn: TimeFunction) -> tuple[list[int], list[float]]:
     """
     import casadi as ca
 
-    from jointplay.scene.torques import OPCODES
+    from jointplay.sim.postfix import OPCODES
 
     codes = {getattr(ca, name): OPCODES[op] for name, op in _SX_OPS.items()}
     t = ca.SX.sym("t")

@@ -1,25 +1,24 @@
-"""Drive torques as functions of time: restricted expressions and CSV tables.
+"""Drive torques as restricted expressions of time, parsed and never executed.
 
 A scene file is data, so a torque such as ``"4*sin(2*pi*t)"`` must never be run as Python.
 The text is parsed with :func:`ast.parse` and every node is checked against a whitelist, then
 turned into a small tree of our own. That tree is evaluated by walking it, with numpy for
 simulation and plotting and with CasADi for building symbolic models, so both always compute
-the same formula. Nothing is passed to ``eval``, ``exec`` or ``compile``.
+the same formula. Nothing is passed to ``eval``, ``exec`` or ``compile``. The same tree
+becomes a postfix program for the compiled simulator (:mod:`jointplay.sim.postfix`).
 
-Tables (a CSV of ``t`` and one column per driven joint) are interpolated linearly and hold
-their end values outside the time range, identically in numpy and CasADi.
+Longer than the ~400 lines aimed at, on purpose: the whitelist, the validator that enforces
+it and the two evaluators must change together, and splitting them would separate a new
+function's grammar from its numpy and CasADi meanings.
 """
 
 from __future__ import annotations
 
 import ast
-import csv
 import math
 import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from functools import cached_property
-from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Protocol, TypeAlias, runtime_checkable
 
@@ -34,12 +33,8 @@ __all__ = [
     "MAX_DEPTH",
     "MAX_LENGTH",
     "Expression",
-    "TableColumn",
     "TimeFunction",
-    "TorqueTable",
-    "load_torque_table",
     "parse_expression",
-    "postfix_program",
 ]
 
 MAX_LENGTH = 2000
@@ -278,61 +273,6 @@ class Expression:
         return value
 
 
-# --- Postfix programs for compiled code -------------------------------------------------------
-# Opcodes of the stack machine in jointplay/sim/driver.c (enum OP_*); the order is the contract.
-OPCODES: dict[str, int] = {
-    "const": 0, "t": 1, "neg": 2, "+": 3, "-": 4, "*": 5, "/": 6, "**": 7, "sin": 8, "cos": 9,
-    "tan": 10, "exp": 11, "log": 12, "sqrt": 13, "abs": 14, "tanh": 15, "sinh": 16,
-    "cosh": 17, "atan": 18, "min": 19, "max": 20, "step": 21, "<=": 22, "<": 23,
-    "if_else_zero": 24, "sq": 25, "inv": 26, "twice": 27,
-}
-# Deepest operand stack driver.c allows (its STACK_DEPTH).
-STACK_DEPTH = 256
-
-
-def postfix_program(expression: Expression) -> tuple[list[int], list[float]]:
-    """The expression as a postfix program: opcodes and, slot by slot, the constants.
-
-    Compiled code evaluates it on a small stack, so a scene's torques reach C as data and
-    never need a compiler. Raises ValueError if the stack would exceed ``STACK_DEPTH``.
-    """
-    ops: list[int] = []
-    consts: list[float] = []
-    depth = 0
-    deepest = 0
-
-    def emit(op: str, value: float = 0.0, effect: int = 0) -> None:
-        nonlocal depth, deepest
-        ops.append(OPCODES[op])
-        consts.append(value)
-        depth += effect
-        deepest = max(deepest, depth)
-
-    def visit(node: _Node) -> None:
-        if isinstance(node, _Number):
-            emit("const", node.value, 1)
-        elif isinstance(node, _Time):
-            emit("t", 0.0, 1)
-        elif isinstance(node, _Unary):
-            visit(node.operand)
-            if node.op == "-":
-                emit("neg")
-        elif isinstance(node, _Binary):
-            visit(node.left)
-            visit(node.right)
-            emit(node.op, 0.0, -1)
-        else:
-            for arg in node.args:
-                visit(arg)
-            emit(node.function, 0.0, 1 - len(node.args))
-
-    visit(expression.root)
-    if deepest > STACK_DEPTH:
-        raise ValueError(f"{expression.text!r} needs a stack of {deepest} values; compiled "
-                         f"torques allow {STACK_DEPTH}")
-    return ops, consts
-
-
 # --- Parsing -----------------------------------------------------------------------------------
 
 
@@ -530,129 +470,3 @@ def parse_expression(text: str, *, field: str, constants: Mapping[str, float] = 
     return Expression(text, validator.visit(tree.body))
 
 
-# --- Tables ------------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True, eq=False)
-class TableColumn:
-    """One column of a :class:`TorqueTable`, as a piecewise-linear function of time.
-
-    Values are held at the first/last row outside the table's time range.
-    """
-
-    name: str
-    times: np.ndarray
-    values: np.ndarray
-
-    def numpy(self, t: float | np.ndarray) -> np.ndarray:
-        """Interpolate with :func:`numpy.interp` (which holds the end values)."""
-        times = np.asarray(t, dtype=np.float64)
-        return np.asarray(np.interp(times, self.times, self.values), dtype=np.float64)
-
-    @cached_property
-    def _interpolant(self) -> Any:
-        return ca.interpolant("torque_table", "linear", [self.times.tolist()],
-                              self.values.tolist())
-
-    def casadi(self, t: Symbolic) -> Symbolic:
-        """Interpolate with a CasADi linear interpolant.
-
-        CasADi's interpolant extrapolates the end segments, so ``t`` is clamped into the table
-        range first to hold the end values like numpy.
-        """
-        t, _ = _as_casadi(t)
-        clamped = ca.fmin(ca.fmax(t, float(self.times[0])), float(self.times[-1]))
-        return self._interpolant(clamped)
-
-
-@dataclass(frozen=True, eq=False)
-class TorqueTable:
-    """Torques sampled in time: ``times`` (n,), ``values`` (n, columns), ``header`` names.
-
-    The arrays are read-only so the table stays immutable.
-    """
-
-    times: np.ndarray
-    values: np.ndarray
-    header: tuple[str, ...]
-
-    @property
-    def columns(self) -> int:
-        """Number of torque columns (the ``t`` column not counted)."""
-        return int(self.values.shape[1])
-
-    def column(self, i: int) -> TableColumn:
-        """The ``i``-th torque column, counted from 0 after ``t``."""
-        if not 0 <= i < self.columns:
-            raise IndexError(f"torque column {i} out of range 0..{self.columns - 1}")
-        return TableColumn(self.header[i + 1], self.times, self.values[:, i])
-
-
-def load_torque_table(path: str | Path, *, columns: int, field: str,
-                      source: str | None = None) -> TorqueTable:
-    """Read a CSV of torques: a header ``t,<name>,...``, then rows of finite floats.
-
-    ``t`` (s) must be strictly increasing with at least 2 rows, and there must be exactly
-    ``columns`` torque columns. Raises :class:`DescriptionError` naming ``field``.
-    """
-    if isinstance(columns, bool) or not isinstance(columns, int) or columns < 1:
-        raise ValueError(f"columns must be a positive integer, got {columns!r}")
-    path = Path(path)
-    expected = f"expected a CSV file with header 't' then {columns} torque column(s)"
-
-    def fail(message: str) -> DescriptionError:
-        return DescriptionError(field, f"{path}: {message}", source)
-
-    if not path.is_file():
-        what = "is not a file" if path.exists() else "file not found"
-        raise fail(f"{what}; {expected}")
-    rows: list[tuple[int, list[str]]] = []  # (line number, cells), blank lines dropped
-    try:
-        with path.open(newline="", encoding="utf-8-sig") as handle:
-            reader = csv.reader(handle)
-            for row in reader:
-                if any(cell.strip() for cell in row):
-                    rows.append((reader.line_num, row))
-    except (OSError, UnicodeDecodeError, csv.Error) as error:
-        raise fail(f"cannot be read ({error}); {expected}") from None
-
-    if not rows:
-        raise fail(f"is empty; {expected}")
-    _, header_row = rows[0]
-    header = tuple(cell.strip() for cell in header_row)
-    if len(header) != columns + 1:
-        raise fail(f"header has {len(header)} column(s), expected {columns + 1} "
-                   f"('t' then one per driven joint)")
-    if header[0] != TIME:
-        raise fail(f"first header cell is {header[0]!r}; it must be 't' (time in seconds)")
-    for i, name in enumerate(header[1:], start=2):
-        if not name:
-            raise fail(f"header column {i} is empty; every column needs a name")
-
-    data = rows[1:]
-    if len(data) < 2:
-        raise fail(f"has {len(data)} data row(s); at least 2 are needed to interpolate")
-    table = np.empty((len(data), columns + 1), dtype=np.float64)
-    for r, (line, row) in enumerate(data):
-        if len(row) != columns + 1:
-            raise fail(f"line {line} has {len(row)} cell(s), expected {columns + 1}")
-        for c, cell in enumerate(row):
-            try:
-                value = float(cell.strip())
-            except ValueError:
-                raise fail(f"line {line}, column {header[c]!r} ({c + 1}): {cell!r} is not a "
-                           "number; every cell must be a finite number") from None
-            if not math.isfinite(value):
-                raise fail(f"line {line}, column {header[c]!r} ({c + 1}): {cell.strip()!r} is "
-                           "not finite; every cell must be a finite number")
-            table[r, c] = value
-        if r > 0 and not table[r, 0] > table[r - 1, 0]:
-            raise fail(f"line {line}: t = {float(table[r, 0])!r} is not greater than the "
-                       f"previous t = {float(table[r - 1, 0])!r}; times must be strictly "
-                       "increasing")
-
-    times = table[:, 0].copy()
-    values = table[:, 1:].copy()
-    times.flags.writeable = False
-    values.flags.writeable = False
-    return TorqueTable(times, values, header)
