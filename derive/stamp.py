@@ -13,7 +13,8 @@ from typing import Any
 
 from jointplay.description import canonical_json
 
-_EMITTING_MODULES = ("codegen.py", "laws.py", "symbolic.py", "to_casadi.py")
+_EMITTING_MODULES = ("codegen.py", "laws.py", "lubrication.py", "symbolic.py", "to_casadi.py",
+                     "wear.py")
 
 
 def _generator_version() -> str:

@@ -50,6 +50,8 @@ class ClearanceJointTerms:
     force_t: sp.Symbol  # placeholder: friction force on the journal, along the tangent
     impact_speed: sp.Symbol  # input: normal approach speed captured at the onset of contact
     law: laws.ContactTerms
+    # Absolute angles of the bearing's link (i-1, 0 for the ground) and the journal's link (i).
+    angles: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
 
 
 @dataclass
@@ -134,7 +136,7 @@ def derive(structure: dict[str, Any]) -> SymbolicModel:
     prev_end = origin
     moving = iter(zip(angles, angle_speeds, strict=True))
     for i, kind in enumerate(kinds, start=1):
-        omega_bearing = omega
+        omega_bearing, theta_bearing = omega, theta
         if kind in ("ideal", "clearance"):
             qi, ui = next(moving)
             theta, omega = theta + qi, omega + ui
@@ -161,7 +163,8 @@ def derive(structure: dict[str, Any]) -> SymbolicModel:
                 loads.append((prev_frame, -rb * ft * N.z))
             law = laws.contact_terms(
                 structure, i, ex, ey, vx, vy, omega_bearing, omega, impact, P)
-            clearance_terms.append(ClearanceJointTerms(i, fx, fy, ft, impact, law))
+            clearance_terms.append(ClearanceJointTerms(i, fx, fy, ft, impact, law,
+                                                       (theta_bearing, theta)))
         else:
             journal = prev_end
 

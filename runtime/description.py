@@ -32,6 +32,8 @@ JOINT_KINDS: tuple[str, ...] = ("ideal", "clearance", "locked", "locked_clearanc
 CONTACT_LAWS: tuple[str, ...] = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 FRICTION_LAWS: tuple[str, ...] = ("none", "coulomb")
 FRICTION_RAMPS: tuple[str, ...] = ("linear", "smooth")
+LUBRICATION_MODELS: tuple[str, ...] = ("none", "short-bearing", "long-bearing")
+WEAR_MODELS: tuple[str, ...] = ("none", "archard")
 MAX_LINKS = 32
 
 STEEL_E = 207e9
@@ -69,6 +71,9 @@ class Joint:
     bearing_nu: float = STEEL_NU
     journal_E: float = STEEL_E
     journal_nu: float = STEEL_NU
+    # Axial length of the journal and bearing (m): needed only by the laws and effects that
+    # act along it (lubrication, wear), so None (absent) is valid until one is compiled.
+    length: float | None = None
 
     @property
     def moves(self) -> bool:
@@ -112,6 +117,33 @@ class Friction:
 
 
 @dataclass(frozen=True)
+class Lubrication:
+    """Hydrodynamic film in every clearance joint (see jointplay.derive.lubrication).
+
+    ``model``: ``none`` (dry joints), ``short-bearing`` or ``long-bearing`` (Pinkus and
+    Sternlicht's closed forms); ``viscosity`` in Pa s; ``transition``: the eccentricity ratio
+    from which the film force is smoothly frozen as the film closes (0 < transition < 1).
+    """
+
+    model: str = "none"
+    viscosity: float = 0.04
+    transition: float = 0.95
+
+
+@dataclass(frozen=True)
+class Wear:
+    """Archard wear of every clearance joint, integrated during the run (see jointplay.wear).
+
+    ``coefficient``: the dimensionless wear coefficient k; ``hardness``: of the softer
+    surface, Pa. Wear volume rate k F_n |v_t| / H.
+    """
+
+    model: str = "none"
+    coefficient: float = 1.0e-4
+    hardness: float = 2.0e9
+
+
+@dataclass(frozen=True)
 class Robot:
     """A planar serial robot with optional clearance joints, validated on construction."""
 
@@ -123,6 +155,8 @@ class Robot:
     contact: Contact = field(default_factory=Contact)
     friction: Friction = field(default_factory=Friction)
     drive: bool = True  # drive torques on the joints that move
+    lubrication: Lubrication = field(default_factory=Lubrication)
+    wear: Wear = field(default_factory=Wear)
 
     def __post_init__(self) -> None:
         validate(self)
@@ -144,7 +178,7 @@ class Robot:
     def structure(self) -> dict[str, Any]:
         """The compile-time part: what changes the generated code. Numbers are absent."""
         has_clearance = bool(self.clearance_joints)
-        return {
+        structure: dict[str, Any] = {
             "links": self.n_links,
             "joints": [j.kind for j in self.joints],
             "gravity": self.gravity.enabled,
@@ -156,6 +190,13 @@ class Robot:
             ),
             "drive": self.drive,
         }
+        # Effects enter the structure only when asked for: a scene without them keeps the
+        # structure (and so the generated model) it always had.
+        if has_clearance and self.lubrication.model != "none":
+            structure["lubrication"] = self.lubrication.model
+        if has_clearance and self.wear.model != "none":
+            structure["wear"] = self.wear.model
+        return structure
 
     def structure_hash(self) -> str:
         return hashlib.sha256(canonical_json(self.structure()).encode()).hexdigest()
@@ -181,6 +222,8 @@ class Robot:
             return getattr(self.contact, attr)
         if head == "friction":
             return getattr(self.friction, attr)
+        if head in ("lubrication", "wear"):
+            return getattr(getattr(self, head), attr)
         raise KeyError(name)
 
     def to_dict(self) -> dict[str, Any]:
@@ -195,6 +238,9 @@ class Robot:
             "friction": vars(self.friction).copy(),
             "drive": {"enabled": self.drive},
         }
+        for key, default in (("lubrication", Lubrication()), ("wear", Wear())):
+            if getattr(self, key) != default:
+                d[key] = vars(getattr(self, key)).copy()
         return d
 
 
@@ -206,6 +252,8 @@ def _joint_dict(j: Joint) -> dict[str, Any]:
         for name in ("bearing_radius", "journal_radius", "bearing_E", "bearing_nu",
                      "journal_E", "journal_nu"):
             d[name] = getattr(j, name)
+        if j.length is not None:
+            d["length"] = j.length
     return d
 
 
@@ -268,12 +316,27 @@ def parameter_layout(structure: Mapping[str, Any]) -> list[Parameter]:
                 Parameter(f"joint{i}.journal_nu", f"\\nu_{{j{i}}}", "1",
                           f"Poisson's ratio of joint {i}'s journal"),
             ]
+            if uses_length(structure):
+                out.append(Parameter(f"joint{i}.length", f"L_{{b{i}}}", "m",
+                                     "axial length of the journal and bearing"))
     if structure["contact_law"] is not None:
         out += [
             Parameter("contact.exponent", "n", "1", "Hertz exponent n of F_n = K d^n"),
             Parameter("contact.restitution", "c_{e}", "1", "coefficient of restitution"),
             Parameter("contact.impact_speed_floor", "v_{min}", "m/s",
                       "floor of the captured impact speed (grazing contact)"),
+        ]
+    if structure.get("lubrication"):
+        out += [
+            Parameter("lubrication.viscosity", "\\mu_{l}", "Pa s",
+                      "dynamic viscosity of the lubricant"),
+            Parameter("lubrication.transition", "\\epsilon_{t}", "1",
+                      "eccentricity ratio where the film force starts to freeze (film closing)"),
+        ]
+    if structure.get("wear"):
+        out += [
+            Parameter("wear.coefficient", "k_{w}", "1", "Archard wear coefficient"),
+            Parameter("wear.hardness", "H_{w}", "Pa", "hardness of the worn surface"),
         ]
     if structure["friction"] != "none":
         out += [
@@ -282,6 +345,11 @@ def parameter_layout(structure: Mapping[str, Any]) -> list[Parameter]:
             Parameter("friction.v1", "v_{1}", "m/s", "sliding speed above which friction is full"),
         ]
     return out
+
+
+def uses_length(structure: Mapping[str, Any]) -> bool:
+    """Whether a compiled law or effect needs the joints' axial length ``joint{j}.length``."""
+    return bool(structure.get("lubrication") or structure.get("wear"))
 
 
 # --------------------------------------------------------------------------------------------
@@ -301,6 +369,35 @@ def _positive(field_name: str, value: float, *, allow_zero: bool = False) -> Non
 def _finite(field_name: str, value: float) -> None:
     if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
         raise DescriptionError(field_name, f"must be a finite number, got {value!r}")
+
+
+def _validate_effects(robot: Robot) -> None:
+    """Lubrication, wear, and the joint length they need."""
+    lub, wear = robot.lubrication, robot.wear
+    if lub.model not in LUBRICATION_MODELS:
+        raise DescriptionError("lubrication.model",
+                               f"must be one of {', '.join(LUBRICATION_MODELS)}, got {lub.model!r}")
+    _positive("lubrication.viscosity", lub.viscosity)
+    _finite("lubrication.transition", lub.transition)
+    if not 0.0 < lub.transition < 1.0:
+        raise DescriptionError("lubrication.transition",
+                               f"must be an eccentricity ratio in (0, 1), got {lub.transition}")
+    if wear.model not in WEAR_MODELS:
+        raise DescriptionError("wear.model",
+                               f"must be one of {', '.join(WEAR_MODELS)}, got {wear.model!r}")
+    _positive("wear.coefficient", wear.coefficient)
+    _positive("wear.hardness", wear.hardness)
+    needed = uses_length(robot.structure())
+    for i, joint in enumerate(robot.joints, start=1):
+        if joint.length is not None:
+            _positive(f"joints[{i}].length", joint.length)
+        elif needed and joint.has_clearance:
+            effect = " and ".join(name for name in ("lubrication", "wear")
+                                  if getattr(robot, name).model != "none")
+            raise DescriptionError(
+                f"joints[{i}].length",
+                f"is required by {effect}: add length = <axial length of the journal and "
+                "bearing, m> to this [[joints]] entry")
 
 
 def validate(robot: Robot) -> None:
@@ -341,6 +438,7 @@ def validate(robot: Robot) -> None:
                 if not 0.0 < nu < 0.5:
                     raise DescriptionError(f"joints[{i}].{part}_nu",
                                            f"Poisson's ratio must be in (0, 0.5), got {nu}")
+    _validate_effects(robot)
     if not robot.moving_joints and not robot.clearance_joints:
         raise DescriptionError("joints", "at least one joint must move or have play (not every "
                                "joint locked)")
@@ -377,13 +475,15 @@ def validate(robot: Robot) -> None:
 # Reading descriptions from TOML / dictionaries / flags
 # --------------------------------------------------------------------------------------------
 
-_TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive")
+_TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive",
+             "lubrication", "wear")
 _LINK_KEYS = ("length", "mass", "inertia", "com")
 _JOINT_KEYS = ("kind", "angle", "bearing_radius", "journal_radius", "bearing_E", "bearing_nu",
-               "journal_E", "journal_nu")
+               "journal_E", "journal_nu", "length")
 _FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", "journal_radius",
                  "bearing_E", "bearing_nu", "journal_E", "journal_nu", "exponent", "restitution",
-                 "impact_speed_floor", "mu", "v0", "v1"}
+                 "impact_speed_floor", "mu", "v0", "v1", "viscosity", "transition",
+                 "coefficient", "hardness"}
 
 
 def check_keys(table: Any, allowed: Sequence[str], where: str,
@@ -471,6 +571,10 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
     check_keys(friction_raw, tuple(vars(Friction())), "friction")
     drive_raw = data.get("drive", {})
     check_keys(drive_raw, ("enabled",), "drive")
+    lubrication_raw = data.get("lubrication", {})
+    check_keys(lubrication_raw, tuple(vars(Lubrication())), "lubrication")
+    wear_raw = data.get("wear", {})
+    check_keys(wear_raw, tuple(vars(Wear())), "wear")
     name = data.get("name", "robot")
     if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
         raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
@@ -483,6 +587,8 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
         contact=Contact(**_numbers(contact_raw, "contact")),
         friction=Friction(**_numbers(friction_raw, "friction")),
         drive=_bool(drive_raw.get("enabled", True), "drive.enabled"),
+        lubrication=Lubrication(**_numbers(lubrication_raw, "lubrication")),
+        wear=Wear(**_numbers(wear_raw, "wear")),
     )
 
 
@@ -584,6 +690,7 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
     top: dict[str, Any] = {}
     contact = vars(robot.contact).copy()
     friction = vars(robot.friction).copy()
+    effects = {"lubrication": vars(robot.lubrication).copy(), "wear": vars(robot.wear).copy()}
     gravity = list(robot.gravity.vector)
     for name, value in values.items():
         if name not in known:
@@ -601,6 +708,8 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
             gravity["xy".index(attr)] = value
         elif head == "contact":
             contact[attr] = value
+        elif head in effects:
+            effects[head][attr] = value
         else:
             friction[attr] = value
     return replace(
@@ -610,6 +719,8 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
         gravity=Gravity(robot.gravity.enabled, (gravity[0], gravity[1])),
         contact=Contact(**contact),
         friction=Friction(**friction),
+        lubrication=Lubrication(**effects["lubrication"]),
+        wear=Wear(**effects["wear"]),
         **top,
     )
 
