@@ -250,7 +250,9 @@ def wear_function(model: SymbolicModel, convert: SympyToCasadi, x: Any, p: Any, 
     for terms in model.clearance:
         j = terms.index
         ex, ey = (model.q[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))
-        values = wear_terms(terms.law, j, ex, ey, *terms.angles, psym.__getitem__).values()
+        vx, vy = (model.u[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))
+        values = wear_terms(terms.law, j, ex, ey, vx, vy, terms.angles, terms.speeds,
+                            psym.__getitem__).values()
         for column, value in zip(columns, values, strict=True):
             column.append(convert(value))
     outs = [ca.vertcat(*column) for column in columns]

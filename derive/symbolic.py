@@ -52,6 +52,7 @@ class ClearanceJointTerms:
     law: laws.ContactTerms
     # Absolute angles of the bearing's link (i-1, 0 for the ground) and the journal's link (i).
     angles: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    speeds: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))  # their rates
 
 
 @dataclass
@@ -164,7 +165,8 @@ def derive(structure: dict[str, Any]) -> SymbolicModel:
             law = laws.contact_terms(
                 structure, i, ex, ey, vx, vy, omega_bearing, omega, impact, P)
             clearance_terms.append(ClearanceJointTerms(i, fx, fy, ft, impact, law,
-                                                       (theta_bearing, theta)))
+                                                       (theta_bearing, theta),
+                                                       (omega_bearing, omega)))
         else:
             journal = prev_end
 

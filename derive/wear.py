@@ -17,7 +17,9 @@ integration loop needs to spread that rate over the bearing's and the journal's 
   half-width of Hertz's line contact between cylinders (Johnson, Contact Mechanics, 1985,
   section 4.3), R* = Rb Rj / (Rb - Rj) for the conformal pair, 1/E* = sum (1 - nu^2)/E; the
   pressure across it is elliptical, p(s) = 2 F_n / (pi b L) (1 - s^2/b^2)^(1/2);
-* the surface per radian of each part, R L (m^2/rad), to turn volume into depth.
+* the surface per radian of each part, R L (m^2/rad), to turn volume into depth;
+* the rates of both contact angles, so that the loop can cut a step into pieces over which
+  the contact moves less than half a bin.
 
 The loop integrates these in time over each accepted step and in angle exactly over each bin
 (see driver.c, wear_step).
@@ -39,6 +41,8 @@ OUTPUTS = (
     ("journal_half_angle", "rad", "half-width of the Hertz line contact over Rj"),
     ("bearing_area", "m^2/rad", "bearing surface per radian, Rb L"),
     ("journal_area", "m^2/rad", "journal surface per radian, Rj L"),
+    ("bearing_angle_rate", "rad/s", "rate of the contact angle on the bearing"),
+    ("journal_angle_rate", "rad/s", "rate of the contact angle on the journal"),
 )
 
 
@@ -51,14 +55,18 @@ class WearTerms:
     journal_half_angle: sp.Expr
     bearing_area: sp.Expr
     journal_area: sp.Expr
+    bearing_angle_rate: sp.Expr
+    journal_angle_rate: sp.Expr
 
     def values(self) -> list[sp.Expr]:
         return [getattr(self, name) for name, _, _ in OUTPUTS]
 
 
-def wear_terms(law: Any, joint: int, ex: Any, ey: Any, angle_bearing: sp.Expr,
-               angle_journal: sp.Expr, P: Callable[[str], sp.Symbol]) -> WearTerms:
-    """The wear integrands of one clearance joint (``law``: its laws.ContactTerms)."""
+def wear_terms(law: Any, joint: int, ex: Any, ey: Any, vx: Any, vy: Any,
+               angles: tuple[sp.Expr, sp.Expr], speeds: tuple[sp.Expr, sp.Expr],
+               P: Callable[[str], sp.Symbol]) -> WearTerms:
+    """The wear integrands of one clearance joint (``law``: its laws.ContactTerms; angles and
+    speeds: absolute angle and angular speed of the bearing's and the journal's links)."""
     rb = P(f"joint{joint}.bearing_radius")
     rj = P(f"joint{joint}.journal_radius")
     length = P(f"joint{joint}.length")
@@ -68,13 +76,17 @@ def wear_terms(law: Any, joint: int, ex: Any, ey: Any, angle_bearing: sp.Expr,
     force = law.normal_force
     half_width = sp.sqrt(4 * force * radius * compliance / (sp.pi * length))
     direction = sp.atan2(ey, ex)
+    # d atan2(ey, ex)/dt, with |e|^2 floored as in the contact law (no wear without contact)
+    direction_rate = (ex * vy - ey * vx) / law.eccentricity**2
     return WearTerms(
-        bearing_angle=direction - angle_bearing,
-        journal_angle=direction - angle_journal,
+        bearing_angle=direction - angles[0],
+        journal_angle=direction - angles[1],
         volume_rate=P("wear.coefficient") / P("wear.hardness") * force
         * sp.Abs(law.sliding_speed),
         bearing_half_angle=half_width / rb,
         journal_half_angle=half_width / rj,
         bearing_area=rb * length,
         journal_area=rj * length,
+        bearing_angle_rate=direction_rate - speeds[0],
+        journal_angle_rate=direction_rate - speeds[1],
     )

@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+f97e8f704b9c, casadi 3.8.2, sympy 1.14.0
- * input hash: 9b4775049551a126923ecc319c7bae187ad4ef4613672cece1fa01979afd0d9a
+ * generator: jointplay.derive 0.1.0+c11f8d7d487b, casadi 3.8.2, sympy 1.14.0
+ * input hash: 3f8af49f2d2e2d3afadd04a5f879766293dd225934fc50953fc4f418c8796ac6
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

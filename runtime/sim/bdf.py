@@ -19,6 +19,7 @@ from jointplay.sim.problem import (
     _Problem,
     _Trajectory,
 )
+from jointplay.wear import wear_profile
 
 # Calls into C per run (see run_bdf).
 PROGRESS_CALLS = 20
@@ -111,6 +112,9 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
         progress.update(upto - done)
         done = upto
     _add_counts(stats, integ)
+    wear = integ.wear()
+    if wear is not None:
+        traj.wear = wear_profile(list(pr.model.clearance_joints), *wear)
     rows = close_open_phases(integ, pr, integ.phases(), integ.current())
     return phase_table(pr, rows, float(t[-1]))
 

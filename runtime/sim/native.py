@@ -23,6 +23,7 @@ from jointplay.build import compile_source
 from jointplay.errors import SimulationError
 from jointplay.expressions import Expression, TableColumn, TimeFunction, postfix_program
 from jointplay.model import Model
+from jointplay.wear import WEAR_BINS
 
 # driver.c's status codes (enum at its top) and what each means to a user.
 OK, TOO_MUCH_WORK, STEP_COLLAPSED, NONFINITE, INTERRUPTED, BAD_TORQUE, CHATTER, NO_MEMORY = \
@@ -59,7 +60,8 @@ class _Config(ctypes.Structure):
                 ("h_max", ctypes.c_double), ("h_init", ctypes.c_double),
                 ("max_steps", ctypes.c_long), ("max_events", ctypes.c_long),
                 ("max_order", ctypes.c_int),
-                ("f", _Function), ("jac", _Function), ("contact", _Function)]
+                ("f", _Function), ("jac", _Function), ("contact", _Function),
+                ("wear", _Function), ("wear_bins", ctypes.c_int)]
 
 
 @functools.cache
@@ -92,6 +94,7 @@ def driver_library() -> ctypes.CDLL:
     lib.jp_stats.argtypes = [ctypes.c_void_p, ctypes.POINTER(ctypes.c_long)]
     lib.jp_failure.argtypes = [ctypes.c_void_p, _dbl_p, _dbl_p, _int_p]
     lib.jp_n_state.argtypes = [ctypes.c_void_p]
+    lib.jp_wear.argtypes = [ctypes.c_void_p, _dbl_p, _dbl_p]
     lib.jp_map.argtypes = [ctypes.POINTER(_Function), ctypes.c_long, ctypes.c_void_p,
                            ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
     if lib.jp_phase_fields() != len(PHASE_COLUMNS):
@@ -273,6 +276,12 @@ class NativeIntegrator:
         cfg.jac, _ = _function(model, "jac_forward_dynamics")
         if self.nc:
             cfg.contact, _ = _function(model, "contact")
+        # Archard wear, integrated in the loop, for a model generated with it.
+        self.wear_bins = WEAR_BINS if "wear" in model.layout.data["functions"] else 0
+        if self.wear_bins:
+            model.function("wear")
+            cfg.wear, _ = _function(model, "wear")
+            cfg.wear_bins = self.wear_bins
         self._config = cfg
         handle = self.lib.jp_create(ctypes.byref(cfg))
         if not handle:
@@ -329,6 +338,16 @@ class NativeIntegrator:
         out = (ctypes.c_long * len(STAT_NAMES))()
         self.lib.jp_stats(self._handle, out)
         return dict(zip(STAT_NAMES, (int(v) for v in out), strict=True))
+
+    def wear(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """Wear so far, or None without it: volume (nc,) m^3 and mean depth per bin
+        (2, nc, bins) m, bearings then journals (see jointplay.wear)."""
+        if not self.wear_bins:
+            return None
+        volume = np.zeros(self.nc)
+        depth = np.zeros((2, self.nc, self.wear_bins))
+        self.lib.jp_wear(self._handle, _ptr(volume, _dbl_p), _ptr(depth, _dbl_p))
+        return volume, depth
 
     def failure(self) -> tuple[float, float, int]:
         t, h, joint = ctypes.c_double(), ctypes.c_double(), ctypes.c_int()
