@@ -61,6 +61,22 @@ def wear_profile(joints: list[int], volume: np.ndarray, depth: np.ndarray) -> We
                        journal_depth=depth[1].copy(), volume=volume.copy())
 
 
+# Sweep columns (overall, and per joint with the suffix _joint{j}).
+WEAR_METRICS = ("wear_volume", "max_bearing_wear_depth", "max_journal_wear_depth")
+
+
+def wear_metrics(wear: WearProfile) -> dict[str, float]:
+    """Worn volume (m^3, summed over joints) and deepest wear (m) on bearing and journal."""
+    out = {"wear_volume": float(wear.volume.sum()),
+           "max_bearing_wear_depth": float(wear.bearing_depth.max()),
+           "max_journal_wear_depth": float(wear.journal_depth.max())}
+    for k, j in enumerate(wear.joints):
+        out[f"wear_volume_joint{j}"] = float(wear.volume[k])
+        out[f"max_bearing_wear_depth_joint{j}"] = float(wear.bearing_depth[k].max())
+        out[f"max_journal_wear_depth_joint{j}"] = float(wear.journal_depth[k].max())
+    return out
+
+
 # ---------------------------------------------------------------------------------- files
 
 def write_group(parent: Any, wear: WearProfile) -> None:

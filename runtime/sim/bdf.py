@@ -115,8 +115,8 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
     wear = integ.wear()
     if wear is not None:
         traj.wear = wear_profile(list(pr.model.clearance_joints), *wear)
-    rows = close_open_phases(integ, pr, integ.phases(), integ.current())
-    return phase_table(pr, rows, float(t[-1]))
+    phase_rows = close_open_phases(integ, pr, integ.phases(), integ.current())
+    return phase_table(pr, phase_rows, float(t[-1]))
 
 
 def _add_counts(stats: _Accumulated, integ: NativeIntegrator) -> None:
