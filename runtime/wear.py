@@ -132,7 +132,8 @@ def write_csv(wear: WearProfile, path: Path) -> None:
 # ---------------------------------------------------------------------------------- plot
 
 def plot(wear: WearProfile, path: str | Path, title: str = "") -> Path:
-    """Polar plot of the worn depth around each bearing and journal (micrometres)."""
+    """Polar plot of the worn depth around each bearing and journal (nm or um), angles in
+    the frame of each surface's link."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -144,13 +145,20 @@ def plot(wear: WearProfile, path: str | Path, title: str = "") -> Path:
     fig, axes = plt.subplots(nc, 2, subplot_kw={"projection": "polar"},
                              figsize=(8.5, 4.2 * nc), squeeze=False)
     closed = np.append(wear.angle, wear.angle[0])
+    deepest = max(float(wear.bearing_depth.max()), float(wear.journal_depth.max()))
+    scale, unit = (1e9, "nm") if deepest < 1e-6 else (1e6, "um")
     for k, j in enumerate(wear.joints):
         for col, surface in enumerate(SURFACES):
             ax = axes[k][col]
-            depth = wear.depth(surface)[k] * 1e6
+            depth = wear.depth(surface)[k] * scale
             ax.plot(closed, np.append(depth, depth[0]), lw=1.2)
             ax.fill(closed, np.append(depth, depth[0]), alpha=0.25)
-            ax.set_title(f"joint {j} {surface}: max {depth.max():.3g} um\n"
+            top = float(depth.max())
+            if top > 0:
+                ax.set_rticks(np.round(np.linspace(0, top, 4)[1:], 3))
+            link = j - 1 if surface == "bearing" else j
+            frame = f"link {link} frame" if link else "ground frame"
+            ax.set_title(f"joint {j} {surface} ({frame}): deepest {top:.3g} {unit}\n"
                          f"volume {wear.volume[k] * 1e9:.3g} mm^3", fontsize=9)
             ax.tick_params(labelsize=7)
     if title:
