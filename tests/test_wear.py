@@ -120,3 +120,33 @@ def test_wear_files_round_trip(spinning, tmp_path) -> None:  # type: ignore[no-u
     table = np.loadtxt(lines[1:-1], delimiter=",")
     np.testing.assert_array_equal(table[:, 1], spinning.wear.bearing_depth[0])
     assert float(lines[-1].split(",")[1]) == spinning.wear.volume[0]
+
+
+def test_polar_plot_and_summary(spinning, tmp_path) -> None:  # type: ignore[no-untyped-def]
+    from jointplay.cli import summary
+    from jointplay.plots import plot_result
+
+    paths = plot_result(spinning, tmp_path)
+    assert tmp_path / "wear.png" in paths and (tmp_path / "wear.png").stat().st_size > 10_000
+    assert f"joint 1 wear: volume {spinning.wear.volume[0]:.4g} m^3" in summary(spinning)
+
+
+def test_sweep_rows_carry_the_wear(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """The wear sweep's table has the wear columns, equal to a direct run of the case."""
+    import tomllib
+    from pathlib import Path
+
+    from jointplay.sweep import run_sweep, sweep_from_dict
+
+    path = Path(__file__).resolve().parent.parent / "scenes" / "sweep_wear.toml"
+    data = tomllib.loads(path.read_text())
+    data["run"] = {"t_end": 0.05}
+    data["parameters"] = {"joint2.clearance": {"values": [3.0e-5]},
+                          "friction.mu": {"values": [0.05]}}
+    sweep = sweep_from_dict(data, source=str(path), base=path.parent)
+    table = run_sweep(sweep, tmp_path / "sweep", workers=0, plots=False).table.to_pydict()
+    direct = simulate(sweep.cases[0].scene)
+    assert direct.wear is not None and direct.wear.volume[0] > 0
+    assert table["wear_volume_joint2"][0] == direct.wear.volume[0]
+    assert table["max_bearing_wear_depth_joint3"][0] == direct.wear.bearing_depth[1].max()
+    assert table["wear_volume"][0] == direct.wear.volume.sum()
