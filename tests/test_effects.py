@@ -105,3 +105,30 @@ def test_lubricated_arm_floats_on_its_film(lubricated) -> None:  # type: ignore[
     assert ratio.max() < 1.0
     assert len(lubricated.impacts) == 0 and np.all(lubricated.normal_force == 0)
     assert np.linalg.norm(lubricated.contact_force, axis=2).max() > 10.0  # carries the weight
+
+
+@pytest.mark.parametrize("film", ["short-bearing", "long-bearing"])
+def test_lubricated_and_worn_model_is_finite_at_singular_states(film: str) -> None:
+    """The compiled model with a film and wear: every output and Jacobian block finite at
+    e = 0, delta = 0 (film closed: eps = 1), v_t = 0 and |e| = 1e-15 (the dry law's checks,
+    tests/test_dynamics.py), and the wear function's outputs too."""
+    from test_dynamics import all_outputs, non_finite_report, singular_states, two_clearance_robot
+
+    from jointplay.derive import model_for
+
+    robot = replace(_with_length(two_clearance_robot("hunt-crossley", "linear")),
+                    lubrication=Lubrication(model=film), wear=Wear(model="archard"))
+    model = model_for(robot)
+    p = np.asarray(robot.parameter_values())
+    rng = np.random.default_rng(3100)
+    tau = rng.uniform(-1.0, 1.0, 2)
+    failures = []
+    for name, x in singular_states(robot, rng).items():
+        for v_imp in (np.zeros(2), np.array([0.1, 0.3])):
+            outputs = all_outputs(model, x, tau, p, v_imp)
+            outputs.update({f"wear[{k}]": np.asarray(v) for k, v in
+                            enumerate(model.function("wear")(x, p, v_imp))})
+            bad = non_finite_report(model, outputs)
+            if bad:
+                failures.append(f"{name}, v_imp={v_imp}: " + "; ".join(bad))
+    assert not failures, "\n".join(failures)
