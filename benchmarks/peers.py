@@ -631,7 +631,7 @@ def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
     import pinocchio as pin
 
     from jointplay.scene.definition import ideal_counterpart
-    from jointplay.simulation import load_scene_model
+    from jointplay.sim import load_scene_model
 
     ideal_scene = scene.with_robot(ideal_counterpart(scene.robot))
     model = load_scene_model(scene, ideal=True)
@@ -776,7 +776,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
 
     from jointplay.scene.definition import default_scene, load_scene
-    from jointplay.simulation import load_scene_model
+    from jointplay.sim import load_scene_model
 
     scene = load_scene(args.scene) if args.scene else default_scene()
     if args.quick:

@@ -63,7 +63,7 @@ def _sweep(cases: int, t_end: float) -> Any:
 def _loop(sweep: Any) -> tuple[float, float]:
     """Elapsed wall and CPU seconds of a plain loop over the cases."""
     from jointplay.common.errors import SimulationError
-    from jointplay.simulation import load_scene_model, simulate
+    from jointplay.sim import load_scene_model, simulate
 
     model = load_scene_model(sweep.scene)
     load_scene_model(sweep.scene, ideal=True)

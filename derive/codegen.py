@@ -213,6 +213,7 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
         "clearance_joints": [c.index for c in model.clearance],
         "functions": functions,
     }
+    extra = wear_function(model, convert, x, p, v_imp, x_slot, p_slot, v_slot, joints, functions)
     fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac)
     step_inputs = [x_slot, None, _slot("h", 1, "s", "step size"), p_slot, v_slot]
     for fn, stages, doc in (
@@ -231,7 +232,37 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
                               "max norm of the last Newton update (convergence check)"))
             functions[fn.name()]["newton_iterations"] = RADAU_NEWTON_ITERATIONS
     return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip, fn_rk4,
-            fn_radau], layout
+            fn_radau, *extra], layout
+
+
+def wear_function(model: SymbolicModel, convert: SympyToCasadi, x: Any, p: Any, v_imp: Any,
+                  x_slot: dict[str, Any], p_slot: dict[str, Any], v_slot: dict[str, Any],
+                  joints: list[str], functions: dict[str, Any]) -> list[ca.Function]:
+    """``wear(x, p, v_imp)``, the Archard integrands per joint (see :mod:`.wear`), emitted only
+    for a structure that asks for wear."""
+    if not model.structure.wear:
+        return []
+    from jointplay.derive.wear import OUTPUTS, wear_terms
+
+    psym = dict(zip([prm.name for prm in model.parameters], model.parameter_symbols,
+                    strict=True))
+    names = [c.name for c in model.coordinates]
+    columns: list[list[Any]] = [[] for _ in OUTPUTS]
+    for terms in model.clearance:
+        j = terms.index
+        ex, ey = (model.q[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))
+        vx, vy = (model.u[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))
+        values = wear_terms(terms.law, j, ex, ey, vx, vy, terms.angles, terms.speeds,
+                            psym.__getitem__).values()
+        for column, value in zip(columns, values, strict=True):
+            column.append(convert(value))
+    outs = [ca.vertcat(*column) for column in columns]
+    out_names = [name for name, _, _ in OUTPUTS]
+    functions["wear"] = {"inputs": [x_slot, p_slot, v_slot],
+                         "outputs": [_slot(name, len(joints), unit, doc,
+                                           [f"{name}{j}" for j in joints])
+                                     for name, unit, doc in OUTPUTS]}
+    return [ca.Function("wear", [x, p, v_imp], outs, ["x", "p", "v_imp"], out_names)]
 
 
 # Radau IIA, 3 stages (Hairer & Wanner, Solving ODEs II, Table 5.6): stiffly accurate, so the

@@ -80,6 +80,8 @@ class ContactTerms:
     force_y: sp.Expr
     potential: sp.Expr  # K d+^(n+1) / (n+1)
     dissipation: sp.Expr  # power lost to damping and friction: (F_n - K d+^n) d' - F_t v_t >= 0
+    # (with a lubricant, minus the film's power F_film . e', see add_film)
+    film: Any = None  # the lubricant film's terms (lubrication.FilmTerms) when compiled
 
 
 def damping_factor(law: str, ce: sp.Expr) -> sp.Expr:
@@ -150,7 +152,7 @@ def contact_terms(
         c_d = friction_ramp(ramp, speed, v0, v1)
         friction = -P("friction.mu") * c_d * normal * friction_direction(sliding, v0, v1)
 
-    return ContactTerms(
+    terms = ContactTerms(
         clearance=clearance,
         stiffness=stiffness,
         eccentricity=ecc,
@@ -169,3 +171,25 @@ def contact_terms(
         dissipation=(normal - stiffness * penetration_power(penetration, n_exp)) * rate
         - friction * sliding,
     )
+    if structure.lubrication:
+        add_film(terms, structure.lubrication, joint, ex, ey, vx, vy, omega_bearing,
+                 omega_journal, P)
+    return terms
+
+
+def add_film(terms: ContactTerms, model: str, joint: int, ex: Any, ey: Any, vx: Any, vy: Any,
+             omega_bearing: sp.Expr, omega_journal: sp.Expr,
+             P: Callable[[str], sp.Symbol]) -> None:
+    """Add the hydrodynamic film of a lubricated joint (see :mod:`.lubrication`) to the dry
+    contact: its force to the total force, the power it takes out to the dissipation."""
+    from jointplay.derive.lubrication import film_terms
+
+    film = film_terms(model, ex=ex, ey=ey, vx=vx, vy=vy, ecc=terms.eccentricity,
+                      clearance=terms.clearance, omega_bearing=omega_bearing,
+                      omega_journal=omega_journal, viscosity=P("lubrication.viscosity"),
+                      radius=P(f"joint{joint}.journal_radius"), length=P(f"joint{joint}.length"),
+                      transition=P("lubrication.transition"))
+    terms.film = film
+    terms.force_x = terms.force_x + film.force_x
+    terms.force_y = terms.force_y + film.force_y
+    terms.dissipation = terms.dissipation - film.power

@@ -49,6 +49,9 @@ class ClearanceJointTerms:
     force_t: sp.Symbol  # placeholder: friction force on the journal, along the tangent
     impact_speed: sp.Symbol  # input: normal approach speed captured at the onset of contact
     law: laws.ContactTerms
+    # Absolute angles of the bearing's link (i-1, 0 for the ground) and the journal's link (i).
+    angles: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))
+    speeds: tuple[sp.Expr, sp.Expr] = (sp.Integer(0), sp.Integer(0))  # their rates
 
 
 @dataclass
@@ -124,7 +127,7 @@ def derive(structure: Structure) -> SymbolicModel:
     prev_end = origin
     moving = iter(zip(angles, angle_speeds, strict=True))
     for i, kind in enumerate(kinds, start=1):
-        omega_bearing = omega
+        omega_bearing, theta_bearing = omega, theta
         if kind in ("ideal", "clearance"):
             qi, ui = next(moving)
             theta, omega = theta + qi, omega + ui
@@ -151,7 +154,9 @@ def derive(structure: Structure) -> SymbolicModel:
                 loads.append((prev_frame, -rb * ft * N.z))
             law = laws.contact_terms(
                 structure, i, ex, ey, vx, vy, omega_bearing, omega, impact, P)
-            clearance_terms.append(ClearanceJointTerms(i, fx, fy, ft, impact, law))
+            clearance_terms.append(ClearanceJointTerms(i, fx, fy, ft, impact, law,
+                                                       (theta_bearing, theta),
+                                                       (omega_bearing, omega)))
         else:
             journal = prev_end
 

@@ -107,6 +107,8 @@ class SympyToCasadi:
             for a in args[1:]:
                 out = ca.fmin(out, a)
             return out
+        if isinstance(node, sp.atan2):
+            return ca.atan2(args[0], args[1])
         for fn, cafn in _UNARY.items():
             if isinstance(node, fn):
                 return cafn(args[0])

@@ -39,6 +39,8 @@ MOVED = {
     "jointplay.control": "jointplay.neural.control",
     "jointplay.control_plots": "jointplay.neural.control_plots",
     "jointplay.study": "jointplay.neural.study",
+    "jointplay.wear": "jointplay.results.wear",
+    "jointplay.bench_effects": "jointplay.bench.effects",
 }
 
 

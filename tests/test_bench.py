@@ -118,7 +118,7 @@ def test_fidelity_surrogate_hook(tmp_path: Path, monkeypatch: pytest.MonkeyPatch
     """Skipped without a model; with one, the module's loader is called and its rollout of
     the scene is scored like every other row."""
     from jointplay.scene.definition import ideal_counterpart
-    from jointplay.simulation import load_scene_model, simulate
+    from jointplay.sim import load_scene_model, simulate
 
     row = bench.surrogate_row(cast(Any, None), None, cast(Any, None))
     assert row["status"] == "skipped" and "--surrogate" in row["note"]

@@ -9,11 +9,11 @@ import h5py
 import numpy as np
 import pytest
 
-import jointplay.simulation
+import jointplay.sim
 from jointplay.cli import main
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import default_scene, load_scene
-from jointplay.simulation import load_scene_model
+from jointplay.sim import load_scene_model
 
 ROBOT = """
 [robot]
@@ -146,7 +146,7 @@ def test_interrupted_run_leaves_no_result_file(tmp_path: Path,
     def interrupted(*args: object, **kwargs: object) -> None:
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(jointplay.simulation, "simulate", interrupted)
+    monkeypatch.setattr(jointplay.sim, "simulate", interrupted)
     out = tmp_path / "run.h5"
     assert main(["simulate", "--t-end", "0.01", "--out", str(out), "--quiet"]) == 130
     assert list(tmp_path.iterdir()) == []
@@ -218,7 +218,7 @@ def test_loading_a_generated_model_does_not_import_sympy() -> None:
 
     code = ("import sys\n"
             "from jointplay.scene.definition import default_scene\n"
-            "from jointplay.simulation import load_scene_model, simulate\n"
+            "from jointplay.sim import load_scene_model, simulate\n"
             "scene = default_scene().with_run(t_end=0.002)\n"
             "simulate(scene, model=load_scene_model(scene))\n"
             "assert 'sympy' not in sys.modules, 'sympy was imported'\n")

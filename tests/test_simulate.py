@@ -23,7 +23,7 @@ from sim_fixtures import (
 
 from jointplay.common.errors import SimulationError
 from jointplay.scene.definition import default_scene
-from jointplay.simulation import Stepper, simulate
+from jointplay.sim import Stepper, simulate
 
 LAWS = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 

@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+e8287ed6c8ec, casadi 3.8.2, sympy 1.14.0
- * input hash: e502cecebb044c8d6eb4352ed4e51bbd1341282aa8943dc19ae929ebfbd1739e
+ * generator: jointplay.derive 0.1.0+e98006561e17, casadi 3.8.2, sympy 1.14.0
+ * input hash: a6b6b810a0c12645c00756ec9c384b235bf2209059489d974ebbc07f2ab1fc04
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

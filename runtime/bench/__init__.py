@@ -450,7 +450,8 @@ def without_friction(scene: Scene) -> Scene:
 
 def fidelity(scene: Scene, *, run_scene: Scene | None = None,
              reference_rtol: float = REFERENCE_RTOL, repeats: int = 3,
-             surrogate: Path | None = None, quiet: bool = False) -> Fidelity:
+             surrogate: Path | None = None, quiet: bool = False,
+             effects: bool = False) -> Fidelity:
     """Each modelling level's end-effector error against the full model at ``reference_rtol``
     and its cost, at the scene's own run settings (``run_scene``) and at the reference
     tolerance (which leaves the modelling error alone)."""
@@ -498,6 +499,10 @@ def fidelity(scene: Scene, *, run_scene: Scene | None = None,
                            else {k: math.nan for k in ERROR_KEYS[:3]})
                 rows.append(row)
                 bar.update(1)
+    if effects:  # lubrication and wear (see jointplay.bench_effects)
+        from jointplay.bench_effects import fidelity_rows
+
+        rows += fidelity_rows(scene, run_scene, reference, repeats)
     rows.append(surrogate_row(run_scene, surrogate, reference, repeats))
     return Fidelity(scene=run_scene, reference_label=run_label(scene.with_run(**tight)),
                     rows=rows, facts=machine_facts())
@@ -999,6 +1004,12 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
                                    check_step=args.check_step)
     reference, rows = work_precision(scene, model, methods=methods, rtols=rtols, steps=steps,
                                      repeats=repeats, reference=reference, quiet=args.quiet)
+    if args.effects:
+        from jointplay.bench_effects import work_precision_rows
+
+        rows += work_precision_rows(scene, reference, rtols=rtols, repeats=repeats,
+                                    reference_rtol=args.reference_rtol, check=args.check,
+                                    check_step=args.check_step, quiet=args.quiet)
     wp = WorkPrecision(scene=scene, reference=reference, rows=rows, compile_s=compile_s,
                        load_s=load_s, repeats=repeats, facts=machine_facts())
     paths = write_work_precision(wp, out, _command())
@@ -1021,7 +1032,8 @@ def cmd_fidelity(args: argparse.Namespace) -> int:
                                               "model")
     out = prepare_out_dir(args.out)
     fid = fidelity(scene, run_scene=run_scene, reference_rtol=args.reference_rtol,
-                   repeats=repeats, surrogate=surrogate, quiet=args.quiet)
+                   repeats=repeats, surrogate=surrogate, quiet=args.quiet,
+                   effects=args.effects)
     skipped = [r for r in fid.rows if r["status"] == "skipped" and surrogate is not None]
     for r in skipped:
         print(f"jointplay: note: surrogate row skipped: {r['note']}", file=sys.stderr)
@@ -1113,6 +1125,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     fid.add_argument("--surrogate", metavar="MODEL_DIR",
                      help=f"a trained neural surrogate ({SURROGATE_MODULE}); without it the "
                           "surrogate row is skipped with a note")
+    for p in (wp, fid):
+        p.add_argument("--effects", action="store_true",
+                       help="add rows for lubricated joints and Archard wear")
     fid.set_defaults(func=cmd_fidelity)
 
     sc = sub.add_parser("scaling", help="derive, emit and compile time, and the cost of a "

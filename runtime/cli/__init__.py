@@ -332,6 +332,11 @@ def summary(result: Any) -> str:
         f"{result.energy['dissipated'][-1]:.4g} J)",
     ]
     lines += contact_lines(result)
+    for k, j in enumerate(result.wear.joints if result.wear is not None else ()):
+        wear = result.wear
+        lines.append(f"  joint {j} wear: volume {wear.volume[k]:.4g} m^3, deepest "
+                     f"{wear.bearing_depth[k].max():.4g} m on the bearing, "
+                     f"{wear.journal_depth[k].max():.4g} m on the journal")
     if result.ideal is not None:
         ideal = result.ideal
         for name, a, b, unit in (("position", result.tip_position, ideal.tip_position, "m"),

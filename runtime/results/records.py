@@ -7,9 +7,12 @@ Arrays are float64, indexed by output sample first. ``nc`` is the number of clea
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from jointplay.wear import WearProfile
 
 # Columns of the contact-phase table beyond the four an impact always had, with their units.
 PHASE_FIELDS: tuple[tuple[str, str, str], ...] = (
@@ -132,6 +135,7 @@ class SimulationResult:
     stats: dict[str, Any]  # solver statistics: steps, rhs / jacobian evaluations, events, wall time
     metadata: dict[str, Any] = field(default_factory=dict)  # scene text, versions, model hash
     ideal: SimulationResult | None = None  # the same scene with ideal joints (--compare-ideal)
+    wear: WearProfile | None = None  # Archard wear of the clearance joints, when compiled
 
     @property
     def n_samples(self) -> int:

@@ -16,6 +16,8 @@ HDF5 layout (format "jointplay-result", version 1); every array carries attrs "u
 * ``/energy``: one dataset per energy component.
 * ``/metadata``: string metadata as attrs, other values as JSON attrs of ``/metadata/json``;
   solver statistics as the JSON text dataset ``/metadata/stats``.
+* ``/wear``: Archard wear (angle, bearing_depth, journal_depth, volume), when the robot asks
+  for it (see :mod:`jointplay.wear`); CSV: ``RUN.wear.csv`` beside the samples.
 * ``/ideal``: the ideal-joint result, same layout (without format attrs), when present.
 """
 
@@ -32,6 +34,7 @@ import numpy as np
 
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import atomic_path
+from jointplay.results import wear as wear_files
 from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult
 
 FORMAT = "jointplay-result"
@@ -218,6 +221,8 @@ def _write_group(group: Any, r: SimulationResult, compress: bool) -> None:
     for name, values in r.energy.items():
         _dataset(energy, name, values, "J", f"energy: {name}", compress)
 
+    if r.wear is not None:
+        wear_files.write_group(group, r.wear)
     meta = group.create_group("metadata", track_order=True)
     as_json = meta.create_group("json", track_order=True)
     for key, value in r.metadata.items():
@@ -261,6 +266,7 @@ def _read_group(group: Any, ideal: SimulationResult | None = None) -> Simulation
         stats=stats,
         metadata=metadata,
         ideal=ideal,
+        wear=wear_files.read_group(group["wear"]) if "wear" in group else None,
         **arrays,
     )
 
@@ -333,6 +339,9 @@ def write_csv(result: SimulationResult, path: str | Path) -> list[Path]:
     """
     path = check_output_path(path)
     phases = check_output_path(impacts_csv_path(path))
+    side = [phases]
+    if result.wear is not None:
+        side.append(check_output_path(wear_files.csv_path(path)))
     heads, cols, fmts = zip(*impact_csv_columns(result.impacts), strict=True)
     rows = np.column_stack([np.asarray(c, dtype=np.float64) for c in cols]) if len(
         result.impacts) else np.zeros((0, len(heads)))
@@ -342,11 +351,14 @@ def write_csv(result: SimulationResult, path: str | Path) -> list[Path]:
     headers, columns = zip(*csv_columns(result), strict=True)
     table = np.column_stack([np.asarray(c, dtype=np.float64) for c in columns])
     try:
+        if result.wear is not None:
+            wear_files.write_csv(result.wear, side[-1])
         with atomic_path(path) as tmp:
             np.savetxt(tmp, table, fmt="%.17g", delimiter=",", header=",".join(headers),
                        comments="", encoding="utf-8")
     except BaseException:
-        # the pair is one result: without its samples the phase table must not stay behind
-        phases.unlink(missing_ok=True)
+        # the files are one result: without its samples the tables must not stay behind
+        for table_path in side:
+            table_path.unlink(missing_ok=True)
         raise
-    return [path, phases]
+    return [path, *side]

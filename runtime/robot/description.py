@@ -37,6 +37,8 @@ FrictionRamp = Literal["linear", "smooth"]
 CONTACT_LAWS: tuple[str, ...] = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 FRICTION_LAWS: tuple[str, ...] = ("none", "coulomb")
 FRICTION_RAMPS: tuple[str, ...] = ("linear", "smooth")
+LUBRICATION_MODELS: tuple[str, ...] = ("none", "short-bearing", "long-bearing")
+WEAR_MODELS: tuple[str, ...] = ("none", "archard")
 MAX_LINKS = 32
 
 STEEL_E = 207e9
@@ -74,6 +76,9 @@ class Joint:
     bearing_nu: float = STEEL_NU
     journal_E: float = STEEL_E
     journal_nu: float = STEEL_NU
+    # Axial length of the journal and bearing (m): needed only by the laws and effects that
+    # act along it (lubrication, wear), so None (absent) is valid until one is compiled.
+    length: float | None = None
 
     @property
     def moves(self) -> bool:
@@ -117,6 +122,33 @@ class Friction:
 
 
 @dataclass(frozen=True)
+class Lubrication:
+    """Hydrodynamic film in every clearance joint (see jointplay.derive.lubrication).
+
+    ``model``: ``none`` (dry joints), ``short-bearing`` or ``long-bearing`` (Pinkus and
+    Sternlicht's closed forms); ``viscosity`` in Pa s; ``transition``: the eccentricity ratio
+    from which the film force is smoothly frozen as the film closes (0 < transition < 1).
+    """
+
+    model: str = "none"
+    viscosity: float = 0.04
+    transition: float = 0.95
+
+
+@dataclass(frozen=True)
+class Wear:
+    """Archard wear of every clearance joint, integrated during the run (see jointplay.wear).
+
+    ``coefficient``: the dimensionless wear coefficient k; ``hardness``: of the softer
+    surface, Pa. Wear volume rate k F_n |v_t| / H.
+    """
+
+    model: str = "none"
+    coefficient: float = 1.0e-4
+    hardness: float = 2.0e9
+
+
+@dataclass(frozen=True)
 class Robot:
     """A planar serial robot with optional clearance joints, validated on construction."""
 
@@ -128,6 +160,8 @@ class Robot:
     contact: Contact = field(default_factory=Contact)
     friction: Friction = field(default_factory=Friction)
     drive: bool = True  # drive torques on the joints that move
+    lubrication: Lubrication = field(default_factory=Lubrication)
+    wear: Wear = field(default_factory=Wear)
 
     def __post_init__(self) -> None:
         validate(self)
@@ -158,6 +192,11 @@ class Robot:
             friction_law=self.friction.law if friction else "none",
             friction_ramp=self.friction.ramp if friction else None,
             drive=self.drive,
+            # Effects enter the structure only when asked for: a scene without them keeps the
+            # structure (and so the generated model) it always had.
+            lubrication=(self.lubrication.model
+                         if has_clearance and self.lubrication.model != "none" else None),
+            wear=self.wear.model if has_clearance and self.wear.model != "none" else None,
         )
 
     def structure_hash(self) -> str:
@@ -195,6 +234,9 @@ class Robot:
             "friction": vars(self.friction).copy(),
             "drive": {"enabled": self.drive},
         }
+        for key, default in (("lubrication", Lubrication()), ("wear", Wear())):
+            if getattr(self, key) != default:
+                d[key] = vars(getattr(self, key)).copy()
         return d
 
 
@@ -206,6 +248,8 @@ def _joint_dict(j: Joint) -> dict[str, Any]:
         for name in ("bearing_radius", "journal_radius", "bearing_E", "bearing_nu",
                      "journal_E", "journal_nu"):
             d[name] = getattr(j, name)
+        if j.length is not None:
+            d["length"] = j.length
     return d
 
 
@@ -236,6 +280,35 @@ def _positive(field_name: str, value: float, *, allow_zero: bool = False) -> Non
 def _finite(field_name: str, value: float) -> None:
     if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
         raise DescriptionError(field_name, f"must be a finite number, got {value!r}")
+
+
+def _validate_effects(robot: Robot) -> None:
+    """Lubrication, wear, and the joint length they need."""
+    lub, wear = robot.lubrication, robot.wear
+    if lub.model not in LUBRICATION_MODELS:
+        raise DescriptionError("lubrication.model",
+                               f"must be one of {', '.join(LUBRICATION_MODELS)}, got {lub.model!r}")
+    _positive("lubrication.viscosity", lub.viscosity)
+    _finite("lubrication.transition", lub.transition)
+    if not 0.0 < lub.transition < 1.0:
+        raise DescriptionError("lubrication.transition",
+                               f"must be an eccentricity ratio in (0, 1), got {lub.transition}")
+    if wear.model not in WEAR_MODELS:
+        raise DescriptionError("wear.model",
+                               f"must be one of {', '.join(WEAR_MODELS)}, got {wear.model!r}")
+    _positive("wear.coefficient", wear.coefficient)
+    _positive("wear.hardness", wear.hardness)
+    needed = robot.structure().uses_length
+    for i, joint in enumerate(robot.joints, start=1):
+        if joint.length is not None:
+            _positive(f"joints[{i}].length", joint.length)
+        elif needed and joint.has_clearance:
+            effect = " and ".join(name for name in ("lubrication", "wear")
+                                  if getattr(robot, name).model != "none")
+            raise DescriptionError(
+                f"joints[{i}].length",
+                f"is required by {effect}: add length = <axial length of the journal and "
+                "bearing, m> to this [[joints]] entry")
 
 
 def validate(robot: Robot) -> None:
@@ -276,6 +349,7 @@ def validate(robot: Robot) -> None:
                 if not 0.0 < nu < 0.5:
                     raise DescriptionError(f"joints[{i}].{part}_nu",
                                            f"Poisson's ratio must be in (0, 0.5), got {nu}")
+    _validate_effects(robot)
     if not robot.moving_joints and not robot.clearance_joints:
         raise DescriptionError("joints", "at least one joint must move or have play (not every "
                                "joint locked)")
@@ -312,13 +386,15 @@ def validate(robot: Robot) -> None:
 # Reading descriptions from TOML / dictionaries / flags
 # --------------------------------------------------------------------------------------------
 
-_TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive")
+_TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive",
+             "lubrication", "wear")
 _LINK_KEYS = ("length", "mass", "inertia", "com")
 _JOINT_KEYS = ("kind", "angle", "bearing_radius", "journal_radius", "bearing_E", "bearing_nu",
-               "journal_E", "journal_nu")
+               "journal_E", "journal_nu", "length")
 _FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", "journal_radius",
                  "bearing_E", "bearing_nu", "journal_E", "journal_nu", "exponent", "restitution",
-                 "impact_speed_floor", "mu", "v0", "v1"}
+                 "impact_speed_floor", "mu", "v0", "v1", "viscosity", "transition",
+                 "coefficient", "hardness"}
 
 
 def check_keys(table: Any, allowed: Sequence[str], where: str,
@@ -404,6 +480,10 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
     check_keys(friction_raw, tuple(vars(Friction())), "friction")
     drive_raw = data.get("drive", {})
     check_keys(drive_raw, ("enabled",), "drive")
+    lubrication_raw = data.get("lubrication", {})
+    check_keys(lubrication_raw, tuple(vars(Lubrication())), "lubrication")
+    wear_raw = data.get("wear", {})
+    check_keys(wear_raw, tuple(vars(Wear())), "wear")
     name = data.get("name", "robot")
     if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
         raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
@@ -416,6 +496,8 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
         contact=Contact(**_numbers(contact_raw, "contact")),
         friction=Friction(**_numbers(friction_raw, "friction")),
         drive=_bool(drive_raw.get("enabled", True), "drive.enabled"),
+        lubrication=Lubrication(**_numbers(lubrication_raw, "lubrication")),
+        wear=Wear(**_numbers(wear_raw, "wear")),
     )
 
 
@@ -514,7 +596,8 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
     known = {p.name: p for p in robot.parameters()}
     links = [vars(link).copy() for link in robot.links]
     joints = [vars(j).copy() for j in robot.joints]
-    effects = {"contact": vars(robot.contact).copy(), "friction": vars(robot.friction).copy()}
+    effects = {"contact": vars(robot.contact).copy(), "friction": vars(robot.friction).copy(),
+               "lubrication": vars(robot.lubrication).copy(), "wear": vars(robot.wear).copy()}
     gravity = list(robot.gravity.vector)
     payload = robot.payload_mass
     for name, value in values.items():
@@ -539,6 +622,8 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
         gravity=Gravity(robot.gravity.enabled, (gravity[0], gravity[1])),
         contact=Contact(**effects["contact"]),
         friction=Friction(**effects["friction"]),
+        lubrication=Lubrication(**effects["lubrication"]),
+        wear=Wear(**effects["wear"]),
         payload_mass=payload,
     )
 

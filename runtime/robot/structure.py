@@ -21,7 +21,8 @@ MOVING_KINDS = ("ideal", "clearance")
 CLEARANCE_KINDS = ("clearance", "locked_clearance")
 LOCKED_KINDS = ("locked", "locked_clearance")
 
-ParameterOwner = Literal["link", "joint", "payload", "gravity", "contact", "friction"]
+ParameterOwner = Literal["link", "joint", "payload", "gravity", "contact", "friction",
+                         "lubrication", "wear"]
 CoordinateKind = Literal["angle", "ex", "ey"]
 
 
@@ -40,6 +41,8 @@ class Structure:
     friction_law: str
     friction_ramp: str | None
     drive: bool
+    lubrication: str | None = None  # "short-bearing" | "long-bearing" when a film is modelled
+    wear: str | None = None  # "archard" when wear is integrated during the run
 
     @property
     def moving_joints(self) -> tuple[int, ...]:
@@ -52,6 +55,11 @@ class Structure:
         return tuple(i for i, k in enumerate(self.joints, start=1) if k in CLEARANCE_KINDS)
 
     @property
+    def uses_length(self) -> bool:
+        """Whether a compiled law or effect needs the joints' axial length ``joint{j}.length``."""
+        return bool(self.lubrication or self.wear)
+
+    @property
     def has_friction(self) -> bool:
         return self.friction_law != "none"
 
@@ -62,16 +70,22 @@ class Structure:
 
     def as_dict(self) -> dict[str, Any]:
         """The canonical form: hashed into the model's stamp and written to layout.json."""
-        return {"links": self.links, "joints": list(self.joints), "gravity": self.gravity,
-                "contact_law": self.contact_law, "friction": self.friction,
-                "drive": self.drive}
+        out: dict[str, Any] = {
+            "links": self.links, "joints": list(self.joints), "gravity": self.gravity,
+            "contact_law": self.contact_law, "friction": self.friction, "drive": self.drive}
+        # Present only when compiled, so that a structure without them hashes as it always did.
+        for key in _OPTIONAL:
+            if getattr(self, key) is not None:
+                out[key] = getattr(self, key)
+        return out
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Structure:
         """Read :meth:`as_dict`'s form back (ValueError naming the key if it is not that)."""
         keys = {"links", "joints", "gravity", "contact_law", "friction", "drive"}
-        if not isinstance(data, Mapping) or set(data) != keys:
-            raise ValueError(f"a structure has exactly the keys {sorted(keys)}")
+        if not isinstance(data, Mapping) or not keys <= set(data) <= keys | set(_OPTIONAL):
+            raise ValueError(f"a structure has the keys {sorted(keys)}, and optionally "
+                             f"{', '.join(_OPTIONAL)}")
         joints = data["joints"]
         if not isinstance(joints, list) or not all(k in JOINT_KINDS for k in joints):
             raise ValueError(f"'joints' must list kinds among {', '.join(JOINT_KINDS)}")
@@ -81,7 +95,11 @@ class Structure:
             raise ValueError(f"'friction' must be 'none' or 'LAW-RAMP', got {friction!r}")
         return cls(links=int(data["links"]), joints=tuple(joints),
                    gravity=bool(data["gravity"]), contact_law=data["contact_law"],
-                   friction_law=law, friction_ramp=ramp or None, drive=bool(data["drive"]))
+                   friction_law=law, friction_ramp=ramp or None, drive=bool(data["drive"]),
+                   **{key: data.get(key) for key in _OPTIONAL})
+
+
+_OPTIONAL = ("lubrication", "wear")
 
 
 @dataclass(frozen=True)
@@ -166,12 +184,27 @@ def parameter_layout(structure: Structure) -> list[Parameter]:
                               f"fixed relative angle of locked joint {i}"))
         if kind in CLEARANCE_KINDS:
             out += _clearance_joint_parameters(i)
+            if structure.uses_length:
+                out.append(_joint(i, "length", f"L_{{b{i}}}", "m",
+                                  "axial length of the journal and bearing"))
     if structure.contact_law is not None:
         out += [
             _effect("contact", "exponent", "n", "1", "Hertz exponent n of F_n = K d^n"),
             _effect("contact", "restitution", "c_{e}", "1", "coefficient of restitution"),
             _effect("contact", "impact_speed_floor", "v_{min}", "m/s",
                     "floor of the captured impact speed (grazing contact)"),
+        ]
+    if structure.lubrication:
+        out += [
+            _effect("lubrication", "viscosity", "\\mu_{l}", "Pa s",
+                    "dynamic viscosity of the lubricant"),
+            _effect("lubrication", "transition", "\\epsilon_{t}", "1",
+                    "eccentricity ratio where the film force starts to freeze (film closing)"),
+        ]
+    if structure.wear:
+        out += [
+            _effect("wear", "coefficient", "k_{w}", "1", "Archard wear coefficient"),
+            _effect("wear", "hardness", "H_{w}", "Pa", "hardness of the worn surface"),
         ]
     if structure.has_friction:
         out += [

@@ -71,6 +71,12 @@ def simulate(scene: Scene, *, model: Model | None = None,
                                 parameters=ideal_params, quiet=quiet)
     pr = _Problem(model, scene, p)
     run = scene.run
+    if model.structure.wear is not None and run.integrator != "bdf":
+        from jointplay.common.errors import DescriptionError
+
+        raise DescriptionError("run.integrator", "wear is integrated by the compiled loop: "
+                               f"use integrator = \"bdf\" with [robot.wear] (got "
+                               f"{run.integrator!r})", scene.source)
     n_out = run.n_outputs
     t = np.arange(n_out + 1) * run.output_step
     traj = _Trajectory(x=np.zeros((n_out + 1, model.n_state)),

@@ -95,6 +95,7 @@ def _assemble(pr: _Problem, traj: _Trajectory, t: np.ndarray, stats: dict[str, A
         stats=stats,
         metadata=_metadata(pr),
         ideal=ideal,
+        wear=traj.wear,
     )
 
 

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.results.records import Impacts
+from jointplay.results.wear import wear_profile
 from jointplay.sim.native import NativeIntegrator, raise_for_status
 from jointplay.sim.problem import (
     MAX_EVENTS_PER_OUTPUT,
@@ -111,8 +112,11 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
         progress.update(upto - done)
         done = upto
     _add_counts(stats, integ)
-    rows = close_open_phases(integ, pr, integ.phases(), integ.current())
-    return phase_table(pr, rows, float(t[-1]))
+    wear = integ.wear()
+    if wear is not None:
+        traj.wear = wear_profile(list(pr.model.clearance_joints), *wear)
+    phase_rows = close_open_phases(integ, pr, integ.phases(), integ.current())
+    return phase_table(pr, phase_rows, float(t[-1]))
 
 
 def _add_counts(stats: _Accumulated, integ: NativeIntegrator) -> None:

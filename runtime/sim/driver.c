@@ -25,6 +25,11 @@
  *   output): located, recorded per phase.
  * The state is scaled: eccentricities in units of their joint's clearance, so one absolute
  * tolerance means the same for angles and micrometre play.
+ *
+ * Wear (only for a model with a generated `wear` function): Archard's volume rate and its
+ * spread over the bearing's and the journal's surfaces are integrated over every step that
+ * stands, by Gauss-Legendre quadrature on the dense output in time and exactly over each
+ * angular bin (see wear_step).
  */
 #include <math.h>
 #include <signal.h>
@@ -81,6 +86,8 @@ typedef struct {
   long max_events;          /* event locations allowed between two outputs */
   int max_order;            /* highest BDF order used (1..5) */
   jp_function f, jac, contact;
+  jp_function wear;         /* eval NULL: no wear integrated */
+  int wear_bins;            /* angular bins around each surface */
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -119,6 +126,8 @@ typedef struct {
   double last_safety, last_err_norm, t_old, h_abs_old; int order_old, n_equal_old;
   /* failure */
   int status; double fail_t; int fail_joint; double fail_h;
+  /* wear: outputs of the model's wear function (7 x nc), volume (nc), depth (2 x nc x bins) */
+  double *wear_out, *wear_volume, *wear_depth;
 } jp_sim;
 
 static volatile sig_atomic_t jp_interrupted = 0;
@@ -818,6 +827,99 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
   return 0;
 }
 
+/* ---- wear ------------------------------------------------------------------------------------ */
+
+#define JP_PI 3.14159265358979323846
+
+/* Outputs of the generated wear function, per joint (see jointplay.derive.wear). */
+enum { WO_BEARING_ANGLE, WO_JOURNAL_ANGLE, WO_RATE, WO_BEARING_HALF, WO_JOURNAL_HALF,
+       WO_BEARING_AREA, WO_JOURNAL_AREA, WO_BEARING_SPEED, WO_JOURNAL_SPEED, WO_FIELDS };
+/* A step is cut into at most this many pieces for the wear quadrature. */
+#define WEAR_MAX_PIECES 100000
+
+/* Share of Hertz's elliptical pressure p ~ (1 - u^2)^(1/2) on u in [-1, x]. */
+static double ellipse_share(double x) {
+  if (x <= -1.0) return 0.0;
+  if (x >= 1.0) return 1.0;
+  return 0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / JP_PI;
+}
+
+/* Spread a worn volume over the bins of one surface: elliptically over the contact arc
+ * [angle - half, angle + half], each bin's share integrated exactly, as the bin's mean depth
+ * (volume share over the bin's surface, area * bin width). */
+static void deposit(double *bins, int nb, double angle, double half, double volume,
+                    double area) {
+  const double two_pi = 2.0 * JP_PI, width = two_pi / nb;
+  double a = fmod(angle, two_pi);
+  if (a < 0) a += two_pi;
+  double scale = volume / (area * width);
+  if (!(half > 1e-9 * width)) { /* no width (no force) or not finite: one bin */
+    int k = (int)(a / width);
+    bins[k < nb ? k : nb - 1] += scale;
+    return;
+  }
+  if (half > JP_PI) half = JP_PI; /* the contact cannot wrap past itself */
+  int k0 = (int)floor((a - half) / width), k1 = (int)floor((a + half) / width);
+  for (int k = k0; k <= k1; ++k) {
+    double lo = fmax(k * width, a - half), hi = fmin((k + 1) * width, a + half);
+    double share = ellipse_share((hi - a) / half) - ellipse_share((lo - a) / half);
+    bins[((k % nb) + nb) % nb] += scale * share;
+  }
+}
+
+static const double GL_NODE[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
+static const double GL_WEIGHT[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+
+/* The model's wear outputs at time t on the dense output of the last step. */
+static void wear_at(jp_sim *s, double t) {
+  const jp_config *c = &s->c;
+  dense(s, t, s->tmp_y);
+  unscale(s, s->tmp_y);
+  s->arg[0] = s->xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
+  for (int k = 0; k < WO_FIELDS; ++k) s->res[k] = s->wear_out + k * c->nc;
+  call(s, &c->wear);
+}
+
+/* Wear over the step that just stood, [t - h, t]: three-point Gauss-Legendre in time (exact
+ * for polynomials of degree 5) on the dense output, over pieces of the step short enough
+ * that the contact moves less than half a bin on either surface (the depth in one bin is not
+ * smooth in time while the contact passes over it); the pieces' count comes from the contact
+ * angles' rates at the step's own Gauss nodes, where any joint wears. */
+static void wear_step(jp_sim *s) {
+  const jp_config *c = &s->c;
+  int nc = c->nc, nb = c->wear_bins;
+  double t0 = s->t - s->h, width = 2.0 * JP_PI / nb, travel = 0.0;
+  int wearing = 0;
+  for (int g = 0; g < 3; ++g) {
+    wear_at(s, t0 + 0.5 * s->h * (1.0 + GL_NODE[g]));
+    for (int j = 0; j < nc; ++j) {
+      if (!(s->wear_out[WO_RATE * nc + j] > 0)) continue;
+      wearing = 1;
+      travel = fmax(travel, fabs(s->wear_out[WO_BEARING_SPEED * nc + j]) * s->h);
+      travel = fmax(travel, fabs(s->wear_out[WO_JOURNAL_SPEED * nc + j]) * s->h);
+    }
+  }
+  if (!wearing) return;
+  double wanted = ceil(travel / (0.5 * width));
+  long pieces = wanted < 1 ? 1 : wanted > WEAR_MAX_PIECES ? WEAR_MAX_PIECES : (long)wanted;
+  double piece = s->h / pieces, half = 0.5 * piece;
+  for (long m = 0; m < pieces; ++m) {
+    for (int g = 0; g < 3; ++g) {
+      wear_at(s, t0 + m * piece + half * (1.0 + GL_NODE[g]));
+      const double *o = s->wear_out;
+      for (int j = 0; j < nc; ++j) {
+        double volume = GL_WEIGHT[g] * half * o[WO_RATE * nc + j];
+        if (!(volume > 0)) continue;
+        s->wear_volume[j] += volume;
+        deposit(s->wear_depth + (size_t)j * nb, nb, o[WO_BEARING_ANGLE * nc + j],
+                o[WO_BEARING_HALF * nc + j], volume, o[WO_BEARING_AREA * nc + j]);
+        deposit(s->wear_depth + (size_t)(nc + j) * nb, nb, o[WO_JOURNAL_ANGLE * nc + j],
+                o[WO_JOURNAL_HALF * nc + j], volume, o[WO_JOURNAL_AREA * nc + j]);
+      }
+    }
+  }
+}
+
 /* ---- public interface ------------------------------------------------------------------------ */
 
 void jp_free(jp_sim *s);
@@ -854,8 +956,8 @@ jp_sim *jp_create(const jp_config *config) {
   s->open_phase = calloc(nc + 1, sizeof(long));
   s->c_out = calloc(8 * (nc + 1), sizeof(double));
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
-  const jp_function *fns[3] = {&c->f, &c->jac, &c->contact};
-  for (int k = 0; k < 3; ++k) {
+  const jp_function *fns[4] = {&c->f, &c->jac, &c->contact, &c->wear};
+  for (int k = 0; k < 4; ++k) {
     if (!fns[k]->eval) continue;
     if (fns[k]->sz_arg > sz_arg) sz_arg = fns[k]->sz_arg;
     if (fns[k]->sz_res > sz_res) sz_res = fns[k]->sz_res;
@@ -875,6 +977,15 @@ jp_sim *jp_create(const jp_config *config) {
     return NULL;
   }
   for (int j = 0; j < nc; ++j) s->open_phase[j] = -1;
+  if (c->wear.eval) {
+    s->wear_out = calloc((size_t)WO_FIELDS * nc + 1, sizeof(double));
+    s->wear_volume = calloc(nc + 1, sizeof(double));
+    s->wear_depth = calloc((size_t)2 * nc * c->wear_bins + 1, sizeof(double));
+    if (!s->wear_out || !s->wear_volume || !s->wear_depth || c->wear_bins < 1) {
+      jp_free(s);
+      return NULL;
+    }
+  }
   return s;
 }
 
@@ -883,7 +994,8 @@ void jp_free(jp_sim *s) {
   void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->piv, s->y_pred, s->psi, s->d,
                   s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
                   s->xdot, s->tau, s->u_hold, s->v_imp, s->flags, s->armed, s->rising, s->open_phase,
-                  s->c_out, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases};
+                  s->c_out, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
+                  s->wear_out, s->wear_volume, s->wear_depth};
   for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
   free(s);
 }
@@ -901,6 +1013,10 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   }
   s->n_steps = s->n_rhs = s->n_jac = s->n_lu = s->n_err_fail = s->n_newton_fail = 0;
   s->n_events = s->n_onsets = 0;
+  if (c->wear.eval) {
+    memset(s->wear_volume, 0, c->nc * sizeof(double));
+    memset(s->wear_depth, 0, (size_t)2 * c->nc * c->wear_bins * sizeof(double));
+  }
   memcpy(s->tmp_y2, s->D, s->N * sizeof(double));
   for (int j = 0; j < c->nc; ++j) {
     double delta;
@@ -966,6 +1082,7 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
       }
       continue;
     }
+    if (c->wear.eval) wear_step(s);
     if (s->t >= bound) { bound = t_end; s->landing_target = INFINITY; }
     while (next < n_out && t_out[next] <= s->t) {
       dense(s, t_out[next], s->tmp_y);
@@ -1009,6 +1126,13 @@ void jp_failure(const jp_sim *s, double *t, double *h, int *joint) {
   *t = s->fail_t; *h = s->fail_h; *joint = s->fail_joint;
 }
 int jp_n_state(const jp_sim *s) { return s->N; }
+
+/* Wear so far: volume (nc), then depth (2 x nc x bins: bearings, then journals). */
+void jp_wear(const jp_sim *s, double *volume, double *depth) {
+  if (!s->c.wear.eval) return;
+  memcpy(volume, s->wear_volume, s->c.nc * sizeof(double));
+  memcpy(depth, s->wear_depth, (size_t)2 * s->c.nc * s->c.wear_bins * sizeof(double));
+}
 
 /* Evaluate a generated function on `count` samples: input i of sample k at in[i] + k *
  * in_stride[i] (stride 0: the same for every sample), output likewise. For the derived

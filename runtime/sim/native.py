@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.common.errors import SimulationError
+from jointplay.results.wear import WEAR_BINS
 from jointplay.scene.expressions import Expression, TimeFunction
 from jointplay.scene.tables import TableColumn
 from jointplay.sim.postfix import postfix_program
@@ -61,7 +62,8 @@ class _Config(ctypes.Structure):
                 ("h_max", ctypes.c_double), ("h_init", ctypes.c_double),
                 ("max_steps", ctypes.c_long), ("max_events", ctypes.c_long),
                 ("max_order", ctypes.c_int),
-                ("f", _Function), ("jac", _Function), ("contact", _Function)]
+                ("f", _Function), ("jac", _Function), ("contact", _Function),
+                ("wear", _Function), ("wear_bins", ctypes.c_int)]
 
 
 @functools.cache
@@ -94,6 +96,7 @@ def driver_library() -> ctypes.CDLL:
     lib.jp_stats.argtypes = [ctypes.c_void_p, ctypes.POINTER(ctypes.c_long)]
     lib.jp_failure.argtypes = [ctypes.c_void_p, _dbl_p, _dbl_p, _int_p]
     lib.jp_n_state.argtypes = [ctypes.c_void_p]
+    lib.jp_wear.argtypes = [ctypes.c_void_p, _dbl_p, _dbl_p]
     lib.jp_map.argtypes = [ctypes.POINTER(_Function), ctypes.c_long, ctypes.c_void_p,
                            ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
     if lib.jp_phase_fields() != len(PHASE_COLUMNS):
@@ -275,6 +278,12 @@ class NativeIntegrator:
         cfg.jac, _ = _function(model, "jac_forward_dynamics")
         if self.nc:
             cfg.contact, _ = _function(model, "contact")
+        # Archard wear, integrated in the loop, for a model generated with it.
+        self.wear_bins = WEAR_BINS if model.structure.wear is not None else 0
+        if self.wear_bins:
+            model.function("wear")
+            cfg.wear, _ = _function(model, "wear")
+            cfg.wear_bins = self.wear_bins
         self._config = cfg
         handle = self.lib.jp_create(ctypes.byref(cfg))
         if not handle:
@@ -331,6 +340,16 @@ class NativeIntegrator:
         out = (ctypes.c_long * len(STAT_NAMES))()
         self.lib.jp_stats(self._handle, out)
         return dict(zip(STAT_NAMES, (int(v) for v in out), strict=True))
+
+    def wear(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """Wear so far, or None without it: volume (nc,) m^3 and mean depth per bin
+        (2, nc, bins) m, bearings then journals (see jointplay.results.wear)."""
+        if not self.wear_bins:
+            return None
+        volume = np.zeros(self.nc)
+        depth = np.zeros((2, self.nc, self.wear_bins))
+        self.lib.jp_wear(self._handle, _ptr(volume, _dbl_p), _ptr(depth, _dbl_p))
+        return volume, depth
 
     def failure(self) -> tuple[float, float, int]:
         t, h, joint = ctypes.c_double(), ctypes.c_double(), ctypes.c_int()

@@ -132,6 +132,7 @@ class _Trajectory:
     work: np.ndarray
     dissipated: np.ndarray
     impacts: list[tuple[float, int, float, float, float]] = field(default_factory=list)
+    wear: Any = None  # jointplay.results.wear.WearProfile, from a method that integrates it
 
 
 def _initial_state(model: Model, scene: Scene) -> np.ndarray:

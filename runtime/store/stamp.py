@@ -14,7 +14,8 @@ from typing import Any
 
 from jointplay.robot.description import canonical_json
 
-_EMITTING_MODULES = ("codegen.py", "laws.py", "symbolic.py", "to_casadi.py")
+_EMITTING_MODULES = ("codegen.py", "laws.py", "lubrication.py", "symbolic.py", "to_casadi.py",
+                     "wear.py")
 
 
 def _generator_version() -> str:

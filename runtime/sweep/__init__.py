@@ -562,8 +562,10 @@ CONTACT_METRICS: tuple[tuple[str, str], ...] = (
     ("max_approach_speed", "float"))
 
 
-def metric_columns(clearance_joints: Sequence[int]) -> list[tuple[str, str]]:
-    """(column, type) of the summary metrics, type one of float, int, str."""
+def metric_columns(clearance_joints: Sequence[int], wear: bool = False
+                   ) -> list[tuple[str, str]]:
+    """(column, type) of the summary metrics, type one of float, int, str (with ``wear``,
+    the Archard wear columns of :func:`jointplay.wear.wear_metrics` too)."""
     cols = [("max_position_error", "float"), ("max_velocity_error", "float"),
             ("max_acceleration_error", "float"), ("rms_position_error", "float")]
     for name, kind in CONTACT_METRICS:
@@ -573,6 +575,11 @@ def metric_columns(clearance_joints: Sequence[int]) -> list[tuple[str, str]]:
     cols += [(name, "int") for name in ("steps", "rhs_evaluations", "jacobian_evaluations",
                                         "error_test_failures", "integrator_calls", "events")]
     cols += [("simulation_time_s", "float"), ("wall_time_s", "float"), ("cpu_time_s", "float")]
+    if wear:
+        from jointplay.wear import WEAR_METRICS
+
+        for name in WEAR_METRICS:
+            cols += [(name, "float")] + [(f"{name}_joint{j}", "float") for j in clearance_joints]
     return cols
 
 
@@ -591,6 +598,10 @@ def _metrics(result: SimulationResult, ideal: SimulationResult) -> dict[str, Any
         "simulation_time_s": float(result.stats["wall_time_s"]),
     }
     out.update(contact_metrics(result))
+    if result.wear is not None:
+        from jointplay.wear import wear_metrics
+
+        out.update(wear_metrics(result.wear))
     for name in ("steps", "rhs_evaluations", "jacobian_evaluations", "error_test_failures",
                  "integrator_calls", "events"):
         out[name] = int(result.stats.get(name, 0))
@@ -800,7 +811,7 @@ def build_table(sweep: Sweep, out: str | Path) -> Any:
     for name in sweep.parameter_names:
         columns[name] = pa.array([r["parameters"].get(name) for _, r in rows], pa.float64())
     types = {"float": pa.float64(), "int": pa.int64(), "str": pa.string()}
-    for name, kind in metric_columns(clearance):
+    for name, kind in metric_columns(clearance, sweep.scene.robot.structure().wear is not None):
         columns[name] = pa.array([r.get(name) for _, r in rows], types[kind])
     for name, kind in (("ideal_reused", pa.bool_()), ("error", pa.string()),
                        ("error_type", pa.string()), ("error_stage", pa.string()),
