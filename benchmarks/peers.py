@@ -67,13 +67,13 @@ from jointplay.bench import (
     final_state_error,
     machine_facts,
     markdown_table,
-    prepare_out_dir,
     run_counts,
     state_scale,
     timed_runs,
     tip_errors,
     to_csv,
 )
+from jointplay.cli.args import prepare_out_dir
 from jointplay.common.files import atomic_write_text
 from jointplay.common.timing import per_call_seconds
 
