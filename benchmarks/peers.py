@@ -61,6 +61,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import casadi as ca
 import numpy as np
 
 from jointplay.bench import (
@@ -184,6 +185,26 @@ class EventRun:
     impacts: int
 
 
+def _contact_event(geometry: ContactGeometry, i: int, in_contact: bool
+                   ) -> Callable[[float, np.ndarray], float]:
+    """The terminal event of joint ``i``'s next transition: penetration crossing zero upwards
+    while free, or downwards while in contact."""
+    def event(_t: float, y: np.ndarray) -> float:
+        d = geometry.delta(y, i)
+        return -d if in_contact else d
+    event.terminal = True  # type: ignore[attr-defined]
+    event.direction = 1.0  # type: ignore[attr-defined]
+    return event
+
+
+def _first_event(sol: Any, nc: int) -> tuple[int, float, np.ndarray]:
+    """The joint whose transition came first, its time and the state there."""
+    fired = [i for i in range(nc) if sol.t_events[i].size]
+    te = min(float(sol.t_events[i][0]) for i in fired)
+    i = next(i for i in fired if float(sol.t_events[i][0]) == te)
+    return i, te, np.asarray(sol.y_events[i][0], dtype=float)
+
+
 def integrate_with_impacts(rhs: Callable[[float, np.ndarray, np.ndarray], np.ndarray],
                            x0: np.ndarray, grid: np.ndarray, geometry: ContactGeometry,
                            rtol: float, atol: np.ndarray, max_events: int = 100_000
@@ -193,28 +214,16 @@ def integrate_with_impacts(rhs: Callable[[float, np.ndarray, np.ndarray], np.nda
     from scipy.integrate import solve_ivp
 
     nc = geometry.c.size
-    flags = np.zeros(nc, dtype=bool)
-    v_imp = np.zeros(nc)
+    flags = np.array([geometry.delta(x0, i) > 0 for i in range(nc)], dtype=bool)
+    v_imp = np.array([geometry.delta_dot(x0, i) if flags[i] else 0.0 for i in range(nc)])
     xs = np.zeros((grid.size, x0.size))
     vs = np.zeros((grid.size, nc))
-    xs[0] = x0
-    nfev = njev = steps = events = impacts = 0
-    for i in range(nc):
-        if geometry.delta(x0, i) > 0:
-            flags[i], v_imp[i] = True, geometry.delta_dot(x0, i)
-            impacts += 1
-    vs[0] = v_imp
+    xs[0], vs[0] = x0, v_imp
+    nfev = njev = steps = events = 0
+    impacts = int(flags.sum())
     t, x, k = float(grid[0]), x0.copy(), 1  # k: next output sample to fill
     while k < grid.size:
-        def make_event(i: int, in_contact: bool) -> Callable[[float, np.ndarray], float]:
-            def event(_t: float, y: np.ndarray) -> float:
-                d = geometry.delta(y, i)
-                return -d if in_contact else d
-            event.terminal = True  # type: ignore[attr-defined]
-            event.direction = 1.0  # type: ignore[attr-defined]
-            return event
-
-        evs = [make_event(i, bool(flags[i])) for i in range(nc)]
+        evs = [_contact_event(geometry, i, bool(flags[i])) for i in range(nc)]
         current = v_imp.copy()
         sol = solve_ivp(lambda tt, y, v=current: rhs(tt, y, v), (t, float(grid[-1])), x,
                         method="LSODA", t_eval=grid[k:], events=evs or None, rtol=rtol,
@@ -232,11 +241,7 @@ def integrate_with_impacts(rhs: Callable[[float, np.ndarray, np.ndarray], np.nda
         k += filled
         if sol.status != 1:
             break
-        fired = [i for i in range(nc) if sol.t_events[i].size]
-        te = min(float(sol.t_events[i][0]) for i in fired)
-        i = next(i for i in fired if float(sol.t_events[i][0]) == te)
-        x = np.asarray(sol.y_events[i][0], dtype=float)
-        t = te
+        i, t, x = _first_event(sol, nc)
         events += 1
         if flags[i]:
             flags[i] = False
@@ -553,68 +558,80 @@ def pinocchio_model(robot: Any) -> Any:
     return model
 
 
+class _JacobianCallback(ca.Callback):
+    """d(rhs)/d(x, tau), called back into Python; the third input (the output) is unused."""
+
+    def __init__(self, name: str, jac: Callable[[np.ndarray, np.ndarray],
+                                                tuple[np.ndarray, np.ndarray]],
+                 nx: int, ntau: int, opts: Mapping[str, Any]) -> None:
+        ca.Callback.__init__(self)
+        self._jac_fn, self._nx, self._ntau = jac, nx, ntau
+        self.construct(f"jac_{name}", dict(opts))
+
+    def get_n_in(self) -> int:
+        return 3
+
+    def get_n_out(self) -> int:
+        return 2
+
+    def get_sparsity_in(self, i: int) -> Any:
+        return ca.Sparsity.dense([self._nx, self._ntau][i], 1) if i < 2 \
+            else ca.Sparsity(self._nx, 1)
+
+    def get_sparsity_out(self, i: int) -> Any:
+        return ca.Sparsity.dense(self._nx, [self._nx, self._ntau][i])
+
+    def eval(self, arg: Sequence[Any]) -> list[Any]:
+        jx, jt = self._jac_fn(np.asarray(arg[0]).ravel(), np.asarray(arg[1]).ravel())
+        return [jx, jt]
+
+
+class _RhsCallback(ca.Callback):
+    """The right-hand side f(x, tau), called back into Python, with its Jacobian; counts its
+    calls."""
+
+    def __init__(self, name: str, fn: Callable[[np.ndarray, np.ndarray], np.ndarray],
+                 jac: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]],
+                 nx: int, ntau: int) -> None:
+        ca.Callback.__init__(self)
+        self._name, self._fn, self._jac_fn = name, fn, jac
+        self._nx, self._ntau = nx, ntau
+        self.calls = 0
+        self.construct(name, {})
+
+    def get_n_in(self) -> int:
+        return 2
+
+    def get_n_out(self) -> int:
+        return 1
+
+    def get_sparsity_in(self, i: int) -> Any:
+        return ca.Sparsity.dense([self._nx, self._ntau][i], 1)
+
+    def get_sparsity_out(self, i: int) -> Any:
+        return ca.Sparsity.dense(self._nx, 1)
+
+    def eval(self, arg: Sequence[Any]) -> list[Any]:
+        self.calls += 1
+        return [self._fn(np.asarray(arg[0]).ravel(), np.asarray(arg[1]).ravel())]
+
+    def has_jacobian(self) -> bool:
+        return True
+
+    def get_jacobian(self, _name: str, _inames: Any, _onames: Any,
+                     opts: Mapping[str, Any]) -> Any:
+        # Kept on self: CasADi holds no reference to a Python callback.
+        self._jac_callback = _JacobianCallback(self._name, self._jac_fn, self._nx,
+                                                self._ntau, opts)
+        return self._jac_callback
+
+
 def _cvodes_callback_run(name: str, fn: Callable[[np.ndarray, np.ndarray], np.ndarray],
                          jac: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]],
                          scene: Any, x0: np.ndarray, rtol: float) -> tuple[np.ndarray, int]:
     """CVODES over the output grid with the rhs and its Jacobian called back into Python."""
-    import casadi as ca
-
-    nx, ntau = x0.size, len(scene.torques)
-
-    class Jac(ca.Callback):
-        def __init__(self, opts: Mapping[str, Any]) -> None:
-            ca.Callback.__init__(self)
-            self.construct(f"jac_{name}", dict(opts))
-
-        def get_n_in(self) -> int:
-            return 3
-
-        def get_n_out(self) -> int:
-            return 2
-
-        def get_sparsity_in(self, i: int) -> Any:
-            return ca.Sparsity.dense([nx, ntau][i], 1) if i < 2 else ca.Sparsity(nx, 1)
-
-        def get_sparsity_out(self, i: int) -> Any:
-            return ca.Sparsity.dense(nx, [nx, ntau][i])
-
-        def eval(self, arg: Sequence[Any]) -> list[Any]:
-            jx, jt = jac(np.asarray(arg[0]).ravel(), np.asarray(arg[1]).ravel())
-            return [jx, jt]
-
-    class Rhs(ca.Callback):
-        calls = 0
-
-        def __init__(self) -> None:
-            ca.Callback.__init__(self)
-            self.construct(name, {})
-
-        def get_n_in(self) -> int:
-            return 2
-
-        def get_n_out(self) -> int:
-            return 1
-
-        def get_sparsity_in(self, i: int) -> Any:
-            return ca.Sparsity.dense([nx, ntau][i], 1)
-
-        def get_sparsity_out(self, i: int) -> Any:
-            return ca.Sparsity.dense(nx, 1)
-
-        def eval(self, arg: Sequence[Any]) -> list[Any]:
-            Rhs.calls += 1
-            return [fn(np.asarray(arg[0]).ravel(), np.asarray(arg[1]).ravel())]
-
-        def has_jacobian(self) -> bool:
-            return True
-
-        def get_jacobian(self, _name: str, _inames: Any, _onames: Any,
-                         opts: Mapping[str, Any]) -> Any:
-            self._jac = Jac(opts)
-            return self._jac
-
-    rhs = Rhs()
-    x = ca.MX.sym("x", nx)
+    rhs = _RhsCallback(name, fn, jac, x0.size, len(scene.torques))
+    x = ca.MX.sym("x", x0.size)
     t = ca.MX.sym("t")
     tau = ca.vertcat(*[f.casadi(t) for f in scene.torques])
     grid = np.arange(1, scene.run.n_outputs + 1) * scene.run.output_step
@@ -623,33 +640,28 @@ def _cvodes_callback_run(name: str, fn: Callable[[np.ndarray, np.ndarray], np.nd
                                       "max_num_steps": scene.run.max_steps})
     out = integ(x0=x0)
     xs = np.vstack([x0, np.asarray(out["xf"]).T])
-    return xs, Rhs.calls
+    return xs, rhs.calls
 
 
-def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
-                      ) -> tuple[list[dict[str, Any]], dict[str, Any]]:
+@dataclass
+class _IdealRhs:
+    """The ideal-joint right-hand side and its Jacobian, from jointplay and from Pinocchio,
+    each as f(x, tau) and J(x, tau) -> (d/dx, d/dtau)."""
+
+    jp_fd: Callable[[np.ndarray, np.ndarray], np.ndarray]
+    jp_jac: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]
+    pin_fd: Callable[[np.ndarray, np.ndarray], np.ndarray]
+    pin_jac: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]
+
+
+def _ideal_rhs(model: Any, pm: Any, data: Any) -> _IdealRhs:
     import pinocchio as pin
 
-    from jointplay.scene.definition import ideal_counterpart
-    from jointplay.simulation import load_scene_model
-
-    ideal_scene = scene.with_robot(ideal_counterpart(scene.robot))
-    model = load_scene_model(scene, ideal=True)
-    p = model.parameter_vector()
     n = model.n_coordinates
-    pm = pinocchio_model(ideal_scene.robot)
-    data = pm.createData()
-    if pm.nq != n:
-        raise RuntimeError(f"Pinocchio model has {pm.nq} coordinates, jointplay's {n}")
-
+    p = model.parameter_vector()
     fd = model.function("forward_dynamics")
     jac = model.function("jac_forward_dynamics")
     fd.inputs[2][:] = p
-    rng = np.random.default_rng(7)
-    x = rng.uniform(-1.0, 1.0, 2 * n)
-    tau = rng.uniform(-2.0, 2.0, n)
-    check = np.max(np.abs(model.forward_dynamics(x, tau, p)[n:]
-                          - np.asarray(pin.aba(pm, data, x[:n], x[n:], tau))))
 
     def jp_fd(xx: np.ndarray, tt: np.ndarray) -> np.ndarray:
         fd.inputs[0][:] = xx
@@ -672,15 +684,50 @@ def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
         jx = np.block([[zeros, eye], [data.ddq_dq, data.ddq_dv]])
         return jx, np.vstack([np.zeros((n, n)), minv])
 
-    jp_check = np.max(np.abs(jp_jac(x, tau)[0] - pin_jac(x, tau)[0]))
+    return _IdealRhs(jp_fd=jp_fd, jp_jac=jp_jac, pin_fd=pin_fd, pin_jac=pin_jac)
+
+
+def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
+                      ) -> tuple[list[dict[str, Any]], dict[str, Any]]:
+    from jointplay.scene.definition import ideal_counterpart
+    from jointplay.simulation import load_scene_model
+
+    ideal_scene = scene.with_robot(ideal_counterpart(scene.robot))
+    model = load_scene_model(scene, ideal=True)
+    n = model.n_coordinates
+    pm = pinocchio_model(ideal_scene.robot)
+    data = pm.createData()
+    if pm.nq != n:
+        raise RuntimeError(f"Pinocchio model has {pm.nq} coordinates, jointplay's {n}")
+    rhs = _ideal_rhs(model, pm, data)
+    per_call = _ideal_per_call(model, pm, data, rhs)
+    return _ideal_callback_rows(ideal_scene, model, rhs, repeats, rtols), per_call
+
+
+def _ideal_per_call(model: Any, pm: Any, data: Any, rhs: _IdealRhs) -> dict[str, Any]:
+    """Per call: pin.aba against jointplay's forward dynamics, and both Jacobians; how far
+    they agree at a random state."""
+    import pinocchio as pin
+
+    n = model.n_coordinates
+    p = model.parameter_vector()
+    fd = model.function("forward_dynamics")
+    jac = model.function("jac_forward_dynamics")
+    rng = np.random.default_rng(7)
+    x = rng.uniform(-1.0, 1.0, 2 * n)
+    tau = rng.uniform(-2.0, 2.0, n)
+    check = np.max(np.abs(model.forward_dynamics(x, tau, p)[n:]
+                          - np.asarray(pin.aba(pm, data, x[:n], x[n:], tau))))
+    jp_check = np.max(np.abs(rhs.jp_jac(x, tau)[0] - rhs.pin_jac(x, tau)[0]))
 
     q_arr, v_arr, t_arr = x[:n].copy(), x[n:].copy(), tau.copy()
     fd.inputs[0][:] = x
     fd.inputs[1][:] = tau
+    fd.inputs[2][:] = p
     per_call = {
         "pin_aba_us": per_call_seconds(lambda: pin.aba(pm, data, q_arr, v_arr, t_arr)) * 1e6,
         "jp_trigger_us": per_call_seconds(fd.trigger) * 1e6,
-        "jp_in_trigger_out_us": per_call_seconds(lambda: jp_fd(x, tau)) * 1e6,
+        "jp_in_trigger_out_us": per_call_seconds(lambda: rhs.jp_fd(x, tau)) * 1e6,
         "jp_call_us": per_call_seconds(lambda: fd(x, tau, p, np.zeros(0))) * 1e6,
         "pin_aba_derivatives_us": per_call_seconds(
             lambda: pin.computeABADerivatives(pm, data, q_arr, v_arr, t_arr)) * 1e6,
@@ -689,7 +736,14 @@ def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
         "max_abs_diff_jacobian": float(jp_check),
     }
     per_call["ratio"] = per_call["jp_in_trigger_out_us"] / per_call["pin_aba_us"]
+    return per_call
 
+
+def _ideal_callback_rows(ideal_scene: Any, model: Any, rhs: _IdealRhs, repeats: int,
+                         rtols: Sequence[float]) -> list[dict[str, Any]]:
+    """CVODES with each right-hand side called back into Python, and jointplay's simulate,
+    at each tolerance, against the ideal scene's tight reference."""
+    p = model.parameter_vector()
     tight = timed_runs(ideal_scene.with_run(integrator="cvodes", rtol=REFERENCE_RTOL,
                                             atol=REFERENCE_RTOL), model, 1)
     reference = tight.result
@@ -698,8 +752,10 @@ def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
     grid = reference.t
     rows = []
     for rtol in rtols:
-        for label, fn, jfn in (("Pinocchio ABA, CVODES via Python callback", pin_fd, pin_jac),
-                               ("jointplay rhs, CVODES via Python callback", jp_fd, jp_jac)):
+        for label, fn, jfn in (("Pinocchio ABA, CVODES via Python callback", rhs.pin_fd,
+                                rhs.pin_jac),
+                               ("jointplay rhs, CVODES via Python callback", rhs.jp_fd,
+                                rhs.jp_jac)):
             (xs, calls), cpu = cpu_runs(functools.partial(
                 _cvodes_callback_run, label.split()[0].lower(), fn, jfn, ideal_scene, x0, rtol),
                 repeats)
@@ -711,7 +767,7 @@ def pinocchio_section(scene: Any, repeats: int, rtols: Sequence[float]
                          "rhs_evaluations": calls})
         rows += jointplay_sweep(ideal_scene, model, reference, [rtol], repeats,
                                 label="jointplay simulate (compiled, no callback)")
-    return rows, per_call
+    return rows
 
 
 # ---- driver -------------------------------------------------------------------------------------
@@ -758,8 +814,8 @@ def _horizon(scene: Any, t_end: float | None) -> Any:
     return scene.with_run(t_end=t_end)
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(description=(__doc__ or "").split("\n\n")[0])
     parser.add_argument("scene", nargs="?", help="scene file (default: the paper scene)")
     parser.add_argument("--out", help="folder for peers.csv and peers.md")
     parser.add_argument("--t-end", type=float, help="horizon of jointplay and PyDy (default: "
@@ -773,7 +829,55 @@ def main(argv: Sequence[str] | None = None) -> int:
                         help="timed runs of the lambdify peer (default 1)")
     parser.add_argument("--pydy-rtols", default=",".join(f"{r:g}" for r in PEER_RTOLS))
     parser.add_argument("--quick", action="store_true", help="a small smoke run")
-    args = parser.parse_args(argv)
+    return parser
+
+
+def _say(text: str) -> None:
+    print(text, file=sys.stderr, flush=True)
+
+
+class _JointplayRuns:
+    """jointplay's tolerance sweep per horizon, run once each, in the order first asked for."""
+
+    def __init__(self, model: Any, reference: Any, rtols: Sequence[float], repeats: int):
+        self.model, self.reference, self.rtols, self.repeats = model, reference, rtols, repeats
+        self.by_horizon: dict[float, list[dict[str, Any]]] = {}
+        self.rows: list[dict[str, Any]] = []
+
+    def reference_for(self, s: Any) -> Trajectory:
+        return prefix(self.reference, s.run.n_outputs + 1)
+
+    def rows_for(self, s: Any) -> list[dict[str, Any]]:
+        if s.run.t_end not in self.by_horizon:
+            _say(f"jointplay sweep over {s.run.t_end:g} s")
+            self.by_horizon[s.run.t_end] = jointplay_sweep(s, self.model, self.reference_for(s),
+                                                           self.rtols, self.repeats)
+            self.rows.extend(self.by_horizon[s.run.t_end])
+        return self.by_horizon[s.run.t_end]
+
+
+@dataclass
+class _Findings:
+    """Everything the report states."""
+
+    scene: Any
+    pydy_scene: Any
+    newcomer_scene: Any
+    reference_cpu_s: float
+    repeats: int
+    newcomer_repeats: int
+    rows: list[dict[str, Any]]
+    peer_rows: list[dict[str, Any]]
+    pairs: list[dict[str, Any]]
+    jp_by_horizon: dict[float, list[dict[str, Any]]]
+    per_call_peer: dict[str, float]
+    per_call: dict[str, Any]
+    build: dict[str, float]
+    load_start: str
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
 
     from jointplay.scene.definition import default_scene, load_scene
     from jointplay.simulation import load_scene_model
@@ -791,99 +895,103 @@ def main(argv: Sequence[str] | None = None) -> int:
     out = prepare_out_dir(args.out) if args.out else None
     load_start = " ".join(f"{v:.2f}" for v in os.getloadavg())
 
-    def say(text: str) -> None:
-        print(text, file=sys.stderr, flush=True)
-
     model = load_scene_model(scene)
-    say(f"reference: jointplay cvodes rtol {REFERENCE_RTOL:g} over {scene.run.t_end:g} s")
+    _say(f"reference: jointplay cvodes rtol {REFERENCE_RTOL:g} over {scene.run.t_end:g} s")
     ref_timed = timed_runs(scene.with_run(integrator="cvodes", rtol=REFERENCE_RTOL,
                                           atol=REFERENCE_RTOL), model, 1)
     assert ref_timed.result is not None, ref_timed.failure
-    reference = ref_timed.result
-
-    def ref_for(s: Any) -> Trajectory:
-        return prefix(reference, s.run.n_outputs + 1)
-
-    rows: list[dict[str, Any]] = []
-    jp_by_horizon: dict[float, list[dict[str, Any]]] = {}
-
-    def jp_rows(s: Any) -> list[dict[str, Any]]:
-        if s.run.t_end not in jp_by_horizon:
-            say(f"jointplay sweep over {s.run.t_end:g} s")
-            jp_by_horizon[s.run.t_end] = jointplay_sweep(s, model, ref_for(s), jp_rtols,
-                                                         args.repeats)
-            rows.extend(jp_by_horizon[s.run.t_end])
-        return jp_by_horizon[s.run.t_end]
-
-    jp_rows(scene)
-    say("deriving the shared sympy equations")
+    jp = _JointplayRuns(model, ref_timed.result, jp_rtols, args.repeats)
+    jp.rows_for(scene)
+    _say("deriving the shared sympy equations")
     eq = equations(scene.robot)
     build: dict[str, float] = {"sympy derivation (shared)": eq.derive_s}
     with tempfile.TemporaryDirectory(prefix="jointplay-peers-") as tmp:
-        say("PyDy: generating and compiling the Cython right-hand side")
+        _say("PyDy: generating and compiling the Cython right-hand side")
         pydy = pydy_rhs(eq, scene.robot, scene, Path(tmp) / "pydy")
         build["PyDy codegen + Cython compile (wall)"] = pydy.build_s
-        say("sympy.lambdify")
+        _say("sympy.lambdify")
         newcomer = newcomer_rhs(eq, scene.robot, scene)
         build["sympy.lambdify (wall)"] = newcomer.build_s
-        x_probe = np.zeros(model.n_state)
-        x_probe[0] = -math.pi
-        v0 = np.full(len(model.clearance_joints), 0.1)
-        per_call_peer = {
-            "PyDy rhs (us/call)": per_call_seconds(lambda: pydy.rhs(0.1, x_probe, v0)) * 1e6,
-            "lambdify rhs (us/call)": per_call_seconds(
-                lambda: newcomer.rhs(0.1, x_probe, v0), repeats=3) * 1e6,
-        }
-        fd = model.function("forward_dynamics")
-        fd.inputs[0][:] = x_probe
-        fd.inputs[2][:] = model.parameter_vector()
-        fd.inputs[3][:] = v0
-        per_call_peer["jointplay forward_dynamics trigger (us/call)"] = \
-            per_call_seconds(fd.trigger) * 1e6
-        p = model.parameter_vector()
-        tau01 = np.array([float(f.numpy(0.1)) for f in scene.torques])
-        agree = float(np.max(np.abs(pydy.rhs(0.1, x_probe, v0)
-                                    - model.forward_dynamics(x_probe, tau01, p, v0))))
-        agree_nc = float(np.max(np.abs(newcomer.rhs(0.1, x_probe, v0)
-                                       - model.forward_dynamics(x_probe, tau01, p, v0))))
-        per_call_peer["max |PyDy rhs - jointplay rhs| at a probe state"] = agree
-        per_call_peer["max |lambdify rhs - jointplay rhs| at a probe state"] = agree_nc
-
-        peer_rows: list[dict[str, Any]] = []
-        same_driver = jointplay_lsoda_rhs(model, scene)
+        per_call_peer = _peer_per_call(model, scene, pydy, newcomer)
         runs = [(pydy, pydy_scene, rtol, args.repeats) for rtol in pydy_rtols]
-        runs += [(same_driver, pydy_scene, rtol, args.repeats) for rtol in pydy_rtols]
+        runs += [(jointplay_lsoda_rhs(model, scene), pydy_scene, rtol, args.repeats)
+                 for rtol in pydy_rtols]
         runs += [(newcomer, newcomer_scene, rtol, args.newcomer_repeats)
                  for rtol in NEWCOMER_RTOLS]
-        for peer, peer_scene, rtol, repeats in runs:
-            jp_rows(peer_scene)
-            say(f"{peer.name}: rtol {rtol:g} over {peer_scene.run.t_end:g} s")
-            row = run_peer(peer, model, peer_scene, ref_for(peer_scene), rtol, repeats)
-            peer_rows.append(row)
-            say(f"  {row.get('cpu_median_s', math.nan):.2f} s CPU, position error "
-                f"{row.get('err_position', math.nan):.2e} m")
-        rows.extend(peer_rows)
+        peer_rows = _peer_runs(runs, model, jp)
+    rows = jp.rows + peer_rows
     pairs: list[dict[str, Any]] = []
     for code in dict.fromkeys(r["code"] for r in peer_rows):
         mine = [r for r in peer_rows if r["code"] == code]
-        pairs += match(mine, jp_by_horizon[mine[0]["t_end"]])
+        pairs += match(mine, jp.by_horizon[mine[0]["t_end"]])
 
-    say("Pinocchio (ideal joints)")
+    _say("Pinocchio (ideal joints)")
     ideal_rows, per_call = pinocchio_section(scene, args.repeats, IDEAL_RTOLS)
     rows.extend(ideal_rows)
+    text = _report(_Findings(
+        scene=scene, pydy_scene=pydy_scene, newcomer_scene=newcomer_scene,
+        reference_cpu_s=ref_timed.cpu_s[0], repeats=args.repeats,
+        newcomer_repeats=args.newcomer_repeats, rows=rows, peer_rows=peer_rows, pairs=pairs,
+        jp_by_horizon=jp.by_horizon, per_call_peer=per_call_peer, per_call=per_call,
+        build=build, load_start=load_start))
+    print(text)
+    if out is not None:
+        table = [{"section": "run", **r} for r in rows] + \
+                [{"section": "matched", **q} for q in pairs]
+        atomic_write_text(out / "peers.csv", to_csv(table, CSV_KEYS))
+        atomic_write_text(out / "peers.md", text)
+        print(f"wrote {out / 'peers.csv'}\nwrote {out / 'peers.md'}")
+    return 0
 
-    # ---- the report ----
-    default_jp = next((r for r in jp_by_horizon[scene.run.t_end]
-                       if r["rtol"] == scene.run.rtol and r["status"] == "ok"), None)
-    pydy_pairs = [q for q in pairs if q["code"].startswith("PyDy")]
+
+def _peer_per_call(model: Any, scene: Any, pydy: PeerRhs, newcomer: PeerRhs
+                   ) -> dict[str, float]:
+    """Per right-hand-side call of each code at a probe state, and how far they agree."""
+    x_probe = np.zeros(model.n_state)
+    x_probe[0] = -math.pi
+    v0 = np.full(len(model.clearance_joints), 0.1)
+    per_call_peer = {
+        "PyDy rhs (us/call)": per_call_seconds(lambda: pydy.rhs(0.1, x_probe, v0)) * 1e6,
+        "lambdify rhs (us/call)": per_call_seconds(
+            lambda: newcomer.rhs(0.1, x_probe, v0), repeats=3) * 1e6,
+    }
+    fd = model.function("forward_dynamics")
+    fd.inputs[0][:] = x_probe
+    fd.inputs[2][:] = model.parameter_vector()
+    fd.inputs[3][:] = v0
+    per_call_peer["jointplay forward_dynamics trigger (us/call)"] = \
+        per_call_seconds(fd.trigger) * 1e6
+    p = model.parameter_vector()
+    tau01 = np.array([float(f.numpy(0.1)) for f in scene.torques])
+    agree = float(np.max(np.abs(pydy.rhs(0.1, x_probe, v0)
+                                - model.forward_dynamics(x_probe, tau01, p, v0))))
+    agree_nc = float(np.max(np.abs(newcomer.rhs(0.1, x_probe, v0)
+                                   - model.forward_dynamics(x_probe, tau01, p, v0))))
+    per_call_peer["max |PyDy rhs - jointplay rhs| at a probe state"] = agree
+    per_call_peer["max |lambdify rhs - jointplay rhs| at a probe state"] = agree_nc
+    return per_call_peer
+
+
+def _peer_runs(runs: Sequence[tuple[PeerRhs, Any, float, int]], model: Any,
+               jp: _JointplayRuns) -> list[dict[str, Any]]:
+    """Each peer at each tolerance over its horizon (jointplay's sweep there first)."""
+    peer_rows: list[dict[str, Any]] = []
+    for peer, peer_scene, rtol, repeats in runs:
+        jp.rows_for(peer_scene)
+        _say(f"{peer.name}: rtol {rtol:g} over {peer_scene.run.t_end:g} s")
+        row = run_peer(peer, model, peer_scene, jp.reference_for(peer_scene), rtol, repeats)
+        peer_rows.append(row)
+        _say(f"  {row.get('cpu_median_s', math.nan):.2f} s CPU, position error "
+             f"{row.get('err_position', math.nan):.2e} m")
+    return peer_rows
+
+
+def _goal_lines(f: _Findings) -> list[str]:
+    """The verdicts on the two goals, and the facts beside them."""
+    scene = f.scene
+    pydy_pairs = [q for q in f.pairs if q["code"].startswith("PyDy")]
     matched = [q for q in pydy_pairs if 0.5 <= q["error_ratio"] <= 2.0]
-    md = ["# jointplay and its peers", "",
-          f"Scene: {scene.source or scene.name}; horizon {scene.run.t_end:g} s (PyDy "
-          f"{pydy_scene.run.t_end:g} s, lambdify {newcomer_scene.run.t_end:g} s), output every "
-          f"{scene.run.output_step:g} s. Reference: jointplay CVODES rtol = atol = "
-          f"{REFERENCE_RTOL:g} ({ref_timed.cpu_s[0]:.2f} s CPU). CPU times are medians of "
-          f"{args.repeats} runs (lambdify: {args.newcomer_repeats}).", "",
-          "## Goals", ""]
+    md = []
     if matched:
         best = min(matched, key=lambda q: abs(math.log(q["error_ratio"])))
         verdict = "met" if best["speedup"] >= PYDY_GOAL else "NOT met"
@@ -895,9 +1003,34 @@ def main(argv: Sequence[str] | None = None) -> int:
     else:
         md.append(f"- >= {PYDY_GOAL:g}x faster than PyDy at equal accuracy: no PyDy run "
                   "could be matched within a factor 2 in error (see the tables)")
-    same = {r["rtol"]: r for r in peer_rows
+    md += _driver_lines(f)
+    us_pydy = f.per_call_peer["PyDy rhs (us/call)"]
+    us_jp = f.per_call_peer["jointplay forward_dynamics trigger (us/call)"]
+    md.append(f"- per right-hand-side call: PyDy {us_pydy:.1f} us, lambdify "
+              f"{f.per_call_peer['lambdify rhs (us/call)']:.0f} us, jointplay {us_jp:.2f} us "
+              f"(PyDy / jointplay {us_pydy / us_jp:.0f}x)")
+    per_call = f.per_call
+    verdict = "met" if per_call["ratio"] <= ABA_GOAL else "NOT met"
+    md.append(f"- ideal-joint rhs within {ABA_GOAL:g}x of Pinocchio's ABA per call (both "
+              f"called from Python with numpy arrays): {verdict}: jointplay "
+              f"{per_call['jp_in_trigger_out_us']:.2f} us vs pin.aba "
+              f"{per_call['pin_aba_us']:.2f} us ({per_call['ratio']:.2f}x); trigger alone "
+              f"{per_call['jp_trigger_us']:.2f} us")
+    default_jp = next((r for r in f.jp_by_horizon[scene.run.t_end]
+                       if r["rtol"] == scene.run.rtol and r["status"] == "ok"), None)
+    if default_jp is not None:
+        md.append(f"- jointplay at the scene's tolerance (rtol {scene.run.rtol:g}): "
+                  f"{default_jp['cpu_median_s']:.3f} s CPU for {scene.run.t_end:g} s "
+                  f"simulated, position error {default_jp['err_position']:.2e} m")
+    return md
+
+
+def _driver_lines(f: _Findings) -> list[str]:
+    """PyDy against jointplay's rhs in the same driver, and the work each integration did."""
+    md = []
+    same = {r["rtol"]: r for r in f.peer_rows
             if r["code"].startswith("jointplay rhs") and r["status"] == "ok"}
-    driver_pairs = [(r, same[r["rtol"]]) for r in peer_rows if r["code"].startswith("PyDy")
+    driver_pairs = [(r, same[r["rtol"]]) for r in f.peer_rows if r["code"].startswith("PyDy")
                     and r["status"] == "ok" and r["rtol"] in same]
     if driver_pairs:
         md.append("- PyDy against jointplay's rhs in the same LSODA driver (same tolerance, so "
@@ -905,53 +1038,43 @@ def main(argv: Sequence[str] | None = None) -> int:
                       f"rtol {a['rtol']:g}: {a['cpu_median_s'] / b['cpu_median_s']:.1f}x "
                       f"(errors {a['err_position']:.1e} / {b['err_position']:.1e} m)"
                       for a, b in driver_pairs))
-    jp_at = {r["rtol"]: r for r in jp_by_horizon[pydy_scene.run.t_end] if r["status"] == "ok"}
-    for r in peer_rows:
-        if r["code"].startswith("PyDy") and r["status"] == "ok" and r["rtol"] == scene.run.rtol \
-                and r["rtol"] in jp_at:
+    jp_at = {r["rtol"]: r for r in f.jp_by_horizon[f.pydy_scene.run.t_end]
+             if r["status"] == "ok"}
+    for r in f.peer_rows:
+        if r["code"].startswith("PyDy") and r["status"] == "ok" \
+                and r["rtol"] == f.scene.run.rtol and r["rtol"] in jp_at:
             j = jp_at[r["rtol"]]
             md.append(f"- work at rtol {r['rtol']:g}: jointplay's simulate {j['steps']} steps, "
                       f"{j['rhs_evaluations']} rhs and {j['jacobian_evaluations']} Jacobian "
                       f"evaluations; LSODA (PyDy) {r['rhs_evaluations']} rhs evaluations "
                       f"(finite-difference Jacobians included), {r['jacobian_evaluations']} "
                       "Jacobians")
-    us_pydy = per_call_peer["PyDy rhs (us/call)"]
-    us_jp = per_call_peer["jointplay forward_dynamics trigger (us/call)"]
-    md.append(f"- per right-hand-side call: PyDy {us_pydy:.1f} us, lambdify "
-              f"{per_call_peer['lambdify rhs (us/call)']:.0f} us, jointplay {us_jp:.2f} us "
-              f"(PyDy / jointplay {us_pydy / us_jp:.0f}x)")
-    verdict = "met" if per_call["ratio"] <= ABA_GOAL else "NOT met"
-    md.append(f"- ideal-joint rhs within {ABA_GOAL:g}x of Pinocchio's ABA per call (both "
-              f"called from Python with numpy arrays): {verdict}: jointplay "
-              f"{per_call['jp_in_trigger_out_us']:.2f} us vs pin.aba "
-              f"{per_call['pin_aba_us']:.2f} us ({per_call['ratio']:.2f}x); trigger alone "
-              f"{per_call['jp_trigger_us']:.2f} us")
-    if default_jp is not None:
-        md.append(f"- jointplay at the scene's tolerance (rtol {scene.run.rtol:g}): "
-                  f"{default_jp['cpu_median_s']:.3f} s CPU for {scene.run.t_end:g} s "
-                  f"simulated, position error {default_jp['err_position']:.2e} m")
+    return md
+
+
+def _report(f: _Findings) -> str:
+    scene = f.scene
+    md = ["# jointplay and its peers", "",
+          f"Scene: {scene.source or scene.name}; horizon {scene.run.t_end:g} s (PyDy "
+          f"{f.pydy_scene.run.t_end:g} s, lambdify {f.newcomer_scene.run.t_end:g} s), output "
+          f"every {scene.run.output_step:g} s. Reference: jointplay CVODES rtol = atol = "
+          f"{REFERENCE_RTOL:g} ({f.reference_cpu_s:.2f} s CPU). CPU times are medians of "
+          f"{f.repeats} runs (lambdify: {f.newcomer_repeats}).", "",
+          "## Goals", "", *_goal_lines(f)]
     md += ["", "## Peer / jointplay at matched accuracy", "",
            "Each peer run is paired with the jointplay run whose end-effector position error "
            "is nearest; `err ratio` = peer error / jointplay error (within 0.5-2 counts as "
            "matched), `peer / jointplay` = ratio of CPU times.", "",
-           markdown_table(pairs, PAIR_COLUMNS), "",
+           markdown_table(f.pairs, PAIR_COLUMNS), "",
            "## Per call", "",
-           *(f"- {k}: {v:.3g}" for k, v in per_call_peer.items()),
-           *(f"- {k}: {v:.3g}" for k, v in per_call.items()), "",
+           *(f"- {k}: {v:.3g}" for k, v in f.per_call_peer.items()),
+           *(f"- {k}: {v:.3g}" for k, v in f.per_call.items()), "",
            "## Code generation and compilation (once, not in the run times)", "",
-           *(f"- {k}: {v:.2f} s" for k, v in build.items()), "",
-           "## Every run", "", markdown_table(rows, ROW_COLUMNS), "",
-           "## Machine", "", f"- load average (1/5/15 min) at the start: {load_start}",
+           *(f"- {k}: {v:.2f} s" for k, v in f.build.items()), "",
+           "## Every run", "", markdown_table(f.rows, ROW_COLUMNS), "",
+           "## Machine", "", f"- load average (1/5/15 min) at the start: {f.load_start}",
            *(f"- {k}: {v}" for k, v in machine_facts().items()), ""]
-    text = "\n".join(md)
-    print(text)
-    if out is not None:
-        table = [{"section": "run", **r} for r in rows] + \
-                [{"section": "matched", **q} for q in pairs]
-        atomic_write_text(out / "peers.csv", to_csv(table, CSV_KEYS))
-        atomic_write_text(out / "peers.md", text)
-        print(f"wrote {out / 'peers.csv'}\nwrote {out / 'peers.md'}")
-    return 0
+    return "\n".join(md)
 
 
 if __name__ == "__main__":
