@@ -13,8 +13,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from jointplay.bench.measure import (
+    COUNT_KEYS,
+    CPU_COLUMNS,
     ERROR_KEYS,
     REFERENCE_RTOL,
+    TIMING_KEYS,
+    TIP_ERROR_COLUMNS,
     TIP_ERRORS,
     cold_compile_seconds,
     run_label,
@@ -37,22 +41,15 @@ FID_COLUMNS: list[tuple[str, str, str]] = [
     ("rung", "model", "{}"),
     ("run", "integration", "{}"),
     ("status", "status", "{}"),
-    ("cpu_median_s", "CPU s (median)", "{:.3f}"),
-    ("cpu_min_s", "min", "{:.3f}"),
-    ("cpu_max_s", "max", "{:.3f}"),
-    ("realtime_factor", "CPU s / sim s", "{:.3f}"),
-    ("err_position", "pos err m", "{:.2e}"),
-    ("err_velocity", "vel err m/s", "{:.2e}"),
-    ("err_acceleration", "acc err m/s²", "{:.2e}"),
+    *CPU_COLUMNS,
+    *TIP_ERROR_COLUMNS,
     ("compile_s", "gcc s", "{:.2f}"),
     ("impacts", "impacts", "{}"),
     ("note", "note", "{}"),
 ]
 FID_CSV_KEYS: list[str] = [
-    "rung", "model", "run", "tolerance", "status", "note", "repeats", "cpu_median_s",
-    "cpu_min_s", "cpu_max_s", "wall_median_s", "wall_min_s", "wall_max_s", "realtime_factor",
-    "err_position", "err_velocity", "err_acceleration", "compile_s", "steps",
-    "rhs_evaluations", "jacobian_evaluations", "events", "impacts"]
+    "rung", "model", "run", "tolerance", "status", "note", "repeats", *TIMING_KEYS,
+    *ERROR_KEYS[:3], "compile_s", *COUNT_KEYS]
 
 
 @dataclass

@@ -122,10 +122,28 @@ def timed_runs(scene: Scene, model: Model, repeats: int,
 
 
 def run_counts(result: SimulationResult | None) -> dict[str, Any]:
-    keys = ("steps", "rhs_evaluations", "jacobian_evaluations", "events", "impacts")
     if result is None:
-        return dict.fromkeys(keys)
-    return {k: int(result.stats.get(k, 0)) for k in keys}
+        return dict.fromkeys(COUNT_KEYS)
+    return {k: int(result.stats.get(k, 0)) for k in COUNT_KEYS}
+
+
+# What :func:`timing_columns` and the error measures give every timed row: their CSV keys and
+# (key, Markdown header, format) table columns.
+COUNT_KEYS: tuple[str, ...] = ("steps", "rhs_evaluations", "jacobian_evaluations", "events",
+                               "impacts")
+TIMING_KEYS: tuple[str, ...] = ("cpu_median_s", "cpu_min_s", "cpu_max_s", "wall_median_s",
+                                "wall_min_s", "wall_max_s", "realtime_factor")
+CPU_COLUMNS: tuple[tuple[str, str, str], ...] = (
+    ("cpu_median_s", "CPU s (median)", "{:.3f}"),
+    ("cpu_min_s", "min", "{:.3f}"),
+    ("cpu_max_s", "max", "{:.3f}"),
+    ("realtime_factor", "CPU s / sim s", "{:.3f}"),
+)
+TIP_ERROR_COLUMNS: tuple[tuple[str, str, str], ...] = (
+    ("err_position", "pos err m", "{:.2e}"),
+    ("err_velocity", "vel err m/s", "{:.2e}"),
+    ("err_acceleration", "acc err m/s²", "{:.2e}"),
+)
 
 
 def timing_columns(timed: Timed, t_end: float) -> dict[str, Any]:

@@ -12,8 +12,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from jointplay.bench.measure import (
+    COUNT_KEYS,
+    CPU_COLUMNS,
     ERROR_KEYS,
     ERROR_LABELS,
+    TIMING_KEYS,
+    TIP_ERROR_COLUMNS,
     Reference,
     Timed,
     all_errors,
@@ -43,13 +47,8 @@ WP_COLUMNS: list[tuple[str, str, str]] = [
     ("atol", "atol", "{:.0e}"),
     ("step", "step s", "{:.2e}"),
     ("status", "status", "{}"),
-    ("cpu_median_s", "CPU s (median)", "{:.3f}"),
-    ("cpu_min_s", "min", "{:.3f}"),
-    ("cpu_max_s", "max", "{:.3f}"),
-    ("realtime_factor", "CPU s / sim s", "{:.3f}"),
-    ("err_position", "pos err m", "{:.2e}"),
-    ("err_velocity", "vel err m/s", "{:.2e}"),
-    ("err_acceleration", "acc err m/s²", "{:.2e}"),
+    *CPU_COLUMNS,
+    *TIP_ERROR_COLUMNS,
     ("err_final_state", "final-state err", "{:.2e}"),
     ("steps", "steps", "{}"),
     ("rhs_evaluations", "rhs evals", "{}"),
@@ -57,10 +56,8 @@ WP_COLUMNS: list[tuple[str, str, str]] = [
     ("impacts", "impacts", "{}"),
 ]
 WP_CSV_KEYS: list[str] = [
-    "config", "method", "rtol", "atol", "step", "status", "failure", "repeats",
-    "cpu_median_s", "cpu_min_s", "cpu_max_s", "wall_median_s", "wall_min_s", "wall_max_s",
-    "realtime_factor", *ERROR_KEYS, "steps", "rhs_evaluations", "jacobian_evaluations",
-    "events", "impacts"]
+    "config", "method", "rtol", "atol", "step", "status", "failure", "repeats", *TIMING_KEYS,
+    *ERROR_KEYS, *COUNT_KEYS]
 
 
 @dataclass
