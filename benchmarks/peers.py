@@ -905,20 +905,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     _say("deriving the shared sympy equations")
     eq = equations(scene.robot)
     build: dict[str, float] = {"sympy derivation (shared)": eq.derive_s}
-    with tempfile.TemporaryDirectory(prefix="jointplay-peers-") as tmp:
-        _say("PyDy: generating and compiling the Cython right-hand side")
-        pydy = pydy_rhs(eq, scene.robot, scene, Path(tmp) / "pydy")
-        build["PyDy codegen + Cython compile (wall)"] = pydy.build_s
-        _say("sympy.lambdify")
-        newcomer = newcomer_rhs(eq, scene.robot, scene)
-        build["sympy.lambdify (wall)"] = newcomer.build_s
-        per_call_peer = _peer_per_call(model, scene, pydy, newcomer)
-        runs = [(pydy, pydy_scene, rtol, args.repeats) for rtol in pydy_rtols]
-        runs += [(jointplay_lsoda_rhs(model, scene), pydy_scene, rtol, args.repeats)
-                 for rtol in pydy_rtols]
-        runs += [(newcomer, newcomer_scene, rtol, args.newcomer_repeats)
-                 for rtol in NEWCOMER_RTOLS]
-        peer_rows = _peer_runs(runs, model, jp)
+    per_call_peer, peer_rows = _peers(eq, scene, model, jp, build, [
+        (pydy_scene, rtol, args.repeats) for rtol in pydy_rtols],
+        (newcomer_scene, args.newcomer_repeats))
     rows = jp.rows + peer_rows
     pairs: list[dict[str, Any]] = []
     for code in dict.fromkeys(r["code"] for r in peer_rows):
@@ -942,6 +931,27 @@ def main(argv: Sequence[str] | None = None) -> int:
         atomic_write_text(out / "peers.md", text)
         print(f"wrote {out / 'peers.csv'}\nwrote {out / 'peers.md'}")
     return 0
+
+
+def _peers(eq: Equations, scene: Any, model: Any, jp: _JointplayRuns, build: dict[str, float],
+           pydy_runs: Sequence[tuple[Any, float, int]], newcomer_run: tuple[Any, int]
+           ) -> tuple[dict[str, float], list[dict[str, Any]]]:
+    """Build PyDy's and the lambdify right-hand sides (their build times into ``build``);
+    their cost per call; then PyDy and jointplay's rhs in the same driver at ``pydy_runs``
+    (horizon, rtol, repeats), and the lambdify peer once."""
+    with tempfile.TemporaryDirectory(prefix="jointplay-peers-") as tmp:
+        _say("PyDy: generating and compiling the Cython right-hand side")
+        pydy = pydy_rhs(eq, scene.robot, scene, Path(tmp) / "pydy")
+        build["PyDy codegen + Cython compile (wall)"] = pydy.build_s
+        _say("sympy.lambdify")
+        newcomer = newcomer_rhs(eq, scene.robot, scene)
+        build["sympy.lambdify (wall)"] = newcomer.build_s
+        per_call_peer = _peer_per_call(model, scene, pydy, newcomer)
+        same_driver = jointplay_lsoda_rhs(model, scene)
+        runs = [(pydy, s, rtol, repeats) for s, rtol, repeats in pydy_runs]
+        runs += [(same_driver, s, rtol, repeats) for s, rtol, repeats in pydy_runs]
+        runs += [(newcomer, newcomer_run[0], rtol, newcomer_run[1]) for rtol in NEWCOMER_RTOLS]
+        return per_call_peer, _peer_runs(runs, model, jp)
 
 
 def _peer_per_call(model: Any, scene: Any, pydy: PeerRhs, newcomer: PeerRhs
