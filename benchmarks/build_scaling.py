@@ -38,225 +38,20 @@ import os
 import platform
 import re
 import shlex
-import signal
-import statistics
 import subprocess
 import sys
-import tempfile
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
+from build_scaling_case import PAPER, run_case
+
 from jointplay.bench import cpu_name
-from jointplay.common.timing import per_call_seconds
+from jointplay.bench.child import ChildFailed, json_from_child
+from jointplay.common.files import atomic_write_text
 
-PAPER = "paper"
 STRUCTURES = ("clearance", "ideal")
-SECTION = re.compile(r"^/\* (\w+):\(", re.MULTILINE)
-JAC_SECTIONS = ("jac_forward_dynamics", "residual_jacobian")
-
-
-# ---- the measurement, run in a child process per case ------------------------------------------
-
-def _robot(structure: str, k: int) -> Any:
-    import jointplay
-
-    if structure == PAPER:
-        return jointplay.default_robot()
-    return jointplay.uniform_chain(k, kinds=[structure] * k, name=f"{structure}{k}")
-
-
-def _section_sizes(source: str) -> dict[str, int]:
-    """Bytes of C per CasADi function: from its ``/* name:(...) */`` comment to the next."""
-    marks = [(m.start(), m.group(1)) for m in SECTION.finditer(source)]
-    sizes: dict[str, int] = {}
-    for i, (start, name) in enumerate(marks):
-        end = marks[i + 1][0] if i + 1 < len(marks) else len(source)
-        sizes[name] = sizes.get(name, 0) + end - start
-    return sizes
-
-
-def _state(model: Any, params: Any, rng: Any) -> Any:
-    """A state with every clearance joint in contact (|e| = 1.1 c) and moving."""
-    import numpy as np
-
-    names = model.coordinates
-    n = len(names)
-    x = np.zeros(2 * n)
-    pidx = {name: i for i, name in enumerate(model.parameters)}
-    for i, name in enumerate(names):
-        if name.startswith("q"):
-            x[i] = rng.uniform(-1.0, 1.0)
-            x[n + i] = rng.uniform(-1.0, 1.0)
-        elif name.startswith("ex"):
-            j = name[2:]
-            c = (params[pidx[f"joint{j}.bearing_radius"]]
-                 - params[pidx[f"joint{j}.journal_radius"]])
-            phi = rng.uniform(0.0, 2.0 * math.pi)
-            x[i], x[i + 1] = 1.1 * c * math.cos(phi), 1.1 * c * math.sin(phi)
-            x[n + i], x[n + i + 1] = rng.uniform(-1e-3, 1e-3, size=2)
-    return x
-
-
-def _interleaved(fns: dict[str, Callable[[], Any]], repeats: int, batch_s: float
-                 ) -> dict[str, float]:
-    """Like :func:`_time_per_call` for several functions, in alternating rounds."""
-    rounds = max(3, repeats // 3)
-    per_round = max(1, repeats // rounds)
-    samples: dict[str, list[float]] = {name: [] for name in fns}
-    for _ in range(rounds):
-        for name, fn in fns.items():
-            samples[name].append(per_call_seconds(fn, per_round, batch_s))
-    return {name: statistics.median(values) for name, values in samples.items()}
-
-
-def _bind(ff: Any, values: Sequence[Any]) -> None:
-    for arr, value in zip(ff.inputs, values, strict=False):
-        arr[:] = value
-
-
-def _rel_diff(a: Sequence[Any], b: Sequence[Any]) -> float:
-    import numpy as np
-
-    worst = 0.0
-    for u, v in zip(a, b, strict=True):
-        u, v = np.ravel(u), np.ravel(v)  # shapes may differ (1-D vs n x 1); data order agrees
-        scale = max(float(np.max(np.abs(v), initial=0.0)), 1e-300)
-        worst = max(worst, float(np.max(np.abs(u - v), initial=0.0)) / scale)
-    return worst
-
-
-def run_case(spec: dict[str, Any]) -> dict[str, Any]:
-    """Measure one (structure, k); ``spec`` holds structure, k, levels, repeats, batch_s."""
-    import resource
-
-    with tempfile.TemporaryDirectory(prefix="jointplay-bench-") as tmp_name:
-        tmp = Path(tmp_name)
-        cache = tmp / "cache"
-        os.environ["JOINTPLAY_CACHE"] = str(cache)  # load_model compiles through cache_root()
-
-        t_import = time.perf_counter()
-        import casadi as ca
-        import numpy as np
-
-        from jointplay.common.files import atomic_write_text
-        from jointplay.derive import emit
-        from jointplay.robot.robotio import robot_to_toml
-        from jointplay.store.build import DEFAULT_CFLAGS, compile_source
-        from jointplay.store.model import (
-            LAYOUT_NAME,
-            ROBOT_NAME,
-            SOURCE_NAME,
-            FastFunction,
-            load_model,
-        )
-        import_s = time.perf_counter() - t_import
-
-        robot = _robot(spec["structure"], spec["k"])
-        load_at_start = os.getloadavg()[0]
-        t0 = time.perf_counter()
-        emitted = emit(robot)
-        wall_emit = time.perf_counter() - t0
-        source = emitted.source
-        sizes = _section_sizes(source)
-        jac_bytes = sum(sizes.get(name, 0) for name in JAC_SECTIONS)
-
-        folder = tmp / "model"
-        folder.mkdir()
-        atomic_write_text(folder / SOURCE_NAME, source)
-        atomic_write_text(folder / LAYOUT_NAME, json.dumps(emitted.layout, indent=1) + "\n")
-        atomic_write_text(folder / ROBOT_NAME, robot_to_toml(robot))
-
-        library, compile_s = compile_source(source, DEFAULT_CFLAGS, cache=cache)
-        gcc_rss_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
-        model = load_model(folder)  # must be a cache hit on the build just made
-        cache_hit = model.compile_seconds == 0.0 and model.library == library
-
-        params = np.asarray(robot.parameter_values(), dtype=float)
-        rng = np.random.default_rng(1)
-        x = _state(model, params, rng)
-        tau = rng.uniform(-1.0, 1.0, size=len(model.torque_joints))
-        v_imp = np.full(len(model.clearance_joints), 0.05)
-        fd_args = [x, tau, params, v_imp]
-        jac_args = [*fd_args, np.zeros(0)]
-
-        fd = model.function("forward_dynamics")
-        jac = model.function("jac_forward_dynamics")
-        _bind(fd, fd_args)
-        _bind(jac, jac_args)
-        fd.trigger()
-        jac.trigger()
-        finite = bool(all(np.all(np.isfinite(o)) for o in (*fd.outputs, *jac.outputs)))
-        reference = [fd(*fd_args), jac(*jac_args)]
-
-        repeats, batch_s = spec["repeats"], spec["batch_s"]
-        per_call = {
-            "fd_trigger_us": per_call_seconds(fd.trigger, repeats, batch_s),
-            "jac_trigger_us": per_call_seconds(jac.trigger, repeats, batch_s),
-            "fd_call_us": per_call_seconds(lambda: fd(*fd_args), repeats, batch_s),
-            "jac_call_us": per_call_seconds(lambda: jac(*jac_args), repeats, batch_s),
-            "fd_casadi_us": per_call_seconds(lambda: fd.function(*fd_args), repeats, batch_s),
-        }
-        row: dict[str, Any] = {
-            "structure": spec["structure"],
-            "k": spec["k"],
-            "n_coords": model.n_coordinates,
-            "n_params": len(model.parameters),
-            "derive_s": emitted.timings["derive"],
-            "kane_s": emitted.timings.get("kane", math.nan),
-            "emit_s": emitted.timings["emit"],
-            "c_kb": len(source.encode()) / 1024,
-            "jac_c_kb": jac_bytes / 1024,
-            "compile_s": compile_s,
-            "so_kb": library.stat().st_size / 1024,
-            "total_s": wall_emit + compile_s,
-            **{key: value * 1e6 for key, value in per_call.items()},
-            "gcc_rss_mb": gcc_rss_mb,
-            "py_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
-            "import_s": import_s,
-            "load_start": load_at_start,
-            "load_end": os.getloadavg()[0],
-            "cache_hit": cache_hit,
-            "finite": finite,
-            "sections_kb": {name: round(b / 1024, 1) for name, b in sizes.items()},
-        }
-
-        flags: list[dict[str, Any]] = []
-        if spec["levels"]:
-            variants: dict[str, tuple[tuple[str, ...], float, Path, Any, Any]] = {
-                " ".join(DEFAULT_CFLAGS): (DEFAULT_CFLAGS, compile_s, library, fd, jac)}
-            for level in spec["levels"]:
-                words = level.split()
-                cflags = tuple(w for f in DEFAULT_CFLAGS
-                               for w in (words if f.startswith("-O") else [f]))
-                lib, seconds = compile_source(source, cflags, cache=cache)
-                vfd = FastFunction(ca.external("forward_dynamics", str(lib)))
-                vjac = FastFunction(ca.external("jac_forward_dynamics", str(lib)))
-                _bind(vfd, fd_args)
-                _bind(vjac, jac_args)
-                variants[" ".join(cflags)] = (cflags, seconds, lib, vfd, vjac)
-            timed_fd = _interleaved({k: v[3].trigger for k, v in variants.items()},
-                                    repeats, batch_s)
-            timed_jac = _interleaved({k: v[4].trigger for k, v in variants.items()},
-                                     repeats, batch_s)
-            for key, (cflags, seconds, lib, vfd, vjac) in variants.items():
-                out = [vfd(*fd_args), vjac(*jac_args)]
-                flags.append({
-                    "structure": spec["structure"],
-                    "k": spec["k"],
-                    "opt": " ".join(f for f in cflags if f not in DEFAULT_CFLAGS
-                                    or f.startswith("-O")),
-                    "cflags": key,
-                    "compile_s": seconds,
-                    "so_kb": lib.stat().st_size / 1024,
-                    "fd_trigger_us": timed_fd[key] * 1e6,
-                    "jac_trigger_us": timed_jac[key] * 1e6,
-                    "max_rel_diff": _rel_diff([*out[0], *out[1]],
-                                              [*reference[0], *reference[1]]),
-                })
-        row["flags"] = flags
-        return row
 
 
 # ---- the driver ------------------------------------------------------------------------------
@@ -357,23 +152,6 @@ def to_csv(rows: list[dict[str, Any]], keys: list[str]) -> str:
     return buf.getvalue()
 
 
-def write_atomic(path: Path, text: str) -> None:
-    """Write beside ``path`` and rename onto it, so readers never see half a file."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
-    try:
-        umask = os.umask(0)
-        os.umask(umask)
-        os.fchmod(fd, 0o666 & ~umask)  # mkstemp makes 0600; give it a normal file's mode
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-
-
 def machine_facts() -> dict[str, str]:
     from jointplay.store.build import DEFAULT_CFLAGS, compiler_version
 
@@ -407,23 +185,15 @@ def machine_facts() -> dict[str, str]:
 
 def run_in_child(spec: dict[str, Any], timeout: float) -> dict[str, Any]:
     """Run :func:`run_case` in a fresh interpreter; kill its process group on timeout."""
-    proc = subprocess.Popen([sys.executable, __file__, "--worker", json.dumps(spec)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            start_new_session=True)
     try:
-        out, err = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        proc.communicate()
-        return {**spec, "error": f"timed out after {timeout:.0f} s"}
-    if proc.returncode != 0:
-        tail = (err.strip().splitlines() or ["?"])[-1]
-        return {**spec, "error": f"exit {proc.returncode}: {tail}"}
-    return dict(json.loads(out.strip().splitlines()[-1]))
+        return json_from_child([sys.executable, __file__, "--worker", json.dumps(spec)],
+                               timeout)
+    except ChildFailed as err:
+        return {**spec, "error": str(err)}
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(description=(__doc__ or "").split("\n\n")[0])
     parser.add_argument("--links", type=parse_links, default=parse_links("1-12"),
                         help="link counts, e.g. 1-12 or 4,9,12 (default 1-12)")
     parser.add_argument("--structures", default=",".join(STRUCTURES),
@@ -445,15 +215,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--paper-budget", type=float, default=20.0,
                         help="derive + emit + compile budget of the paper robot (s)")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
-    args = parser.parse_args(argv)
+    return parser
 
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = _parser()
+    args = parser.parse_args(argv)
     if args.worker:
         print(json.dumps(run_case(json.loads(args.worker))))
         return 0
     if args.out is None:
         parser.error("--out is required")
-
-    from tqdm import tqdm
 
     structures = [s.strip() for s in args.structures.split(",") if s.strip()]
     for s in structures:
@@ -465,9 +237,40 @@ def main(argv: Sequence[str] | None = None) -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     facts = machine_facts()
 
-    rows: list[dict[str, Any]] = []
     load_before = os.getloadavg()
     started = time.perf_counter()
+    rows = _run_cases(cases, args, compare)
+    sweep_s = time.perf_counter() - started
+    load_after = os.getloadavg()
+    facts["load average (1/5/15 min) before"] = " ".join(f"{v:.2f}" for v in load_before)
+    facts["load average (1/5/15 min) after"] = " ".join(f"{v:.2f}" for v in load_after)
+    facts["max 1-min load during a case"] = (
+        f"{max((r.get('load_end', 0) for r in rows), default=0):.2f} "
+        "(this process alone is about 1.0; more means something else was running)")
+
+    flag_rows = _flag_rows(rows)
+    command = shlex.join(["python", "benchmarks/build_scaling.py", *(argv or sys.argv[1:])])
+    text = _markdown(rows, flag_rows, facts, command, sweep_s,
+                     _checks(rows, args.paper_budget))
+    keys = [k for k, _, _ in COLUMNS] + ["kane_s", "n_params", "py_rss_mb", "import_s",
+                                          "load_start", "load_end", "cache_hit", "finite",
+                                          "sections_kb", "error"]
+    keys = list(dict.fromkeys(keys))
+    atomic_write_text(args.out / "build_scaling.csv", to_csv(rows, keys))
+    if flag_rows:
+        flag_keys = [k for k, _, _ in FLAG_COLUMNS] + ["cflags"]
+        atomic_write_text(args.out / "build_flags.csv", to_csv(flag_rows, flag_keys))
+    atomic_write_text(args.out / "build_scaling.md", text)
+    print(text)
+    return 1 if any(r.get("error") for r in rows) else 0
+
+
+def _run_cases(cases: Sequence[tuple[str, int]], args: argparse.Namespace,
+               compare: set[int]) -> list[dict[str, Any]]:
+    """Every case in its own process, a line on each as it finishes."""
+    from tqdm import tqdm
+
+    rows: list[dict[str, Any]] = []
     with tqdm(cases, unit="case", dynamic_ncols=True) as bar:
         for structure, k in bar:
             bar.set_description(f"{structure} k={k}")
@@ -484,14 +287,11 @@ def main(argv: Sequence[str] | None = None) -> int:
                            f"gcc {row['compile_s']:.2f} s, "
                            f"fd {row['fd_trigger_us']:.2f} us, "
                            f"jac {row['jac_trigger_us']:.2f} us")
-    sweep_s = time.perf_counter() - started
-    load_after = os.getloadavg()
-    facts["load average (1/5/15 min) before"] = " ".join(f"{v:.2f}" for v in load_before)
-    facts["load average (1/5/15 min) after"] = " ".join(f"{v:.2f}" for v in load_after)
-    facts["max 1-min load during a case"] = (
-        f"{max((r.get('load_end', 0) for r in rows), default=0):.2f} "
-        "(this process alone is about 1.0; more means something else was running)")
+    return rows
 
+
+def _flag_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Every case's flag variants, each with its ratios to the case's -O1 build."""
     flag_rows: list[dict[str, Any]] = []
     for row in rows:
         base = next((f for f in row.get("flags", []) if f["opt"] == "-O1"), None)
@@ -502,14 +302,18 @@ def main(argv: Sequence[str] | None = None) -> int:
                 f["jac_x"] = f["jac_trigger_us"] / base["jac_trigger_us"]
             flag_rows.append(f)
     flag_rows.sort(key=lambda f: (f["structure"], f["k"], f["opt"]))
+    return flag_rows
 
-    failures = [r for r in rows if r.get("error")]
+
+def _checks(rows: Sequence[dict[str, Any]], paper_budget: float) -> list[str]:
+    """The requirements: the paper robot's build budget, 12 links completing, every case a
+    cache hit with finite outputs."""
     paper = next((r for r in rows if r["structure"] == PAPER and not r.get("error")), None)
     checks = []
     if paper is not None:
-        ok = paper["total_s"] < args.paper_budget
+        ok = paper["total_s"] < paper_budget
         checks.append(f"- paper robot derive + emit + compile: {paper['total_s']:.2f} s "
-                      f"(budget {args.paper_budget:.0f} s): {'PASS' if ok else 'FAIL'}")
+                      f"(budget {paper_budget:.0f} s): {'PASS' if ok else 'FAIL'}")
     for row in rows:
         if row["structure"] == "clearance" and row["k"] == 12:
             checks.append("- 12 links, clearance at every joint: "
@@ -519,8 +323,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     for r in bad:
         checks.append(f"- {r['structure']} k={r['k']}: cache_hit={r['cache_hit']} "
                       f"finite={r['finite']}")
+    return checks
 
-    command = shlex.join(["python", "benchmarks/build_scaling.py", *(argv or sys.argv[1:])])
+
+def _markdown(rows: list[dict[str, Any]], flag_rows: list[dict[str, Any]],
+              facts: dict[str, str], command: str, sweep_s: float, checks: list[str]) -> str:
     md = ["# Build scaling", "",
           f"Command: `{command}`  ", f"Sweep wall time: {sweep_s:.0f} s", "",
           *[f"- {k}: {v}" for k, v in facts.items()], "",
@@ -539,19 +346,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                "rounds. `max rel diff`: largest output difference from the -O1 build, "
                "relative to each output's largest entry.", "",
                markdown(flag_rows, FLAG_COLUMNS), ""]
-    text = "\n".join(md)
-
-    keys = [k for k, _, _ in COLUMNS] + ["kane_s", "n_params", "py_rss_mb", "import_s",
-                                          "load_start", "load_end", "cache_hit", "finite",
-                                          "sections_kb", "error"]
-    keys = list(dict.fromkeys(keys))
-    write_atomic(args.out / "build_scaling.csv", to_csv(rows, keys))
-    if flag_rows:
-        flag_keys = [k for k, _, _ in FLAG_COLUMNS] + ["cflags"]
-        write_atomic(args.out / "build_flags.csv", to_csv(flag_rows, flag_keys))
-    write_atomic(args.out / "build_scaling.md", text)
-    print(text)
-    return 1 if failures else 0
+    return "\n".join(md)
 
 
 if __name__ == "__main__":

@@ -29,6 +29,7 @@ import os
 import platform
 import time
 from pathlib import Path
+from typing import Any
 
 import casadi as ca
 import numpy as np
@@ -92,7 +93,22 @@ def main() -> None:
     else:
         model = random_model()
         twin = linear_twin(model)
-    rows = []
+    rows = [_call_overhead_row(), *_variant_rows(model, twin)]
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=list(rows[0]))
+    writer.writeheader()
+    writer.writerows(rows)
+    atomic_write_text(out / "control_step.csv", buf.getvalue())
+    what = f"model {args.model}" if args.model else "random network of the default shape"
+    text = _markdown(rows, what)
+    atomic_write_text(out / "control_step.md", text)
+    print(text)
+
+
+def _call_overhead_row() -> dict[str, Any]:
+    """The cost of calling a trivial compiled function: the floor under every variant."""
     x = ca.SX.sym("x", 2)
     gen = ca.CodeGenerator("trivial.c", {"with_header": False})
     gen.add(ca.Function("trivial", [x], [2 * x]))
@@ -104,9 +120,13 @@ def main() -> None:
         for _ in range(20000):
             trivial.trigger()
         times.append((time.process_time() - t0) / 20000)
-    rows.append({"variant": "trivial (call overhead)", "horizon": "-", "guard": "-",
-                 "code": "SX", "sx_operations": 2, "compile_s": 0.0,
-                 "us_per_call": float(np.median(times)) * 1e6})
+    return {"variant": "trivial (call overhead)", "horizon": "-", "guard": "-",
+            "code": "SX", "sx_operations": 2, "compile_s": 0.0,
+            "us_per_call": float(np.median(times)) * 1e6}
+
+
+def _variant_rows(model: Any, twin: Any) -> list[dict[str, Any]]:
+    """Each way of compiling the controller step: its size, gcc time and cost per call."""
     variants = [
         ("before: CasADi SX code, network only", model, None, False,
          ControllerSettings(horizon=10, guard=False, tracked=TRACKED)),
@@ -117,6 +137,7 @@ def main() -> None:
          ControllerSettings(tracked=TRACKED)),
         ("ARX-IMC, loop kernel (default)", twin, None, True, ControllerSettings(
             tracked=TRACKED))]
+    rows = []
     for label, m, fallback, kernel, settings in variants:
         settings = resolve_settings(m, settings)
         _, fn, _ = generate_c(m, settings, fallback)
@@ -127,15 +148,11 @@ def main() -> None:
                      "sx_operations": fn.n_instructions(),
                      "compile_s": ctrl.compile_seconds, "us_per_call": per_call_us(ctrl)})
         print(f"{label}: {rows[-1]['us_per_call']:.2f} us", flush=True)
+    return rows
+
+
+def _markdown(rows: list[dict[str, Any]], what: str) -> str:
     before = rows[1]["us_per_call"]
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    buf = io.StringIO()
-    writer = csv.DictWriter(buf, fieldnames=list(rows[0]))
-    writer.writeheader()
-    writer.writerows(rows)
-    atomic_write_text(out / "control_step.csv", buf.getvalue())
-    what = f"model {args.model}" if args.model else "random network of the default shape"
     lines = [f"Compiled controller step ({what}); "
              f"gcc {' '.join(STEP_CFLAGS)}; {platform.processor() or platform.machine()}, "
              f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f} at the end", "",
@@ -147,9 +164,7 @@ def main() -> None:
                      f"{r['sx_operations']} | "
                      f"{r['compile_s']:.1f} | {r['us_per_call']:.2f} | "
                      f"{before / r['us_per_call']:.2f}x |")
-    text = "\n".join(lines) + "\n"
-    atomic_write_text(out / "control_step.md", text)
-    print(text)
+    return "\n".join(lines) + "\n"
 
 
 if __name__ == "__main__":

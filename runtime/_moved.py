@@ -41,6 +41,7 @@ MOVED = {
     "jointplay.study": "jointplay.neural.study",
     "jointplay.wear": "jointplay.results.wear",
     "jointplay.bench_effects": "jointplay.bench.effects",
+    "jointplay.simulation": "jointplay.sim",
 }
 
 

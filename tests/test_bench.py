@@ -1,7 +1,7 @@
 """The bench commands on a tiny case: they run, and what they write is well formed.
 
 No timing is asserted: the numbers depend on the machine. The commands are dispatched through
-:func:`jointplay.bench.register` on a fresh parser, as the ``jointplay`` CLI does.
+:func:`jointplay.cli.bench.register` on a fresh parser, as the ``jointplay`` CLI does.
 """
 
 from __future__ import annotations
@@ -17,6 +17,8 @@ import numpy as np
 import pytest
 
 from jointplay import bench
+from jointplay.cli import bench as bench_command
+from jointplay.cli.args import parse_links
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import default_scene
 
@@ -26,7 +28,7 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 def run_bench(*argv: str) -> int:
     parser = argparse.ArgumentParser(prog="jointplay")
     sub = parser.add_subparsers(dest="command", required=True)
-    bench.register(sub)
+    bench_command.register(sub)
     args = parser.parse_args(["bench", *argv])
     return int(args.func(args))
 
@@ -198,8 +200,22 @@ def test_out_must_be_a_writable_folder(tmp_path: Path) -> None:
 
 
 def test_links_parsing() -> None:
-    assert bench.parse_links("1-3,6") == [1, 2, 3, 6]
-    assert bench.parse_links(" 4, 2 ") == [2, 4]
+    assert parse_links("1-3,6") == [1, 2, 3, 6]
+    assert parse_links(" 4, 2 ") == [2, 4]
+
+
+def test_moved_names_still_resolve_with_a_warning() -> None:
+    import jointplay.sweep
+    from jointplay.cli import sweep as sweep_command
+
+    with pytest.warns(DeprecationWarning, match="jointplay.cli.args.parse_links"):
+        assert bench.parse_links is parse_links
+    with pytest.warns(DeprecationWarning, match="jointplay.cli.bench.register"):
+        assert bench.register is bench_command.register
+    with pytest.warns(DeprecationWarning, match="jointplay.cli.sweep.cmd_sweep"):
+        assert jointplay.sweep.cmd_sweep is sweep_command.cmd_sweep
+    with pytest.raises(AttributeError):
+        _ = bench.no_such_name
 
 
 def test_error_measures() -> None:

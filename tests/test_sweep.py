@@ -19,13 +19,13 @@ from typing import Any
 import numpy as np
 import pytest
 
+from jointplay.cli.sweep import register
 from jointplay.common.errors import DescriptionError
 from jointplay.sweep import (
     TABLE_NAME,
     Case,
     contact_metrics,
     load_sweep,
-    register,
     run_sweep,
     sweep_from_dict,
 )

@@ -111,7 +111,7 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
     ``limit``: the run stops, marked diverged, once the end-effector position error exceeds
     it (m), as it does when the plant can no longer be integrated."""
     from jointplay.neural.identify import measure
-    from jointplay.simulation import Stepper
+    from jointplay.sim import Stepper
 
     stepper = Stepper(scene, model=clearance_model)
     joints = scene.robot.moving_joints
@@ -195,7 +195,7 @@ def computed_torque_law(scene: Any, ideal: Any, reference: np.ndarray, omega: fl
     """Computed torque with the ideal-joint model: tau = M(q)(qdd_r + kd e' + kp e) - f0(q,
     qdot); the scene's torque at the sample is subtracted because the stepper adds it."""
     from jointplay.scene.definition import ideal_counterpart
-    from jointplay.simulation import load_scene_model
+    from jointplay.sim import load_scene_model
 
     model = load_scene_model(scene, ideal=True)
     p = np.asarray(ideal_counterpart(scene.robot).parameter_values(), dtype=float)
@@ -324,7 +324,7 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     run).
     """
     from jointplay.neural.identify import ideal_reference, reference_outputs
-    from jointplay.simulation import load_scene_model
+    from jointplay.sim import load_scene_model
 
     ideal = ideal_reference(scene)
     reference = reference_outputs(ideal)

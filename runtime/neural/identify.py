@@ -284,7 +284,7 @@ _MODELS: dict[str, Any] = {}
 
 
 def _models(scene: Any) -> tuple[Any, Any]:
-    from jointplay.simulation import load_scene_model
+    from jointplay.sim import load_scene_model
 
     key = scene.robot.structure_hash()
     if key not in _MODELS:
@@ -295,7 +295,7 @@ def _models(scene: Any) -> tuple[Any, Any]:
 def ideal_reference(scene: Any, ideal_model: Any | None = None) -> Any:
     """The ideal-joint robot under the scene's torques: the motion the controller tracks."""
     from jointplay.scene.definition import ideal_counterpart
-    from jointplay.simulation import load_scene_model, simulate
+    from jointplay.sim import load_scene_model, simulate
 
     model = ideal_model or load_scene_model(scene, ideal=True)
     return simulate(scene.with_robot(ideal_counterpart(scene.robot)), model=model)
@@ -303,7 +303,7 @@ def ideal_reference(scene: Any, ideal_model: Any | None = None) -> Any:
 
 def run_task(task: _Task) -> Trajectory:
     """Simulate one identification trajectory (a worker's job)."""
-    from jointplay.simulation import Stepper
+    from jointplay.sim import Stepper
 
     clearance, ideal_model = _models(task.scene)
     ideal = ideal_reference(task.scene, ideal_model)

@@ -40,7 +40,7 @@ def plot_result(result: SimulationResult, folder: str | Path) -> list[Path]:
                                            folder / f"contact_timeline_joint{joint}.png"))
     paths.append(plot_energy(result, folder / "energy.png"))
     if result.wear is not None:
-        from jointplay.wear import plot as plot_wear
+        from jointplay.results.wear import plot as plot_wear
 
         paths.append(plot_wear(result.wear, folder / "wear.png",
                                f"{result.scene_name}: Archard wear over {result.t[-1]:g} s"))

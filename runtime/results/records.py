@@ -6,13 +6,14 @@ Arrays are float64, indexed by output sample first. ``nc`` is the number of clea
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 if TYPE_CHECKING:
-    from jointplay.wear import WearProfile
+    from jointplay.results.wear import WearProfile
 
 # Columns of the contact-phase table beyond the four an impact always had, with their units.
 PHASE_FIELDS: tuple[tuple[str, str, str], ...] = (
@@ -99,6 +100,15 @@ class Impacts:
         return impacts_frame(self)
 
 
+def eccentricity_columns(coordinate_names: Sequence[str], clearance_joints: Sequence[int]
+                         ) -> dict[int, tuple[int, int]]:
+    """Columns of (ex, ey) for each clearance joint in the model's coordinate order
+    (:func:`jointplay.robot.structure.coordinate_layout`): the joint angles first, then
+    (ex, ey) joint by joint in ``clearance_joints`` order."""
+    first = len(coordinate_names) - 2 * len(clearance_joints)
+    return {j: (first + 2 * k, first + 2 * k + 1) for k, j in enumerate(clearance_joints)}
+
+
 @dataclass(frozen=True)
 class SimulationResult:
     """A simulated trajectory and everything derived from it (SI units throughout)."""
@@ -148,8 +158,7 @@ class SimulationResult:
         The model's coordinate order (:func:`jointplay.robot.structure.coordinate_layout`):
         the joint angles first, then (ex, ey) joint by joint in ``clearance_joints`` order.
         """
-        first = len(self.coordinate_names) - 2 * len(self.clearance_joints)
-        return {j: (first + 2 * k, first + 2 * k + 1) for k, j in enumerate(self.clearance_joints)}
+        return eccentricity_columns(self.coordinate_names, self.clearance_joints)
 
     @property
     def coordinate_units(self) -> list[str]:

@@ -17,7 +17,7 @@ HDF5 layout (format "jointplay-result", version 1); every array carries attrs "u
 * ``/metadata``: string metadata as attrs, other values as JSON attrs of ``/metadata/json``;
   solver statistics as the JSON text dataset ``/metadata/stats``.
 * ``/wear``: Archard wear (angle, bearing_depth, journal_depth, volume), when the robot asks
-  for it (see :mod:`jointplay.wear`); CSV: ``RUN.wear.csv`` beside the samples.
+  for it (see :mod:`jointplay.results.wear`); CSV: ``RUN.wear.csv`` beside the samples.
 * ``/ideal``: the ideal-joint result, same layout (without format attrs), when present.
 """
 

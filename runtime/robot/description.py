@@ -137,7 +137,7 @@ class Lubrication:
 
 @dataclass(frozen=True)
 class Wear:
-    """Archard wear of every clearance joint, integrated during the run (see jointplay.wear).
+    """Archard wear of every clearance joint, integrated during the run (jointplay.results.wear).
 
     ``coefficient``: the dimensionless wear coefficient k; ``hardness``: of the softer
     surface, Pa. Wear volume rate k F_n |v_t| / H.

@@ -1,0 +1,41 @@
+"""``jointplay inspect``: show a model's equations (text, LaTeX or Markdown)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Any
+
+from jointplay.cli.args import check_writable_file, robot_arguments, robot_from_args
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    p_inspect = subparsers.add_parser("inspect", help="show a model's equations")
+    robot_arguments(p_inspect)
+    p_inspect.add_argument("--format", choices=("text", "latex", "markdown"))
+    p_inspect.add_argument("--out", help="write to this file (.md: Markdown) instead of stdout")
+    p_inspect.add_argument("--simplify", action="store_true",
+                           help="trigonometric simplification (readable, slow beyond 3 links)")
+    p_inspect.set_defaults(func=cmd_inspect)
+    return p_inspect
+
+
+def cmd_inspect(args: argparse.Namespace) -> int:
+    robot = robot_from_args(args)
+    out = Path(args.out) if args.out else None
+    if out is not None:
+        check_writable_file(out, "--out")
+    from jointplay.derive import derive
+    from jointplay.derive.inspect import render
+
+    fmt = args.format or ("markdown" if out is not None and out.suffix == ".md" else "text")
+    text = render(derive(robot.structure()), fmt, simplify=args.simplify, title=robot.name)
+    if out is None:
+        sys.stdout.write(text)
+    else:
+        from jointplay.common.files import atomic_write_text
+
+        atomic_write_text(out, text)
+        print(f"wrote {out} ({fmt})")
+    return 0

@@ -1,0 +1,182 @@
+"""``jointplay simulate``: run a scene, write what was asked for, print a summary."""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from jointplay.cli.args import check_writable_dir, run_flag, scene_argument, scene_from_args
+from jointplay.cli.summary import summary
+from jointplay.common.errors import DescriptionError
+
+if TYPE_CHECKING:
+    from jointplay.results.records import SimulationResult
+    from jointplay.scene.definition import Scene
+
+# Run settings --set may change (numbers only; the integrator has its own flag).
+_RUN_NUMBERS = ("t_end", "output_step", "rtol", "atol", "step", "max_steps")
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    p_sim = subparsers.add_parser("simulate",
+                                  help="simulate a scene (default: the paper's example)")
+    scene_argument(p_sim)
+    p_sim.add_argument("--out", help="write the results to this HDF5 file (atomically)")
+    p_sim.add_argument("--csv", help="also write a flat CSV table")
+    p_sim.add_argument("--plot", help="write PNG figures into this folder")
+    p_sim.add_argument("--compare-ideal", action="store_true",
+                       help="also simulate the scene with ideal joints and report the errors")
+    p_sim.add_argument("--integrator", help="override run.integrator (cvodes, idas, rk4, radau)")
+    p_sim.add_argument("--rtol", type=float, help="override run.rtol")
+    p_sim.add_argument("--atol", type=float, help="override run.atol")
+    p_sim.add_argument("--step", type=float, help="override run.step (fixed-step methods)")
+    p_sim.add_argument("--output-step", type=float, metavar="H",
+                       help="override run.output_step (s): the spacing of the output samples; "
+                            "it must divide run.t_end")
+    p_sim.add_argument("--animate", metavar="FILE.gif|mp4",
+                       help="write an animation of the arm, each journal's orbit magnified in "
+                            "an inset (mp4 needs ffmpeg)")
+    p_sim.add_argument("--t-end", type=float, help="override run.t_end (s)")
+    p_sim.add_argument("--set", action="append", metavar="NAME=VALUE",
+                       help="override a robot parameter, e.g. --set friction.mu=0.1 "
+                            "(repeatable; never recompiles), or a run setting, e.g. --set "
+                            "run.output_step=1e-6")
+    p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    p_sim.set_defaults(func=cmd_simulate)
+    return p_sim
+
+
+def cmd_simulate(args: argparse.Namespace) -> int:
+    from jointplay.sim import load_scene_model, simulate
+
+    # Everything is validated before anything is derived, compiled or written.
+    scene = _scene(args)
+    quiet = args.quiet
+    t0 = time.perf_counter()
+    model = load_scene_model(scene)
+    if not quiet:
+        print(f"scene {scene.name}: model {model.name} ready in "
+              f"{time.perf_counter() - t0:.2f} s ({', '.join(model.coordinates)})")
+    result = simulate(scene, model=model, compare_ideal=args.compare_ideal, quiet=quiet)
+    written = _write(result, args, quiet)
+    if not quiet:
+        print(summary(result))
+        for path in written:
+            print(f"wrote {path}")
+    return 0
+
+
+def _scene(args: argparse.Namespace) -> Scene:
+    """The scene with the command's overrides, every output path checked."""
+    scene = scene_from_args(args)
+    changes = {k: v for k, v in (("integrator", args.integrator), ("rtol", args.rtol),
+                                 ("atol", args.atol), ("t_end", args.t_end),
+                                 ("step", args.step), ("output_step", args.output_step))
+               if v is not None}
+    if changes:
+        try:
+            scene = scene.with_run(**changes)
+        except DescriptionError as err:
+            if err.field.removeprefix("run.") not in changes:  # a consequence elsewhere
+                raise
+            raise DescriptionError(run_flag(err.field), err.message) from None
+    overrides = _overrides(args.set or [])
+    run_changes = _run_overrides(overrides)
+    if run_changes:
+        try:
+            scene = scene.with_run(**run_changes)
+        except DescriptionError as err:
+            raise DescriptionError(f"--set {err.field}", err.message) from None
+    _check_outputs(args, scene)
+    if overrides:
+        from jointplay.robot.description import with_parameters
+
+        try:
+            scene = scene.with_robot(with_parameters(scene.robot, overrides))
+        except DescriptionError as err:
+            raise DescriptionError(f"--set {err.field}", err.message) from None
+    return scene
+
+
+def _check_outputs(args: argparse.Namespace, scene: Scene) -> None:
+    from jointplay.results.write import check_distinct_outputs, check_output_path
+    from jointplay.scene.definition import scene_inputs
+
+    check_distinct_outputs({"--out": args.out, "--csv": args.csv})
+    for flag, path in (("--out", args.out), ("--csv", args.csv)):
+        if path:
+            check_output_path(path, flag, inputs=scene_inputs(scene))
+    if args.csv:
+        from jointplay.results.write import impacts_csv_path
+
+        check_output_path(impacts_csv_path(args.csv), "--csv", inputs=scene_inputs(scene))
+    if args.plot:
+        check_writable_dir(Path(args.plot), "--plot")
+    if args.animate:
+        from jointplay.results.animate import check_animation_path
+
+        check_animation_path(args.animate)
+
+
+def _write(result: SimulationResult, args: argparse.Namespace, quiet: bool) -> list[str]:
+    """Write the files asked for; their paths."""
+    written = []
+    if args.out:
+        from jointplay.results.write import write_hdf5
+
+        write_hdf5(result, args.out)
+        written.append(args.out)
+    if args.csv:
+        from jointplay.results.write import write_csv
+
+        written += [str(p) for p in write_csv(result, args.csv)]
+    if args.plot:
+        from jointplay.results.plots import plot_result
+
+        written += [str(p) for p in plot_result(result, args.plot)]
+    if args.animate:
+        from jointplay.results.animate import animate_result
+
+        written.append(str(animate_result(result, args.animate, quiet=quiet)))
+    return written
+
+
+def _overrides(items: list[str]) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip():
+            raise DescriptionError("--set", f"expects NAME=VALUE (e.g. friction.mu=0.1), got "
+                                   f"{item!r}")
+        try:
+            number = float(value)
+        except ValueError:
+            raise DescriptionError(f"--set {name}", f"must be a number, got {value!r}") \
+                from None
+        if not np.isfinite(number):
+            raise DescriptionError(f"--set {name}", f"must be finite, got {value!r}")
+        out[name.strip()] = number
+    return out
+
+
+def _run_overrides(overrides: dict[str, float]) -> dict[str, Any]:
+    """Take the ``run.NAME`` entries out of ``overrides`` (in place) as run-setting changes."""
+    changes: dict[str, Any] = {}
+    for name in [n for n in overrides if n.startswith("run.")]:
+        value = overrides.pop(name)
+        key = name.removeprefix("run.")
+        if key not in _RUN_NUMBERS:
+            raise DescriptionError(f"--set {name}", "is not a run setting --set can change; "
+                                   f"these are run.{', run.'.join(_RUN_NUMBERS)} (the "
+                                   "integrator: --integrator)")
+        if key == "max_steps":
+            if not value.is_integer():
+                raise DescriptionError(f"--set {name}", f"must be a whole number, got {value}")
+            changes[key] = int(value)
+        else:
+            changes[key] = value
+    return changes

@@ -1,0 +1,60 @@
+"""``jointplay sweep``: validate a sweep file, run what is not done yet, write the table and
+plots (the sweep itself: :mod:`jointplay.sweep`)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from jointplay.sweep import CASES_DIR, default_workers, load_sweep, run_sweep
+from jointplay.sweep.run import check_options
+
+
+def cmd_sweep(args: argparse.Namespace) -> int:
+    """``jointplay sweep``: validate, run what is not done yet, write the table and plots."""
+    sweep = load_sweep(args.sweep)
+    check_options(None, args.workers, args.scheduler)
+    quiet = bool(args.quiet)
+    if not quiet:
+        where = (f"the cluster at {args.scheduler}" if args.scheduler
+                 else "this process" if args.workers == 0
+                 else f"{args.workers or default_workers()} local worker process(es)")
+        print(f"sweep {sweep.name}: {len(sweep.cases)} case(s) of scene {sweep.scene.name} "
+              f"({sweep.mode} of {', '.join(sweep.swept_names)}) on {where}")
+    result = run_sweep(sweep, args.out, workers=args.workers, scheduler=args.scheduler,
+                       series=args.series, retry_failed=args.retry_failed, quiet=quiet)
+    if not quiet:
+        print(f"{result.cases} case(s): {result.ran} run, {result.reused} reused from "
+              f"{Path(args.out) / CASES_DIR}, {result.failed} failed; "
+              f"{result.wall_time_s:.1f} s")
+        print(f"wrote {result.path}")
+        for path in result.plots:
+            print(f"wrote {path}")
+    return 0
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    """Add the ``sweep`` command to the ``jointplay`` command's subparsers."""
+    parser = subparsers.add_parser(
+        "sweep", help="simulate a scene for many parameter vectors (Dask), one table out",
+        description="Run every case of a sweep file on a Dask cluster (a local one by "
+                    "default). Finished cases are kept in OUT/cases/ and skipped when the "
+                    "same sweep runs again; the table is OUT/sweep.parquet.")
+    parser.add_argument("sweep", help="sweep file (TOML); see docs/sweeps.md")
+    parser.add_argument("--out", required=True, help="folder for the table, case files, "
+                                                     "plots and series")
+    parser.add_argument("--scheduler", metavar="ADDRESS",
+                        help="use the Dask cluster at this address (tcp://host:8786) instead "
+                             "of starting a local one")
+    parser.add_argument("--workers", type=int, metavar="N",
+                        help=f"local worker processes (default min(cores, 4) = "
+                             f"{default_workers()}); 0 runs the cases in this process")
+    parser.add_argument("--series", action="store_true",
+                        help="also write every case's full time series (OUT/series/KEY.h5)")
+    parser.add_argument("--retry-failed", action="store_true",
+                        help="run cases that failed before again (they are kept otherwise)")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    parser.set_defaults(func=cmd_sweep)
+    return parser
+
