@@ -48,18 +48,17 @@ def _state(model: Any, params: Any, rng: Any) -> Any:
     """A state with every clearance joint in contact (|e| = 1.1 c) and moving."""
     import numpy as np
 
-    names = model.coordinates
-    n = len(names)
+    layout = model.layout
+    n = len(layout.coordinates)
     x = np.zeros(2 * n)
-    pidx = {name: i for i, name in enumerate(model.parameters)}
-    for i, name in enumerate(names):
-        if name.startswith("q"):
+    for i, coordinate in enumerate(layout.coordinates):
+        if coordinate.kind == "angle":
             x[i] = rng.uniform(-1.0, 1.0)
             x[n + i] = rng.uniform(-1.0, 1.0)
-        elif name.startswith("ex"):
-            j = name[2:]
-            c = (params[pidx[f"joint{j}.bearing_radius"]]
-                 - params[pidx[f"joint{j}.journal_radius"]])
+        elif coordinate.kind == "ex":
+            j = coordinate.joint
+            c = (params[layout.parameter_slot("joint", j, "bearing_radius")]
+                 - params[layout.parameter_slot("joint", j, "journal_radius")])
             phi = rng.uniform(0.0, 2.0 * math.pi)
             x[i], x[i + 1] = 1.1 * c * math.cos(phi), 1.1 * c * math.sin(phi)
             x[n + i], x[n + i + 1] = rng.uniform(-1e-3, 1e-3, size=2)
