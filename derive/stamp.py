@@ -13,7 +13,7 @@ from typing import Any
 
 from jointplay.description import canonical_json
 
-_EMITTING_MODULES = ("codegen.py", "laws.py", "symbolic.py", "to_casadi.py")
+_EMITTING_MODULES = ("codegen.py", "cylindrical.py", "laws.py", "symbolic.py", "to_casadi.py")
 
 
 def _generator_version() -> str:

@@ -107,6 +107,9 @@ class SympyToCasadi:
             for a in args[1:]:
                 out = ca.fmin(out, a)
             return out
+        custom = getattr(type(node), "casadi", None)  # a function that builds its own SX
+        if custom is not None:
+            return custom(*args)
         for fn, cafn in _UNARY.items():
             if isinstance(node, fn):
                 return cafn(args[0])

@@ -25,11 +25,17 @@ from jointplay.errors import DescriptionError
 
 JointKind = Literal["ideal", "clearance", "locked", "locked_clearance"]
 ContactLaw = Literal["lankarani-nikravesh", "hunt-crossley", "gonthier", "flores"]
+ContactStiffness = Literal["hertz", "johnson", "liu", "pereira"]
 FrictionLaw = Literal["none", "coulomb"]
 FrictionRamp = Literal["linear", "smooth"]
 
 JOINT_KINDS: tuple[str, ...] = ("ideal", "clearance", "locked", "locked_clearance")
 CONTACT_LAWS: tuple[str, ...] = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
+# The elastic part of the normal force: Hertz's K d^n, or a law for conformal cylinders of
+# axial length joint{j}.length (see jointplay.derive.cylindrical).
+CONTACT_STIFFNESSES: tuple[str, ...] = ("hertz", "johnson", "liu", "pereira")
+# The clearance range (m) over which the Pereira-Ramalho-Ambrosio law was fitted.
+PEREIRA_CLEARANCE_RANGE: tuple[float, float] = (5.0e-6, 10.0e-3)
 FRICTION_LAWS: tuple[str, ...] = ("none", "coulomb")
 FRICTION_RAMPS: tuple[str, ...] = ("linear", "smooth")
 MAX_LINKS = 32
@@ -69,6 +75,8 @@ class Joint:
     bearing_nu: float = STEEL_NU
     journal_E: float = STEEL_E
     journal_nu: float = STEEL_NU
+    # Axial length of the journal and bearing (m): needed only by laws that use it.
+    length: float | None = None
 
     @property
     def moves(self) -> bool:
@@ -87,9 +95,15 @@ class Gravity:
 
 @dataclass(frozen=True)
 class Contact:
-    """Continuous dissipative Hertz contact at clearance joints: F_n = K d^n (1 + x(ce) d'/d'-)."""
+    """Continuous dissipative contact at clearance joints: F_n = F_e(d) (1 + x(ce) d'/d'-).
+
+    ``law`` chooses the damping factor x(ce); ``stiffness`` the elastic force F_e(d): Hertz's
+    K d^n (``exponent`` n), or a conformal-cylinder law that needs each clearance joint's
+    ``length``.
+    """
 
     law: ContactLaw = "lankarani-nikravesh"
+    stiffness: ContactStiffness = "hertz"
     exponent: float = 1.5
     restitution: float = 0.9
     # Floor of the captured impact speed d'- (m/s): grazing contact would otherwise give a
@@ -149,6 +163,10 @@ class Robot:
             "joints": [j.kind for j in self.joints],
             "gravity": self.gravity.enabled,
             "contact_law": self.contact.law if has_clearance else None,
+            # Present only for a cylindrical law, so a Hertz model's structure (and its code)
+            # is what it was before these laws existed.
+            **({"contact_stiffness": self.contact.stiffness}
+               if has_clearance and self.contact.stiffness != "hertz" else {}),
             "friction": (
                 f"{self.friction.law}-{self.friction.ramp}"
                 if has_clearance and self.friction.law != "none"
@@ -172,7 +190,10 @@ class Robot:
         if head.startswith("link"):
             return getattr(self.links[int(head[4:]) - 1], attr)
         if head.startswith("joint"):
-            return getattr(self.joints[int(head[5:]) - 1], attr)
+            value = getattr(self.joints[int(head[5:]) - 1], attr)
+            if value is None:  # validation requires it wherever the layout has it
+                raise KeyError(name)
+            return value
         if head == "payload":
             return self.payload_mass
         if head == "gravity":
@@ -191,7 +212,7 @@ class Robot:
             "joints": [_joint_dict(j) for j in self.joints],
             "payload": {"mass": self.payload_mass},
             "gravity": {"enabled": self.gravity.enabled, "vector": list(self.gravity.vector)},
-            "contact": vars(self.contact).copy(),
+            "contact": _contact_dict(self.contact),
             "friction": vars(self.friction).copy(),
             "drive": {"enabled": self.drive},
         }
@@ -206,6 +227,17 @@ def _joint_dict(j: Joint) -> dict[str, Any]:
         for name in ("bearing_radius", "journal_radius", "bearing_E", "bearing_nu",
                      "journal_E", "journal_nu"):
             d[name] = getattr(j, name)
+        if j.length is not None:
+            d["length"] = j.length
+    return d
+
+
+def _contact_dict(c: Contact) -> dict[str, Any]:
+    """The [contact] table; ``stiffness`` is written only when it is not the default, so a
+    Hertz robot's TOML (and the checked-in generated/ folders) read as before."""
+    d = vars(c).copy()
+    if c.stiffness == "hertz":
+        del d["stiffness"]
     return d
 
 
@@ -268,9 +300,14 @@ def parameter_layout(structure: Mapping[str, Any]) -> list[Parameter]:
                 Parameter(f"joint{i}.journal_nu", f"\\nu_{{j{i}}}", "1",
                           f"Poisson's ratio of joint {i}'s journal"),
             ]
+            if structure.get("contact_stiffness", "hertz") != "hertz":
+                out.append(Parameter(f"joint{i}.length", f"\\ell_{{{i}}}", "m",
+                                     "axial length of the journal and bearing"))
     if structure["contact_law"] is not None:
+        if structure.get("contact_stiffness", "hertz") == "hertz":
+            out.append(Parameter("contact.exponent", "n", "1",
+                                 "Hertz exponent n of F_n = K d^n"))
         out += [
-            Parameter("contact.exponent", "n", "1", "Hertz exponent n of F_n = K d^n"),
             Parameter("contact.restitution", "c_{e}", "1", "coefficient of restitution"),
             Parameter("contact.impact_speed_floor", "v_{min}", "m/s",
                       "floor of the captured impact speed (grazing contact)"),
@@ -353,6 +390,10 @@ def validate(robot: Robot) -> None:
     if c.law not in CONTACT_LAWS:
         raise DescriptionError("contact.law",
                                f"must be one of {', '.join(CONTACT_LAWS)}, got {c.law!r}")
+    if c.stiffness not in CONTACT_STIFFNESSES:
+        raise DescriptionError("contact.stiffness", f"must be one of "
+                               f"{', '.join(CONTACT_STIFFNESSES)}, got {c.stiffness!r}")
+    _validate_lengths(robot)
     _positive("contact.exponent", c.exponent)
     _finite("contact.restitution", c.restitution)
     if not 0.0 < c.restitution <= 1.0:
@@ -373,6 +414,31 @@ def validate(robot: Robot) -> None:
         raise DescriptionError("friction.v1", f"must exceed friction.v0 ({f.v0}), got {f.v1}")
 
 
+def _validate_lengths(robot: Robot) -> None:
+    """joint{j}.length: positive wherever given; required where a compiled law uses it."""
+    stiffness = robot.contact.stiffness
+    for i, joint in enumerate(robot.joints, start=1):
+        if joint.length is not None:
+            _positive(f"joints[{i}].length", joint.length)
+        if not joint.has_clearance or stiffness == "hertz":
+            continue
+        if joint.length is None:
+            raise DescriptionError(
+                f"joints[{i}].length",
+                f"is required by contact.stiffness = {stiffness!r}: the axial length of the "
+                "journal and bearing in m; add e.g. length = 0.02 to this [[joints]] entry, "
+                "or use stiffness = \"hertz\", which needs no length")
+        if stiffness == "pereira":
+            low, high = PEREIRA_CLEARANCE_RANGE
+            c = joint.bearing_radius - joint.journal_radius
+            if not low <= c < high:
+                raise DescriptionError(
+                    f"joints[{i}].journal_radius",
+                    f"gives a radial clearance of {c:.6g} m, outside the range the Pereira "
+                    f"law was fitted for ({low:g} m <= c < {high:g} m); choose radii in that "
+                    "range or another contact.stiffness (johnson, liu)")
+
+
 # --------------------------------------------------------------------------------------------
 # Reading descriptions from TOML / dictionaries / flags
 # --------------------------------------------------------------------------------------------
@@ -380,7 +446,7 @@ def validate(robot: Robot) -> None:
 _TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive")
 _LINK_KEYS = ("length", "mass", "inertia", "com")
 _JOINT_KEYS = ("kind", "angle", "bearing_radius", "journal_radius", "bearing_E", "bearing_nu",
-               "journal_E", "journal_nu")
+               "journal_E", "journal_nu", "length")
 _FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", "journal_radius",
                  "bearing_E", "bearing_nu", "journal_E", "journal_nu", "exponent", "restitution",
                  "impact_speed_floor", "mu", "v0", "v1"}

@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+82e6f841c7cc, casadi 3.8.2, sympy 1.14.0
- * input hash: 1ef0b620cc7d7e1137463d65b9e01d71b7edb611d209006c7ec566373311294c
+ * generator: jointplay.derive 0.1.0+2a595466e437, casadi 3.8.2, sympy 1.14.0
+ * input hash: 196be136ebbc6b59a4cccd433015a870b45994f9978796c0a15795d9e5baeade
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
