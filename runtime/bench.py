@@ -263,6 +263,7 @@ def per_call_seconds(fn: Callable[[], Any], repeats: int = 7, batch_s: float = 0
 # ---- work-precision -----------------------------------------------------------------------
 
 WP_COLUMNS: list[tuple[str, str, str]] = [
+    ("stiffness", "stiffness", "{}"),
     ("method", "method", "{}"),
     ("config", "runs", "{}"),
     ("rtol", "rtol", "{:.0e}"),
@@ -283,7 +284,7 @@ WP_COLUMNS: list[tuple[str, str, str]] = [
     ("impacts", "impacts", "{}"),
 ]
 WP_CSV_KEYS: list[str] = [
-    "config", "method", "rtol", "atol", "step", "status", "failure", "repeats",
+    "stiffness", "config", "method", "rtol", "atol", "step", "status", "failure", "repeats",
     "cpu_median_s", "cpu_min_s", "cpu_max_s", "wall_median_s", "wall_min_s", "wall_max_s",
     "realtime_factor", *ERROR_KEYS, "steps", "rhs_evaluations", "jacobian_evaluations",
     "events", "impacts"]
@@ -331,6 +332,7 @@ def work_precision(scene: Scene, model: Model, *, methods: Sequence[str] = DEFAU
             run = config.run
             adaptive = run.integrator in ADAPTIVE
             row: dict[str, Any] = {
+                "stiffness": config.robot.contact.stiffness,
                 "config": kind,
                 "method": run.integrator,
                 "rtol": run.rtol if adaptive else None,
@@ -482,10 +484,12 @@ def without_friction(scene: Scene) -> Scene:
 
 def fidelity(scene: Scene, *, run_scene: Scene | None = None,
              reference_rtol: float = REFERENCE_RTOL, repeats: int = 3,
-             surrogate: Path | None = None, quiet: bool = False) -> Fidelity:
+             surrogate: Path | None = None, quiet: bool = False,
+             stiffness: Sequence[str] = ()) -> Fidelity:
     """Each modelling level's end-effector error against the full model at ``reference_rtol``
     and its cost, at the scene's own run settings (``run_scene``) and at the reference
-    tolerance (which leaves the modelling error alone)."""
+    tolerance (which leaves the modelling error alone). Each law in ``stiffness`` other than
+    the scene's adds a rung: the full model under that contact stiffness law."""
     from tqdm import tqdm
 
     from jointplay.derive import model_for
@@ -499,6 +503,11 @@ def fidelity(scene: Scene, *, run_scene: Scene | None = None,
          if scene.robot.friction.law == "none" else ""),
         ("clearance + friction (full)", scene, ""),
     ]
+    from jointplay.contact_laws import with_stiffness
+
+    rungs[-1:-1] = [(f"clearance + friction, {law} stiffness",
+                     scene.with_robot(with_stiffness(scene.robot, law)), "")
+                    for law in stiffness if law != scene.robot.contact.stiffness]
     tight = {"integrator": "cvodes", "rtol": reference_rtol, "atol": reference_rtol}
     models = {name: model_for(rscene.robot) for name, rscene, _ in rungs}
     full_name = rungs[-1][0]
@@ -1032,8 +1041,56 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
     _with_run(scene, rtol=args.reference_rtol)
     if args.check == "radau":
         _with_run(scene, integrator="radau", step=args.check_step)
+    laws = _stiffness_option(args, scene)
     out = prepare_out_dir(args.out)
+    if len(laws) == 1:
+        _work_precision_one(_law_scene(scene, laws[0]), args, out, methods, rtols, steps,
+                            repeats)
+        return 0
+    # One full work-precision (own model, own reference) per law, and a table of all rows.
+    rows: list[dict[str, Any]] = []
+    for law in laws:
+        rows += _work_precision_one(_law_scene(scene, law), args,
+                                    prepare_out_dir(out / law), methods, rtols, steps, repeats)
+    md = [f"# Work-precision per contact stiffness law: {scene.name}", "",
+          f"Command: `{_command()}`", "",
+          "Each law's errors are against its own reference (see the law's folder).", "",
+          markdown_table(rows, WP_COLUMNS), ""]
+    atomic_write_text(out / "work_precision_laws.csv", to_csv(rows, WP_CSV_KEYS))
+    atomic_write_text(out / "work_precision_laws.md", "\n".join(md))
+    _report([out / "work_precision_laws.csv"], out / "work_precision_laws.md", args.quiet)
+    return 0
 
+
+def _stiffness_option(args: argparse.Namespace, scene: Scene) -> list[str]:
+    from jointplay.contact_laws import parse_stiffnesses, with_stiffness
+
+    if not args.stiffness:
+        return [scene.robot.contact.stiffness]
+    laws = parse_stiffnesses(args.stiffness, "--stiffness")
+    if not scene.robot.clearance_joints:
+        raise DescriptionError("--stiffness", "the scene's robot has no clearance joint, so "
+                                              "no contact law")
+    for law in laws:
+        try:
+            with_stiffness(scene.robot, law)
+        except DescriptionError as err:
+            raise DescriptionError("--stiffness", f"{law}: {err.field}: {err.message}"
+                                   ) from None
+    return laws
+
+
+def _law_scene(scene: Scene, law: str) -> Scene:
+    from jointplay.contact_laws import with_stiffness
+
+    if law == scene.robot.contact.stiffness:
+        return scene
+    return scene.with_robot(with_stiffness(scene.robot, law))
+
+
+def _work_precision_one(scene: Scene, args: argparse.Namespace, out: Path,
+                        methods: list[str], rtols: list[float], steps: list[float],
+                        repeats: int) -> list[dict[str, Any]]:
     from jointplay.simulation import load_scene_model
 
     t0 = time.perf_counter()
@@ -1051,7 +1108,7 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
                        load_s=load_s, repeats=repeats, facts=machine_facts())
     paths = write_work_precision(wp, out, _command())
     _report(paths, paths[1], args.quiet)
-    return 0
+    return rows
 
 
 def cmd_fidelity(args: argparse.Namespace) -> int:
@@ -1067,9 +1124,10 @@ def cmd_fidelity(args: argparse.Namespace) -> int:
     if surrogate is not None and not surrogate.is_dir():
         raise DescriptionError("--surrogate", f"{surrogate} is not a folder holding a trained "
                                               "model")
+    laws = _stiffness_option(args, scene) if args.stiffness else []
     out = prepare_out_dir(args.out)
     fid = fidelity(scene, run_scene=run_scene, reference_rtol=args.reference_rtol,
-                   repeats=repeats, surrogate=surrogate, quiet=args.quiet)
+                   repeats=repeats, surrogate=surrogate, quiet=args.quiet, stiffness=laws)
     skipped = [r for r in fid.rows if r["status"] == "skipped" and surrogate is not None]
     for r in skipped:
         print(f"jointplay: note: surrogate row skipped: {r['note']}", file=sys.stderr)
@@ -1143,6 +1201,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                          "tolerance (default) or radau at --check-step")
     wp.add_argument("--check-step", type=float, default=DEFAULT_CHECK_STEP,
                     help=f"Radau step of the check (default {DEFAULT_CHECK_STEP:g} s)")
+    wp.add_argument("--stiffness", metavar="LAWS",
+                    help="comma list of contact stiffness laws (hertz, johnson, liu, pereira): "
+                         "one work-precision per law, in DIR/<law>/, and all rows in "
+                         "DIR/work_precision_laws.md (default: the scene's own law; clearance "
+                         "joints without a length get 0.02 m)")
     wp.set_defaults(func=cmd_work_precision)
 
     fid = sub.add_parser("fidelity", help="ideal joints, clearance without and with "
@@ -1161,6 +1224,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     fid.add_argument("--surrogate", metavar="MODEL_DIR",
                      help=f"a trained neural surrogate ({SURROGATE_MODULE}); without it the "
                           "surrogate row is skipped with a note")
+    fid.add_argument("--stiffness", metavar="LAWS",
+                     help="comma list of contact stiffness laws (hertz, johnson, liu, "
+                          "pereira): each one other than the scene's adds a rung, the full "
+                          "model under that law (clearance joints without a length get "
+                          "0.02 m)")
     fid.set_defaults(func=cmd_fidelity)
 
     sc = sub.add_parser("scaling", help="derive, emit and compile time, and the cost of a "

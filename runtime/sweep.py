@@ -83,8 +83,8 @@ CASES_DIR = "cases"
 SERIES_DIR = "series"
 PLOTS_DIR = "plots"
 # Names of the model's structure: changing one changes the generated code.
-_STRUCTURAL = ("contact.law", "friction.law", "friction.ramp", "gravity.enabled",
-               "drive.enabled", "links", "joints", "name")
+_STRUCTURAL = ("contact.law", "contact.stiffness", "friction.law", "friction.ramp",
+               "gravity.enabled", "drive.enabled", "links", "joints", "name")
 _CLEARANCE_ALIAS = re.compile(r"joint(\d+)\.clearance")
 # Failures of these stages are deterministic; a restart keeps them (unless retry_failed).
 _STAGE_SIMULATION = "simulation"
@@ -201,13 +201,21 @@ def _check_name(name: str, robot: Robot, source: str | None) -> None:
     n = robot.n_links
     superset = {p.name for p in parameter_layout({
         "links": n, "joints": ["locked_clearance"] * n, "gravity": True,
-        "contact_law": "flores", "friction": "coulomb-linear", "drive": True})}
+        "contact_law": "flores", "contact_stiffness": "johnson", "friction": "coulomb-linear",
+        "drive": True})} | {"contact.exponent"}
     if name in superset:
         head, _, attr = name.partition(".")
         if head == "gravity":
             why = "gravity is disabled in the base scene (gravity.enabled = false)"
+        elif head == "contact" and robot.clearance_joints:
+            why = ("contact.exponent is Hertz's, and the base scene's contact.stiffness is "
+                   f"{robot.contact.stiffness!r}")
         elif head == "contact":
             why = "the base robot has no clearance joint, so it has no contact model"
+        elif attr == "length" and robot.joints[int(head[5:]) - 1].has_clearance:
+            why = ("the axial length is a parameter of the cylindrical contact laws only "
+                   "(contact.stiffness = johnson, liu, pereira), and the base scene's is "
+                   f"{robot.contact.stiffness!r}")
         elif head == "friction":
             why = ("the base robot has no clearance joint" if not robot.clearance_joints
                    else "friction is off in the base scene (friction.law = \"none\")")
