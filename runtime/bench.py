@@ -263,7 +263,6 @@ def per_call_seconds(fn: Callable[[], Any], repeats: int = 7, batch_s: float = 0
 # ---- work-precision -----------------------------------------------------------------------
 
 WP_COLUMNS: list[tuple[str, str, str]] = [
-    ("stiffness", "stiffness", "{}"),
     ("method", "method", "{}"),
     ("config", "runs", "{}"),
     ("rtol", "rtol", "{:.0e}"),
@@ -1055,7 +1054,7 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
     md = [f"# Work-precision per contact stiffness law: {scene.name}", "",
           f"Command: `{_command()}`", "",
           "Each law's errors are against its own reference (see the law's folder).", "",
-          markdown_table(rows, WP_COLUMNS), ""]
+          markdown_table(rows, [("stiffness", "stiffness", "{}"), *WP_COLUMNS]), ""]
     atomic_write_text(out / "work_precision_laws.csv", to_csv(rows, WP_CSV_KEYS))
     atomic_write_text(out / "work_precision_laws.md", "\n".join(md))
     _report([out / "work_precision_laws.csv"], out / "work_precision_laws.md", args.quiet)
