@@ -48,7 +48,10 @@ def sections(model: SymbolicModel, simplify: bool = False) -> list[tuple[str, li
         law = c.law
         rows = [
             ("c", law.clearance, "radial clearance"),
-            ("K", law.stiffness, "pin-in-hole Hertz stiffness"),
+            ("K", law.stiffness, "pin-in-hole Hertz stiffness"
+             if model.structure.contact_stiffness is None else
+             f"leading coefficient of {model.structure['contact_stiffness']}'s law"),
+            ("F_e", law.elastic_force, "elastic part of the normal force"),
             ("|e|", law.eccentricity, "eccentricity, floored far below c"),
             ("delta", law.penetration, "penetration (contact while > 0)"),
             ("delta_dot", law.penetration_rate, "normal rate"),

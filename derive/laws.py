@@ -11,6 +11,19 @@ and v- the normal approach speed at the onset of this impact (an input, floored 
 parameter ``contact.impact_speed_floor`` for grazing contact). The outer max(0, .) stops the
 damping term from pulling the bodies together while they separate.
 
+Elastic laws of conformal cylinders (``contact.stiffness`` = johnson, liu, pereira; see
+:mod:`jointplay.derive.cylindrical`) replace K d+^n by F_e(d), with the same damping factors.
+
+Damping with any elastic law. The damping term is kept proportional to the elastic force:
+F_n = F_e(d) (1 + x(ce) d'/v-), i.e. chi(d) = x F_e(d) / v- (for Hertz, x K d^n / v-). With
+this choice every x(ce) above keeps its meaning exactly. For one impact of a mass m,
+m d'' = -F_e(d) (1 + x d'/v-); with U(d) the elastic potential (dU = F_e dd) this is
+m d' dd'/dU = -(1 + x d'/v-), an equation between d' and U in which the elastic law no longer
+appears. The rebound speed, so the effective restitution, is the same function of (x, v-) for
+every elastic law, and each x(ce) derived for K d^n (Lankarani-Nikravesh's energy balance,
+Gonthier's and Flores' integrations) holds unchanged. A damping chi d^n d' with the Hertz
+exponent, or a constant chi, would not have this property.
+
 Friction, modified Coulomb law (Ambrosio 2002): F_t = -mu c_d(|v_t|) F_n v_t / |v_t| with the
 dynamic correction c_d = 0 below v0, 1 above v1, and a ramp between: linear (the literature's)
 or, as the named option ``smooth``, the C1 cubic s^2 (3 - 2 s).
@@ -42,6 +55,7 @@ from typing import Any
 
 import sympy as sp
 
+from jointplay.derive import cylindrical
 from jointplay.robot.structure import Structure
 
 # |e| is floored at this fraction of the radial clearance (see module docstring).
@@ -67,7 +81,7 @@ def penetration_power(delta: sp.Expr, exponent: sp.Expr) -> sp.Expr:
 @dataclass
 class ContactTerms:
     clearance: sp.Expr  # c = Rb - Rj
-    stiffness: sp.Expr  # K
+    stiffness: sp.Expr  # K (Hertz), or the leading coefficient of a cylindrical law
     eccentricity: sp.Expr  # |e| (floored far below c)
     penetration: sp.Expr  # d = |e| - c (negative: no contact)
     penetration_rate: sp.Expr  # d' = e'.n
@@ -78,8 +92,9 @@ class ContactTerms:
     friction_force: sp.Expr  # F_t, on the journal, along the tangent t = z x n
     force_x: sp.Expr  # total contact force on the journal, N components
     force_y: sp.Expr
-    potential: sp.Expr  # K d+^(n+1) / (n+1)
-    dissipation: sp.Expr  # power lost to damping and friction: (F_n - K d+^n) d' - F_t v_t >= 0
+    elastic_force: sp.Expr  # F_e(d): K d+^n, or a cylindrical law's
+    potential: sp.Expr  # integral of F_e: K d+^(n+1) / (n+1) for Hertz
+    dissipation: sp.Expr  # power lost to damping and friction: (F_n - F_e) d' - F_t v_t >= 0
     # (with a lubricant, minus the film's power F_film . e', see add_film)
     film: Any = None  # the lubricant film's terms (lubrication.FilmTerms) when compiled
 
@@ -125,7 +140,6 @@ def contact_terms(
     sigma_j = (1 - P(f"joint{joint}.journal_nu") ** 2) / P(f"joint{joint}.journal_E")
     clearance = rb - rj
     stiffness = sp.Rational(4, 3) / (sigma_b + sigma_j) * sp.sqrt(rb * rj / clearance)
-    n_exp = P("contact.exponent")
 
     ecc = sp.sqrt(sp.Max(ex**2 + ey**2, (ECCENTRICITY_FLOOR * clearance) ** 2))
     penetration = ecc - clearance
@@ -139,8 +153,17 @@ def contact_terms(
         raise ValueError("contact terms asked of a structure without clearance")
     x_ce = damping_factor(structure.contact_law, P("contact.restitution"))
     approach = sp.Max(impact_speed, P("contact.impact_speed_floor"))
-    normal = sp.Max(
-        stiffness * penetration_power(penetration, n_exp) * (1 + x_ce * rate / approach), 0)
+    kind = structure.contact_stiffness
+    if kind is None:
+        n_exp = P("contact.exponent")
+        elastic = stiffness * penetration_power(penetration, n_exp)
+        potential = stiffness * penetration_power(penetration, n_exp + 1) / (n_exp + 1)
+    else:
+        law = cylindrical.elastic_law(kind, penetration, joint, P)
+        elastic, potential, stiffness = law.force, law.potential, law.stiffness
+    # The damping is proportional to the elastic force, chi(d) = x F_e(d) / v-, for every
+    # elastic law: see "Damping with any elastic law" in the module docstring.
+    normal = sp.Max(elastic * (1 + x_ce * rate / approach), 0)
 
     if structure.friction_ramp is None:
         c_d: sp.Expr = sp.Integer(0)
@@ -165,11 +188,11 @@ def contact_terms(
         friction_force=friction,
         force_x=-normal * nx + friction * tx,
         force_y=-normal * ny + friction * ty,
-        potential=stiffness * penetration_power(penetration, n_exp + 1) / (n_exp + 1),
-        # The elastic part K d+^n d' is stored in the potential; the rest of the normal force
+        elastic_force=elastic,
+        potential=potential,
+        # The elastic part F_e(d) d' is stored in the potential; the rest of the normal force
         # (hysteresis damping, clipped at zero) and all of friction take energy out.
-        dissipation=(normal - stiffness * penetration_power(penetration, n_exp)) * rate
-        - friction * sliding,
+        dissipation=(normal - elastic) * rate - friction * sliding,
     )
     if structure.lubrication:
         add_film(terms, structure.lubrication, joint, ex, ey, vx, vy, omega_bearing,

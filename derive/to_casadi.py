@@ -109,6 +109,9 @@ class SympyToCasadi:
             return out
         if isinstance(node, sp.atan2):
             return ca.atan2(args[0], args[1])
+        custom = getattr(type(node), "casadi", None)  # a function that builds its own SX
+        if custom is not None:
+            return custom(*args)
         for fn, cafn in _UNARY.items():
             if isinstance(node, fn):
                 return cafn(args[0])

@@ -174,6 +174,9 @@ def test_scaling_tiny(tmp_path: Path) -> None:
     (["work-precision", "--methods", "euler"], "--methods"),
     (["work-precision", "--repeats", "0"], "--repeats"),
     (["fidelity", "--rtol", "2"], "--rtol"),
+    (["fidelity", "--stiffness", "hertzian"], "--stiffness"),
+    (["work-precision", "--stiffness", "liu,liu"], "--stiffness"),
+    (["work-precision", "--stiffness", ","], "--stiffness"),
     (["scaling", "--links", "0-3"], "--links"),
     (["scaling", "--links", "40"], "--links"),
     (["scaling", "--structures", "rigid"], "--structures"),
@@ -185,6 +188,32 @@ def test_bad_arguments_name_the_flag(tmp_path: Path, argv: list[str], flag: str)
         run_bench(*argv, "--out", str(out))
     assert info.value.field == flag
     assert not out.exists()  # validated before anything is written
+
+
+def test_work_precision_and_fidelity_rows_per_stiffness_law(tmp_path: Path) -> None:
+    """--stiffness: a work-precision per law (own folder) with every row in one table, and
+    a fidelity rung per law other than the scene's, each with a finite, non-zero error
+    against the scene's full model."""
+    out = tmp_path / "wp"
+    assert run_bench("work-precision", "--quick", "--methods", "bdf", "--out", str(out),
+                     "--quiet", "--stiffness", "hertz,liu") == 0
+    header, rows = read_csv(out / "work_precision_laws.csv")
+    assert header == bench.WP_CSV_KEYS
+    assert [r["stiffness"] for r in rows] == ["hertz"] * 3 + ["liu"] * 3
+    assert all(r["status"] == "ok" for r in rows)
+    for law in ("hertz", "liu"):
+        assert read_csv(out / law / "work_precision.csv")[1][0]["stiffness"] == law
+        assert_png(out / law / "work_precision.png")
+    assert_markdown_table(out / "work_precision_laws.md", "stiffness", len(rows))
+    out = tmp_path / "fid"
+    assert run_bench("fidelity", "--quick", "--out", str(out), "--quiet",
+                     "--stiffness", "hertz,pereira") == 0
+    rows = read_csv(out / "fidelity.csv")[1]
+    law_rows = [r for r in rows if r["rung"] == "clearance + friction, pereira stiffness"]
+    assert [r["tolerance"] for r in law_rows] == ["scene", "reference"]
+    assert rows[-3]["rung"] == "clearance + friction (full)"  # still the reference rung
+    for r in law_rows:
+        assert r["status"] == "ok" and 0 < float(r["err_position"]) < 1e-3
 
 
 def test_out_must_be_a_writable_folder(tmp_path: Path) -> None:

@@ -55,7 +55,7 @@ def test_effects_enter_structure_and_parameters_when_asked() -> None:
 
 @pytest.mark.parametrize("edit,field,message", [
     ({"lubrication": {"model": "short-bearing"}}, "joints[2].length", "is required by "
-     "lubrication: add length = <axial length of the journal and bearing, m>"),
+     "lubrication: the axial length of the journal and bearing in m; add e.g. length = 0.02"),
     ({"wear": {"model": "archard"}}, "joints[2].length", "is required by wear"),
     ({"lubrication": {"model": "finite"}}, "lubrication.model", "must be one of none, "
      "short-bearing, long-bearing"),

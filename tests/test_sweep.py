@@ -228,6 +228,12 @@ BAD = [
      "did you mean 'friction.mu'"),
     ('[parameters."contact.law"]\nvalues = [1.0]', "parameters.contact.law", "structure"),
     ('[parameters."joint2.kind"]\nvalues = [1.0]', "parameters.joint2.kind", "structure"),
+    ('[parameters."contact.stiffness"]\nvalues = [1.0]', "parameters.contact.stiffness",
+     "structure"),
+    ('[parameters."joint2.length"]\nvalues = [0.02]', "parameters.joint2.length",
+     "cylindrical contact laws only"),
+    ('[parameters."joint1.length"]\nvalues = [0.02]', "parameters.joint1.length",
+     "only joints with clearance"),
     ('[parameters."joint1.angle"]\nvalues = [1.0]', "parameters.joint1.angle",
      "only locked joints"),
     ('[parameters."joint1.clearance"]\nvalues = [1e-5]', "parameters.joint1.clearance",
@@ -282,6 +288,24 @@ def test_effects_that_are_off_and_bad_options(tmp_path: Path) -> None:
                               str(tmp_path / "out")])
     with pytest.raises(DescriptionError, match="not found"):
         args.func(args)
+
+
+def test_sweep_of_a_cylindrical_contact_law(tmp_path: Path) -> None:
+    """A base scene under Johnson's law: its journal length and clearance are parameters
+    like any other; a longer journal is stiffer, so its peak force is higher."""
+    text = TINY.format(friction="coulomb").replace(
+        "[robot.friction]", '[robot.contact]\nstiffness = "johnson"\n[robot.friction]')
+    (tmp_path / "tiny.toml").write_text(text + "length = 0.02\n", encoding="utf-8")
+    path = tmp_path / "sweep.toml"
+    path.write_text('scene = "tiny.toml"\n[parameters."joint2.length"]\nvalues = [0.005, 0.05]'
+                    '\n[parameters."joint2.clearance"]\nvalues = [3e-5]\n', encoding="utf-8")
+    sweep = load_sweep(path)
+    assert sweep.scene.robot.structure().contact_stiffness == "johnson"
+    table = _columns(run_sweep(sweep, tmp_path / "out", workers=0, plots=False).table)
+    assert table["status"] == ["ok", "ok"]
+    assert table["joint2.length"] == [0.005, 0.05]
+    assert all(n > 0 for n in table["impacts"])
+    assert table["peak_normal_force"][0] < table["peak_normal_force"][1]
 
 
 def test_random_samples_are_seeded(tmp_path: Path) -> None:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import statistics
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -70,16 +71,17 @@ def without_friction(scene: Scene) -> Scene:
 def fidelity(scene: Scene, *, run_scene: Scene | None = None,
              reference_rtol: float = REFERENCE_RTOL, repeats: int = 3,
              surrogate: Path | None = None, quiet: bool = False,
-             effects: bool = False) -> Fidelity:
+             effects: bool = False, stiffness: Sequence[str] = ()) -> Fidelity:
     """Each modelling level's end-effector error against the full model at ``reference_rtol``
     and its cost, at the scene's own run settings (``run_scene``) and at the reference
-    tolerance (which leaves the modelling error alone)."""
+    tolerance (which leaves the modelling error alone). Each law in ``stiffness`` other than
+    the scene's adds a rung: the full model under that contact stiffness law."""
     from tqdm import tqdm
 
     from jointplay.store.lookup import model_for
 
     run_scene = run_scene or scene
-    rungs = _rungs(scene)
+    rungs = _rungs(scene, stiffness)
     tight = {"integrator": "cvodes", "rtol": reference_rtol, "atol": reference_rtol}
     models = {name: model_for(rscene.robot) for name, rscene, _ in rungs}
     full_name = rungs[-1][0]
@@ -118,15 +120,20 @@ def fidelity(scene: Scene, *, run_scene: Scene | None = None,
                     rows=rows, facts=machine_facts())
 
 
-def _rungs(scene: Scene) -> list[tuple[str, Scene, str]]:
+def _rungs(scene: Scene, stiffness: Sequence[str] = ()) -> list[tuple[str, Scene, str]]:
     """(name, scene, note) of each modelling level, the full model last."""
+    from jointplay.robot.contact_laws import with_stiffness
     from jointplay.scene.definition import ideal_counterpart
 
+    laws = [(f"clearance + friction, {law} stiffness",
+             scene.with_robot(with_stiffness(scene.robot, law)), "")
+            for law in stiffness if law != scene.robot.contact.stiffness]
     return [
         ("ideal joints", scene.with_robot(ideal_counterpart(scene.robot)), ""),
         ("clearance, no friction", without_friction(scene),
          "same as the full model: the scene has no friction"
          if scene.robot.friction.law == "none" else ""),
+        *laws,
         ("clearance + friction (full)", scene, ""),
     ]
 

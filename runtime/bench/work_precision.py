@@ -56,8 +56,8 @@ WP_COLUMNS: list[tuple[str, str, str]] = [
     ("impacts", "impacts", "{}"),
 ]
 WP_CSV_KEYS: list[str] = [
-    "config", "method", "rtol", "atol", "step", "status", "failure", "repeats", *TIMING_KEYS,
-    *ERROR_KEYS, *COUNT_KEYS]
+    "stiffness", "config", "method", "rtol", "atol", "step", "status", "failure", "repeats",
+    *TIMING_KEYS, *ERROR_KEYS, *COUNT_KEYS]
 
 
 @dataclass
@@ -109,6 +109,7 @@ def _row(config: Scene, kind: str, timed: Timed, reference: Reference) -> dict[s
     run = config.run
     adaptive = run.integrator in ADAPTIVE
     row: dict[str, Any] = {
+        "stiffness": config.robot.contact.stiffness,
         "config": kind,
         "method": run.integrator,
         "rtol": run.rtol if adaptive else None,

@@ -104,8 +104,61 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
     _with_run(scene, rtol=args.reference_rtol)
     if args.check == "radau":
         _with_run(scene, integrator="radau", step=args.check_step)
+    laws = _stiffness_option(args, scene)
     out = prepare_out_dir(args.out)
+    if len(laws) == 1:
+        _work_precision_one(_law_scene(scene, laws[0]), args, out, methods, rtols, steps,
+                            repeats)
+        return 0
+    # One full work-precision (own model, own reference) per law, and a table of all rows.
+    rows: list[dict[str, Any]] = []
+    for law in laws:
+        rows += _work_precision_one(_law_scene(scene, law), args,
+                                    prepare_out_dir(out / law), methods, rtols, steps, repeats)
+    md = [f"# Work-precision per contact stiffness law: {scene.name}", "",
+          f"Command: `{command_line()}`", "",
+          "Each law's errors are against its own reference (see the law's folder).", "",
+          bench.markdown_table(rows, [("stiffness", "stiffness", "{}"), *bench.WP_COLUMNS]),
+          ""]
+    from jointplay.common.files import atomic_write_text
 
+    atomic_write_text(out / "work_precision_laws.csv", bench.to_csv(rows, bench.WP_CSV_KEYS))
+    atomic_write_text(out / "work_precision_laws.md", "\n".join(md))
+    _report([out / "work_precision_laws.csv"], out / "work_precision_laws.md", args.quiet)
+    return 0
+
+
+def _stiffness_option(args: argparse.Namespace, scene: Scene) -> list[str]:
+    """The contact stiffness laws of --stiffness, each checked on the scene's robot."""
+    from jointplay.robot.contact_laws import parse_stiffnesses, with_stiffness
+
+    if not args.stiffness:
+        return [scene.robot.contact.stiffness]
+    laws = parse_stiffnesses(args.stiffness, "--stiffness")
+    if not scene.robot.clearance_joints:
+        raise DescriptionError("--stiffness", "the scene's robot has no clearance joint, so "
+                                              "no contact law")
+    for law in laws:
+        try:
+            with_stiffness(scene.robot, law)
+        except DescriptionError as err:
+            raise DescriptionError("--stiffness", f"{law}: {err.field}: {err.message}"
+                                   ) from None
+    return laws
+
+
+def _law_scene(scene: Scene, law: str) -> Scene:
+    from jointplay.robot.contact_laws import with_stiffness
+
+    if law == scene.robot.contact.stiffness:
+        return scene
+    return scene.with_robot(with_stiffness(scene.robot, law))
+
+
+def _work_precision_one(scene: Scene, args: argparse.Namespace, out: Path,
+                        methods: list[str], rtols: list[float], steps: list[float],
+                        repeats: int) -> list[dict[str, Any]]:
+    """One work-precision of ``scene``: its model, its reference, its rows and report."""
     from jointplay.sim import load_scene_model
 
     t0 = time.perf_counter()
@@ -129,7 +182,7 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
                        load_s=load_s, repeats=repeats, facts=machine_facts())
     paths = write_work_precision(wp, out, command_line())
     _report(paths, paths[1], args.quiet)
-    return 0
+    return rows
 
 
 def cmd_fidelity(args: argparse.Namespace) -> int:
@@ -142,10 +195,11 @@ def cmd_fidelity(args: argparse.Namespace) -> int:
     if surrogate is not None and not surrogate.is_dir():
         raise DescriptionError("--surrogate", f"{surrogate} is not a folder holding a trained "
                                               "model")
+    laws = _stiffness_option(args, scene) if args.stiffness else []
     out = prepare_out_dir(args.out)
     fid = fidelity(scene, run_scene=run_scene, reference_rtol=args.reference_rtol,
                    repeats=repeats, surrogate=surrogate, quiet=args.quiet,
-                   effects=args.effects)
+                   effects=args.effects, stiffness=laws)
     skipped = [r for r in fid.rows if r["status"] == "skipped" and surrogate is not None]
     for r in skipped:
         print(f"jointplay: note: surrogate row skipped: {r['note']}", file=sys.stderr)
@@ -220,6 +274,11 @@ def _register_work_precision(sub: Any) -> None:
     wp.add_argument("--check-step", type=float, default=DEFAULT_CHECK_STEP,
                     help=f"Radau step of the check (default {DEFAULT_CHECK_STEP:g} s)")
     _effects_flag(wp)
+    wp.add_argument("--stiffness", metavar="LAWS",
+                    help="comma list of contact stiffness laws (hertz, johnson, liu, pereira): "
+                         "one work-precision per law, in DIR/<law>/, and all rows in "
+                         "DIR/work_precision_laws.md (default: the scene's own law; clearance "
+                         "joints without a length get 0.02 m)")
     wp.set_defaults(func=cmd_work_precision)
 
 
@@ -241,6 +300,11 @@ def _register_fidelity(sub: Any) -> None:
                      help=f"a trained neural surrogate ({SURROGATE_MODULE}); without it the "
                           "surrogate row is skipped with a note")
     _effects_flag(fid)
+    fid.add_argument("--stiffness", metavar="LAWS",
+                     help="comma list of contact stiffness laws (hertz, johnson, liu, "
+                          "pereira): each one other than the scene's adds a rung, the full "
+                          "model under that law (clearance joints without a length get "
+                          "0.02 m)")
     fid.set_defaults(func=cmd_fidelity)
 
 

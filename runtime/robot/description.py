@@ -31,10 +31,16 @@ from jointplay.robot.structure import (
 )
 
 ContactLaw = Literal["lankarani-nikravesh", "hunt-crossley", "gonthier", "flores"]
+ContactStiffness = Literal["hertz", "johnson", "liu", "pereira"]
 FrictionLaw = Literal["none", "coulomb"]
 FrictionRamp = Literal["linear", "smooth"]
 
 CONTACT_LAWS: tuple[str, ...] = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
+# The elastic part of the normal force: Hertz's K d^n, or a law for conformal cylinders of
+# axial length joint{j}.length (see jointplay.derive.cylindrical).
+CONTACT_STIFFNESSES: tuple[str, ...] = ("hertz", "johnson", "liu", "pereira")
+# The clearance range (m) over which the Pereira-Ramalho-Ambrosio law was fitted.
+PEREIRA_CLEARANCE_RANGE: tuple[float, float] = (5.0e-6, 10.0e-3)
 FRICTION_LAWS: tuple[str, ...] = ("none", "coulomb")
 FRICTION_RAMPS: tuple[str, ...] = ("linear", "smooth")
 LUBRICATION_MODELS: tuple[str, ...] = ("none", "short-bearing", "long-bearing")
@@ -97,9 +103,15 @@ class Gravity:
 
 @dataclass(frozen=True)
 class Contact:
-    """Continuous dissipative Hertz contact at clearance joints: F_n = K d^n (1 + x(ce) d'/d'-)."""
+    """Continuous dissipative contact at clearance joints: F_n = F_e(d) (1 + x(ce) d'/d'-).
+
+    ``law`` chooses the damping factor x(ce); ``stiffness`` the elastic force F_e(d): Hertz's
+    K d^n (``exponent`` n), or a conformal-cylinder law that needs each clearance joint's
+    ``length``.
+    """
 
     law: ContactLaw = "lankarani-nikravesh"
+    stiffness: ContactStiffness = "hertz"
     exponent: float = 1.5
     restitution: float = 0.9
     # Floor of the captured impact speed d'- (m/s): grazing contact would otherwise give a
@@ -189,6 +201,8 @@ class Robot:
             joints=tuple(j.kind for j in self.joints),
             gravity=self.gravity.enabled,
             contact_law=self.contact.law if has_clearance else None,
+            contact_stiffness=(self.contact.stiffness
+                               if has_clearance and self.contact.stiffness != "hertz" else None),
             friction_law=self.friction.law if friction else "none",
             friction_ramp=self.friction.ramp if friction else None,
             drive=self.drive,
@@ -215,7 +229,10 @@ class Robot:
         if parameter.owner == "link":
             return float(getattr(self.links[_index(parameter) - 1], parameter.attribute))
         if parameter.owner == "joint":
-            return float(getattr(self.joints[_index(parameter) - 1], parameter.attribute))
+            value = getattr(self.joints[_index(parameter) - 1], parameter.attribute)
+            if value is None:  # validation requires it wherever the layout has it
+                raise KeyError(parameter.name)
+            return float(value)
         if parameter.owner == "payload":
             return self.payload_mass
         if parameter.owner == "gravity":
@@ -230,7 +247,7 @@ class Robot:
             "joints": [_joint_dict(j) for j in self.joints],
             "payload": {"mass": self.payload_mass},
             "gravity": {"enabled": self.gravity.enabled, "vector": list(self.gravity.vector)},
-            "contact": vars(self.contact).copy(),
+            "contact": _contact_dict(self.contact),
             "friction": vars(self.friction).copy(),
             "drive": {"enabled": self.drive},
         }
@@ -250,6 +267,15 @@ def _joint_dict(j: Joint) -> dict[str, Any]:
             d[name] = getattr(j, name)
         if j.length is not None:
             d["length"] = j.length
+    return d
+
+
+def _contact_dict(c: Contact) -> dict[str, Any]:
+    """The [contact] table; ``stiffness`` is written only when it is not the default, so a
+    Hertz robot's TOML (and the checked-in generated/ folders) read as before."""
+    d = vars(c).copy()
+    if c.stiffness == "hertz":
+        del d["stiffness"]
     return d
 
 
@@ -298,17 +324,6 @@ def _validate_effects(robot: Robot) -> None:
                                f"must be one of {', '.join(WEAR_MODELS)}, got {wear.model!r}")
     _positive("wear.coefficient", wear.coefficient)
     _positive("wear.hardness", wear.hardness)
-    needed = robot.structure().uses_length
-    for i, joint in enumerate(robot.joints, start=1):
-        if joint.length is not None:
-            _positive(f"joints[{i}].length", joint.length)
-        elif needed and joint.has_clearance:
-            effect = " and ".join(name for name in ("lubrication", "wear")
-                                  if getattr(robot, name).model != "none")
-            raise DescriptionError(
-                f"joints[{i}].length",
-                f"is required by {effect}: add length = <axial length of the journal and "
-                "bearing, m> to this [[joints]] entry")
 
 
 def validate(robot: Robot) -> None:
@@ -362,6 +377,10 @@ def validate(robot: Robot) -> None:
     if c.law not in CONTACT_LAWS:
         raise DescriptionError("contact.law",
                                f"must be one of {', '.join(CONTACT_LAWS)}, got {c.law!r}")
+    if c.stiffness not in CONTACT_STIFFNESSES:
+        raise DescriptionError("contact.stiffness", f"must be one of "
+                               f"{', '.join(CONTACT_STIFFNESSES)}, got {c.stiffness!r}")
+    _validate_lengths(robot)
     _positive("contact.exponent", c.exponent)
     _finite("contact.restitution", c.restitution)
     if not 0.0 < c.restitution <= 1.0:
@@ -380,6 +399,33 @@ def validate(robot: Robot) -> None:
     _positive("friction.v1", f.v1)
     if f.v1 <= f.v0:
         raise DescriptionError("friction.v1", f"must exceed friction.v0 ({f.v0}), got {f.v1}")
+
+
+def _validate_lengths(robot: Robot) -> None:
+    """joint{j}.length: positive wherever given; required where a compiled law or effect uses
+    it (a cylindrical contact stiffness, lubrication, wear)."""
+    stiffness = robot.contact.stiffness
+    users = ([f"contact.stiffness = {stiffness!r}"] if stiffness != "hertz" else []) + [
+        name for name in ("lubrication", "wear") if getattr(robot, name).model != "none"]
+    for i, joint in enumerate(robot.joints, start=1):
+        if joint.length is not None:
+            _positive(f"joints[{i}].length", joint.length)
+        if not joint.has_clearance or not users:
+            continue
+        if joint.length is None:
+            raise DescriptionError(
+                f"joints[{i}].length",
+                f"is required by {' and '.join(users)}: the axial length of the journal and "
+                "bearing in m; add e.g. length = 0.02 to this [[joints]] entry")
+        if stiffness == "pereira":
+            low, high = PEREIRA_CLEARANCE_RANGE
+            c = joint.bearing_radius - joint.journal_radius
+            if not low <= c < high:
+                raise DescriptionError(
+                    f"joints[{i}].journal_radius",
+                    f"gives a radial clearance of {c:.6g} m, outside the range the Pereira "
+                    f"law was fitted for ({low:g} m <= c < {high:g} m); choose radii in that "
+                    "range or another contact.stiffness (johnson, liu)")
 
 
 # --------------------------------------------------------------------------------------------

@@ -41,6 +41,8 @@ class Structure:
     friction_law: str
     friction_ramp: str | None
     drive: bool
+    # "johnson" | "liu" | "pereira" for a cylindrical law; None is Hertz's K d^n
+    contact_stiffness: str | None = None
     lubrication: str | None = None  # "short-bearing" | "long-bearing" when a film is modelled
     wear: str | None = None  # "archard" when wear is integrated during the run
 
@@ -57,7 +59,7 @@ class Structure:
     @property
     def uses_length(self) -> bool:
         """Whether a compiled law or effect needs the joints' axial length ``joint{j}.length``."""
-        return bool(self.lubrication or self.wear)
+        return bool(self.contact_stiffness or self.lubrication or self.wear)
 
     @property
     def has_friction(self) -> bool:
@@ -99,7 +101,7 @@ class Structure:
                    **{key: data.get(key) for key in _OPTIONAL})
 
 
-_OPTIONAL = ("lubrication", "wear")
+_OPTIONAL = ("contact_stiffness", "lubrication", "wear")
 
 
 @dataclass(frozen=True)
@@ -185,11 +187,12 @@ def parameter_layout(structure: Structure) -> list[Parameter]:
         if kind in CLEARANCE_KINDS:
             out += _clearance_joint_parameters(i)
             if structure.uses_length:
-                out.append(_joint(i, "length", f"L_{{b{i}}}", "m",
+                out.append(_joint(i, "length", f"\\ell_{{{i}}}", "m",
                                   "axial length of the journal and bearing"))
     if structure.contact_law is not None:
+        if structure.contact_stiffness is None:  # the cylindrical laws set their own exponent
+            out.append(_effect("contact", "exponent", "n", "1", "Hertz exponent n of F_n = K d^n"))
         out += [
-            _effect("contact", "exponent", "n", "1", "Hertz exponent n of F_n = K d^n"),
             _effect("contact", "restitution", "c_{e}", "1", "coefficient of restitution"),
             _effect("contact", "impact_speed_floor", "v_{min}", "m/s",
                     "floor of the captured impact speed (grazing contact)"),

@@ -29,8 +29,8 @@ GRID_KEYS: tuple[str, ...] = ("start", "stop", "num", "spacing")
 RANDOM_KEYS: tuple[str, ...] = ("distribution", "count", "seed")
 MAX_CASES = limits.MAX_CASES
 # Names of the model's structure: changing one changes the generated code.
-_STRUCTURAL = ("contact.law", "friction.law", "friction.ramp", "gravity.enabled",
-               "drive.enabled", "links", "joints", "name")
+_STRUCTURAL = ("contact.law", "contact.stiffness", "friction.law", "friction.ramp",
+               "gravity.enabled", "drive.enabled", "links", "joints", "name")
 CLEARANCE_ALIAS = re.compile(r"joint(\d+)\.clearance")
 
 
@@ -91,10 +91,10 @@ def check_name(name: str, robot: Robot, source: str | None) -> None:
                      "sweep per value", source)
     n = robot.n_links
     # Every parameter any structure of this many links can have, to explain a missing one.
-    superset = {p.name: p for p in parameter_layout(Structure(
+    superset = {p.name: p for stiffness in (None, "johnson") for p in parameter_layout(Structure(
         links=n, joints=("locked_clearance",) * n, gravity=True, contact_law="flores",
-        friction_law="coulomb", friction_ramp="linear", drive=True,
-        lubrication="short-bearing", wear="archard"))}
+        contact_stiffness=stiffness, friction_law="coulomb", friction_ramp="linear",
+        drive=True, lubrication="short-bearing", wear="archard"))}
     if name in superset:
         why = _why_absent(superset[name], robot)
         raise _error(where, f"is not a parameter of the base scene's model: {why}. Turning "
@@ -208,6 +208,9 @@ def _why_absent(prm: Parameter, robot: Robot) -> str:
     """Why the base robot's model has no slot for a parameter some other structure has."""
     if prm.owner == "gravity":
         return "gravity is disabled in the base scene (gravity.enabled = false)"
+    if prm.owner == "contact" and robot.clearance_joints:
+        return ("contact.exponent is Hertz's, and the base scene's contact.stiffness is "
+                f"{robot.contact.stiffness!r}")
     if prm.owner == "contact":
         return "the base robot has no clearance joint, so it has no contact model"
     if prm.owner == "friction":
@@ -218,7 +221,9 @@ def _why_absent(prm: Parameter, robot: Robot) -> str:
     j = prm.index or 0
     kind = robot.joints[j - 1].kind
     if prm.attribute == "length" and robot.joints[j - 1].has_clearance:
-        return (f"joint {j}'s length is a parameter only where lubrication or wear is "
-                "modelled")
+        return ("the axial length is a parameter of the cylindrical contact laws only "
+                "(contact.stiffness = johnson, liu, pereira) and of lubrication and wear, and "
+                f"the base scene's contact.stiffness is {robot.contact.stiffness!r} with "
+                "neither effect")
     needs = "locked joints" if prm.attribute == "angle" else "joints with clearance"
     return f"joint {j} is kind {kind!r}; only {needs} have {prm.attribute}"
