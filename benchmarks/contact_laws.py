@@ -33,8 +33,8 @@ from jointplay.common.figures import figure, save
 from jointplay.common.files import atomic_write_text
 from jointplay.derive import cylindrical
 from jointplay.derive.to_casadi import SympyToCasadi
+from jointplay.robot import CONTACT_STIFFNESSES
 from jointplay.robot.contact_laws import DEFAULT_LENGTH, with_stiffness
-from jointplay.robot.description import CONTACT_STIFFNESSES
 from jointplay.scene.definition import default_scene, ideal_counterpart
 from jointplay.sim import load_scene_model, simulate
 

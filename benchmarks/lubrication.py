@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.robot.description import Wear, with_parameters
+from jointplay.robot import Wear, with_parameters
 from jointplay.scene.definition import load_scene
 from jointplay.sim import load_scene_model, simulate
 

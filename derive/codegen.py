@@ -32,7 +32,7 @@ import sympy as sp
 from jointplay.common.files import atomic_write_text
 from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
-from jointplay.robot.description import Robot
+from jointplay.robot import Robot
 from jointplay.robot.robotio import robot_to_toml
 from jointplay.store.layout import Layout
 from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME

@@ -13,7 +13,7 @@ from jointplay.common.errors import (
     SimulationError,
 )
 from jointplay.results.records import Impacts, SimulationResult
-from jointplay.robot.description import (
+from jointplay.robot import (
     Contact,
     Friction,
     Gravity,

@@ -284,7 +284,7 @@ def test_bad_model_folders_name_the_problem(tmp_path: Path, case: str, expected:
 
 
 def test_model_for_another_robot_is_refused() -> None:
-    from jointplay.robot.description import with_parameters
+    from jointplay.robot import with_parameters
     from jointplay.scene.definition import default_scene
 
     robot = default_scene().robot

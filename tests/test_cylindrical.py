@@ -18,7 +18,7 @@ from scipy import integrate, optimize
 from jointplay.common.errors import DescriptionError
 from jointplay.derive import cylindrical as cy
 from jointplay.derive.to_casadi import SympyToCasadi
-from jointplay.robot.description import Robot, robot_from_dict
+from jointplay.robot import Robot, robot_from_dict
 
 STEEL_E, STEEL_NU = 207e9, 0.3
 E_STAR = STEEL_E / (2 * (1 - STEEL_NU**2))  # composite modulus of two steel parts

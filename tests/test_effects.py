@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from jointplay import DescriptionError, load_robot, with_parameters
-from jointplay.robot.description import Lubrication, Wear, robot_from_dict
+from jointplay.robot import Lubrication, Wear, robot_from_dict
 from jointplay.robot.robotio import robot_to_toml
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from jointplay.robot.description import Lubrication, Wear
+from jointplay.robot import Lubrication, Wear
 from jointplay.scene.definition import Scene
 
 DEFAULT_LENGTH = 10.0e-3  # m, axial length given to joints that have none

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 
 from jointplay.common import interrupts
 from jointplay.common.errors import DescriptionError, JointplayError
-from jointplay.robot.description import Robot, load_robot, robot_from_flags
+from jointplay.robot import Robot, load_robot, robot_from_flags
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -147,7 +147,7 @@ def choices_list(text: str, allowed: Sequence[str], flag: str, what: str) -> lis
 
 def parse_links(text: str, flag: str = "--links") -> list[int]:
     """``"1-12"``, ``"4,9,12"`` or ``"1-4,12"`` to a sorted list of link counts."""
-    from jointplay.robot.description import MAX_LINKS
+    from jointplay.robot import MAX_LINKS
 
     out: set[int] = set()
     for part in text.split(","):

@@ -93,7 +93,7 @@ def _scene(args: argparse.Namespace) -> Scene:
             raise DescriptionError(f"--set {err.field}", err.message) from None
     _check_outputs(args, scene)
     if overrides:
-        from jointplay.robot.description import with_parameters
+        from jointplay.robot import with_parameters
 
         try:
             scene = scene.with_robot(with_parameters(scene.robot, overrides))

@@ -382,7 +382,7 @@ def robot_identity(robot: Any) -> dict[str, str]:
     ``structure_hash`` changes with the generated code; ``robot_hash`` also with any number
     (a heavier payload is a different plant for a network, though not for the compiler).
     """
-    from jointplay.robot.description import canonical_json
+    from jointplay.robot import canonical_json
 
     values = dict(zip([p.name for p in robot.parameters()], robot.parameter_values(),
                       strict=True))

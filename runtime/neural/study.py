@@ -125,7 +125,7 @@ def noise_levels(scene: Any) -> tuple[float, ...]:
 
 def case_scene(scene: Any, case: Case) -> Any:
     from jointplay.neural.identify import with_torques
-    from jointplay.robot.description import with_parameters
+    from jointplay.robot import with_parameters
     from jointplay.scene.expressions import parse_expression
 
     robot = scene.robot

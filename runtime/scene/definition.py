@@ -31,15 +31,8 @@ from typing import Any
 from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
-from jointplay.robot.description import (
-    Joint,
-    JointKind,
-    Robot,
-    check_keys,
-    load_robot,
-    read_toml,
-    robot_from_dict,
-)
+from jointplay.common.validation import check_keys, read_toml
+from jointplay.robot import Joint, JointKind, Robot, load_robot, robot_from_dict
 from jointplay.robot.structure import coordinate_layout
 from jointplay.scene.expressions import FUNCTIONS, TimeFunction, parse_expression
 from jointplay.scene.tables import load_torque_table

@@ -16,7 +16,7 @@ import numpy as np
 from jointplay import generated
 from jointplay.common.errors import FileError, GeneratedCodeError
 from jointplay.common.files import sweep_stale
-from jointplay.robot.description import Robot
+from jointplay.robot import Robot
 from jointplay.store.build import cache_error, cache_root
 from jointplay.store.model import Model, check_generated, load_model, note
 from jointplay.store.stamp import provenance

@@ -259,7 +259,7 @@ def read_generated(folder: str | Path) -> tuple[str, Layout]:
 def read_defaults(folder: Path, layout: Layout) -> np.ndarray | None:
     """The default parameter vector from the folder's robot.toml (None if it has none)."""
     from jointplay.common.errors import DescriptionError
-    from jointplay.robot.description import load_robot
+    from jointplay.robot import load_robot
 
     if not (folder / ROBOT_NAME).exists():
         return None

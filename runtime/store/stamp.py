@@ -12,7 +12,7 @@ from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
 
-from jointplay.robot.description import canonical_json
+from jointplay.robot import canonical_json
 
 _EMITTING_MODULES = ("codegen.py", "cylindrical.py", "laws.py", "lubrication.py", "symbolic.py",
                      "to_casadi.py", "wear.py")

@@ -15,7 +15,8 @@ import numpy as np
 from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
-from jointplay.robot.description import Robot, check_keys
+from jointplay.common.validation import check_keys
+from jointplay.robot import Robot
 from jointplay.robot.structure import Parameter, Structure, parameter_layout
 
 SPACINGS: tuple[str, ...] = ("linear", "log")

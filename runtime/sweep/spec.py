@@ -16,7 +16,8 @@ from typing import Any
 from jointplay.common import limits
 from jointplay.common.errors import DescriptionError, JointplayError
 from jointplay.common.hints import did_you_mean
-from jointplay.robot.description import Robot, check_keys, read_toml, with_parameters
+from jointplay.common.validation import check_keys, read_toml
+from jointplay.robot import Robot, with_parameters
 from jointplay.scene.definition import (
     RunSettings,
     Scene,

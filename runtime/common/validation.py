@@ -1,0 +1,81 @@
+"""Checks every data file shares (robots, scenes, sweeps): reading TOML safely, refusing unknown
+keys with the nearest allowed one, and numbers that must be finite, positive or in SI units.
+
+Each error is a :class:`~jointplay.common.errors.DescriptionError` that names the field and
+what is allowed, so every file format reports mistakes the same way.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
+
+
+def positive(field_name: str, value: float, *, allow_zero: bool = False) -> None:
+    """A finite number > 0 (>= 0 with ``allow_zero``)."""
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or math.isnan(value) \
+            or math.isinf(value):
+        raise DescriptionError(field_name, f"must be a finite number, got {value!r}")
+    if value < 0 or (value == 0 and not allow_zero):
+        bound = ">= 0" if allow_zero else "> 0"
+        raise DescriptionError(field_name, f"must be {bound}, got {value!r}")
+
+
+def finite(field_name: str, value: float) -> None:
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
+        raise DescriptionError(field_name, f"must be a finite number, got {value!r}")
+
+
+def number(value: Any, where: str) -> float:
+    """A TOML number (int or float, not a boolean) as a float."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise DescriptionError(where, f"must be a number in SI units, got {value!r}")
+    return float(value)
+
+
+def boolean(value: Any, where: str) -> bool:
+    if not isinstance(value, bool):
+        raise DescriptionError(where, f"must be true or false, got {value!r}")
+    return value
+
+
+def check_keys(table: Any, allowed: Sequence[str], where: str,
+               source: str | None = None) -> None:
+    """Refuse a non-table or an unknown key, naming the nearest allowed key."""
+    if not isinstance(table, Mapping):
+        raise DescriptionError(where or "(top level)",
+                               f"must be a table, got {type(table).__name__}", source)
+    for key in table:
+        if key not in allowed:
+            hint = did_you_mean(key, allowed)
+            prefix = f"{where}." if where else ""
+            raise DescriptionError(f"{prefix}{key}",
+                                   f"unknown key (allowed: {', '.join(allowed)}){hint}", source)
+
+
+def read_toml(path: str | Path, what: str) -> tuple[dict[str, Any], str]:
+    """The parsed document and its text; errors name the file (``what``: "robot", "scene"...).
+
+    Only a regular file of at most ``MAX_TOML_BYTES`` is read: a device or FIFO is refused at
+    once instead of blocking or filling memory.
+    """
+    from jointplay.common.files import read_input
+    from jointplay.common.limits import MAX_TOML_BYTES
+
+    path = Path(path)
+    data = read_input(path, "(file)", f"{what} TOML file", MAX_TOML_BYTES)
+    try:
+        # Newlines translated as by a text-mode read.
+        text = data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")
+    except UnicodeDecodeError as err:
+        raise DescriptionError("(file)", f"cannot be read ({err})", str(path)) from None
+    try:
+        return tomllib.loads(text), text
+    except tomllib.TOMLDecodeError as err:
+        raise DescriptionError("(toml)", f"malformed TOML: {err}", str(path)) from None

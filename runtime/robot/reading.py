@@ -1,0 +1,183 @@
+"""Robot descriptions from TOML files, parsed dictionaries and command-line flags (data only,
+never executed), validated on construction."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
+from jointplay.common.validation import boolean, check_keys, number, read_toml
+from jointplay.robot.description import (
+    MAX_LINKS,
+    Contact,
+    Friction,
+    Gravity,
+    Joint,
+    Link,
+    Lubrication,
+    Robot,
+    Wear,
+    uniform_chain,
+)
+from jointplay.robot.structure import JOINT_KINDS
+
+_TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive",
+             "lubrication", "wear")
+_LINK_KEYS = ("length", "mass", "inertia", "com")
+_JOINT_KEYS = ("kind", "angle", "bearing_radius", "journal_radius", "bearing_E", "bearing_nu",
+               "journal_E", "journal_nu", "length")
+_FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", "journal_radius",
+                 "bearing_E", "bearing_nu", "journal_E", "journal_nu", "exponent", "restitution",
+                 "impact_speed_floor", "mu", "v0", "v1", "viscosity", "transition",
+                 "coefficient", "hardness"}
+
+
+def _numbers(table: Mapping[str, Any], where: str) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for key, value in table.items():
+        out[key] = number(value, f"{where}.{key}") if key in _FLOAT_FIELDS else value
+    return out
+
+
+def robot_from_dict(data: Mapping[str, Any], source: str | None = None) -> Robot:
+    """Build a validated :class:`Robot` from a parsed TOML document."""
+    try:
+        return _robot_from_dict(data)
+    except DescriptionError as err:
+        err.source = source
+        raise DescriptionError(err.field, err.message, source) from None
+
+
+def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
+    if "robot" in data and isinstance(data["robot"], Mapping):
+        data = data["robot"]
+    check_keys(data, _TOP_KEYS, "")
+    raw_links = data.get("links")
+    if not isinstance(raw_links, list) or not raw_links:
+        raise DescriptionError("links", "must be a non-empty array of [[links]] tables "
+                                        f"(1 to {MAX_LINKS} links)")
+    links = []
+    for i, raw in enumerate(raw_links, start=1):
+        check_keys(raw, _LINK_KEYS, f"links[{i}]")
+        missing = [key for key in _LINK_KEYS if key not in raw]
+        if missing:
+            raise DescriptionError(f"links[{i}].{missing[0]}", "is required")
+        links.append(Link(**_numbers(raw, f"links[{i}]")))
+    raw_joints = data.get("joints", [{"kind": "ideal"}] * len(links))
+    if not isinstance(raw_joints, list):
+        raise DescriptionError("joints", "must be an array of [[joints]] tables")
+    joints = []
+    for i, raw in enumerate(raw_joints, start=1):
+        check_keys(raw, _JOINT_KEYS, f"joints[{i}]")
+        kind = raw.get("kind", "ideal")
+        if isinstance(kind, list):
+            raise DescriptionError(f"joints[{i}].kind",
+                                   f"a joint has one kind, got {kind}; a locked joint with play "
+                                   "is kind = \"locked_clearance\"")
+        if kind not in JOINT_KINDS:
+            hint = did_you_mean(str(kind), JOINT_KINDS)
+            raise DescriptionError(f"joints[{i}].kind",
+                                   f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
+        joints.append(Joint(**_numbers(raw, f"joints[{i}]")))
+    payload = data.get("payload", {})
+    check_keys(payload, ("mass",), "payload")
+    gravity_raw = data.get("gravity", {})
+    check_keys(gravity_raw, ("enabled", "vector"), "gravity")
+    vector = gravity_raw.get("vector", Gravity().vector)
+    if not isinstance(vector, list | tuple) or len(vector) != 2:
+        raise DescriptionError("gravity.vector", f"must be [gx, gy] in m/s^2, got {vector!r}")
+    gravity = Gravity(enabled=boolean(gravity_raw.get("enabled", True), "gravity.enabled"),
+                      vector=(number(vector[0], "gravity.vector"),
+                              number(vector[1], "gravity.vector")))
+    contact_raw = data.get("contact", {})
+    check_keys(contact_raw, tuple(vars(Contact())), "contact")
+    friction_raw = data.get("friction", {})
+    check_keys(friction_raw, tuple(vars(Friction())), "friction")
+    drive_raw = data.get("drive", {})
+    check_keys(drive_raw, ("enabled",), "drive")
+    lubrication_raw = data.get("lubrication", {})
+    check_keys(lubrication_raw, tuple(vars(Lubrication())), "lubrication")
+    wear_raw = data.get("wear", {})
+    check_keys(wear_raw, tuple(vars(Wear())), "wear")
+    name = data.get("name", "robot")
+    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
+        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
+    return Robot(
+        links=tuple(links),
+        joints=tuple(joints),
+        name=name,
+        payload_mass=number(payload.get("mass", 0.0), "payload.mass"),
+        gravity=gravity,
+        contact=Contact(**_numbers(contact_raw, "contact")),
+        friction=Friction(**_numbers(friction_raw, "friction")),
+        drive=boolean(drive_raw.get("enabled", True), "drive.enabled"),
+        lubrication=Lubrication(**_numbers(lubrication_raw, "lubrication")),
+        wear=Wear(**_numbers(wear_raw, "wear")),
+    )
+
+
+def load_robot(path: str | Path) -> Robot:
+    """Read and validate a robot description TOML file (never executed: data only)."""
+    data, _ = read_toml(path, "robot")
+    return robot_from_dict(data, source=str(path))
+
+
+def parse_index_list(text: str, flag: str, n_links: int) -> list[int]:
+    """Parse ``"2,5"`` into ``[2, 5]``, checking each index names a joint 1..n_links."""
+    out = []
+    for part in (p.strip() for p in text.split(",")):
+        if not part:
+            continue
+        if not part.isdigit():
+            raise DescriptionError(flag, f"must be comma-separated joint numbers, got {part!r}")
+        idx = int(part)
+        if not 1 <= idx <= n_links:
+            raise DescriptionError(flag, f"joint {idx} is out of range: joints are 1..{n_links}")
+        out.append(idx)
+    return out
+
+
+def robot_from_flags(
+    links: Any,
+    clearance: str = "",
+    locked: str = "",
+    locked_clearance: str = "",
+    friction: str = "coulomb",
+    contact_law: str = "lankarani-nikravesh",
+    gravity: bool = True,
+) -> Robot:
+    """The common case from command-line flags: k uniform links, chosen joint kinds.
+
+    Links are 0.3 m, 1 kg, uniform rods; clearance joints are 10 mm steel bearings with
+    0.03 mm radial clearance. Edit a TOML description for anything else.
+    """
+    if isinstance(links, bool) or not isinstance(links, int):
+        try:
+            links = int(str(links), 10)
+        except ValueError:
+            raise DescriptionError("--links", f"must be an integer from 1 to {MAX_LINKS}, "
+                                              f"got {links!r}") from None
+    if not 1 <= links <= MAX_LINKS:
+        raise DescriptionError("--links", f"must be from 1 to {MAX_LINKS}, got {links}")
+    kinds: dict[int, str] = {}
+    for flag, kind, text in (("--clearance", "clearance", clearance),
+                             ("--locked", "locked", locked),
+                             ("--locked-clearance", "locked_clearance", locked_clearance)):
+        for idx in parse_index_list(text, flag, links):
+            if idx in kinds and kinds[idx] != kind:
+                raise DescriptionError(
+                    flag, f"joint {idx} is given two kinds ({kinds[idx]} and {kind}); a locked "
+                          "joint with play is --locked-clearance")
+            kinds[idx] = kind
+    return uniform_chain(
+        links,
+        kinds=[kinds.get(i, "ideal") for i in range(1, links + 1)],
+        gravity=Gravity(enabled=gravity),
+        contact=Contact(law=contact_law),  # type: ignore[arg-type]
+        friction=Friction(law=friction),  # type: ignore[arg-type]
+    )
+
+

@@ -1,0 +1,145 @@
+"""Validation of a robot description: every field checked, the first bad one named with what
+is allowed (a :class:`~jointplay.common.errors.DescriptionError`)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from jointplay.common.errors import DescriptionError
+from jointplay.common.validation import finite, positive
+from jointplay.robot.description import (
+    CONTACT_LAWS,
+    CONTACT_STIFFNESSES,
+    FRICTION_LAWS,
+    FRICTION_RAMPS,
+    LUBRICATION_MODELS,
+    MAX_LINKS,
+    PEREIRA_CLEARANCE_RANGE,
+    WEAR_MODELS,
+)
+from jointplay.robot.structure import JOINT_KINDS
+
+if TYPE_CHECKING:
+    from jointplay.robot.description import Robot
+
+
+def _validate_effects(robot: Robot) -> None:
+    """Lubrication, wear, and the joint length they need."""
+    lub, wear = robot.lubrication, robot.wear
+    if lub.model not in LUBRICATION_MODELS:
+        raise DescriptionError("lubrication.model",
+                               f"must be one of {', '.join(LUBRICATION_MODELS)}, got {lub.model!r}")
+    positive("lubrication.viscosity", lub.viscosity)
+    finite("lubrication.transition", lub.transition)
+    if not 0.0 < lub.transition < 1.0:
+        raise DescriptionError("lubrication.transition",
+                               f"must be an eccentricity ratio in (0, 1), got {lub.transition}")
+    if wear.model not in WEAR_MODELS:
+        raise DescriptionError("wear.model",
+                               f"must be one of {', '.join(WEAR_MODELS)}, got {wear.model!r}")
+    positive("wear.coefficient", wear.coefficient)
+    positive("wear.hardness", wear.hardness)
+
+
+def validate(robot: Robot) -> None:
+    """Raise :class:`DescriptionError` naming the first invalid field."""
+    k = len(robot.links)
+    if k < 1 or k > MAX_LINKS:
+        raise DescriptionError("links", f"the robot needs 1 to {MAX_LINKS} links, got {k}")
+    if len(robot.joints) != k:
+        raise DescriptionError(
+            "joints", f"needs one joint per link ({k}), got {len(robot.joints)}")
+    for i, link in enumerate(robot.links, start=1):
+        positive(f"links[{i}].length", link.length)
+        positive(f"links[{i}].mass", link.mass)
+        positive(f"links[{i}].inertia", link.inertia)
+        finite(f"links[{i}].com", link.com)
+        if not 0.0 <= link.com <= link.length:
+            raise DescriptionError(
+                f"links[{i}].com",
+                f"must lie on the link, 0 <= com <= length ({link.length}), got {link.com}")
+    positive("payload.mass", robot.payload_mass, allow_zero=True)
+    for i, joint in enumerate(robot.joints, start=1):
+        if joint.kind not in JOINT_KINDS:
+            raise DescriptionError(f"joints[{i}].kind",
+                                   f"must be one of {', '.join(JOINT_KINDS)}, got {joint.kind!r}")
+        finite(f"joints[{i}].angle", joint.angle)
+        if joint.has_clearance:
+            positive(f"joints[{i}].bearing_radius", joint.bearing_radius)
+            positive(f"joints[{i}].journal_radius", joint.journal_radius)
+            if joint.journal_radius >= joint.bearing_radius:
+                raise DescriptionError(
+                    f"joints[{i}].journal_radius",
+                    f"must be smaller than bearing_radius ({joint.bearing_radius}) to leave a "
+                    f"clearance, got {joint.journal_radius}; use kind = \"ideal\" for no play")
+            for part in ("bearing", "journal"):
+                positive(f"joints[{i}].{part}_E", getattr(joint, f"{part}_E"))
+                nu = getattr(joint, f"{part}_nu")
+                finite(f"joints[{i}].{part}_nu", nu)
+                if not 0.0 < nu < 0.5:
+                    raise DescriptionError(f"joints[{i}].{part}_nu",
+                                           f"Poisson's ratio must be in (0, 0.5), got {nu}")
+    _validate_effects(robot)
+    if not robot.moving_joints and not robot.clearance_joints:
+        raise DescriptionError("joints", "at least one joint must move or have play (not every "
+                               "joint locked)")
+    g = robot.gravity
+    if len(g.vector) != 2:
+        raise DescriptionError("gravity.vector", f"must have 2 components, got {len(g.vector)}")
+    for axis, v in zip("xy", g.vector, strict=True):
+        finite(f"gravity.vector.{axis}", v)
+    c = robot.contact
+    if c.law not in CONTACT_LAWS:
+        raise DescriptionError("contact.law",
+                               f"must be one of {', '.join(CONTACT_LAWS)}, got {c.law!r}")
+    if c.stiffness not in CONTACT_STIFFNESSES:
+        raise DescriptionError("contact.stiffness", f"must be one of "
+                               f"{', '.join(CONTACT_STIFFNESSES)}, got {c.stiffness!r}")
+    _validate_lengths(robot)
+    positive("contact.exponent", c.exponent)
+    finite("contact.restitution", c.restitution)
+    if not 0.0 < c.restitution <= 1.0:
+        raise DescriptionError("contact.restitution", f"must be in (0, 1], got {c.restitution}")
+    positive("contact.impact_speed_floor", c.impact_speed_floor)
+    f = robot.friction
+    if f.law not in FRICTION_LAWS:
+        raise DescriptionError("friction.law",
+                               f"must be one of {', '.join(FRICTION_LAWS)}, got {f.law!r}")
+    if f.ramp not in FRICTION_RAMPS:
+        raise DescriptionError("friction.ramp",
+                               f"must be one of {', '.join(FRICTION_RAMPS)}, got {f.ramp!r}")
+    positive("friction.mu", f.mu, allow_zero=True)
+    # v0 = 0: the correction ramps from zero speed; the law's direction floor keeps it finite.
+    positive("friction.v0", f.v0, allow_zero=True)
+    positive("friction.v1", f.v1)
+    if f.v1 <= f.v0:
+        raise DescriptionError("friction.v1", f"must exceed friction.v0 ({f.v0}), got {f.v1}")
+
+
+def _validate_lengths(robot: Robot) -> None:
+    """joint{j}.length: positive wherever given; required where a compiled law or effect uses
+    it (a cylindrical contact stiffness, lubrication, wear)."""
+    stiffness = robot.contact.stiffness
+    users = ([f"contact.stiffness = {stiffness!r}"] if stiffness != "hertz" else []) + [
+        name for name in ("lubrication", "wear") if getattr(robot, name).model != "none"]
+    for i, joint in enumerate(robot.joints, start=1):
+        if joint.length is not None:
+            positive(f"joints[{i}].length", joint.length)
+        if not joint.has_clearance or not users:
+            continue
+        if joint.length is None:
+            raise DescriptionError(
+                f"joints[{i}].length",
+                f"is required by {' and '.join(users)}: the axial length of the journal and "
+                "bearing in m; add e.g. length = 0.02 to this [[joints]] entry")
+        if stiffness == "pereira":
+            low, high = PEREIRA_CLEARANCE_RANGE
+            c = joint.bearing_radius - joint.journal_radius
+            if not low <= c < high:
+                raise DescriptionError(
+                    f"joints[{i}].journal_radius",
+                    f"gives a radial clearance of {c:.6g} m, outside the range the Pereira "
+                    f"law was fitted for ({low:g} m <= c < {high:g} m); choose radii in that "
+                    "range or another contact.stiffness (johnson, liu)")
+
+
