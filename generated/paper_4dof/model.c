@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+639dc49d16e4, casadi 3.8.2, sympy 1.14.0
- * input hash: e0b4c10575db9c6df921309c411d067479b8e009b20165fcce44933dd2acf899
+ * generator: jointplay.derive 0.1.0+4a5c95d61c1b, casadi 3.8.2, sympy 1.14.0
+ * input hash: b6f33f7e91cdb394663a0eca392d788ee8a5e18fe674514c25bb0c83556bb430
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
