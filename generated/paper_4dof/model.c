@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+4a5c95d61c1b, casadi 3.8.2, sympy 1.14.0
- * input hash: b6f33f7e91cdb394663a0eca392d788ee8a5e18fe674514c25bb0c83556bb430
+ * generator: jointplay.derive 0.1.0+953032466a2a, casadi 3.8.2, sympy 1.14.0
+ * input hash: f90dd96fb732fdcb75c41a2f256420d8a7cb04e2918364df737f3e8807f7bbae
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
