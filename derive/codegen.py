@@ -30,6 +30,13 @@ import casadi as ca
 import sympy as sp
 
 from jointplay.common.files import atomic_write_text
+from jointplay.derive.slots import (
+    PER_JOINT_DOC,
+    add_step_slots,
+    function_slots,
+    shared_slots,
+    slot,
+)
 from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.robot import Robot
@@ -46,38 +53,79 @@ class Emitted:
     timings: dict[str, float]
 
 
-def _slot(name: str, size: int | tuple[int, int], unit: str, doc: str,
-          entries: list[str] | None = None) -> dict[str, Any]:
-    shape = [size, 1] if isinstance(size, int) else list(size)
-    slot: dict[str, Any] = {"name": name, "shape": shape, "unit": unit, "doc": doc}
-    if not isinstance(size, int):
-        slot["matrix"] = True
-    if entries is not None:
-        slot["entries"] = entries
-    return slot
+@dataclass(frozen=True)
+class _Inputs:
+    """The SX inputs every function shares: coordinates, speeds, state, parameters, torques
+    and the impact speeds captured at each clearance joint's contact onset."""
+
+    q: Any
+    u: Any
+    x: Any
+    p: Any
+    tau: Any
+    v_imp: Any
 
 
 def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, Any]]:
     """CasADi functions for a symbolic model, and the description of their slots."""
+    inputs = _symbolic_inputs(model)
+    convert = _converter(model, inputs)
+    per_joint, potential = _contact_outputs(model, convert, inputs.v_imp)
+    # Converted after the contact laws, which bind the placeholder forces the equations use.
+    mass = convert(model.mass_matrix)
+    forcing = convert(model.forcing)
+    kinetic = convert(model.kinetic_energy)
+    gravity_pot = convert(model.gravity_potential)
+    tip = convert(model.tip_position)
+
+    fn_mass, fn_forcing, fn_fd, fn_jac = _dynamics_functions(model, inputs, mass, forcing)
+    fn_contact, fn_energy = _contact_and_energy_functions(inputs, per_joint, kinetic,
+                                                          gravity_pot, potential)
+    fn_tip = _end_effector_function(model, inputs, tip)
+
+    slots = shared_slots(model)
+    functions = function_slots(model, slots)
+    layout = {
+        "structure": model.structure.as_dict(),
+        "coordinates": [c.as_dict() for c in model.coordinates],
+        "parameters": [prm.as_dict() for prm in model.parameters],
+        "torque_joints": model.torque_joints,
+        "clearance_joints": [c.index for c in model.clearance],
+        "functions": functions,
+    }
+    extra = wear_function(model, convert, inputs.x, inputs.p, inputs.v_imp, slots.x, slots.p,
+                          slots.v_imp, slots.joints, functions)
+    fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac)
+    add_step_slots(functions, fn_rk4.name(), fn_radau.name(), RADAU_NEWTON_ITERATIONS, model,
+                   slots)
+    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip, fn_rk4,
+            fn_radau, *extra], layout
+
+
+def _symbolic_inputs(model: SymbolicModel) -> _Inputs:
     n = model.n_coordinates
-    nc = len(model.clearance)
     q = ca.SX.sym("q", n)
     u = ca.SX.sym("u", n)
-    x = ca.vertcat(q, u)
-    p = ca.SX.sym("p", len(model.parameters))
-    tau = ca.SX.sym("tau", len(model.torques))
-    v_imp = ca.SX.sym("v_imp", nc)
+    return _Inputs(q=q, u=u, x=ca.vertcat(q, u), p=ca.SX.sym("p", len(model.parameters)),
+                   tau=ca.SX.sym("tau", len(model.torques)),
+                   v_imp=ca.SX.sym("v_imp", len(model.clearance)))
 
+
+def _converter(model: SymbolicModel, inputs: _Inputs) -> SympyToCasadi:
+    """A sympy-to-SX converter whose leaves are the model's symbols bound to the inputs."""
     leaves: dict[sp.Basic, Any] = {}
-    leaves.update({s: q[i] for i, s in enumerate(model.q)})
-    leaves.update({s: u[i] for i, s in enumerate(model.u)})
-    leaves.update({s: p[i] for i, s in enumerate(model.parameter_symbols)})
-    leaves.update({s: tau[i] for i, s in enumerate(model.torques)})
-    convert = SympyToCasadi(leaves)
+    leaves.update({s: inputs.q[i] for i, s in enumerate(model.q)})
+    leaves.update({s: inputs.u[i] for i, s in enumerate(model.u)})
+    leaves.update({s: inputs.p[i] for i, s in enumerate(model.parameter_symbols)})
+    leaves.update({s: inputs.tau[i] for i, s in enumerate(model.torques)})
+    return SympyToCasadi(leaves)
 
-    per_joint: dict[str, list[Any]] = {k: [] for k in
-                                       ("delta", "delta_dot", "v_t", "f_n", "f_t", "f_x", "f_y",
-                                        "dissipation")}
+
+def _contact_outputs(model: SymbolicModel, convert: SympyToCasadi, v_imp: Any
+                     ) -> tuple[dict[str, list[Any]], Any]:
+    """Each clearance joint's law as SX, one list per ``contact`` output, and the summed
+    elastic potential; binds the equations' placeholder forces to the law's forces."""
+    per_joint: dict[str, list[Any]] = {k: [] for k in PER_JOINT_DOC}
     potential = ca.SX(0)
     for j, terms in enumerate(model.clearance):
         convert._cache[terms.impact_speed] = v_imp[j]
@@ -99,28 +147,34 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
         convert._cache[terms.force_y] = values["f_y"]
         convert._cache[terms.force_t] = values["f_t"]
         potential = potential + convert(law.potential)
+    return per_joint, potential
 
-    mass = convert(model.mass_matrix)
-    forcing = convert(model.forcing)
-    kinetic = convert(model.kinetic_energy)
-    gravity_pot = convert(model.gravity_potential)
-    tip = convert(model.tip_position)
 
+def _dynamics_functions(model: SymbolicModel, inputs: _Inputs, mass: Any, forcing: Any
+                        ) -> tuple[ca.Function, ca.Function, ca.Function, ca.Function]:
+    """``mass_matrix``, ``forcing``, ``forward_dynamics`` and ``jac_forward_dynamics``."""
+    n = model.n_coordinates
+    q, x, p, tau, v_imp = inputs.q, inputs.x, inputs.p, inputs.tau, inputs.v_imp
     fn_mass = ca.Function("mass_matrix", [q, p], [mass], ["q", "p"], ["M"])
     fn_forcing = ca.Function("forcing", [x, tau, p, v_imp], [forcing],
                              ["x", "tau", "p", "v_imp"], ["f"])
     acc_sym = ca.SX.sym("a", n)
     residual = ca.mtimes(mass, acc_sym) - forcing
-    inputs = [x, tau, p, v_imp]
     fn_residual_jac = ca.Function(
         "residual_jacobian", [x, acc_sym, tau, p, v_imp],
-        [ca.jacobian(residual, arg) for arg in inputs])
+        [ca.jacobian(residual, arg) for arg in [x, tau, p, v_imp]])
+    fn_fd, fn_jac = _forward_dynamics(model, fn_mass, fn_forcing, fn_residual_jac)
+    return fn_mass, fn_forcing, fn_fd, fn_jac
 
-    # Forward dynamics and its Jacobian as MX graphs around a sparse LDL^T solve.
+
+def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca.Function,
+                      fn_residual_jac: ca.Function) -> tuple[ca.Function, ca.Function]:
+    """Forward dynamics and its Jacobian as MX graphs around a sparse LDL^T solve."""
+    n = model.n_coordinates
     xm = ca.MX.sym("x", 2 * n)
     taum = ca.MX.sym("tau", len(model.torques))
     pm = ca.MX.sym("p", len(model.parameters))
-    vm = ca.MX.sym("v_imp", nc)
+    vm = ca.MX.sym("v_imp", len(model.clearance))
     um = xm[n:]
     mass_m = fn_mass(xm[:n], pm)
     acc = ca.solve(mass_m, fn_forcing(xm, taum, pm, vm), "ldl")
@@ -138,6 +192,14 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
         "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal], blocks,
         ["x", "tau", "p", "v_imp", "out_xdot"],
         ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
+    return fn_fd, fn_jac
+
+
+def _contact_and_energy_functions(inputs: _Inputs, per_joint: dict[str, list[Any]],
+                                  kinetic: Any, gravity_pot: Any, potential: Any
+                                  ) -> tuple[ca.Function, ca.Function]:
+    """``contact`` (one column per output, one row per clearance joint) and ``energy``."""
+    x, p, v_imp = inputs.x, inputs.p, inputs.v_imp
 
     def stack(values: list[Any]) -> Any:
         return ca.vertcat(*values) if values else ca.SX(0, 1)
@@ -148,91 +210,18 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
     total = kinetic + gravity_pot + potential
     fn_energy = ca.Function("energy", [x, p], [kinetic, gravity_pot, potential, total],
                             ["x", "p"], ["kinetic", "gravity", "contact", "total"])
-    udot = ca.SX.sym("udot", n)
+    return fn_contact, fn_energy
+
+
+def _end_effector_function(model: SymbolicModel, inputs: _Inputs, tip: Any) -> ca.Function:
+    """``end_effector``: the tip's position and, by forward-mode AD, velocity and
+    acceleration."""
+    q, u, x, p = inputs.q, inputs.u, inputs.x, inputs.p
+    udot = ca.SX.sym("udot", model.n_coordinates)
     tip_vel = ca.jtimes(tip, q, u)
     tip_acc = ca.jtimes(tip_vel, x, ca.vertcat(u, udot))
-    fn_tip = ca.Function("end_effector", [x, udot, p], [tip, tip_vel, tip_acc],
-                         ["x", "udot", "p"], ["position", "velocity", "acceleration"])
-
-    coord_names = [c.name for c in model.coordinates]
-    speed_names = [f"d{c}" for c in coord_names]
-    x_entries = coord_names + speed_names
-    joints = [str(c.index) for c in model.clearance]
-    param_names = [prm.name for prm in model.parameters]
-    tau_names = [f"tau{j}" for j in model.torque_joints]
-    vimp_names = [f"v_imp{j}" for j in joints]
-    x_slot = _slot("x", 2 * n, "rad, m, rad/s, m/s",
-                   "state: coordinates then their time derivatives", x_entries)
-    p_slot = _slot("p", len(param_names), "SI", "parameter vector (see 'parameters')",
-                   param_names)
-    tau_slot = _slot("tau", len(tau_names), "N m",
-                     "drive torque of each moving joint (on link i, reaction on link i-1)",
-                     tau_names)
-    v_slot = _slot("v_imp", nc, "m/s",
-                   "normal approach speed captured at the onset of each joint's current impact",
-                   vimp_names)
-    per_joint_doc = {
-        "delta": ("m", "penetration |e| - c (negative: no contact)"),
-        "delta_dot": ("m/s", "normal rate d(delta)/dt"),
-        "v_t": ("m/s", "sliding speed of the contact points along the tangent"),
-        "f_n": ("N", "normal contact force (>= 0)"),
-        "f_t": ("N", "friction force on the journal along the tangent"),
-        "f_x": ("N", "total contact force on the journal, x"),
-        "f_y": ("N", "total contact force on the journal, y"),
-        "dissipation": ("W", "power taken out by contact damping and friction (>= 0)"),
-    }
-    functions: dict[str, Any] = {
-        "mass_matrix": {"inputs": [_slot("q", n, "rad, m", "coordinates", coord_names), p_slot],
-                        "outputs": [_slot("M", (n, n), "kg, kg m, kg m^2", "mass matrix")]},
-        "forcing": {"inputs": [x_slot, tau_slot, p_slot, v_slot],
-                    "outputs": [_slot("f", n, "N m, N", "M du/dt = f", coord_names)]},
-        "forward_dynamics": {"inputs": [x_slot, tau_slot, p_slot, v_slot],
-                             "outputs": [_slot("xdot", 2 * n, "rad/s, m/s, rad/s^2, m/s^2",
-                                               "state derivative", x_entries)],
-                             "jacobian": "jac_forward_dynamics"},
-        "contact": {"inputs": [x_slot, p_slot, v_slot],
-                    "outputs": [_slot(k, nc, unit, doc, [f"{k}{j}" for j in joints])
-                                for k, (unit, doc) in per_joint_doc.items()]},
-        "energy": {"inputs": [x_slot, p_slot],
-                   "outputs": [_slot("kinetic", 1, "J", "kinetic energy"),
-                               _slot("gravity", 1, "J", "gravitational potential energy"),
-                               _slot("contact", 1, "J",
-                                     "elastic contact energy, sum of K d+^(n+1)/(n+1)"),
-                               _slot("total", 1, "J", "kinetic + gravity + contact")]},
-        "end_effector": {"inputs": [x_slot, _slot("udot", n, "rad/s^2, m/s^2",
-                                                  "accelerations", coord_names), p_slot],
-                         "outputs": [_slot("position", 2, "m", "tip of the last link"),
-                                     _slot("velocity", 2, "m/s", "tip velocity"),
-                                     _slot("acceleration", 2, "m/s^2", "tip acceleration")]},
-    }
-    layout = {
-        "structure": model.structure.as_dict(),
-        "coordinates": [c.as_dict() for c in model.coordinates],
-        "parameters": [prm.as_dict() for prm in model.parameters],
-        "torque_joints": model.torque_joints,
-        "clearance_joints": [c.index for c in model.clearance],
-        "functions": functions,
-    }
-    extra = wear_function(model, convert, x, p, v_imp, x_slot, p_slot, v_slot, joints, functions)
-    fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac)
-    step_inputs = [x_slot, None, _slot("h", 1, "s", "step size"), p_slot, v_slot]
-    for fn, stages, doc in (
-            (fn_rk4, "t, t + h/2, t + h", "explicit fourth-order Runge-Kutta step"),
-            (fn_radau, "t + c_i h, c = ((4 - 6^0.5)/10, (4 + 6^0.5)/10, 1)",
-             f"implicit Radau IIA step (3 stages, order 5), {RADAU_NEWTON_ITERATIONS} "
-             "simplified Newton iterations")):
-        ins = list(step_inputs)
-        ins[1] = _slot("tau_stages", (len(tau_names), 3), "N m",
-                       f"drive torques at the stage times {stages}, one column per stage")
-        outs = [_slot("x_next", 2 * n, "rad, m, rad/s, m/s", f"state after one {doc}",
-                      x_entries)]
-        functions[fn.name()] = {"inputs": ins, "outputs": outs}
-        if fn is fn_radau:
-            outs.append(_slot("newton_increment", 1, "rad, m, rad/s, m/s",
-                              "max norm of the last Newton update (convergence check)"))
-            functions[fn.name()]["newton_iterations"] = RADAU_NEWTON_ITERATIONS
-    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip, fn_rk4,
-            fn_radau, *extra], layout
+    return ca.Function("end_effector", [x, udot, p], [tip, tip_vel, tip_acc],
+                       ["x", "udot", "p"], ["position", "velocity", "acceleration"])
 
 
 def wear_function(model: SymbolicModel, convert: SympyToCasadi, x: Any, p: Any, v_imp: Any,
@@ -259,7 +248,7 @@ def wear_function(model: SymbolicModel, convert: SympyToCasadi, x: Any, p: Any, 
     outs = [ca.vertcat(*column) for column in columns]
     out_names = [name for name, _, _ in OUTPUTS]
     functions["wear"] = {"inputs": [x_slot, p_slot, v_slot],
-                         "outputs": [_slot(name, len(joints), unit, doc,
+                         "outputs": [slot(name, len(joints), unit, doc,
                                            [f"{name}{j}" for j in joints])
                                      for name, unit, doc in OUTPUTS]}
     return [ca.Function("wear", [x, p, v_imp], outs, ["x", "p", "v_imp"], out_names)]
@@ -329,9 +318,9 @@ def _slot_summary(layout: dict[str, Any]) -> str:
         if "jacobian" in fn:
             lines.append(f" *   {fn['jacobian']}: d {name} / d each input, CasADi's calling "
                          "convention")
-    for slot in layout["functions"]["forward_dynamics"]["inputs"]:
-        entries = slot.get("entries", [])
-        lines.append(f" * {slot['name']} [{slot['unit']}]: {slot['doc']}")
+    for described in layout["functions"]["forward_dynamics"]["inputs"]:
+        entries = described.get("entries", [])
+        lines.append(f" * {described['name']} [{described['unit']}]: {described['doc']}")
         for start in range(0, len(entries), 6):
             lines.append(f" *     {start}: {', '.join(entries[start:start + 6])}")
     return "\n".join(lines) + "\n"

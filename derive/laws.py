@@ -122,6 +122,28 @@ def friction_ramp(ramp: str, speed: sp.Expr, v0: sp.Expr, v1: sp.Expr) -> sp.Exp
     raise ValueError(f"unknown friction ramp {ramp!r}")
 
 
+@dataclass(frozen=True)
+class _Kinematics:
+    """Where the journal sits in the bearing and how fast it moves, along the line of centres
+    n = e/|e| and the tangent t = z x n."""
+
+    eccentricity: sp.Expr  # |e|, floored far below c
+    penetration: sp.Expr  # d = |e| - c
+    normal: tuple[sp.Expr, sp.Expr]  # n
+    tangent: tuple[sp.Expr, sp.Expr]  # t
+    rate: sp.Expr  # d' = e'.n
+    sliding: sp.Expr  # v_t, relative tangential speed of the contact points
+
+
+@dataclass(frozen=True)
+class _NormalForce:
+    damping_factor: sp.Expr  # x(ce)
+    stiffness: sp.Expr
+    elastic: sp.Expr  # F_e(d)
+    potential: sp.Expr  # integral of F_e
+    normal: sp.Expr  # F_n >= 0
+
+
 def contact_terms(
     structure: Structure,
     joint: int,
@@ -136,19 +158,59 @@ def contact_terms(
 ) -> ContactTerms:
     rb = P(f"joint{joint}.bearing_radius")
     rj = P(f"joint{joint}.journal_radius")
+    clearance = rb - rj
+    kin = _kinematics(ex, ey, vx, vy, clearance, rb, rj, omega_bearing, omega_journal)
+    normal = _normal_force(structure, joint, kin, _hertz_stiffness(joint, rb, rj, P),
+                           impact_speed, P)
+    c_d, friction = _friction(structure, kin.sliding, normal.normal, P)
+    (nx, ny), (tx, ty) = kin.normal, kin.tangent
+    terms = ContactTerms(
+        clearance=clearance,
+        stiffness=normal.stiffness,
+        eccentricity=kin.eccentricity,
+        penetration=kin.penetration,
+        penetration_rate=kin.rate,
+        sliding_speed=kin.sliding,
+        damping_factor=normal.damping_factor,
+        normal_force=normal.normal,
+        friction_factor=c_d,
+        friction_force=friction,
+        force_x=-normal.normal * nx + friction * tx,
+        force_y=-normal.normal * ny + friction * ty,
+        elastic_force=normal.elastic,
+        potential=normal.potential,
+        # The elastic part F_e(d) d' is stored in the potential; the rest of the normal force
+        # (hysteresis damping, clipped at zero) and all of friction take energy out.
+        dissipation=(normal.normal - normal.elastic) * kin.rate - friction * kin.sliding,
+    )
+    if structure.lubrication:
+        add_film(terms, structure.lubrication, joint, ex, ey, vx, vy, omega_bearing,
+                 omega_journal, P)
+    return terms
+
+
+def _hertz_stiffness(joint: int, rb: sp.Expr, rj: sp.Expr, P: Callable[[str], sp.Symbol]
+                     ) -> sp.Expr:
+    """The pin-in-hole K = 4 / (3 (sb + sj)) sqrt(Rb Rj / (Rb - Rj)), s = (1 - nu^2)/E."""
     sigma_b = (1 - P(f"joint{joint}.bearing_nu") ** 2) / P(f"joint{joint}.bearing_E")
     sigma_j = (1 - P(f"joint{joint}.journal_nu") ** 2) / P(f"joint{joint}.journal_E")
-    clearance = rb - rj
-    stiffness = sp.Rational(4, 3) / (sigma_b + sigma_j) * sp.sqrt(rb * rj / clearance)
+    return sp.Rational(4, 3) / (sigma_b + sigma_j) * sp.sqrt(rb * rj / (rb - rj))
 
+
+def _kinematics(ex: Any, ey: Any, vx: Any, vy: Any, clearance: sp.Expr, rb: sp.Expr,
+                rj: sp.Expr, omega_bearing: sp.Expr, omega_journal: sp.Expr) -> _Kinematics:
     ecc = sp.sqrt(sp.Max(ex**2 + ey**2, (ECCENTRICITY_FLOOR * clearance) ** 2))
-    penetration = ecc - clearance
     nx, ny = ex / ecc, ey / ecc
     tx, ty = -ny, nx
-    rate = nx * vx + ny * vy
     # Contact points: bearing centre + Rb n (on link i-1), journal centre + Rj n (on link i).
     sliding = tx * vx + ty * vy + omega_journal * rj - omega_bearing * rb
+    return _Kinematics(eccentricity=ecc, penetration=ecc - clearance, normal=(nx, ny),
+                       tangent=(tx, ty), rate=nx * vx + ny * vy, sliding=sliding)
 
+
+def _normal_force(structure: Structure, joint: int, kin: _Kinematics, hertz: sp.Expr,
+                  impact_speed: sp.Symbol, P: Callable[[str], sp.Symbol]) -> _NormalForce:
+    """The elastic law (Hertz's K d+^n, or a cylindrical law) with its damping."""
     if structure.contact_law is None:
         raise ValueError("contact terms asked of a structure without clearance")
     x_ce = damping_factor(structure.contact_law, P("contact.restitution"))
@@ -156,48 +218,29 @@ def contact_terms(
     kind = structure.contact_stiffness
     if kind is None:
         n_exp = P("contact.exponent")
-        elastic = stiffness * penetration_power(penetration, n_exp)
-        potential = stiffness * penetration_power(penetration, n_exp + 1) / (n_exp + 1)
+        stiffness = hertz
+        elastic = stiffness * penetration_power(kin.penetration, n_exp)
+        potential = stiffness * penetration_power(kin.penetration, n_exp + 1) / (n_exp + 1)
     else:
-        law = cylindrical.elastic_law(kind, penetration, joint, P)
+        law = cylindrical.elastic_law(kind, kin.penetration, joint, P)
         elastic, potential, stiffness = law.force, law.potential, law.stiffness
     # The damping is proportional to the elastic force, chi(d) = x F_e(d) / v-, for every
     # elastic law: see "Damping with any elastic law" in the module docstring.
-    normal = sp.Max(elastic * (1 + x_ce * rate / approach), 0)
+    normal = sp.Max(elastic * (1 + x_ce * kin.rate / approach), 0)
+    return _NormalForce(damping_factor=x_ce, stiffness=stiffness, elastic=elastic,
+                        potential=potential, normal=normal)
 
+
+def _friction(structure: Structure, sliding: sp.Expr, normal: sp.Expr,
+              P: Callable[[str], sp.Symbol]) -> tuple[sp.Expr, sp.Expr]:
+    """The dynamic correction c_d(|v_t|) and the friction force F_t (both 0 without
+    friction)."""
     if structure.friction_ramp is None:
-        c_d: sp.Expr = sp.Integer(0)
-        friction: sp.Expr = sp.Integer(0)
-    else:
-        ramp = structure.friction_ramp
-        v0, v1 = P("friction.v0"), P("friction.v1")
-        speed = sp.Abs(sliding)
-        c_d = friction_ramp(ramp, speed, v0, v1)
-        friction = -P("friction.mu") * c_d * normal * friction_direction(sliding, v0, v1)
-
-    terms = ContactTerms(
-        clearance=clearance,
-        stiffness=stiffness,
-        eccentricity=ecc,
-        penetration=penetration,
-        penetration_rate=rate,
-        sliding_speed=sliding,
-        damping_factor=x_ce,
-        normal_force=normal,
-        friction_factor=c_d,
-        friction_force=friction,
-        force_x=-normal * nx + friction * tx,
-        force_y=-normal * ny + friction * ty,
-        elastic_force=elastic,
-        potential=potential,
-        # The elastic part F_e(d) d' is stored in the potential; the rest of the normal force
-        # (hysteresis damping, clipped at zero) and all of friction take energy out.
-        dissipation=(normal - elastic) * rate - friction * sliding,
-    )
-    if structure.lubrication:
-        add_film(terms, structure.lubrication, joint, ex, ey, vx, vy, omega_bearing,
-                 omega_journal, P)
-    return terms
+        return sp.Integer(0), sp.Integer(0)
+    v0, v1 = P("friction.v0"), P("friction.v1")
+    c_d = friction_ramp(structure.friction_ramp, sp.Abs(sliding), v0, v1)
+    friction = -P("friction.mu") * c_d * normal * friction_direction(sliding, v0, v1)
+    return c_d, friction
 
 
 def add_film(terms: ContactTerms, model: str, joint: int, ex: Any, ey: Any, vx: Any, vy: Any,

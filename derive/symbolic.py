@@ -23,6 +23,8 @@ Formulation (chosen for derivation speed and for readable equations):
 
 from __future__ import annotations
 
+import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -81,54 +83,131 @@ class SymbolicModel:
         return sp.Add(*[c.law.potential for c in self.clearance])
 
 
+# Joint kinds whose relative angle is a coordinate, and those with an eccentricity (ex, ey).
+_MOVING = ("ideal", "clearance")
+_ECCENTRIC = ("clearance", "locked_clearance")
+
+
+@dataclass(frozen=True)
+class _Coordinates:
+    """The dynamic symbols: every moving joint's angle and rate, every clearance joint's
+    eccentricity and its rate (by 1-based joint), and q, u in slot order."""
+
+    angles: list[Any]
+    angle_speeds: list[Any]
+    eccentricity: dict[int, tuple[Any, Any, Any, Any]]  # joint -> (ex, ey, vx, vy)
+    q: list[Any]
+    u: list[Any]
+
+
+@dataclass
+class _Chain:
+    """What walking the chain from the ground to the tip collects for Kane's method."""
+
+    frame: Any  # the inertial frame N
+    origin: Any
+    gravity: Any  # the gravity vector, or None when the structure has no gravity
+    bodies: list[Any] = field(default_factory=list)
+    loads: list[tuple[Any, Any]] = field(default_factory=list)
+    clearance: list[ClearanceJointTerms] = field(default_factory=list)
+    torques: list[sp.Symbol] = field(default_factory=list)
+    torque_joints: list[int] = field(default_factory=list)
+    gravity_potential: sp.Expr = sp.S.Zero
+    tip: Any = None  # the end point of the last link, where the payload sits
+
+
+@dataclass(frozen=True)
+class _Link:
+    """One link's frame and its absolute angle and rate, with those of the link before it
+    (the bearing's: the ground's for the first link)."""
+
+    index: int
+    frame: Any
+    theta: sp.Expr
+    omega: sp.Expr
+    theta_bearing: sp.Expr
+    omega_bearing: sp.Expr
+
+
 def derive(structure: Structure) -> SymbolicModel:
     """Derive the equations of motion for a robot structure (see ``Robot.structure()``)."""
-    import time
-
     t0 = time.perf_counter()
-    kinds: list[str] = list(structure.joints)
     params = parameter_layout(structure)
     psym = {p.name: sp.Symbol(p.symbol, real=True) for p in params}
 
     def P(name: str) -> sp.Symbol:
         return psym[name]
 
-    N = me.ReferenceFrame("N")
-    origin = me.Point("O")
-    origin.set_vel(N, 0)
+    coordinates = _coordinates(list(structure.joints))
+    chain = _walk_chain(structure, coordinates, P)
+    t1 = time.perf_counter()
 
+    kd = [qi.diff(me.dynamicsymbols._t) - ui
+          for qi, ui in zip(coordinates.q, coordinates.u, strict=True)]
+    kane = me.KanesMethod(chain.frame, q_ind=coordinates.q, u_ind=coordinates.u, kd_eqs=kd)
+    kane.kanes_equations(chain.bodies, chain.loads)
+    t2 = time.perf_counter()
+
+    # Kinetic energy straight from the bodies (not from M), so an energy check is independent.
+    kinetic = me.kinetic_energy(chain.frame, *chain.bodies)
+    tip = chain.tip.pos_from(chain.origin)
+    tip_position = sp.Matrix([tip.dot(chain.frame.x), tip.dot(chain.frame.y)])
+    t3 = time.perf_counter()
+
+    return SymbolicModel(
+        structure=structure,
+        coordinates=coordinate_layout(structure),
+        q=coordinates.q,
+        u=coordinates.u,
+        parameters=params,
+        parameter_symbols=[psym[p.name] for p in params],
+        torques=chain.torques,
+        torque_joints=chain.torque_joints,
+        clearance=chain.clearance,
+        mass_matrix=kane.mass_matrix,
+        forcing=kane.forcing,
+        kinetic_energy=kinetic,
+        gravity_potential=chain.gravity_potential,
+        tip_position=tip_position,
+        timings={"kinematics": t1 - t0, "kane": t2 - t1, "energy": t3 - t2},
+    )
+
+
+def _coordinates(kinds: list[str]) -> _Coordinates:
     angles: list[Any] = []
     angle_speeds: list[Any] = []
     ecc: dict[int, tuple[Any, Any, Any, Any]] = {}
     for i, kind in enumerate(kinds, start=1):
-        if kind in ("ideal", "clearance"):
+        if kind in _MOVING:
             angles.append(me.dynamicsymbols(f"q{i}"))
             angle_speeds.append(me.dynamicsymbols(f"u{i}"))
-        if kind in ("clearance", "locked_clearance"):
+        if kind in _ECCENTRIC:
             ex, ey = me.dynamicsymbols(f"e_x{i} e_y{i}")
             vx, vy = me.dynamicsymbols(f"v_x{i} v_y{i}")
             ecc[i] = (ex, ey, vx, vy)
     q = list(angles) + [s for i in sorted(ecc) for s in ecc[i][:2]]
     u = list(angle_speeds) + [s for i in sorted(ecc) for s in ecc[i][2:]]
+    return _Coordinates(angles, angle_speeds, ecc, q, u)
 
-    drive = structure.drive
-    torques: list[sp.Symbol] = []
-    torque_joints: list[int] = []
+
+def _walk_chain(structure: Structure, coordinates: _Coordinates,
+                P: Callable[[str], sp.Symbol]) -> _Chain:
+    """Every link's body and every load on it, from the ground to the payload at the tip; the
+    order of bodies and loads is the order Kane's method sums them in."""
+    N = me.ReferenceFrame("N")
+    origin = me.Point("O")
+    origin.set_vel(N, 0)
     gravity = (P("gravity.x") * N.x + P("gravity.y") * N.y) if structure.gravity else None
-
-    bodies: list[Any] = []
-    loads: list[tuple[Any, Any]] = []
-    clearance_terms: list[ClearanceJointTerms] = []
-    gravity_potential: sp.Expr = sp.Integer(0)
+    chain = _Chain(frame=N, origin=origin, gravity=gravity)
 
     theta: sp.Expr = sp.Integer(0)
     omega: sp.Expr = sp.Integer(0)
     prev_frame = N
     prev_end = origin
-    moving = iter(zip(angles, angle_speeds, strict=True))
-    for i, kind in enumerate(kinds, start=1):
+    moving = iter(zip(coordinates.angles, coordinates.angle_speeds, strict=True))
+    for i, kind in enumerate(structure.joints, start=1):
         omega_bearing, theta_bearing = omega, theta
-        if kind in ("ideal", "clearance"):
+        if kind in _MOVING:
             qi, ui = next(moving)
             theta, omega = theta + qi, omega + ui
         else:
@@ -136,85 +215,81 @@ def derive(structure: Structure) -> SymbolicModel:
         frame = me.ReferenceFrame(f"L{i}")
         frame.orient_axis(N, N.z, theta)
         frame.set_ang_vel(N, omega * N.z)
-        direction = sp.cos(theta) * N.x + sp.sin(theta) * N.y
-        normal = -sp.sin(theta) * N.x + sp.cos(theta) * N.y
-
-        if i in ecc:
-            ex, ey, vx, vy = ecc[i]
-            journal = prev_end.locatenew(f"J{i}", ex * N.x + ey * N.y)
-            journal.set_vel(N, prev_end.vel(N) + vx * N.x + vy * N.y)
-            fx, fy, ft = sp.symbols(f"F_x{i} F_y{i} F_t{i}", real=True)
-            impact = sp.Symbol(f"v_imp{i}", real=True)
-            force = fx * N.x + fy * N.y
-            loads.append((journal, force))
-            rb, rj = P(f"joint{i}.bearing_radius"), P(f"joint{i}.journal_radius")
-            loads.append((frame, rj * ft * N.z))
-            if i > 1:
-                loads.append((prev_end, -force))
-                loads.append((prev_frame, -rb * ft * N.z))
-            law = laws.contact_terms(
-                structure, i, ex, ey, vx, vy, omega_bearing, omega, impact, P)
-            clearance_terms.append(ClearanceJointTerms(i, fx, fy, ft, impact, law,
-                                                       (theta_bearing, theta),
-                                                       (omega_bearing, omega)))
+        link = _Link(i, frame, theta, omega, theta_bearing, omega_bearing)
+        if i in coordinates.eccentricity:
+            journal = _clearance_joint(chain, structure, link, coordinates.eccentricity[i],
+                                       prev_end, prev_frame, P)
         else:
             journal = prev_end
+        if structure.drive and kind in _MOVING:
+            _drive_torque(chain, link, prev_frame)
+        prev_frame, prev_end = frame, _link_body(chain, link, journal, P)
+    _payload(chain, prev_end, P)
+    return chain
 
-        if drive and kind in ("ideal", "clearance"):
-            tau = sp.Symbol(f"tau_{i}", real=True)
-            torques.append(tau)
-            torque_joints.append(i)
-            loads.append((frame, tau * N.z))
-            if i > 1:
-                loads.append((prev_frame, -tau * N.z))
 
-        com = journal.locatenew(f"G{i}", P(f"link{i}.com") * direction)
-        com.set_vel(N, journal.vel(N) + P(f"link{i}.com") * omega * normal)
-        end = journal.locatenew(f"E{i}", P(f"link{i}.length") * direction)
-        end.set_vel(N, journal.vel(N) + P(f"link{i}.length") * omega * normal)
-        mass = P(f"link{i}.mass")
-        body = me.RigidBody(f"B{i}", com, frame, mass,
-                            (me.outer(N.z, N.z) * P(f"link{i}.inertia"), com))
-        bodies.append(body)
-        if gravity is not None:
-            loads.append((com, mass * gravity))
-            gravity_potential -= mass * gravity.dot(com.pos_from(origin))
-        prev_frame, prev_end = frame, end
+def _clearance_joint(chain: _Chain, structure: Structure, link: _Link,
+                     eccentricity: tuple[Any, Any, Any, Any], bearing: Any, bearing_frame: Any,
+                     P: Callable[[str], sp.Symbol]) -> Any:
+    """The journal of link i, offset from the bearing (the end of link i-1) by the
+    eccentricity; adds the placeholder contact force and friction moments (and their
+    reactions on link i-1) and the joint's law. Returns the journal point."""
+    N, i = chain.frame, link.index
+    ex, ey, vx, vy = eccentricity
+    journal = bearing.locatenew(f"J{i}", ex * N.x + ey * N.y)
+    journal.set_vel(N, bearing.vel(N) + vx * N.x + vy * N.y)
+    fx, fy, ft = sp.symbols(f"F_x{i} F_y{i} F_t{i}", real=True)
+    impact = sp.Symbol(f"v_imp{i}", real=True)
+    force = fx * N.x + fy * N.y
+    chain.loads.append((journal, force))
+    rb, rj = P(f"joint{i}.bearing_radius"), P(f"joint{i}.journal_radius")
+    chain.loads.append((link.frame, rj * ft * N.z))
+    if i > 1:
+        chain.loads.append((bearing, -force))
+        chain.loads.append((bearing_frame, -rb * ft * N.z))
+    law = laws.contact_terms(
+        structure, i, ex, ey, vx, vy, link.omega_bearing, link.omega, impact, P)
+    chain.clearance.append(ClearanceJointTerms(i, fx, fy, ft, impact, law,
+                                               (link.theta_bearing, link.theta),
+                                               (link.omega_bearing, link.omega)))
+    return journal
 
-    payload = me.Particle("payload", prev_end, P("payload.mass"))
-    bodies.append(payload)
-    if gravity is not None:
-        loads.append((prev_end, P("payload.mass") * gravity))
-        gravity_potential -= P("payload.mass") * gravity.dot(prev_end.pos_from(origin))
-    t1 = time.perf_counter()
 
-    kd = [qi.diff(me.dynamicsymbols._t) - ui for qi, ui in zip(q, u, strict=True)]
-    kane = me.KanesMethod(N, q_ind=q, u_ind=u, kd_eqs=kd)
-    kane.kanes_equations(bodies, loads)
-    mass_matrix = kane.mass_matrix
-    forcing = kane.forcing
-    t2 = time.perf_counter()
+def _drive_torque(chain: _Chain, link: _Link, bearing_frame: Any) -> None:
+    """The drive torque of a moving joint: on link i, its reaction on link i-1."""
+    N, i = chain.frame, link.index
+    tau = sp.Symbol(f"tau_{i}", real=True)
+    chain.torques.append(tau)
+    chain.torque_joints.append(i)
+    chain.loads.append((link.frame, tau * N.z))
+    if i > 1:
+        chain.loads.append((bearing_frame, -tau * N.z))
 
-    # Kinetic energy straight from the bodies (not from M), so an energy check is independent.
-    kinetic = me.kinetic_energy(N, *bodies)
-    tip = prev_end.pos_from(origin)
-    tip_position = sp.Matrix([tip.dot(N.x), tip.dot(N.y)])
-    t3 = time.perf_counter()
 
-    return SymbolicModel(
-        structure=structure,
-        coordinates=coordinate_layout(structure),
-        q=q,
-        u=u,
-        parameters=params,
-        parameter_symbols=[psym[p.name] for p in params],
-        torques=torques,
-        torque_joints=torque_joints,
-        clearance=clearance_terms,
-        mass_matrix=mass_matrix,
-        forcing=forcing,
-        kinetic_energy=kinetic,
-        gravity_potential=gravity_potential,
-        tip_position=tip_position,
-        timings={"kinematics": t1 - t0, "kane": t2 - t1, "energy": t3 - t2},
-    )
+def _link_body(chain: _Chain, link: _Link, journal: Any, P: Callable[[str], sp.Symbol]) -> Any:
+    """Link i's rigid body, hinged at ``journal``, and its weight; returns the link's end."""
+    N, i, theta, omega = chain.frame, link.index, link.theta, link.omega
+    direction = sp.cos(theta) * N.x + sp.sin(theta) * N.y
+    normal = -sp.sin(theta) * N.x + sp.cos(theta) * N.y
+    com = journal.locatenew(f"G{i}", P(f"link{i}.com") * direction)
+    com.set_vel(N, journal.vel(N) + P(f"link{i}.com") * omega * normal)
+    end = journal.locatenew(f"E{i}", P(f"link{i}.length") * direction)
+    end.set_vel(N, journal.vel(N) + P(f"link{i}.length") * omega * normal)
+    mass = P(f"link{i}.mass")
+    body = me.RigidBody(f"B{i}", com, link.frame, mass,
+                        (me.outer(N.z, N.z) * P(f"link{i}.inertia"), com))
+    chain.bodies.append(body)
+    if chain.gravity is not None:
+        chain.loads.append((com, mass * chain.gravity))
+        chain.gravity_potential -= mass * chain.gravity.dot(com.pos_from(chain.origin))
+    return end
+
+
+def _payload(chain: _Chain, tip: Any, P: Callable[[str], sp.Symbol]) -> None:
+    """The payload, a point mass at the tip of the last link, and its weight."""
+    mass = P("payload.mass")
+    chain.bodies.append(me.Particle("payload", tip, mass))
+    if chain.gravity is not None:
+        chain.loads.append((tip, mass * chain.gravity))
+        chain.gravity_potential -= mass * chain.gravity.dot(tip.pos_from(chain.origin))
+    chain.tip = tip

@@ -55,6 +55,31 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
     if "robot" in data and isinstance(data["robot"], Mapping):
         data = data["robot"]
     check_keys(data, _TOP_KEYS, "")
+    links = _links(data)
+    joints = _joints(data, len(links))
+    payload = data.get("payload", {})
+    check_keys(payload, ("mass",), "payload")
+    gravity = _gravity(data)
+    tables = _option_tables(data)
+    name = data.get("name", "robot")
+    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
+        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
+    return Robot(
+        links=links,
+        joints=joints,
+        name=name,
+        payload_mass=number(payload.get("mass", 0.0), "payload.mass"),
+        gravity=gravity,
+        contact=Contact(**_numbers(tables["contact"], "contact")),
+        friction=Friction(**_numbers(tables["friction"], "friction")),
+        drive=boolean(tables["drive"].get("enabled", True), "drive.enabled"),
+        lubrication=Lubrication(**_numbers(tables["lubrication"], "lubrication")),
+        wear=Wear(**_numbers(tables["wear"], "wear")),
+    )
+
+
+def _links(data: Mapping[str, Any]) -> tuple[Link, ...]:
+    """The [[links]] tables, each complete."""
     raw_links = data.get("links")
     if not isinstance(raw_links, list) or not raw_links:
         raise DescriptionError("links", "must be a non-empty array of [[links]] tables "
@@ -66,7 +91,12 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
         if missing:
             raise DescriptionError(f"links[{i}].{missing[0]}", "is required")
         links.append(Link(**_numbers(raw, f"links[{i}]")))
-    raw_joints = data.get("joints", [{"kind": "ideal"}] * len(links))
+    return tuple(links)
+
+
+def _joints(data: Mapping[str, Any], n_links: int) -> tuple[Joint, ...]:
+    """The [[joints]] tables (every joint ideal when there are none), each of one known kind."""
+    raw_joints = data.get("joints", [{"kind": "ideal"}] * n_links)
     if not isinstance(raw_joints, list):
         raise DescriptionError("joints", "must be an array of [[joints]] tables")
     joints = []
@@ -82,41 +112,31 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
             raise DescriptionError(f"joints[{i}].kind",
                                    f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
         joints.append(Joint(**_numbers(raw, f"joints[{i}]")))
-    payload = data.get("payload", {})
-    check_keys(payload, ("mass",), "payload")
+    return tuple(joints)
+
+
+def _gravity(data: Mapping[str, Any]) -> Gravity:
     gravity_raw = data.get("gravity", {})
     check_keys(gravity_raw, ("enabled", "vector"), "gravity")
     vector = gravity_raw.get("vector", Gravity().vector)
     if not isinstance(vector, list | tuple) or len(vector) != 2:
         raise DescriptionError("gravity.vector", f"must be [gx, gy] in m/s^2, got {vector!r}")
-    gravity = Gravity(enabled=boolean(gravity_raw.get("enabled", True), "gravity.enabled"),
-                      vector=(number(vector[0], "gravity.vector"),
-                              number(vector[1], "gravity.vector")))
-    contact_raw = data.get("contact", {})
-    check_keys(contact_raw, tuple(vars(Contact())), "contact")
-    friction_raw = data.get("friction", {})
-    check_keys(friction_raw, tuple(vars(Friction())), "friction")
-    drive_raw = data.get("drive", {})
-    check_keys(drive_raw, ("enabled",), "drive")
-    lubrication_raw = data.get("lubrication", {})
-    check_keys(lubrication_raw, tuple(vars(Lubrication())), "lubrication")
-    wear_raw = data.get("wear", {})
-    check_keys(wear_raw, tuple(vars(Wear())), "wear")
-    name = data.get("name", "robot")
-    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
-        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
-    return Robot(
-        links=tuple(links),
-        joints=tuple(joints),
-        name=name,
-        payload_mass=number(payload.get("mass", 0.0), "payload.mass"),
-        gravity=gravity,
-        contact=Contact(**_numbers(contact_raw, "contact")),
-        friction=Friction(**_numbers(friction_raw, "friction")),
-        drive=boolean(drive_raw.get("enabled", True), "drive.enabled"),
-        lubrication=Lubrication(**_numbers(lubrication_raw, "lubrication")),
-        wear=Wear(**_numbers(wear_raw, "wear")),
-    )
+    return Gravity(enabled=boolean(gravity_raw.get("enabled", True), "gravity.enabled"),
+                   vector=(number(vector[0], "gravity.vector"),
+                           number(vector[1], "gravity.vector")))
+
+
+def _option_tables(data: Mapping[str, Any]) -> dict[str, Mapping[str, Any]]:
+    """The contact, friction, drive, lubrication and wear tables (empty where absent), their
+    keys checked; their numbers are read when the robot is built."""
+    allowed = {"contact": tuple(vars(Contact())), "friction": tuple(vars(Friction())),
+               "drive": ("enabled",), "lubrication": tuple(vars(Lubrication())),
+               "wear": tuple(vars(Wear()))}
+    tables = {}
+    for table, keys in allowed.items():
+        tables[table] = data.get(table, {})
+        check_keys(tables[table], keys, table)
+    return tables
 
 
 def load_robot(path: str | Path) -> Robot:

@@ -43,6 +43,20 @@ def _validate_effects(robot: Robot) -> None:
 
 def validate(robot: Robot) -> None:
     """Raise :class:`DescriptionError` naming the first invalid field."""
+    _validate_links(robot)
+    positive("payload.mass", robot.payload_mass, allow_zero=True)
+    _validate_joints(robot)
+    _validate_effects(robot)
+    if not robot.moving_joints and not robot.clearance_joints:
+        raise DescriptionError("joints", "at least one joint must move or have play (not every "
+                               "joint locked)")
+    _validate_gravity(robot)
+    _validate_contact(robot)
+    _validate_friction(robot)
+
+
+def _validate_links(robot: Robot) -> None:
+    """The link count, one joint per link, and each link's dimensions and mass."""
     k = len(robot.links)
     if k < 1 or k > MAX_LINKS:
         raise DescriptionError("links", f"the robot needs 1 to {MAX_LINKS} links, got {k}")
@@ -58,36 +72,43 @@ def validate(robot: Robot) -> None:
             raise DescriptionError(
                 f"links[{i}].com",
                 f"must lie on the link, 0 <= com <= length ({link.length}), got {link.com}")
-    positive("payload.mass", robot.payload_mass, allow_zero=True)
+
+
+def _validate_joints(robot: Robot) -> None:
+    """Each joint's kind and angle, and the radii and materials of a joint with play."""
     for i, joint in enumerate(robot.joints, start=1):
         if joint.kind not in JOINT_KINDS:
             raise DescriptionError(f"joints[{i}].kind",
                                    f"must be one of {', '.join(JOINT_KINDS)}, got {joint.kind!r}")
         finite(f"joints[{i}].angle", joint.angle)
-        if joint.has_clearance:
-            positive(f"joints[{i}].bearing_radius", joint.bearing_radius)
-            positive(f"joints[{i}].journal_radius", joint.journal_radius)
-            if joint.journal_radius >= joint.bearing_radius:
-                raise DescriptionError(
-                    f"joints[{i}].journal_radius",
-                    f"must be smaller than bearing_radius ({joint.bearing_radius}) to leave a "
-                    f"clearance, got {joint.journal_radius}; use kind = \"ideal\" for no play")
-            for part in ("bearing", "journal"):
-                positive(f"joints[{i}].{part}_E", getattr(joint, f"{part}_E"))
-                nu = getattr(joint, f"{part}_nu")
-                finite(f"joints[{i}].{part}_nu", nu)
-                if not 0.0 < nu < 0.5:
-                    raise DescriptionError(f"joints[{i}].{part}_nu",
-                                           f"Poisson's ratio must be in (0, 0.5), got {nu}")
-    _validate_effects(robot)
-    if not robot.moving_joints and not robot.clearance_joints:
-        raise DescriptionError("joints", "at least one joint must move or have play (not every "
-                               "joint locked)")
+        if not joint.has_clearance:
+            continue
+        positive(f"joints[{i}].bearing_radius", joint.bearing_radius)
+        positive(f"joints[{i}].journal_radius", joint.journal_radius)
+        if joint.journal_radius >= joint.bearing_radius:
+            raise DescriptionError(
+                f"joints[{i}].journal_radius",
+                f"must be smaller than bearing_radius ({joint.bearing_radius}) to leave a "
+                f"clearance, got {joint.journal_radius}; use kind = \"ideal\" for no play")
+        for part in ("bearing", "journal"):
+            positive(f"joints[{i}].{part}_E", getattr(joint, f"{part}_E"))
+            nu = getattr(joint, f"{part}_nu")
+            finite(f"joints[{i}].{part}_nu", nu)
+            if not 0.0 < nu < 0.5:
+                raise DescriptionError(f"joints[{i}].{part}_nu",
+                                       f"Poisson's ratio must be in (0, 0.5), got {nu}")
+
+
+def _validate_gravity(robot: Robot) -> None:
     g = robot.gravity
     if len(g.vector) != 2:
         raise DescriptionError("gravity.vector", f"must have 2 components, got {len(g.vector)}")
     for axis, v in zip("xy", g.vector, strict=True):
         finite(f"gravity.vector.{axis}", v)
+
+
+def _validate_contact(robot: Robot) -> None:
+    """The contact law and stiffness, the joint lengths they need, and their numbers."""
     c = robot.contact
     if c.law not in CONTACT_LAWS:
         raise DescriptionError("contact.law",
@@ -101,6 +122,9 @@ def validate(robot: Robot) -> None:
     if not 0.0 < c.restitution <= 1.0:
         raise DescriptionError("contact.restitution", f"must be in (0, 1], got {c.restitution}")
     positive("contact.impact_speed_floor", c.impact_speed_floor)
+
+
+def _validate_friction(robot: Robot) -> None:
     f = robot.friction
     if f.law not in FRICTION_LAWS:
         raise DescriptionError("friction.law",

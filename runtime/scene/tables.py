@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
@@ -89,10 +90,26 @@ def load_torque_table(path: str | Path, *, columns: int, field: str,
     def fail(message: str) -> DescriptionError:
         return DescriptionError(field, f"{path}: {message}", source)
 
+    rows = _read_rows(path, expected, fail)
+    header = _header(rows, columns, fail)
+    table = _data_rows(rows[1:], header, fail)
+    times = table[:, 0].copy()
+    values = table[:, 1:].copy()
+    times.flags.writeable = False
+    values.flags.writeable = False
+    return TorqueTable(times, values, header)
+
+
+# Builds the error for a message about the file being read (it names the field and the file).
+_Fail = Callable[[str], DescriptionError]
+
+
+def _read_rows(path: Path, expected: str, fail: _Fail) -> list[tuple[int, list[str]]]:
+    """(line number, cells) of every non-blank line; the file must exist and hold some."""
     if not path.is_file():
         what = "is not a file" if path.exists() else "file not found"
         raise fail(f"{what}; {expected}")
-    rows: list[tuple[int, list[str]]] = []  # (line number, cells), blank lines dropped
+    rows: list[tuple[int, list[str]]] = []
     try:
         with path.open(newline="", encoding="utf-8-sig") as handle:
             reader = csv.reader(handle)
@@ -101,9 +118,13 @@ def load_torque_table(path: str | Path, *, columns: int, field: str,
                     rows.append((reader.line_num, row))
     except (OSError, UnicodeDecodeError, csv.Error) as error:
         raise fail(f"cannot be read ({error}); {expected}") from None
-
     if not rows:
         raise fail(f"is empty; {expected}")
+    return rows
+
+
+def _header(rows: list[tuple[int, list[str]]], columns: int, fail: _Fail) -> tuple[str, ...]:
+    """The first row: 't', then one named column per driven joint."""
     _, header_row = rows[0]
     header = tuple(cell.strip() for cell in header_row)
     if len(header) != columns + 1:
@@ -114,31 +135,36 @@ def load_torque_table(path: str | Path, *, columns: int, field: str,
     for i, name in enumerate(header[1:], start=2):
         if not name:
             raise fail(f"header column {i} is empty; every column needs a name")
+    return header
 
-    data = rows[1:]
+
+def _data_rows(data: list[tuple[int, list[str]]], header: tuple[str, ...], fail: _Fail
+               ) -> np.ndarray:
+    """The rows after the header as floats, (rows, 1 + torque columns): at least two, every
+    cell a finite number, times strictly increasing."""
+    width = len(header)
     if len(data) < 2:
         raise fail(f"has {len(data)} data row(s); at least 2 are needed to interpolate")
-    table = np.empty((len(data), columns + 1), dtype=np.float64)
+    table = np.empty((len(data), width), dtype=np.float64)
     for r, (line, row) in enumerate(data):
-        if len(row) != columns + 1:
-            raise fail(f"line {line} has {len(row)} cell(s), expected {columns + 1}")
+        if len(row) != width:
+            raise fail(f"line {line} has {len(row)} cell(s), expected {width}")
         for c, cell in enumerate(row):
-            try:
-                value = float(cell.strip())
-            except ValueError:
-                raise fail(f"line {line}, column {header[c]!r} ({c + 1}): {cell!r} is not a "
-                           "number; every cell must be a finite number") from None
-            if not math.isfinite(value):
-                raise fail(f"line {line}, column {header[c]!r} ({c + 1}): {cell.strip()!r} is "
-                           "not finite; every cell must be a finite number")
-            table[r, c] = value
+            table[r, c] = _cell(cell, line, c, header, fail)
         if r > 0 and not table[r, 0] > table[r - 1, 0]:
             raise fail(f"line {line}: t = {float(table[r, 0])!r} is not greater than the "
                        f"previous t = {float(table[r - 1, 0])!r}; times must be strictly "
                        "increasing")
+    return table
 
-    times = table[:, 0].copy()
-    values = table[:, 1:].copy()
-    times.flags.writeable = False
-    values.flags.writeable = False
-    return TorqueTable(times, values, header)
+
+def _cell(cell: str, line: int, c: int, header: tuple[str, ...], fail: _Fail) -> float:
+    try:
+        value = float(cell.strip())
+    except ValueError:
+        raise fail(f"line {line}, column {header[c]!r} ({c + 1}): {cell!r} is not a "
+                   "number; every cell must be a finite number") from None
+    if not math.isfinite(value):
+        raise fail(f"line {line}, column {header[c]!r} ({c + 1}): {cell.strip()!r} is "
+                   "not finite; every cell must be a finite number")
+    return value

@@ -5,6 +5,7 @@ from __future__ import annotations
 import functools
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -27,7 +28,7 @@ def _mapped(model: Model, name: str, columns: Sequence[np.ndarray]) -> list[np.n
 def _assemble(pr: _Problem, traj: _Trajectory, t: np.ndarray, stats: dict[str, Any],
               wall: float, ideal: SimulationResult | None,
               phases: Impacts | None = None) -> SimulationResult:
-    model, p, n, nc = pr.model, pr.p, pr.n, pr.nc
+    model, p, n = pr.model, pr.p, pr.n
     xs = traj.x.T
     tau = pr.tau(t)
     ps = np.repeat(p[:, None], t.size, axis=1)
@@ -35,35 +36,9 @@ def _assemble(pr: _Problem, traj: _Trajectory, t: np.ndarray, stats: dict[str, A
     xdot = _mapped(model, "forward_dynamics", [xs, tau.T, ps, vs])[0]
     udot = xdot[n:].T
     tip = _mapped(model, "end_effector", [xs, udot.T, ps])
-    energy_parts = _mapped(model, "energy", [xs, ps])
-    energy = {name: energy_parts[i].ravel()
-              for i, name in enumerate(("kinetic", "gravity", "contact", "total"))}
-    energy["drive_work"] = traj.work.copy()
-    energy["dissipated"] = traj.dissipated.copy()
-    energy["balance"] = energy["total"] - energy["total"][0] - traj.work + traj.dissipated
-    if nc:
-        c = _mapped(model, "contact", [xs, ps, vs])
-        names = model.casadi_function("contact").name_out()
-        get = {name: c[i].T for i, name in enumerate(names)}
-        ecc = np.stack([traj.x[:, [model.coordinates.index(f"ex{j}"),
-                                   model.coordinates.index(f"ey{j}")]]
-                        for j in model.clearance_joints], axis=1)
-        clearance = np.array([p[model.parameters.index(f"joint{j}.bearing_radius")]
-                              - p[model.parameters.index(f"joint{j}.journal_radius")]
-                              for j in model.clearance_joints])
-        contact_force = np.stack([get["f_x"], get["f_y"]], axis=2)
-    else:
-        zeros = np.zeros((t.size, 0))
-        get = {k: zeros for k in ("delta", "delta_dot", "f_n", "f_t", "v_t")}
-        ecc = np.zeros((t.size, 0, 2))
-        clearance = np.zeros(0)
-        contact_force = np.zeros((t.size, 0, 2))
+    contact = _contact_columns(pr, traj, t, xs, ps, vs)
     if phases is None:  # the Python event loops record onsets only
-        rows = traj.impacts
-        phases = Impacts(time=np.array([i[0] for i in rows], float),
-                         joint=np.array([i[1] for i in rows], int),
-                         speed=np.array([i[2] for i in rows], float),
-                         eccentricity=np.array([i[3:] for i in rows], float).reshape(-1, 2))
+        phases = _onsets(traj)
     stats = {**stats, "impacts": len(phases), "wall_time_s": wall,
              "realtime_factor": wall / float(t[-1]) if t[-1] > 0 else math.nan}
     return SimulationResult(
@@ -80,16 +55,16 @@ def _assemble(pr: _Problem, traj: _Trajectory, t: np.ndarray, stats: dict[str, A
         tip_velocity=tip[1].T,
         tip_acceleration=tip[2].T,
         clearance_joints=list(model.clearance_joints),
-        radial_clearance=clearance,
-        eccentricity=ecc,
-        penetration=get["delta"],
-        penetration_rate=get["delta_dot"],
-        normal_force=get["f_n"],
-        friction_force=get["f_t"],
-        contact_force=contact_force,
-        sliding_speed=get["v_t"],
+        radial_clearance=contact.clearance,
+        eccentricity=contact.eccentricity,
+        penetration=contact.outputs["delta"],
+        penetration_rate=contact.outputs["delta_dot"],
+        normal_force=contact.outputs["f_n"],
+        friction_force=contact.outputs["f_t"],
+        contact_force=contact.force,
+        sliding_speed=contact.outputs["v_t"],
         impacts=phases,
-        energy=energy,
+        energy=_energy(model, traj, xs, ps),
         parameter_names=list(model.parameters),
         parameters=p.copy(),
         stats=stats,
@@ -97,6 +72,61 @@ def _assemble(pr: _Problem, traj: _Trajectory, t: np.ndarray, stats: dict[str, A
         ideal=ideal,
         wear=traj.wear,
     )
+
+
+def _energy(model: Model, traj: _Trajectory, xs: np.ndarray, ps: np.ndarray
+            ) -> dict[str, np.ndarray]:
+    """Kinetic, gravity, contact and total energy per sample, the drive work and dissipated
+    energy integrated during the run, and the balance that closes them (0 when exact)."""
+    energy_parts = _mapped(model, "energy", [xs, ps])
+    energy = {name: energy_parts[i].ravel()
+              for i, name in enumerate(("kinetic", "gravity", "contact", "total"))}
+    energy["drive_work"] = traj.work.copy()
+    energy["dissipated"] = traj.dissipated.copy()
+    energy["balance"] = energy["total"] - energy["total"][0] - traj.work + traj.dissipated
+    return energy
+
+
+@dataclass(frozen=True)
+class _ContactColumns:
+    """Per sample and clearance joint: the ``contact`` function's outputs by name, the
+    eccentricity (ex, ey), the contact force (f_x, f_y); and each joint's radial clearance."""
+
+    outputs: dict[str, np.ndarray]
+    eccentricity: np.ndarray
+    clearance: np.ndarray
+    force: np.ndarray
+
+
+def _contact_columns(pr: _Problem, traj: _Trajectory, t: np.ndarray, xs: np.ndarray,
+                     ps: np.ndarray, vs: np.ndarray) -> _ContactColumns:
+    model, p = pr.model, pr.p
+    if not pr.nc:
+        zeros = np.zeros((t.size, 0))
+        return _ContactColumns(
+            outputs={k: zeros for k in ("delta", "delta_dot", "f_n", "f_t", "v_t")},
+            eccentricity=np.zeros((t.size, 0, 2)), clearance=np.zeros(0),
+            force=np.zeros((t.size, 0, 2)))
+    c = _mapped(model, "contact", [xs, ps, vs])
+    names = model.casadi_function("contact").name_out()
+    get = {name: c[i].T for i, name in enumerate(names)}
+    ecc = np.stack([traj.x[:, [model.coordinates.index(f"ex{j}"),
+                               model.coordinates.index(f"ey{j}")]]
+                    for j in model.clearance_joints], axis=1)
+    clearance = np.array([p[model.parameters.index(f"joint{j}.bearing_radius")]
+                          - p[model.parameters.index(f"joint{j}.journal_radius")]
+                          for j in model.clearance_joints])
+    return _ContactColumns(outputs=get, eccentricity=ecc, clearance=clearance,
+                           force=np.stack([get["f_x"], get["f_y"]], axis=2))
+
+
+def _onsets(traj: _Trajectory) -> Impacts:
+    """The impact table of a run whose event loop recorded onsets only."""
+    rows = traj.impacts
+    return Impacts(time=np.array([i[0] for i in rows], float),
+                   joint=np.array([i[1] for i in rows], int),
+                   speed=np.array([i[2] for i in rows], float),
+                   eccentricity=np.array([i[3:] for i in rows], float).reshape(-1, 2))
 
 
 @functools.cache

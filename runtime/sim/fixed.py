@@ -5,6 +5,7 @@ interpolating the penetration between step ends, and the step redone with the ca
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 import casadi as ca
@@ -64,117 +65,186 @@ def _stage_fractions(method: str) -> np.ndarray:
     return np.array([(4 - math.sqrt(6)) / 10, (4 + math.sqrt(6)) / 10, 1.0])
 
 
+@dataclass
+class _Block:
+    """Consecutive steps from one state, one row per step: the states at the step ends, the
+    drive and dissipated powers there, and each joint's penetration and its rate."""
+
+    states: np.ndarray
+    powers: np.ndarray
+    deltas: np.ndarray
+    rates: np.ndarray
+
+    def replace_from(self, j: int, redone: _Block) -> None:
+        """Steps from j on are ``redone``'s."""
+        for target, values in zip((self.states, self.powers, self.deltas, self.rates),
+                                  (redone.states, redone.powers, redone.deltas, redone.rates),
+                                  strict=True):
+            target[j:] = values
+
+
+@dataclass
+class _Accepted:
+    """The end of the last accepted step (state, powers, penetrations and rates), and the drive
+    work and dissipated energy integrated up to it by the trapezoidal rule."""
+
+    x: np.ndarray
+    power: np.ndarray
+    delta: np.ndarray
+    rate: np.ndarray
+    work: float = 0.0
+    dissipated: float = 0.0
+
+    def accept(self, h: float, block: _Block, i: int, j: int) -> None:
+        """Accept the block's steps i .. j-1."""
+        chain = np.vstack([self.power, block.powers[i:j]])
+        self.work += 0.5 * h * float(np.sum(chain[:-1, 0] + chain[1:, 0]))
+        self.dissipated += 0.5 * h * float(np.sum(chain[:-1, 1] + chain[1:, 1]))
+        self.x, self.power = block.states[j - 1], block.powers[j - 1]
+        self.delta, self.rate = block.deltas[j - 1], block.rates[j - 1]
+
+
+class _FixedSteps:
+    """Blocks of fixed steps of the scene's method, evaluated in C and checked: a non-finite
+    state or an unconverged Newton iteration stops the run with a message."""
+
+    def __init__(self, pr: _Problem, events: _EventState, stats: _Accumulated) -> None:
+        run = pr.scene.run
+        self.pr, self.events, self.stats = pr, events, stats
+        self.method, self.h = run.integrator, run.step
+        self._step = pr.model.casadi_function(f"{self.method}_step")
+        m = run.steps_per_output
+        batch = _steps_function(self._step, pr, self.method, m)
+        single = _steps_function(self._step, pr, self.method, 1)
+        self._batches = {m: batch, 1: single}
+        self._fractions = _stage_fractions(self.method)
+        newton_iterations = pr.model.layout.functions["radau_step"].newton_iterations
+        self._evals_per_step = 4 if self.method == "rk4" else 3 * (1 + newton_iterations)
+
+    def block(self, state: np.ndarray, t_start: np.ndarray) -> _Block:
+        """The steps starting at the times ``t_start``, the first from ``state``."""
+        fn = self._batch_of(t_start.size)
+        out = [np.asarray(o) for o in fn(state, self._stage_torques(t_start), self.h,
+                                         self.pr.p, self.events.v_imp)]
+        counts = self.stats.counts
+        counts["steps"] += t_start.size
+        counts["rhs_evaluations"] += self._evals_per_step * t_start.size
+        if self.method == "radau":
+            counts["jacobian_evaluations"] += t_start.size
+        states = out[0].T
+        self._check_finite(states, state, t_start)
+        if self.method == "radau":
+            self._check_newton(out[4].ravel(), state, t_start)
+        return _Block(states, out[1].T, out[2].T, out[3].T)
+
+    def _batch_of(self, size: int) -> ca.Function:
+        if size not in self._batches:
+            self._batches[size] = _steps_function(self._step, self.pr, self.method, size)
+        return self._batches[size]
+
+    def _stage_torques(self, t_start: np.ndarray) -> np.ndarray:
+        times = (t_start[:, None] + self.h * self._fractions[None, :]).ravel()
+        return self.pr.tau(times).T  # (ntau, 3 * steps)
+
+    def _check_finite(self, states: np.ndarray, state: np.ndarray, t_start: np.ndarray) -> None:
+        finite = np.all(np.isfinite(states), axis=1)
+        if not np.all(finite):
+            bad = int(np.argmin(finite))
+            raise SimulationError(float(t_start[bad]), f"{self.method} at step {self.h:g} s "
+                                  "produced a non-finite state: the step is beyond the method's "
+                                  "stability limit for this contact stiffness; reduce run.step "
+                                  "or use cvodes",
+                                  _nearest_contact_joint(self.pr, state, self.events.v_imp))
+
+    def _check_newton(self, newton: np.ndarray, state: np.ndarray, t_start: np.ndarray) -> None:
+        limit = RADAU_NEWTON_TOLERANCE * np.max(self.pr.scale)
+        if np.any(newton > limit):
+            bad = int(np.argmax(newton > limit))
+            raise SimulationError(float(t_start[bad]), "Radau's Newton iteration did not "
+                                  f"converge (last update {newton[bad]:.3g}); reduce "
+                                  "run.step", _nearest_contact_joint(self.pr, state,
+                                                                     self.events.v_imp))
+
+
 def _run_fixed(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated,
                progress: Any) -> None:
     """RK4 or Radau at a fixed step; onsets located by interpolation between step ends."""
     run = pr.scene.run
-    method, h, m = run.integrator, run.step, run.steps_per_output
-    step = pr.model.casadi_function(f"{method}_step")
-    batch = _steps_function(step, pr, method, m)
-    single = _steps_function(step, pr, method, 1)
-    fractions = _stage_fractions(method)
     events = _EventState(pr, x0, 0.0, traj.impacts)
-    nc = pr.nc
+    steps = _FixedSteps(pr, events, stats)
     x = x0.copy()
     traj.x[0] = x
     traj.v_imp[0] = events.v_imp
-    newton_iterations = pr.model.layout.functions["radau_step"].newton_iterations
-    evals_per_step = 4 if method == "rk4" else 3 * (1 + newton_iterations)
-
-    def stage_torques(t_start: np.ndarray) -> np.ndarray:
-        times = (t_start[:, None] + h * fractions[None, :]).ravel()
-        return pr.tau(times).T  # (ntau, 3 * steps)
-
-    def power_at(state: np.ndarray, t: float) -> np.ndarray:
-        tau = pr.tau(t)[0]
-        drive = sum(tau[kk] * state[pr.n + ii] for kk, ii in enumerate(pr.angle_index))
-        diss = float(np.sum(pr.contact_at(state, events.v_imp)["dissipation"])) if nc else 0.0
-        return np.array([drive, diss])
-
-    def evaluate(fn: ca.Function, state: np.ndarray, t_start: np.ndarray) -> list[np.ndarray]:
-        out = [np.asarray(o) for o in fn(state, stage_torques(t_start), h, pr.p,
-                                         events.v_imp)]
-        stats.counts["steps"] += t_start.size
-        stats.counts["rhs_evaluations"] += evals_per_step * t_start.size
-        if method == "radau":
-            stats.counts["jacobian_evaluations"] += t_start.size
-        states = out[0].T
-        finite = np.all(np.isfinite(states), axis=1)
-        if not np.all(finite):
-            bad = int(np.argmin(finite))
-            raise SimulationError(float(t_start[bad]), f"{method} at step {h:g} s produced a "
-                                  "non-finite state: the step is beyond the method's stability "
-                                  "limit for this contact stiffness; reduce run.step or use "
-                                  "cvodes", _nearest_contact_joint(pr, state, events.v_imp))
-        if method == "radau":
-            newton = out[4].ravel()
-            if np.any(newton > RADAU_NEWTON_TOLERANCE * np.max(pr.scale)):
-                bad = int(np.argmax(newton > RADAU_NEWTON_TOLERANCE * np.max(pr.scale)))
-                raise SimulationError(float(t_start[bad]), "Radau's Newton iteration did not "
-                                      f"converge (last update {newton[bad]:.3g}); reduce "
-                                      "run.step", _nearest_contact_joint(pr, state,
-                                                                         events.v_imp))
-        return [states, out[1].T, out[2].T, out[3].T]
-
-    power_prev = power_at(x, 0.0)
-    start = pr.contact_at(x, events.v_imp) if nc else {}
-    delta_prev = start.get("delta", np.zeros(0))
-    rate_prev = start.get("delta_dot", np.zeros(0))
-    work = dissipated = 0.0
-    batches = {m: batch, 1: single}
-
-    def batch_of(size: int) -> ca.Function:
-        if size not in batches:
-            batches[size] = _steps_function(step, pr, method, size)
-        return batches[size]
-
+    start = pr.contact_at(x, events.v_imp) if pr.nc else {}
+    accepted = _Accepted(x, _power_at(pr, events, x, 0.0), start.get("delta", np.zeros(0)),
+                         start.get("delta_dot", np.zeros(0)))
     for k in range(run.n_outputs):
-        t_start = k * run.output_step + h * np.arange(m)
-        states, powers, deltas, rates = evaluate(batch, x, t_start)
-        i = 0
-        while i < m:
-            # The first step from i on where a joint's penetration disagrees with its flag.
-            j = m
-            if nc:
-                flags = events.flags > 0.5
-                disagree = np.where(flags, deltas[i:] < 0, deltas[i:] > 0)
-                rows = np.flatnonzero(disagree.any(axis=1))
-                j = i + int(rows[0]) if rows.size else m
-            if j > i:  # accept steps i .. j-1; powers by the trapezoidal rule
-                chain = np.vstack([power_prev, powers[i:j]])
-                work += 0.5 * h * float(np.sum(chain[:-1, 0] + chain[1:, 0]))
-                dissipated += 0.5 * h * float(np.sum(chain[:-1, 1] + chain[1:, 1]))
-                x, power_prev = states[j - 1], powers[j - 1]
-                delta_prev, rate_prev = deltas[j - 1], rates[j - 1]
-            if j == m:
-                break
-            flags = events.flags > 0.5
-            separated = flags & (deltas[j] < 0)
-            onset = ~flags & (deltas[j] > 0)
-            events.flags[separated] = 0.0
-            stats.counts["events"] += int(np.sum(separated) + np.sum(onset))
-            for c in np.flatnonzero(onset):
-                theta = min(max(-delta_prev[c] / (deltas[j][c] - delta_prev[c]), 0.0), 1.0)
-                events.onset(int(c), float(t_start[j] + theta * h),
-                             float(rate_prev[c] + theta * (rates[j][c] - rate_prev[c])),
-                             x + theta * (states[j] - x))
-            if np.any(onset):
-                # Steps from j on used a stale impact speed: redo them with the captured one.
-                redone = evaluate(batch_of(m - j), x, t_start[j:])
-                for target, values in zip((states, powers, deltas, rates), redone,
-                                          strict=True):
-                    target[j:] = values
-            i = j  # step j is accepted by the scan (its flags now agree, or it is redone)
-            if not np.any(onset):
-                chain = np.vstack([power_prev, powers[j:j + 1]])
-                work += 0.5 * h * float(np.sum(chain[:-1, 0] + chain[1:, 0]))
-                dissipated += 0.5 * h * float(np.sum(chain[:-1, 1] + chain[1:, 1]))
-                x, power_prev, delta_prev, rate_prev = states[j], powers[j], deltas[j], rates[j]
-                i = j + 1
-        traj.x[k + 1] = x
-        traj.work[k + 1] = work
-        traj.dissipated[k + 1] = dissipated
+        t_start = k * run.output_step + run.step * np.arange(run.steps_per_output)
+        _advance(steps, accepted, t_start)
+        traj.x[k + 1] = accepted.x
+        traj.work[k + 1] = accepted.work
+        traj.dissipated[k + 1] = accepted.dissipated
         traj.v_imp[k + 1] = events.v_imp
         progress.update(1)
 
 
+def _power_at(pr: _Problem, events: _EventState, state: np.ndarray, t: float) -> np.ndarray:
+    """The drive power and the power dissipated in contact at one state."""
+    tau = pr.tau(t)[0]
+    drive = sum(tau[kk] * state[pr.n + ii] for kk, ii in enumerate(pr.angle_index))
+    diss = float(np.sum(pr.contact_at(state, events.v_imp)["dissipation"])) if pr.nc else 0.0
+    return np.array([drive, diss])
+
+
+def _advance(steps: _FixedSteps, accepted: _Accepted, t_start: np.ndarray) -> None:
+    """Take the steps starting at ``t_start``: accept them up to the first whose penetration
+    disagrees with a joint's contact flag, switch the flags there, redo the rest with the
+    captured impact speed if a contact began, and go on."""
+    m = t_start.size
+    block = steps.block(accepted.x, t_start)
+    i = 0
+    while i < m:
+        j = _first_disagreement(steps.events, block.deltas, i, m)
+        if j > i:  # accept steps i .. j-1
+            accepted.accept(steps.h, block, i, j)
+        if j == m:
+            break
+        if _switch_flags(steps, accepted, block, t_start, j):
+            # Steps from j on used a stale impact speed: redo them with the captured one.
+            block.replace_from(j, steps.block(accepted.x, t_start[j:]))
+            i = j  # step j is accepted by the scan (its flags now agree)
+        else:
+            accepted.accept(steps.h, block, j, j + 1)
+            i = j + 1
+
+
+def _first_disagreement(events: _EventState, deltas: np.ndarray, i: int, m: int) -> int:
+    """The first step from i on where a joint's penetration disagrees with its flag (m if
+    none does)."""
+    if not events.pr.nc:
+        return m
+    flags = events.flags > 0.5
+    disagree = np.where(flags, deltas[i:] < 0, deltas[i:] > 0)
+    rows = np.flatnonzero(disagree.any(axis=1))
+    return i + int(rows[0]) if rows.size else m
+
+
+def _switch_flags(steps: _FixedSteps, accepted: _Accepted, block: _Block, t_start: np.ndarray,
+                  j: int) -> bool:
+    """Clear the flags of joints that separated at step j and record the onsets there, each
+    located by interpolating the penetration between the accepted end and step j's end.
+    Returns whether a contact began."""
+    events, h = steps.events, steps.h
+    delta_j = block.deltas[j]
+    flags = events.flags > 0.5
+    separated = flags & (delta_j < 0)
+    onset = ~flags & (delta_j > 0)
+    events.flags[separated] = 0.0
+    steps.stats.counts["events"] += int(np.sum(separated) + np.sum(onset))
+    delta_prev, rate_prev, x = accepted.delta, accepted.rate, accepted.x
+    for c in np.flatnonzero(onset):
+        theta = min(max(-delta_prev[c] / (delta_j[c] - delta_prev[c]), 0.0), 1.0)
+        events.onset(int(c), float(t_start[j] + theta * h),
+                     float(rate_prev[c] + theta * (block.rates[j][c] - rate_prev[c])),
+                     x + theta * (block.states[j] - x))
+    return bool(np.any(onset))
