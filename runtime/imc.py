@@ -77,6 +77,10 @@ class ControllerSettings:
     trust_range: float = 0.5  # regressor within the training range widened by this x its width
     trust_mismatch: float = 10.0  # |C e| (scaled tracked mismatch) at most this
     fallback_hold: int = 100  # samples on the fallback after a first intervention
+    # s the outer loop waits at the start (v = 0, the inner PD alone) before it starts its
+    # models at the measured state; None: the start-up the model's training runs left out
+    # (the journals falling from the centred start, which no joint torque can prevent).
+    engage: float | None = None
 
 
 @dataclass
@@ -197,7 +201,9 @@ def resolve_settings(narx: Narx, settings: ControllerSettings) -> ControllerSett
              math.isfinite(settings.trust_mismatch) and settings.trust_mismatch > 0,
              "a positive number"),
             ("--fallback-hold", settings.fallback_hold, isinstance(settings.fallback_hold, int)
-             and settings.fallback_hold >= 1, "an integer >= 1")):
+             and settings.fallback_hold >= 1, "an integer >= 1"),
+            ("--engage", settings.engage, settings.engage is None
+             or (math.isfinite(settings.engage) and settings.engage >= 0), "a number >= 0")):
         if not ok:
             raise DescriptionError(flag, f"must be {allowed}, got {value!r}")
     tracked = settings.tracked or default_tracked(narx, max(1, settings.horizon))
@@ -220,9 +226,11 @@ def resolve_settings(narx: Narx, settings: ControllerSettings) -> ControllerSett
                                          for v in limits)
     if len(rates) != nu or not all(v > 0 for v in rates):
         raise DescriptionError("--rate-limit", f"needs {nu} positive values, got {list(rates)}")
+    engage = settings.engage if settings.engage is not None else float(
+        plant.get("transient", 0.0))
     return replace(settings, tracked=tuple(tracked), scales=tuple(float(s) for s in scales),
                    torque_limit=tuple(float(v) for v in limits),
-                   rate_limit=tuple(float(v) for v in rates))
+                   rate_limit=tuple(float(v) for v in rates), engage=engage)
 
 
 def training_box(model: Narx, margin: float) -> tuple[np.ndarray, np.ndarray]:
