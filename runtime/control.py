@@ -182,12 +182,17 @@ def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
     limit = np.asarray(s.torque_limit, dtype=float)
     nu, ny = ctrl.model.n_inputs, ctrl.model.n_outputs
 
+    past: list[np.ndarray] = []  # measured deviations while waiting, newest first
+
     def law(k: int, y: np.ndarray) -> np.ndarray:
+        dev = y - reference[k]
         if k <= engage:
-            state[:] = [ctrl.initial_state(y - reference[k])]
+            # The models start from the measured history (v was zero), as in training.
+            state[:] = [ctrl.initial_state(dev, np.array(past) if past else None)]
+            past.insert(0, dev)
+            del past[4:]
         log["states"].append(state[0])
         if k < engage:
-            dev = y - reference[k]
             inner = -kp * dev[q] - kd * dev[dq] if q else np.zeros(nu)
             log["v"].append(np.zeros(nu))
             log["y_pred"].append(np.zeros(ny))
@@ -789,8 +794,8 @@ def add_settings_arguments(p: argparse.ArgumentParser, d: ControllerSettings) ->
                         "distrusted (default %(default)s)")
     p.add_argument("--engage", type=float, default=None,
                    help="seconds the outer loop waits at the start, the inner PD alone, before "
-                        "it starts its models at the measured state (default: the start-up the "
-                        "model's training runs left out, 0.05 s)")
+                        "it starts its models from the measured history (default: twice the "
+                        "start-up the model's training runs left out, 0.1 s)")
     p.add_argument("--fallback-hold", type=int, default=d.fallback_hold,
                    help="samples on the fallback after a first intervention, doubling with "
                         "each further one (default %(default)s)")
