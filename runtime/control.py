@@ -365,7 +365,8 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
             controllers: Sequence[str] = CONTROLLERS, quiet: bool = True,
             analyse: bool = True, conditions: LoopConditions = LoopConditions(),
             limit: float | None = None, divergence_factor: float = DIVERGENCE_FACTOR,
-            compiled: dict[str, Controller] | None = None) -> Comparison:
+            compiled: dict[str, Controller] | None = None,
+            plant_tolerance: float | None = None) -> Comparison:
     """Run the scene with every controller against the ideal robot's motion.
 
     Without ``limit`` the open loop runs first and sets the divergence bound
@@ -376,10 +377,12 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     run).
     """
     from jointplay.identify import ideal_reference, reference_outputs
-    from jointplay.plant import SUBSTEPS, control_plant
+    from jointplay.plant import PLANT_TOLERANCE, SUBSTEPS, control_plant
     from jointplay.simulation import load_scene_model
 
-    scene = control_plant(scene)  # one plant setting for every controller (jointplay.plant)
+    # One plant setting for every controller (jointplay.plant); ``plant_tolerance`` only to
+    # measure what that setting changes (benchmarks/control_plant.py).
+    scene = control_plant(scene, plant_tolerance or PLANT_TOLERANCE)
     ideal = ideal_reference(scene)
     reference = reference_outputs(ideal)
     model = load_scene_model(scene)
