@@ -171,10 +171,10 @@ def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
     """The compiled internal-model step as a law; logs v, the prediction, flags, states.
 
     For the first ``settings.engage`` seconds the outer loop waits (v = 0, the inner PD
-    alone, within the actuator limits); it then starts its internal models at the measured
-    deviation. The models were identified without that start-up (the journals falling from
-    the centred start onto their bearings), and acting on it with them drove v to +-0.4 N m
-    and left the journals bouncing well past it (docs/control.md)."""
+    alone, within the actuator limits); it then starts its internal models from the last
+    measured deviations. The models were identified without that start-up (the journals
+    falling from the centred start onto their bearings), and acting on it with them drove v
+    to 0.42 N m and left the journals bouncing well past it (docs/control.md)."""
     state: list[np.ndarray] = []
     s = ctrl.settings
     engage = round((s.engage or 0.0) / ctrl.model.sample_time)

@@ -66,8 +66,8 @@ class ControllerSettings:
     # the cost; 3 lost 4x in acceleration on one of two seeds: docs/control.md)
     regularisation: float = 1e-3  # lam, in units of the scaled outputs per (N m)^2
     setpoint_filter: float = 0.9  # a: the target leaves the deviation measured at
-    # engagement over about 10 samples instead of at once (offset case: RMS |Δa| 1.36e-3 ->
-    # 1.27e-3 on seed 5, docs/control.md)
+    # engagement over about 10 samples instead of at once (median RMS |Δa| over 10 seeds,
+    # offset case 1.33e-3 -> 1.25e-3, scene 9.9e-4 -> 9.8e-4; docs/control.md)
     mismatch_filter: float = 0.9  # b
     tracked: tuple[str, ...] = ()  # outputs in C; default: see default_tracked
     scales: tuple[float, ...] = ()  # error of each tracked output that counts as 1
@@ -82,8 +82,8 @@ class ControllerSettings:
     # s the outer loop waits at the start (v = 0, the inner PD alone) before it starts its
     # models from the measured history; None: twice the start-up the model's training runs
     # left out (the journals falling from the centred start and bouncing, which no joint
-    # torque prevents; at once its end the IMC still removed the decaying bounce in five
-    # samples, 3x PD's RMS |Δa| on the offset case; docs/control.md).
+    # torque prevents; engaging at its end the IMC still removed the decaying bounce in a
+    # few samples: offset case, median RMS |Δa| 2.15e-3 against 1.25e-3; docs/control.md).
     engage: float | None = None
 
 
