@@ -42,6 +42,7 @@ MOVED = {
     "jointplay.wear": "jointplay.results.wear",
     "jointplay.bench_effects": "jointplay.bench.effects",
     "jointplay.simulation": "jointplay.sim",
+    "jointplay.plant": "jointplay.neural.plant",
 }
 
 

@@ -177,6 +177,8 @@ def _damaged(narx: Narx) -> Narx:
 @pytest.mark.slow
 def test_neural_controller_beats_pd_on_the_default_scene(
         identified: tuple[Path, Narx, Narx]) -> None:
+    """All three of the goal's metrics, on the plant the metrics are defined on (bdf at
+    jointplay.neural.plant.PLANT_TOLERANCE, the acceleration error evaluated between samples)."""
     from jointplay.scene.definition import default_scene
 
     _, narx, arx = identified
@@ -184,26 +186,16 @@ def test_neural_controller_beats_pd_on_the_default_scene(
     result = compare(scene, narx, ControllerSettings(), arx=arx,
                      controllers=("open loop", "PD", NEURAL), analyse=False)
     pd, neural = result.metrics["PD"], result.metrics[NEURAL]
-    assert not neural["diverged"]
-    for key in ("max_position", "max_velocity_after"):
-        assert neural[key] < pd[key], key
-
-
-@pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="not met: with the plant integrated to convergence "
-                   "(rtol = atol = 1e-8) PD's RMS acceleration error is 0.0034 m/s^2 and the "
-                   "network's 0.020; at the scene's default tolerances the metric is dominated "
-                   "by the plant's integration error")
-def test_neural_controller_beats_pd_on_acceleration_with_a_converged_plant(
-        identified: tuple[Path, Narx, Narx]) -> None:
-    from jointplay.scene.definition import default_scene
-
-    _, narx, arx = identified
-    scene = default_scene().with_run(t_end=1.0, rtol=1e-8, atol=1e-8)
-    result = compare(scene, narx, ControllerSettings(), arx=arx,
-                     controllers=("open loop", "PD", NEURAL), analyse=False)
-    pd, neural = result.metrics["PD"], result.metrics[NEURAL]
-    assert neural["rms_acceleration_after"] < pd["rms_acceleration_after"]
+    assert not neural["diverged"] and neural["guard_episodes"] == 0
+    assert neural["max_position"] < pd["max_position"]
+    # Margins inside what this model gives (1/2.6, 1/9 and 1/2.4 of PD's) and outside what a
+    # controller no better than PD could reach.
+    assert neural["max_velocity_after"] < 0.5 * pd["max_velocity_after"]
+    assert neural["rms_acceleration_after"] < 0.7 * pd["rms_acceleration_after"]
+    # The metric itself: evaluated between samples, and on a plant integrated accurately
+    # enough that it measures control (jointplay.neural.plant).
+    run = result.runs[NEURAL]
+    assert run.dense_t.size == 10 * (run.t.size - 1)
 
 
 @pytest.mark.slow
@@ -218,6 +210,8 @@ def test_guard_keeps_a_damaged_model_bounded_and_divergence_is_reported(
                       controllers=("open loop", NEURAL), analyse=False)
     run = guarded.runs[NEURAL]
     assert not run.diverged
+    # Bounded, and better than doing nothing: the guard hands the loop to the ARX twin.
+    assert guarded.metrics[NEURAL]["max_position"] < guarded.metrics["open loop"]["max_position"]
     assert run.guard_counts["episodes"] >= 1 and run.guard_counts["on_fallback_model"] > 0
     text, warn = verdict(NEURAL, run, guarded)
     assert warn and "only with the guard" in text

@@ -75,6 +75,10 @@ class Run:
     diverged: str = ""  # empty, or where and why the run was stopped
     flags: np.ndarray = field(default_factory=lambda: np.zeros((0, len(FLAGS))))
     states: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # controller states
+    # The end effector's acceleration between samples (SUBSTEPS points per sample period,
+    # (t_k, t_k+1]): times and (x, y) rows; empty when the plant gives no dense output.
+    dense_t: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    dense_acceleration: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
 
     @property
     def guard_counts(self) -> dict[str, int]:
@@ -105,15 +109,16 @@ class LoopConditions:
 
 def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
              clearance_model: Any | None = None, *, limit: float = math.inf,
-             conditions: LoopConditions = LoopConditions()) -> Run:
+             conditions: LoopConditions = LoopConditions(), substeps: int = 1) -> Run:
     """Step the scene's clearance robot with ``law(k, y)`` added to the scene's torques.
 
     ``limit``: the run stops, marked diverged, once the end-effector position error exceeds
-    it (m), as it does when the plant can no longer be integrated."""
+    it (m), as it does when the plant can no longer be integrated. ``substeps`` > 1 (``bdf``
+    plants) also records the end effector's acceleration at that many points per sample."""
     from jointplay.neural.identify import measure
     from jointplay.sim import Stepper
 
-    stepper = Stepper(scene, model=clearance_model)
+    stepper = Stepper(scene, model=clearance_model, substeps=substeps)
     joints = scene.robot.moving_joints
     index = [stepper.model.coordinates.index(f"q{j}") for j in joints]
     n = scene.run.n_outputs
@@ -155,19 +160,44 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
             break
     keep = slice(0, last + 1)
     t = np.arange(n + 1) * dt
+    dense_t, dense_a = stepper.dense_tip_acceleration()
     return Run(name, t[keep], y[keep], tau[keep], np.zeros_like(tau[keep]),
-               len(stepper.impacts), time.perf_counter() - start, diverged)
+               len(stepper.impacts), time.perf_counter() - start, diverged,
+               dense_t=dense_t, dense_acceleration=dense_a)
 
 
 def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
             log: dict[str, list[np.ndarray]]) -> Law:
-    """The compiled internal-model step as a law; logs v, the prediction, flags, states."""
+    """The compiled internal-model step as a law; logs v, the prediction, flags, states.
+
+    For the first ``settings.engage`` seconds the outer loop waits (v = 0, the inner PD
+    alone, within the actuator limits); it then starts its internal models from the last
+    measured deviations. The models were identified without that start-up (the journals
+    falling from the centred start onto their bearings), and acting on it with them drove v
+    to 0.42 N m and left the journals bouncing well past it (docs/control.md)."""
     state: list[np.ndarray] = []
+    s = ctrl.settings
+    engage = round((s.engage or 0.0) / ctrl.model.sample_time)
+    q, dq, kp, kd = _inner_gains(ctrl.model)
+    limit = np.asarray(s.torque_limit, dtype=float)
+    nu, ny = ctrl.model.n_inputs, ctrl.model.n_outputs
+
+    past: list[np.ndarray] = []  # measured deviations while waiting, newest first
 
     def law(k: int, y: np.ndarray) -> np.ndarray:
-        if k == 0:
-            state[:] = [ctrl.initial_state(y - reference[0])]
+        dev = y - reference[k]
+        if k <= engage:
+            # The models start from the measured history (v was zero), as in training.
+            state[:] = [ctrl.initial_state(dev, np.array(past) if past else None)]
+            past.insert(0, dev)
+            del past[4:]
         log["states"].append(state[0])
+        if k < engage:
+            inner = -kp * dev[q] - kd * dev[dq] if q else np.zeros(nu)
+            log["v"].append(np.zeros(nu))
+            log["y_pred"].append(np.zeros(ny))
+            log["flags"].append(np.zeros(len(FLAGS)))
+            return np.asarray(np.clip(tau_ff[k] + inner, -limit, limit) - tau_ff[k])
         tau, nxt, v, pred = ctrl.step(y, reference[k], tau_ff[k], state[0])
         state[0] = nxt
         log["v"].append(v)
@@ -239,13 +269,33 @@ GUARD_METRICS = {"guard_episodes": "episodes", "distrusted_samples": "model_dist
                  "input_bound_samples": "input_at_trust_bound"}
 
 
-def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int) -> dict[str, float]:
+def dense_acceleration_error(run: Run, dense_reference: np.ndarray) -> np.ndarray:
+    """|end-effector acceleration error| at the run's dense points; ``dense_reference`` is the
+    reference's acceleration on the same grid from t = 0 (row i at i T / SUBSTEPS)."""
+    n = run.dense_t.size
+    return np.linalg.norm(run.dense_acceleration - dense_reference[1: n + 1], axis=1)
+
+
+def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int,
+                dense_reference: np.ndarray | None = None) -> dict[str, float]:
     """Maxima and RMS of the end-effector errors (whole run and after ``transient`` samples),
-    the largest added torque, impacts, whether the run diverged and the guard's counts."""
+    the largest added torque, impacts, whether the run diverged and the guard's counts.
+
+    With ``dense_reference`` and a run that recorded its acceleration between samples, the
+    acceleration metrics are taken over those points (the RMS a time average), the others at
+    the samples."""
     err = tip_errors(run, reference, nj)
     out: dict[str, float] = {}
+    dense = dense_reference is not None and run.dense_t.size > 0
     for k, e in err.items():
-        after = e[transient:] if e.size > transient else e
+        if k == "acceleration" and dense:
+            assert dense_reference is not None
+            substeps = round(run.dense_t.size / max(1, run.y.shape[0] - 1))
+            after_k = transient * substeps  # the first point after the transient's end
+            e = dense_acceleration_error(run, dense_reference)
+            after = e[after_k:] if e.size > after_k else e
+        else:
+            after = e[transient:] if e.size > transient else e
         out[f"max_{k}"] = float(np.max(e))
         out[f"max_{k}_after"] = float(np.max(after))
         out[f"rms_{k}"] = float(np.sqrt(np.mean(e ** 2)))
@@ -300,6 +350,8 @@ class Comparison:
     nominal_radius: dict[str, float] = field(default_factory=dict)
     local_radius: dict[str, np.ndarray] = field(default_factory=dict)
     tau_ff: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+    # the reference's end-effector acceleration every T / SUBSTEPS from t = 0
+    dense_reference: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
 
     @property
     def controller(self) -> Controller:
@@ -313,7 +365,8 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
             controllers: Sequence[str] = CONTROLLERS, quiet: bool = True,
             analyse: bool = True, conditions: LoopConditions = LoopConditions(),
             limit: float | None = None, divergence_factor: float = DIVERGENCE_FACTOR,
-            compiled: dict[str, Controller] | None = None) -> Comparison:
+            compiled: dict[str, Controller] | None = None,
+            plant_tolerance: float | None = None) -> Comparison:
     """Run the scene with every controller against the ideal robot's motion.
 
     Without ``limit`` the open loop runs first and sets the divergence bound
@@ -324,8 +377,12 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     run).
     """
     from jointplay.neural.identify import ideal_reference, reference_outputs
+    from jointplay.neural.plant import PLANT_TOLERANCE, SUBSTEPS, control_plant
     from jointplay.sim import load_scene_model
 
+    # One plant setting for every controller (jointplay.neural.plant); ``plant_tolerance`` only to
+    # measure what that setting changes (benchmarks/control_plant.py).
+    scene = control_plant(scene, plant_tolerance or PLANT_TOLERANCE)
     ideal = ideal_reference(scene)
     reference = reference_outputs(ideal)
     model = load_scene_model(scene)
@@ -355,7 +412,8 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
         bound = math.inf if limit is None and name == "open loop" else (
             limit if limit is not None else divergence_factor * float(
                 np.max(tip_errors(runs["open loop"], reference, nj)["position"])))
-        run = run_loop(scene, reference, law, name, model, limit=bound, conditions=conditions)
+        run = run_loop(scene, reference, law, name, model, limit=bound, conditions=conditions,
+                       substeps=SUBSTEPS)
         if log["v"]:
             n = run.y.shape[0]
             run.v[: min(n, len(log["v"]))] = np.array(log["v"])[:n]
@@ -369,8 +427,12 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
         limit = divergence_factor * float(np.max(tip_errors(runs["open loop"], reference,
                                                             nj)["position"]))
     k0 = max(0, round(transient / scene.run.output_step))
-    metrics = {name: run_metrics(run, reference, nj, k0) for name, run in runs.items()}
-    result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau)
+    dense_reference = ideal_reference(scene.with_run(
+        output_step=scene.run.output_step / SUBSTEPS)).tip_acceleration
+    metrics = {name: run_metrics(run, reference, nj, k0, dense_reference)
+               for name, run in runs.items()}
+    result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau,
+                        dense_reference=dense_reference)
     if analyse:
         for name, ctrl in ctrls.items():
             if name not in runs:
@@ -531,7 +593,8 @@ def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> Controlle
         torque_limit=_floats(args.torque_limit, "--torque-limit"),
         rate_limit=_floats(args.rate_limit, "--rate-limit"), iterations=args.iterations,
         guard=not args.no_guard, trust_input=args.trust_input, trust_range=args.trust_range,
-        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold)
+        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold,
+        engage=args.engage)
     return resolve_settings(narx, settings) if narx is not None else settings
 
 
@@ -733,6 +796,10 @@ def add_settings_arguments(p: argparse.ArgumentParser, d: ControllerSettings) ->
     p.add_argument("--trust-mismatch", type=float, default=d.trust_mismatch,
                    help="largest scaled mismatch on a tracked output before the network is "
                         "distrusted (default %(default)s)")
+    p.add_argument("--engage", type=float, default=None,
+                   help="seconds the outer loop waits at the start, the inner PD alone, before "
+                        "it starts its models from the measured history (default: twice the "
+                        "start-up the model's training runs left out, 0.1 s)")
     p.add_argument("--fallback-hold", type=int, default=d.fallback_hold,
                    help="samples on the fallback after a first intervention, doubling with "
                         "each further one (default %(default)s)")

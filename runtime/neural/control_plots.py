@@ -51,7 +51,7 @@ def _width(name: str) -> float:
 
 
 def plot_comparison(comparison: Comparison, scene: Any, folder: Path) -> list[Path]:
-    from jointplay.neural.control import tip_errors
+    from jointplay.neural.control import dense_acceleration_error, tip_errors
 
     try:
         folder.mkdir(parents=True, exist_ok=True)
@@ -97,10 +97,15 @@ def plot_comparison(comparison: Comparison, scene: Any, folder: Path) -> list[Pa
         ax = axes[row, 0]
         floor = math.inf
         for name, run in runs.items():
-            e = tip_errors(run, ref, nj)[label]
+            e, t = tip_errors(run, ref, nj)[label], run.t
+            if label == "acceleration" and run.dense_t.size and comparison.dense_reference.size:
+                # between samples too, as the metrics take it
+                e = np.concatenate([e[:1], dense_acceleration_error(
+                    run, comparison.dense_reference)])
+                t = np.concatenate([run.t[:1], run.dense_t])
             if e.size > 1:
                 floor = min(floor, 0.01 * float(np.median(e[1:])))
-                ax.semilogy(run.t[1:], np.maximum(e[1:], 1e-15), color=COLORS.get(name, "C5"),
+                ax.semilogy(t[1:], np.maximum(e[1:], 1e-15), color=COLORS.get(name, "C5"),
                             lw=_width(name), label=name)
         if math.isfinite(floor) and floor > 0:
             ax.set_ylim(bottom=floor)  # every run starts on the reference: e(0) = 0

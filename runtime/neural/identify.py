@@ -634,7 +634,7 @@ def _train(torch: Any, train: Sequence[Trajectory], validation: Sequence[Traject
     def sim_loss(d: Any, u: Any) -> Any:
         return (((free_run(d, u) - d[:, m + 1:]) / ys_t) ** 2).mean()
 
-    history: dict[str, list[float]] = {"one_step_train": [], "one_step_validation": [],
+    history: dict[str, list[float | None]] = {"one_step_train": [], "one_step_validation": [],
                                        "free_run_train": [], "free_run_validation": []}
     total = config.one_step_iterations + config.multi_step_iterations
     start = time.perf_counter()
@@ -654,8 +654,8 @@ def _train(torch: Any, train: Sequence[Trajectory], validation: Sequence[Traject
             loss = float(opt.step(closure).detach())
             with torch.no_grad():
                 val = float(((net_out(zxv) - ztv) ** 2).mean())
-            history["one_step_train"].append(loss)
-            history["one_step_validation"].append(val)
+            history["one_step_train"].append(loss if math.isfinite(loss) else None)
+            history["one_step_validation"].append(val if math.isfinite(val) else None)
             bar.update(1)
             bar.set_postfix(phase="one-step", train=f"{loss:.3g}", val=f"{val:.3g}")
             if val < best * (1 - 1e-4):
@@ -687,8 +687,10 @@ def _train(torch: Any, train: Sequence[Trajectory], validation: Sequence[Traject
                 loss = float(opt2.step(closure2).detach())
                 with torch.no_grad():
                     val = float(sim_loss(dvw, uvw))
-                history["free_run_train"].append(loss)
-                history["free_run_validation"].append(val)
+                # A diverged L-BFGS step gives NaN: recorded as null (the run stops here and
+                # keeps its best state); metrics.json holds no NaN.
+                history["free_run_train"].append(loss if math.isfinite(loss) else None)
+                history["free_run_validation"].append(val if math.isfinite(val) else None)
                 bar.update(1)
                 bar.set_postfix(phase="free-run", train=f"{loss:.3g}", val=f"{val:.3g}")
                 if not math.isfinite(loss):
@@ -833,16 +835,16 @@ def _ints(text: str, flag: str, size: int | None = None, low: int = 1,
 
 def _load_scene_arg(path: str | None, quiet: bool = False) -> Any:
     """The scene of a command; closed loops step with an adaptive integrator."""
-    from jointplay.scene.definition import default_scene, load_scene
+    from jointplay.scene.definition import ADAPTIVE, default_scene, load_scene
 
     scene = load_scene(path) if path else default_scene()
     if not scene.robot.drive or not scene.robot.moving_joints:
         raise DescriptionError("scene", "the robot has no driven joints to control")
-    if scene.run.integrator not in ("cvodes", "idas"):
+    if scene.run.integrator not in ADAPTIVE:
         if not quiet:
             print(f"note: run.integrator {scene.run.integrator!r} cannot be stepped sample by "
-                  "sample with added torques; using cvodes")
-        scene = scene.with_run(integrator="cvodes")
+                  "sample with added torques; using bdf")
+        scene = scene.with_run(integrator="bdf")
     return scene
 
 
@@ -869,6 +871,9 @@ def check_finite(trajectories: Sequence[Trajectory]) -> None:
 def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False) -> dict[str,
                                                                                         Any]:
     """Collect the data, train, evaluate and write the model folder; return the metrics."""
+    from jointplay.neural.plant import control_plant
+
+    scene = control_plant(scene)  # the plant the controllers are judged on
     dt = scene.run.output_step
     joints = tuple(scene.robot.moving_joints)
     inner = inner_loop_for(scene, config.kp, config.kd)
@@ -934,6 +939,8 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
                            "kd": list(inner.kd)},
             "torque_limit": limits.tolist(),
             "transient": config.transient,
+            "integrator": {"name": scene.run.integrator, "rtol": scene.run.rtol,
+                           "atol": scene.run.atol},
         },
         "training": {**{k: (list(v) if isinstance(v, tuple) else v)
                         for k, v in asdict(config).items()}},

@@ -18,7 +18,7 @@ import numpy as np
 
 from jointplay.results.records import Impacts, SimulationResult
 from jointplay.scene.definition import ADAPTIVE, Scene, ideal_counterpart
-from jointplay.sim.assemble import _assemble
+from jointplay.sim.assemble import _assemble, _mapped
 from jointplay.sim.bdf import native_integrator, run_bdf, torque_fields
 from jointplay.sim.casadi_methods import _AdaptiveIntegrator, _resolve_interval, _run_adaptive
 from jointplay.sim.events import _EventState
@@ -102,15 +102,23 @@ class Stepper:
     :func:`simulate` does (adaptive integrators only), and returns the new state. With the
     default ``bdf`` the integrator object lives in C across samples; a change of ``u``
     restarts its history (the right-hand side jumps there).
+
+    ``substeps`` > 1 (``bdf`` only) also records the state at that many evenly spaced points of
+    every sample period (the integrator's own interpolant, the last one the sample itself), for
+    quantities that must be known between samples: :meth:`dense_tip_acceleration`.
     """
 
     def __init__(self, scene: Scene, *, model: Model | None = None,
                  parameters: Mapping[str, float] | Sequence[float] | None = None,
-                 sample_time: float | None = None) -> None:
+                 sample_time: float | None = None, substeps: int = 1) -> None:
         run = scene.run
         if run.integrator not in ADAPTIVE:
             raise ValueError(f"Stepper needs an adaptive integrator ({', '.join(ADAPTIVE)}), "
                              f"got {run.integrator!r}")
+        if substeps < 1 or (substeps > 1 and run.integrator != "bdf"):
+            raise ValueError(f"substeps must be 1, or more with the bdf integrator; got "
+                             f"{substeps} with {run.integrator!r}")
+        self.substeps = int(substeps)
         self.model = model or load_scene_model(scene)
         self.scene = scene
         self._pr = _Problem(self.model, scene, _parameter_vector(self.model, scene, parameters))
@@ -134,6 +142,7 @@ class Stepper:
         self.x = (np.asarray(x0, dtype=float).copy() if x0 is not None
                   else _initial_state(self.model, self.scene))
         self.impacts: list[tuple[float, int, float, float, float]] = []
+        self._dense: list[tuple[np.ndarray, ...]] = []  # (t, x, v_imp, tau) per sample
         self.work = 0.0
         self.dissipated = 0.0
         if self._native:
@@ -163,16 +172,21 @@ class Stepper:
         pr, integ = self._pr, self._bdf
         integ.hold(pr.u_hold)
         t_next = self.t + self.sample_time
-        values, speeds, status = integ.integrate(t_next, np.array([t_next]))
+        times = self.t + self.sample_time * np.arange(1, self.substeps + 1) / self.substeps
+        times[-1] = t_next
+        values, speeds, status = integ.integrate(t_next, times)
         if status:
             raise_for_status(status, integ, torque_fields(pr),
                              lambda: _nearest_contact_joint(pr, self.x, self._v_imp))
+        if self.substeps > 1:
+            self._dense.append((times, values[:, :pr.nx].copy(), speeds.copy(),
+                                pr.tau(times)))
         self.t = t_next
-        self.x = values[0, :pr.nx].copy()
-        self._v_imp = speeds[0]
-        self.work = float(values[0, pr.nx])
+        self.x = values[-1, :pr.nx].copy()
+        self._v_imp = speeds[-1]
+        self.work = float(values[-1, pr.nx])
         if pr.nc:
-            self.dissipated = float(values[0, pr.nx + 1:].reshape(pr.nc, 3)[:, 1:].sum())
+            self.dissipated = float(values[-1, pr.nx + 1:].reshape(pr.nc, 3)[:, 1:].sum())
         rows = integ.phases()
         for row in rows[self._seen_phases:]:
             joint = int(self.model.clearance_joints[int(row[0])])
@@ -184,6 +198,18 @@ class Stepper:
                                                          "jacobian_evaluations", "events")})
         self.stats.counts["impacts"] = len(self.impacts)
         return self.x
+
+    def dense_tip_acceleration(self) -> tuple[np.ndarray, np.ndarray]:
+        """Times and end-effector accelerations (rows) at every recorded substep so far,
+        from the model's dynamics at the interpolated states and the torque held there."""
+        if not self._dense:
+            return np.zeros(0), np.zeros((0, 2))
+        pr = self._pr
+        t, x, v, tau = (np.concatenate([d[i] for d in self._dense]) for i in range(4))
+        ps = np.repeat(pr.p[:, None], t.size, axis=1)
+        xdot = _mapped(self.model, "forward_dynamics", [x.T, tau.T, ps, v.T])[0]
+        tip = _mapped(self.model, "end_effector", [x.T, xdot[pr.n:], ps])
+        return t, tip[2].T
 
     def end_effector(self) -> dict[str, np.ndarray]:
         """Tip position, velocity and acceleration at the current state and held torque."""

@@ -1,0 +1,75 @@
+"""The plant the control metrics are measured on: its setting, the dense acceleration, and
+the outer loop's start (fast checks)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+from test_control import random_narx
+from test_control_guard import linear_twin
+
+from jointplay.neural.control import ControllerSettings, compile_controller, imc_law
+from jointplay.neural.imc import training_box
+from jointplay.neural.plant import PLANT_TOLERANCE, SUBSTEPS, control_plant
+from jointplay.scene.definition import default_scene
+from jointplay.sim import Stepper
+
+
+def test_control_plant_tightens_the_tolerances_and_keeps_tighter_ones() -> None:
+    scene = default_scene().with_run(integrator="cvodes")
+    plant = control_plant(scene)
+    assert (plant.run.integrator, plant.run.rtol, plant.run.atol) == (
+        "bdf", PLANT_TOLERANCE, PLANT_TOLERANCE)
+    tight = default_scene().with_run(rtol=1e-11, atol=1e-12)
+    assert control_plant(tight) is tight
+
+
+def test_dense_acceleration_ends_each_period_on_the_sample() -> None:
+    """The last of the substeps is the sample itself: there the dense acceleration equals the
+    one the stepper reports at the sample (the same state, the same held torque), and the
+    state equals a stepper's without substeps to the integrator's tolerance."""
+    scene = control_plant(default_scene().with_run(t_end=0.02))
+    dense = Stepper(scene, substeps=SUBSTEPS)
+    plain = Stepper(scene, model=dense.model)
+    at_samples = []
+    for k in range(20):
+        u = np.array([0.01 * np.sin(k), -0.02])
+        dense.step(u)
+        plain.step(u)
+        at_samples.append(dense.end_effector()["acceleration"])
+        assert np.allclose(dense.x, plain.x, rtol=0, atol=1e-7)
+    t, a = dense.dense_tip_acceleration()
+    assert t.size == 20 * SUBSTEPS and np.all(np.diff(t) > 0)
+    assert np.allclose(t[SUBSTEPS - 1::SUBSTEPS], 1e-3 * np.arange(1, 21), rtol=0, atol=1e-15)
+    assert np.allclose(a[SUBSTEPS - 1::SUBSTEPS], np.array(at_samples), rtol=1e-12, atol=1e-9)
+    # Between samples it is not a copy of the sample values (the journals fall and bounce).
+    assert np.max(np.abs(a[::SUBSTEPS] - a[SUBSTEPS - 1::SUBSTEPS])) > 1e-3
+
+
+def test_outer_loop_waits_then_starts_from_the_measured_history() -> None:
+    base = random_narx(41)
+    plant = {**base.context["plant"], "inner_loop": {"joints": [2, 3], "kp": [200.0, 200.0],
+                                                     "kd": [5.0, 5.0]}}
+    model = replace(base, context={**base.context, "plant": plant})
+    settings = ControllerSettings(horizon=2, tracked=("q2", "q3"), engage=0.003)
+    ctrl = compile_controller(model, settings, fallback=linear_twin(model))
+    n = 10
+    rng = np.random.default_rng(42)
+    reference = rng.normal(0, 1e-4, (n, model.n_outputs))
+    log: dict[str, list[np.ndarray]] = {"v": [], "y_pred": [], "flags": [], "states": []}
+    law = imc_law(ctrl, reference, np.zeros((n, 2)), log)
+    measured = [reference[k] + rng.normal(0, 1e-5, model.n_outputs) for k in range(n)]
+    kp, kd = 200.0, 5.0
+    for k in range(3):  # waiting: the inner PD alone, v = 0
+        tau = law(k, measured[k])
+        dev = measured[k] - reference[k]
+        assert np.allclose(tau, -kp * dev[:2] - kd * dev[2:4], rtol=1e-12, atol=0)
+        assert not np.any(log["v"][-1])
+    law(3, measured[3])  # engaged: the models start from the last two measured deviations
+    start = log["states"][-1]
+    lo, hi = training_box(model, 0.0)
+    ny = model.n_outputs
+    for lag, k in enumerate((3, 2)):
+        expected = np.clip(measured[k] - reference[k], lo[:ny], hi[:ny])
+        assert np.array_equal(start[lag * ny:(lag + 1) * ny], expected)
