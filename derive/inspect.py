@@ -50,7 +50,7 @@ def sections(model: SymbolicModel, simplify: bool = False) -> list[tuple[str, li
             ("c", law.clearance, "radial clearance"),
             ("K", law.stiffness, "pin-in-hole Hertz stiffness"
              if model.structure.contact_stiffness is None else
-             f"leading coefficient of {model.structure['contact_stiffness']}'s law"),
+             f"leading coefficient of {model.structure.contact_stiffness}'s law"),
             ("F_e", law.elastic_force, "elastic part of the normal force"),
             ("|e|", law.eccentricity, "eccentricity, floored far below c"),
             ("delta", law.penetration, "penetration (contact while > 0)"),

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import math
 import sys
 from pathlib import Path
 from types import SimpleNamespace
@@ -214,6 +215,23 @@ def test_work_precision_and_fidelity_rows_per_stiffness_law(tmp_path: Path) -> N
     assert rows[-3]["rung"] == "clearance + friction (full)"  # still the reference rung
     for r in law_rows:
         assert r["status"] == "ok" and 0 < float(r["err_position"]) < 1e-3
+
+
+def test_effect_rows_in_both_benches(tmp_path: Path) -> None:
+    """--effects: the lubricated and the worn arm get rows of their own in work-precision and
+    fidelity, each run to the end with a finite error."""
+    out = tmp_path / "wp"
+    assert run_bench("work-precision", "--quick", "--methods", "bdf", "--out", str(out),
+                     "--quiet", "--effects") == 0
+    rows = read_csv(out / "work_precision.csv")[1]
+    assert len(rows) > 3 and all(r["status"] == "ok" for r in rows)
+    out = tmp_path / "fid"
+    assert run_bench("fidelity", "--quick", "--out", str(out), "--quiet", "--effects") == 0
+    rows = read_csv(out / "fidelity.csv")[1]
+    effect_rows = [r for r in rows if "lubricat" in r["rung"] or "wear" in r["rung"]]
+    assert len(effect_rows) >= 2, [r["rung"] for r in rows]
+    for r in effect_rows:
+        assert r["status"] == "ok" and math.isfinite(float(r["err_position"]))
 
 
 def test_out_must_be_a_writable_folder(tmp_path: Path) -> None:

@@ -93,13 +93,13 @@ def fidelity_rows(scene: Scene, run_scene: Scene, reference: Any,
                   repeats: int) -> list[dict[str, Any]]:
     """One row per effect at the scene's run settings, against the dry full model."""
     from jointplay.bench import (
-        _run_settings,
         cold_compile_seconds,
         run_counts,
         run_label,
         timed_runs,
         tip_errors,
     )
+    from jointplay.bench.fidelity import _run_settings
     from jointplay.derive import model_for
 
     rows: list[dict[str, Any]] = []

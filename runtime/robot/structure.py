@@ -139,11 +139,11 @@ def coordinate_layout(structure: Structure) -> list[Coordinate]:
     angles = [Coordinate(f"q{i}", "rad", f"angle of link {i} relative to "
                          f"{f'link {i - 1}' if i > 1 else 'the ground'}", "angle", i)
               for i in structure.moving_joints]
+    axes: tuple[tuple[str, CoordinateKind], ...] = (("x", "ex"), ("y", "ey"))
     eccentricities = [
         Coordinate(f"e{axis}{i}", "m",
                    f"joint {i}: journal centre minus bearing centre, {axis}", kind, i)
-        for i in structure.clearance_joints
-        for axis, kind in (("x", "ex"), ("y", "ey"))]
+        for i in structure.clearance_joints for axis, kind in axes]
     return angles + eccentricities
 
 

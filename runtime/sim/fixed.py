@@ -11,7 +11,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from jointplay.common.errors import SimulationError
+from jointplay.common.errors import GeneratedCodeError, SimulationError
 from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
     RADAU_NEWTON_TOLERANCE,
@@ -119,6 +119,9 @@ class _FixedSteps:
         self._batches = {m: batch, 1: single}
         self._fractions = _stage_fractions(self.method)
         newton_iterations = pr.model.layout.functions["radau_step"].newton_iterations
+        if newton_iterations is None:  # the generator always records it (derive/codegen.py)
+            raise GeneratedCodeError("layout.json gives the radau_step no newton_iterations; "
+                                     "regenerate the model with `jointplay derive`")
         self._evals_per_step = 4 if self.method == "rk4" else 3 * (1 + newton_iterations)
 
     def block(self, state: np.ndarray, t_start: np.ndarray) -> _Block:
