@@ -115,7 +115,7 @@ def test_lubricated_and_worn_model_is_finite_at_singular_states(film: str) -> No
     tests/test_dynamics.py), and the wear function's outputs too."""
     from test_dynamics import all_outputs, non_finite_report, singular_states, two_clearance_robot
 
-    from jointplay.derive import model_for
+    from jointplay.store.lookup import model_for
 
     robot = replace(_with_length(two_clearance_robot("hunt-crossley", "linear")),
                     lubrication=Lubrication(model=film), wear=Wear(model="archard"))

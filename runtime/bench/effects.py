@@ -52,7 +52,7 @@ def work_precision_rows(scene: Scene, dry_reference: Any, *, rtols: Any, repeats
                         quiet: bool) -> list[dict[str, Any]]:
     """BDF rows at ``rtols`` and at the scene's settings, for each effect."""
     from jointplay.bench import work_precision
-    from jointplay.derive import model_for
+    from jointplay.store.lookup import model_for
 
     rows: list[dict[str, Any]] = []
     if not scene.robot.clearance_joints:
@@ -100,7 +100,7 @@ def fidelity_rows(scene: Scene, run_scene: Scene, reference: Any,
         tip_errors,
     )
     from jointplay.bench.fidelity import _run_settings
-    from jointplay.derive import model_for
+    from jointplay.store.lookup import model_for
 
     rows: list[dict[str, Any]] = []
     if not scene.robot.clearance_joints:
