@@ -302,7 +302,7 @@ def test_model_for_another_robot_is_refused() -> None:
 
 
 def _parser() -> argparse.ArgumentParser:
-    from jointplay.neural import control, identify
+    from jointplay.cli import control, identify
 
     parser = argparse.ArgumentParser(prog="jointplay")
     sub = parser.add_subparsers(dest="command", required=True)

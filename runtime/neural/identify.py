@@ -26,7 +26,6 @@ the training function only.
 
 from __future__ import annotations
 
-import argparse
 import contextlib
 import hashlib
 import json
@@ -44,7 +43,6 @@ import casadi as ca
 import numpy as np
 
 from jointplay.common import interrupts
-from jointplay.common import limits as size_limits
 from jointplay.common.errors import DescriptionError, JointplayError
 from jointplay.common.files import atomic_path, atomic_write_text, file_error, sweep_stale, temp_tag
 from jointplay.neural.narx import (
@@ -797,57 +795,6 @@ def metrics_table(metrics: dict[str, Any], outputs: Sequence[str], kind: str = "
     return "\n".join(lines)
 
 
-# ---- the command ----------------------------------------------------------------------------
-
-def _floats(text: str | None, flag: str, count: int | None = None,
-            positive: bool = True) -> tuple[float, ...]:
-    if text is None:
-        return ()
-    try:
-        values = tuple(float(v) for v in text.split(",") if v.strip())
-    except ValueError:
-        raise DescriptionError(flag, f"expects comma-separated numbers, got {text!r}") from None
-    if not values or not all(math.isfinite(v) for v in values):
-        raise DescriptionError(flag, f"expects finite numbers, got {text!r}")
-    if positive and not all(v > 0 for v in values):
-        raise DescriptionError(flag, f"every value must be > 0, got {text!r}")
-    if not positive and not all(v >= 0 for v in values):
-        raise DescriptionError(flag, f"every value must be >= 0, got {text!r}")
-    if count is not None and len(values) not in (1, count):
-        raise DescriptionError(flag, f"give one value, or one per driven joint ({count}), got "
-                               f"{len(values)}")
-    return values * count if count is not None and len(values) == 1 else values
-
-
-def _ints(text: str, flag: str, size: int | None = None, low: int = 1,
-          high: int | None = None) -> tuple[int, ...]:
-    try:
-        values = tuple(int(v) for v in text.split(",") if v.strip())
-    except ValueError:
-        raise DescriptionError(flag, f"expects comma-separated integers, got {text!r}") from None
-    if not values or any(v < low for v in values) or (size is not None and len(values) != size):
-        what = f"{size} integers" if size else "integers"
-        raise DescriptionError(flag, f"expects {what} >= {low}, got {text!r}")
-    if high is not None and max(values) > high:
-        raise DescriptionError(flag, f"every value must be at most {high}, got {text!r}")
-    return values
-
-
-def _load_scene_arg(path: str | None, quiet: bool = False) -> Any:
-    """The scene of a command; closed loops step with an adaptive integrator."""
-    from jointplay.scene.definition import ADAPTIVE, default_scene, load_scene
-
-    scene = load_scene(path) if path else default_scene()
-    if not scene.robot.drive or not scene.robot.moving_joints:
-        raise DescriptionError("scene", "the robot has no driven joints to control")
-    if scene.run.integrator not in ADAPTIVE:
-        if not quiet:
-            print(f"note: run.integrator {scene.run.integrator!r} cannot be stepped sample by "
-                  "sample with added torques; using bdf")
-        scene = scene.with_run(integrator="bdf")
-    return scene
-
-
 def inner_loop_for(scene: Any, kp: Sequence[float], kd: Sequence[float]) -> InnerLoop:
     joints = tuple(scene.robot.moving_joints)
     n = len(joints)
@@ -1050,120 +997,6 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
     return "\n".join(lines)
 
 
-def cmd_identify(args: argparse.Namespace) -> int:
-    """``jointplay identify``: validate everything, then simulate, train and write."""
-    scene = _load_scene_arg(args.scene, args.quiet)
-    n = len(scene.robot.moving_joints)
-    out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        raise DescriptionError("--out", f"{out} exists and is not a folder")
-    parent = out if out.exists() else out.parent
-    while not parent.exists():
-        parent = parent.parent
-    if not os.access(parent, os.W_OK):
-        raise DescriptionError("--out", f"cannot write to {parent}: permission denied")
-    lags = _ints(args.lags, "--lags", 2, high=size_limits.MAX_LAGS)
-    hidden = _ints(args.hidden, "--hidden", high=size_limits.MAX_HIDDEN_WIDTH)
-    if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:
-        raise DescriptionError("--hidden", f"gives {len(hidden)} layers; at most "
-                               f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
-    iters = _ints(args.iterations, "--iterations", 2, low=0, high=size_limits.MAX_ITERATIONS)
-    counts = _ints(f"{args.train},{args.validation},{args.test}", "--train/--validation/--test")
-    if sum(counts) > size_limits.MAX_TRAJECTORIES:
-        raise DescriptionError("--train/--validation/--test", f"{sum(counts)} trajectories in "
-                               f"all; at most {size_limits.MAX_TRAJECTORIES} are allowed")
-    for flag, value, low, high in (("--window", args.window, 2, size_limits.MAX_WINDOW),
-                                   ("--workers", args.workers, 0, size_limits.MAX_WORKERS)):
-        if not low <= value <= high:
-            raise DescriptionError(flag, f"must be an integer from {low} to {high}, got {value}")
-    if not (isinstance(args.duration, float) and math.isfinite(args.duration)
-            and args.duration > 0):
-        raise DescriptionError("--duration", f"must be a positive number of seconds, got "
-                               f"{args.duration!r}")
-    dt = scene.run.output_step
-    if args.duration > size_limits.MAX_T_END:
-        raise DescriptionError("--duration", f"must be at most {size_limits.MAX_T_END:g} s, got "
-                               f"{args.duration:g}")
-    if sum(counts) * args.duration / dt > size_limits.MAX_IDENTIFY_SAMPLES:
-        raise DescriptionError("--duration", f"{sum(counts)} trajectories of {args.duration:g} s "
-                               f"at {dt:g} s per sample are {sum(counts) * args.duration / dt:.3g} "
-                               f"samples; at most {size_limits.MAX_IDENTIFY_SAMPLES} are allowed")
-    if round(args.duration / dt) < max(lags) + 2 + round(0.05 / dt):
-        raise DescriptionError("--duration", f"{args.duration:g} s is too short for lags "
-                               f"{lags} at {dt:g} s per sample after the 0.05 s transient")
-    config = IdentifyConfig(
-        duration=args.duration, n_train=counts[0], n_validation=counts[1], n_test=counts[2],
-        output_lags=lags[0], input_lags=lags[1], hidden=hidden, seed=args.seed,
-        kp=_floats(args.kp, "--kp", n), kd=_floats(args.kd, "--kd", n, positive=False),
-        torque_limit=_floats(args.torque_limit, "--torque-limit", n),
-        one_step_iterations=iters[0], multi_step_iterations=iters[1],
-        window=args.window, workers=args.workers, linear_path=not args.no_linear_path)
-    if config.window < 2:
-        raise DescriptionError("--window", f"must be at least 2 samples, got {config.window}")
-    if not config.torque_limit:
-        default_limits(scene)  # fails now, before any work, if it cannot be inferred
-    try:
-        scene.with_run(t_end=config.duration)
-    except DescriptionError as err:
-        raise DescriptionError("--duration", err.message) from None
-    started = time.perf_counter()
-    try:
-        identify(scene, out, config, quiet=args.quiet)
-    except ModelRejected:
-        if not args.quiet:
-            print((out / REPORT_FILE).read_text(encoding="utf-8"))
-        raise
-    if not args.quiet:
-        print((out / REPORT_FILE).read_text(encoding="utf-8"))
-        print(f"wrote {out}/narx.json, datasets.h5, metrics.json, report.md in "
-              f"{time.perf_counter() - started:.1f} s")
-    return 0
-
-
-def register(subparsers: Any) -> argparse.ArgumentParser:
-    """Add ``identify`` to a ``jointplay`` argument parser's subcommands."""
-    p = subparsers.add_parser(
-        "identify", help="simulate excitation runs and train the NARX network for the "
-                         "neural controller",
-        description="Simulate the clearance robot (under the inner PD loop) with excitation "
-                    "torques, train a NARX network on the deviations from the ideal robot, "
-                    "report one-step and free-run errors on unseen test runs against "
-                    "persistence and a linear ARX model, and write MODEL_DIR.")
-    p.add_argument("scene", nargs="?", help="scene file (TOML); default: the paper scene")
-    p.add_argument("--out", required=True, metavar="MODEL_DIR",
-                   help="folder for narx.json, datasets.h5, metrics.json and report.md")
-    p.add_argument("--train", type=int, default=IdentifyConfig.n_train,
-                   help="training trajectories (default %(default)s)")
-    p.add_argument("--validation", type=int, default=IdentifyConfig.n_validation,
-                   help="validation trajectories, for early stopping (default %(default)s)")
-    p.add_argument("--test", type=int, default=IdentifyConfig.n_test,
-                   help="test trajectories (default %(default)s)")
-    p.add_argument("--duration", type=float, default=IdentifyConfig.duration,
-                   help="seconds per trajectory (default %(default)s)")
-    p.add_argument("--lags", default="2,2", help="output lags,input lags (default 2,2)")
-    p.add_argument("--hidden", default="13,14", help="hidden layer widths (default 13,14)")
-    p.add_argument("--iterations", default=f"{IdentifyConfig.one_step_iterations},"
-                                           f"{IdentifyConfig.multi_step_iterations}",
-                   help="L-BFGS iterations: one-step phase, free-run phase (default "
-                        "%(default)s; early stopping may end either sooner)")
-    p.add_argument("--window", type=int, default=IdentifyConfig.window,
-                   help="samples per free-run training window (default %(default)s)")
-    p.add_argument("--no-linear-path", action="store_true",
-                   help="no linear direct path beside the hidden layers (the bare network)")
-    p.add_argument("--kp", help=f"inner-loop PD stiffness per driven joint, N m/rad (default "
-                                f"{DEFAULT_KP:g})")
-    p.add_argument("--kd", help=f"inner-loop PD damping per driven joint, N m s/rad (default "
-                                f"{DEFAULT_KD:g})")
-    p.add_argument("--torque-limit", help=f"actuator limits per driven joint, N m (default "
-                                          f"{LIMIT_FACTOR:g} x the scene's peak torque)")
-    p.add_argument("--seed", type=int, default=0, help="seed of everything random (default 0)")
-    p.add_argument("--workers", type=int, default=0,
-                   help="processes simulating trajectories (default: one per core, at most 4)")
-    p.add_argument("--quiet", action="store_true", help="no progress bars, no report")
-    p.set_defaults(func=cmd_identify)
-    return p
-
-
 __all__ = [
     "Chirp",
     "IdentifyConfig",
@@ -1182,7 +1015,6 @@ __all__ = [
     "output_names",
     "read_datasets",
     "reference_outputs",
-    "register",
     "train_narx",
     "write_datasets",
 ]
