@@ -302,12 +302,13 @@ def test_model_for_another_robot_is_refused() -> None:
 
 
 def _parser() -> argparse.ArgumentParser:
-    from jointplay.neural import control, identify
+    from jointplay.cli import control, identify, study
 
     parser = argparse.ArgumentParser(prog="jointplay")
     sub = parser.add_subparsers(dest="command", required=True)
     identify.register(sub)
     control.register(sub)
+    study.register(sub)
     return parser
 
 
@@ -317,6 +318,12 @@ def _parser() -> argparse.ArgumentParser:
     (["identify", "--out", "/tmp/x", "--hidden", "13,0"], "--hidden"),
     (["identify", "--out", "/tmp/x", "--kp", "1,2,3"], "--kp"),
     (["identify", "--out", "/tmp/x", "--duration", "-1"], "--duration"),
+    (["identify", "--out", "/tmp/x", "--iterations", "1"], "--iterations"),
+    (["control-study", "--out", "/tmp/x", "--seeds", "0"], "--seeds"),
+    (["control-study", "--out", "/tmp/x", "--cases", "scene,foo"], "--cases"),
+    (["control-study", "--out", "/tmp/x", "--train", "0"], "--train/--validation/--test"),
+    (["control-study", "--out", "/tmp/x", "--identify-iterations", "1"],
+     "--identify-iterations"),
 ])
 def test_commands_reject_bad_flags(argv: list[str], flag: str) -> None:
     """DescriptionError is what the command line turns into exit status 2."""
@@ -324,6 +331,25 @@ def test_commands_reject_bad_flags(argv: list[str], flag: str) -> None:
     with pytest.raises(DescriptionError) as err:
         args.func(args)
     assert err.value.field.startswith(flag)
+
+
+def test_neural_room_holds_no_command_line() -> None:
+    """The commands live in jointplay.cli; the neural modules hold no argparse and no cmd_*."""
+    import ast
+
+    import jointplay.neural
+
+    folder = Path(jointplay.neural.__file__).parent
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        imports = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import)
+                   for alias in node.names}
+        imports |= {node.module for node in ast.walk(tree)
+                    if isinstance(node, ast.ImportFrom) and node.module}
+        assert "argparse" not in imports, path.name
+        commands = [node.name for node in ast.walk(tree) if isinstance(node, ast.FunctionDef)
+                    and (node.name.startswith("cmd_") or node.name == "register")]
+        assert not commands, (path.name, commands)
 
 
 def test_control_rejects_bad_settings_for_the_model(tmp_path: Path) -> None:

@@ -22,7 +22,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from jointplay.cli import bench, build, derive, inspect, simulate, sweep
+from jointplay.cli import bench, build, control, derive, identify, inspect, simulate, study, sweep
 from jointplay.cli.args import EXIT_BAD_INPUT, add_debug_flag, interrupted, report_error
 from jointplay.cli.summary import contact_lines, summary
 from jointplay.common import interrupts
@@ -37,8 +37,6 @@ def make_parser() -> argparse.ArgumentParser:
     derive.register(sub)
     inspect.register(sub)
     simulate.register(sub)
-    from jointplay.neural import control, identify, study
-
     identify.register(sub)
     control.register(sub)
     study.register(sub)

@@ -1,0 +1,264 @@
+"""``jointplay control``: validate, compile, run every controller against the ideal robot's
+motion, report and plot (the loops themselves: :mod:`jointplay.neural.control`).
+
+Exit status 3 when an internal-model controller diverged."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from jointplay.cli.neural_args import (
+    add_settings_arguments,
+    float_list,
+    load_control_scene,
+    neural_scene_argument,
+    settings_from_args,
+)
+from jointplay.common.errors import DescriptionError
+from jointplay.common.files import atomic_write_text
+from jointplay.neural.control import (
+    DEFAULT_TRANSIENT,
+    DIVERGENCE_FACTOR,
+    EXIT_DIVERGED,
+    LINEAR,
+    MODEL_BASED,
+    NEURAL,
+    Comparison,
+    compare,
+    load_twin,
+    metrics_table,
+    test_case_scenes,
+    verdict,
+    write_runs,
+)
+from jointplay.neural.imc import ControllerSettings
+from jointplay.neural.narx import MODEL_FILE, Narx, check_robot, load_narx
+
+if TYPE_CHECKING:
+    from jointplay.scene.definition import Scene
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    """Add ``control`` to a ``jointplay`` argument parser's subcommands."""
+    p = subparsers.add_parser(
+        "control", help="closed-loop runs of the internal-model controllers and baselines "
+                        "against the ideal robot's motion",
+        description="Track the ideal-joint robot's motion with the clearance robot: open loop, "
+                    "PD, computed torque (ideal model), internal-model control with the linear "
+                    "ARX twin, and with the guarded NARX network (compiled), side by side. "
+                    "Exit status 3 when an internal-model controller diverged.")
+    neural_scene_argument(p)
+    p.add_argument("--model", required=True, metavar="MODEL_DIR",
+                   help="folder written by `jointplay identify`")
+    p.add_argument("--plot", metavar="DIR", help="write figures and the table (control.md) here")
+    p.add_argument("--out", metavar="RUN.h5", help="write every run and the metrics (HDF5)")
+    add_settings_arguments(p, ControllerSettings())
+    p.add_argument("--pd-kp", help="PD baseline stiffness per driven joint, N m/rad (default: "
+                                   "the inner loop's)")
+    p.add_argument("--pd-kd", help="PD baseline damping per driven joint, N m s/rad (default: "
+                                   "the inner loop's)")
+    p.add_argument("--ct-omega", type=float, default=15.0,
+                   help="computed-torque baseline bandwidth, rad/s (default %(default)s)")
+    p.add_argument("--ct-zeta", type=float, default=0.2,
+                   help="computed-torque baseline damping ratio (default %(default)s)")
+    p.add_argument("--transient", type=float, default=DEFAULT_TRANSIENT,
+                   help="seconds at the start reported separately (journals settling; "
+                        "default %(default)s)")
+    p.add_argument("--divergence-factor", type=float, default=DIVERGENCE_FACTOR,
+                   help="a run whose tip error exceeds this x the open loop's largest is "
+                        "stopped as diverged (default %(default)s)")
+    p.add_argument("--test-cases", action="store_true",
+                   help="also run PD and both internal-model controllers on the model's stored "
+                        "test excitations")
+    p.add_argument("--quiet", action="store_true", help="no progress, no report")
+    p.set_defaults(func=cmd_control)
+    return p
+
+
+@dataclass(frozen=True)
+class ControlJob:
+    """What the flags resolve to, every one checked before any loop runs."""
+
+    scene: Scene
+    model_dir: Path
+    narx: Narx
+    arx: Narx
+    settings: ControllerSettings
+    pd_kp: tuple[float, ...]
+    pd_kd: tuple[float, ...]
+    cases: list[tuple[str, Any]]
+
+
+def cmd_control(args: argparse.Namespace) -> int:
+    """``jointplay control``: validate, compile, run every controller, report and plot.
+
+    Exit status 3 when an internal-model controller diverged."""
+    job = control_job(args)
+    if not args.quiet:
+        print(f"scene {job.scene.name}: reference = ideal-joint robot under the scene's "
+              f"torques; plant = compiled clearance model; controller every "
+              f"{job.scene.run.output_step:g} s")
+    comparison = compare(job.scene, job.narx, job.settings, arx=job.arx,
+                         transient=args.transient, ct_omega=args.ct_omega,
+                         ct_zeta=args.ct_zeta, pd_kp=job.pd_kp, pd_kd=job.pd_kd,
+                         quiet=args.quiet, divergence_factor=args.divergence_factor)
+    lines = report_lines(args, job, comparison)
+    warnings, diverged = stability_lines(comparison, lines)
+    if job.scene.name == "paper_4dof":
+        lines += ["", "paper (its robot, with control): max |Δp| 2.4e-4 m, max |Δv| 7.7e-3 m/s, "
+                      "acceleration error reduced tenfold"]
+    case_rows, cases_diverged = test_case_rows(args, job, comparison)
+    lines += case_rows
+    text = "\n".join(lines)
+    written = write_outputs(args, job, comparison, text)
+    if not args.quiet:
+        print(text)
+        for path in written:
+            print(f"wrote {path}")
+    for warning in warnings:
+        print(f"jointplay: warning: {warning}", file=sys.stderr)
+    return EXIT_DIVERGED if diverged or cases_diverged else 0
+
+
+def control_job(args: argparse.Namespace) -> ControlJob:
+    """Load the scene, the model and its twin; check every flag; prepare the outputs."""
+    scene = load_control_scene(args.scene, args.quiet)
+    model_dir = Path(args.model)
+    narx = load_narx(model_dir)
+    check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
+    arx = load_twin(model_dir, narx)
+    settings = settings_from_args(args, narx)
+    nj = len(scene.robot.moving_joints)
+    pd_kp = float_list(args.pd_kp, "--pd-kp", nj)
+    pd_kd = float_list(args.pd_kd, "--pd-kd", nj, positive=False)
+    check_loop_flags(args, scene)
+    if args.plot:
+        prepare_plot_dir(Path(args.plot))
+    if args.out:
+        from jointplay.results.write import check_output_path
+        from jointplay.scene.definition import scene_inputs
+
+        check_output_path(args.out, "--out",
+                          inputs=[*scene_inputs(scene), model_dir / MODEL_FILE,
+                                  model_dir / "datasets.h5"])
+    cases = test_case_scenes(model_dir, scene) if args.test_cases else []
+    return ControlJob(scene, model_dir, narx, arx, settings, pd_kp, pd_kd, cases)
+
+
+def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
+    for flag, value in (("--ct-omega", args.ct_omega), ("--ct-zeta", args.ct_zeta),
+                        ("--divergence-factor", args.divergence_factor)):
+        if not (math.isfinite(value) and value > 0):
+            raise DescriptionError(flag, f"must be a positive number, got {value}")
+    if not (math.isfinite(args.transient) and 0 <= args.transient < scene.run.t_end):
+        raise DescriptionError("--transient", f"must be in [0, run.t_end), got {args.transient}")
+
+
+def prepare_plot_dir(plot: Path) -> None:
+    if plot.exists() and not plot.is_dir():
+        raise DescriptionError("--plot", f"{plot} exists and is not a folder")
+    try:
+        plot.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise DescriptionError("--plot", f"cannot create folder {plot}: {err}") from None
+
+
+def report_lines(args: argparse.Namespace, job: ControlJob,
+                 comparison: Comparison) -> list[str]:
+    """The metrics table and every setting the runs used."""
+    settings, scene = job.settings, job.scene
+    inner = job.narx.context["plant"]["inner_loop"]
+    alpha = job.narx.context.get("training", {}).get("metrics", {}).get("residual_weight")
+    guard = (f"on (|v| <= {settings.trust_input:g} x training, range margin "
+             f"{settings.trust_range:g}, mismatch <= {settings.trust_mismatch:g}, hold "
+             f"{settings.fallback_hold})" if settings.guard else "OFF")
+    return [
+        "",
+        f"End-effector errors vs the ideal-joint robot ({scene.name}, {scene.run.t_end:g} s; "
+        "norms over x, y):",
+        "",
+        metrics_table(comparison.metrics, args.transient),
+        "",
+        f"internal-model controllers: horizon {settings.horizon}, lambda "
+        f"{settings.regularisation:g}, setpoint filter {settings.setpoint_filter:g}, mismatch "
+        f"filter {settings.mismatch_filter:g}, tracked {', '.join(settings.tracked)}; guard "
+        + guard
+        + f"; inner PD kp {inner['kp']}, kd {inner['kd']}; PD baseline kp "
+        f"{list(job.pd_kp) or inner['kp']}, kd {list(job.pd_kd) or inner['kd']}; computed "
+        f"torque omega {args.ct_omega:g} rad/s, zeta {args.ct_zeta:g}; network residual "
+        f"weight {alpha if alpha is not None else 'not recorded'}",
+        "compiled step: " + ", ".join(
+            f"{name} {us:.2f} us per call" for name, us in comparison.per_call_us.items())
+        + f" (buffer path); divergence bound {comparison.limit:.3g} m (x"
+        f"{args.divergence_factor:g} the open loop's largest tip error)",
+        "",
+        "Stability:",
+    ]
+
+
+def stability_lines(comparison: Comparison, lines: list[str]) -> tuple[list[str], bool]:
+    """Append each internal-model controller's verdict; return the warnings and whether one
+    diverged."""
+    warnings = []
+    diverged = False
+    for name in MODEL_BASED:
+        if name in comparison.runs:
+            text, warn = verdict(name, comparison.runs[name], comparison)
+            lines.append(f"- {text}")
+            diverged |= bool(comparison.runs[name].diverged)
+            if warn:
+                warnings.append(text)
+    return warnings, diverged
+
+
+def test_case_rows(args: argparse.Namespace, job: ControlJob,
+                   comparison: Comparison) -> tuple[list[str], bool]:
+    """The table of the closed loops on the stored test excitations (none without
+    --test-cases), and whether an internal-model controller diverged on one."""
+    rows, diverged = [], False
+    for label, case_scene in job.cases:
+        sub = compare(case_scene, job.narx, job.settings, arx=job.arx, transient=args.transient,
+                      controllers=("PD", LINEAR, NEURAL), quiet=True, analyse=False,
+                      compiled=comparison.controllers)
+        cells = []
+        for name in ("PD", LINEAR, NEURAL):
+            mt = sub.metrics.get(name)
+            cells += [f"{mt['max_position']:.3g}" if mt else "-",
+                      f"{mt['max_velocity_after']:.3g}" if mt else "-"]
+        model_runs = [sub.runs[n] for n in MODEL_BASED if n in sub.runs]
+        states = ["DIVERGED" if run.diverged else "bounded" for run in model_runs]
+        diverged |= any(run.diverged for run in model_runs)
+        rows.append(f"| {label} | " + " | ".join(cells) + f" | {', '.join(states)} |")
+    if not rows:
+        return [], diverged
+    return ["", "Closed loop on the stored test excitations (never used in training; "
+                "max |Δp| [m], max |Δv| after the transient [m/s]):", "",
+            "| case | PD Δp | PD Δv | ARX-IMC Δp | ARX-IMC Δv | neural Δp | neural Δv | "
+            "ARX-IMC, neural |", "|---|---|---|---|---|---|---|---|", *rows], diverged
+
+
+def write_outputs(args: argparse.Namespace, job: ControlJob, comparison: Comparison,
+                  text: str) -> list[str]:
+    """Figures and control.md under --plot, the runs in --out; the paths written."""
+    written = []
+    if args.plot:
+        from jointplay.neural.control_plots import plot_comparison
+
+        plot = Path(args.plot)
+        written += [str(p) for p in plot_comparison(comparison, job.scene, plot)]
+        atomic_write_text(plot / "control.md", text.strip() + "\n")
+        written.append(str(plot / "control.md"))
+    if args.out:
+        write_runs(Path(args.out), comparison,
+                   {"settings": asdict(job.settings), "scene": job.scene.name,
+                    "per_call_us": comparison.per_call_us,
+                    "nominal_radius": comparison.nominal_radius,
+                    "network_checksum": job.narx.checksum(),
+                    "arx_checksum": job.arx.checksum()})
+        written.append(args.out)
+    return written

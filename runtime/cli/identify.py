@@ -1,0 +1,132 @@
+"""``jointplay identify``: validate every flag, then simulate the excitation runs, train the
+network and write the model folder (the work itself: :mod:`jointplay.neural.identify`)."""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from jointplay.cli.args import check_writable_dir
+from jointplay.cli.neural_args import (
+    add_identify_data_arguments,
+    add_iterations_argument,
+    check_duration,
+    float_list,
+    int_list,
+    iteration_counts,
+    load_control_scene,
+    neural_scene_argument,
+    trajectory_counts,
+)
+from jointplay.common import limits as size_limits
+from jointplay.common.errors import DescriptionError
+from jointplay.neural.identify import (
+    DEFAULT_KD,
+    DEFAULT_KP,
+    LIMIT_FACTOR,
+    REPORT_FILE,
+    IdentifyConfig,
+    ModelRejected,
+    default_limits,
+    identify,
+)
+
+if TYPE_CHECKING:
+    from jointplay.scene.definition import Scene
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    """Add ``identify`` to a ``jointplay`` argument parser's subcommands."""
+    p = subparsers.add_parser(
+        "identify", help="simulate excitation runs and train the NARX network for the "
+                         "neural controller",
+        description="Simulate the clearance robot (under the inner PD loop) with excitation "
+                    "torques, train a NARX network on the deviations from the ideal robot, "
+                    "report one-step and free-run errors on unseen test runs against "
+                    "persistence and a linear ARX model, and write MODEL_DIR.")
+    neural_scene_argument(p)
+    p.add_argument("--out", required=True, metavar="MODEL_DIR",
+                   help="folder for narx.json, datasets.h5, metrics.json and report.md")
+    add_identify_data_arguments(p)
+    p.add_argument("--lags", default="2,2", help="output lags,input lags (default 2,2)")
+    p.add_argument("--hidden", default="13,14", help="hidden layer widths (default 13,14)")
+    add_iterations_argument(p, "--iterations",
+                            "L-BFGS iterations: one-step phase, free-run phase (default "
+                            "%(default)s; early stopping may end either sooner)")
+    p.add_argument("--window", type=int, default=IdentifyConfig.window,
+                   help="samples per free-run training window (default %(default)s)")
+    p.add_argument("--no-linear-path", action="store_true",
+                   help="no linear direct path beside the hidden layers (the bare network)")
+    p.add_argument("--kp", help=f"inner-loop PD stiffness per driven joint, N m/rad (default "
+                                f"{DEFAULT_KP:g})")
+    p.add_argument("--kd", help=f"inner-loop PD damping per driven joint, N m s/rad (default "
+                                f"{DEFAULT_KD:g})")
+    p.add_argument("--torque-limit", help=f"actuator limits per driven joint, N m (default "
+                                          f"{LIMIT_FACTOR:g} x the scene's peak torque)")
+    p.add_argument("--seed", type=int, default=0, help="seed of everything random (default 0)")
+    p.add_argument("--workers", type=int, default=0,
+                   help="processes simulating trajectories (default: one per core, at most 4)")
+    p.add_argument("--quiet", action="store_true", help="no progress bars, no report")
+    p.set_defaults(func=cmd_identify)
+    return p
+
+
+def cmd_identify(args: argparse.Namespace) -> int:
+    """``jointplay identify``: validate everything, then simulate, train and write."""
+    scene = load_control_scene(args.scene, args.quiet)
+    out = Path(args.out)
+    check_writable_dir(out, "--out")
+    config = identify_config(args, scene)
+    check_scene_for(config, scene)
+    started = time.perf_counter()
+    try:
+        identify(scene, out, config, quiet=args.quiet)
+    except ModelRejected:
+        if not args.quiet:
+            print((out / REPORT_FILE).read_text(encoding="utf-8"))
+        raise
+    if not args.quiet:
+        print((out / REPORT_FILE).read_text(encoding="utf-8"))
+        print(f"wrote {out}/narx.json, datasets.h5, metrics.json, report.md in "
+              f"{time.perf_counter() - started:.1f} s")
+    return 0
+
+
+def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
+    """The configuration the flags give, every flag checked and named when refused."""
+    n = len(scene.robot.moving_joints)
+    lags = int_list(args.lags, "--lags", 2, high=size_limits.MAX_LAGS)
+    hidden = int_list(args.hidden, "--hidden", high=size_limits.MAX_HIDDEN_WIDTH)
+    if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:
+        raise DescriptionError("--hidden", f"gives {len(hidden)} layers; at most "
+                               f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
+    iters = iteration_counts(args.iterations, "--iterations", high=size_limits.MAX_ITERATIONS)
+    counts = trajectory_counts(args)
+    if sum(counts) > size_limits.MAX_TRAJECTORIES:
+        raise DescriptionError("--train/--validation/--test", f"{sum(counts)} trajectories in "
+                               f"all; at most {size_limits.MAX_TRAJECTORIES} are allowed")
+    for flag, value, low, high in (("--window", args.window, 2, size_limits.MAX_WINDOW),
+                                   ("--workers", args.workers, 0, size_limits.MAX_WORKERS)):
+        if not low <= value <= high:
+            raise DescriptionError(flag, f"must be an integer from {low} to {high}, got {value}")
+    check_duration(args.duration, counts, lags, scene.run.output_step)
+    return IdentifyConfig(
+        duration=args.duration, n_train=counts[0], n_validation=counts[1], n_test=counts[2],
+        output_lags=lags[0], input_lags=lags[1], hidden=hidden, seed=args.seed,
+        kp=float_list(args.kp, "--kp", n), kd=float_list(args.kd, "--kd", n, positive=False),
+        torque_limit=float_list(args.torque_limit, "--torque-limit", n),
+        one_step_iterations=iters[0], multi_step_iterations=iters[1],
+        window=args.window, workers=args.workers, linear_path=not args.no_linear_path)
+
+
+def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:
+    """What depends on the scene fails now, before any work: the default torque limits and
+    the run at the trajectories' duration."""
+    if not config.torque_limit:
+        default_limits(scene)
+    try:
+        scene.with_run(t_end=config.duration)
+    except DescriptionError as err:
+        raise DescriptionError("--duration", err.message) from None

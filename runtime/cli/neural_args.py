@@ -1,0 +1,200 @@
+"""What ``jointplay identify``, ``control`` and ``control-study`` share: their scene, number
+lists given per driven joint, the data and training flags of identification, and the
+controller's tuning flags. Every flag is declared here once; a command picks the ones it has.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from typing import TYPE_CHECKING, Any
+
+from jointplay.common import limits as size_limits
+from jointplay.common.errors import DescriptionError
+from jointplay.neural.identify import IdentifyConfig
+from jointplay.neural.imc import ControllerSettings, resolve_settings
+
+if TYPE_CHECKING:
+    from jointplay.neural.narx import Narx
+    from jointplay.scene.definition import Scene
+
+
+# ---- the scene ----------------------------------------------------------------------------------
+
+def neural_scene_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("scene", nargs="?", help="scene file (TOML); default: the paper scene")
+
+
+def load_control_scene(path: str | None, quiet: bool = False) -> Scene:
+    """The scene of a command; closed loops step with an adaptive integrator."""
+    from jointplay.scene.definition import ADAPTIVE, default_scene, load_scene
+
+    scene = load_scene(path) if path else default_scene()
+    if not scene.robot.drive or not scene.robot.moving_joints:
+        raise DescriptionError("scene", "the robot has no driven joints to control")
+    if scene.run.integrator not in ADAPTIVE:
+        if not quiet:
+            print(f"note: run.integrator {scene.run.integrator!r} cannot be stepped sample by "
+                  "sample with added torques; using bdf")
+        scene = scene.with_run(integrator="bdf")
+    return scene
+
+
+# ---- number lists ---------------------------------------------------------------------------
+
+def float_list(text: str | None, flag: str, count: int | None = None,
+               positive: bool = True) -> tuple[float, ...]:
+    """``"1,2"`` to finite numbers (> 0, or >= 0 when not ``positive``); with ``count``, one
+    value stands for every driven joint. ``None`` (flag not given) is the empty tuple."""
+    if text is None:
+        return ()
+    try:
+        values = tuple(float(v) for v in text.split(",") if v.strip())
+    except ValueError:
+        raise DescriptionError(flag, f"expects comma-separated numbers, got {text!r}") from None
+    if not values or not all(math.isfinite(v) for v in values):
+        raise DescriptionError(flag, f"expects finite numbers, got {text!r}")
+    if positive and not all(v > 0 for v in values):
+        raise DescriptionError(flag, f"every value must be > 0, got {text!r}")
+    if not positive and not all(v >= 0 for v in values):
+        raise DescriptionError(flag, f"every value must be >= 0, got {text!r}")
+    if count is not None and len(values) not in (1, count):
+        raise DescriptionError(flag, f"give one value, or one per driven joint ({count}), got "
+                               f"{len(values)}")
+    return values * count if count is not None and len(values) == 1 else values
+
+
+def int_list(text: str, flag: str, size: int | None = None, low: int = 1,
+             high: int | None = None) -> tuple[int, ...]:
+    """``"13,14"`` to integers >= ``low`` (and <= ``high``), exactly ``size`` of them if given."""
+    try:
+        values = tuple(int(v) for v in text.split(",") if v.strip())
+    except ValueError:
+        raise DescriptionError(flag, f"expects comma-separated integers, got {text!r}") from None
+    if not values or any(v < low for v in values) or (size is not None and len(values) != size):
+        what = f"{size} integers" if size else "integers"
+        raise DescriptionError(flag, f"expects {what} >= {low}, got {text!r}")
+    if high is not None and max(values) > high:
+        raise DescriptionError(flag, f"every value must be at most {high}, got {text!r}")
+    return values
+
+
+# ---- identification: data and training ------------------------------------------------------
+
+COUNTS_FLAG = "--train/--validation/--test"
+_D = IdentifyConfig
+# flag -> (type, default, help in ``identify``, help in ``control-study``, where the flags
+# are the data of the models the study identifies)
+_DATA_FLAGS: dict[str, tuple[Any, Any, str, str]] = {
+    "--train": (int, _D.n_train, "training trajectories (default %(default)s)",
+                f"identify: training runs (default {_D.n_train})"),
+    "--validation": (int, _D.n_validation,
+                     "validation trajectories, for early stopping (default %(default)s)",
+                     f"identify: validation runs (default {_D.n_validation})"),
+    "--test": (int, _D.n_test, "test trajectories (default %(default)s)",
+               f"identify: test runs (default {_D.n_test})"),
+    "--duration": (float, _D.duration, "seconds per trajectory (default %(default)s)",
+                   f"identify: seconds per run (default {_D.duration:g})"),
+}
+ITERATIONS_DEFAULT = f"{_D.one_step_iterations},{_D.multi_step_iterations}"
+
+
+def add_identify_data_arguments(parser: argparse.ArgumentParser, *, study: bool = False) -> None:
+    """--train, --validation, --test, --duration: the trajectories identification simulates."""
+    for flag, (kind, default, own_help, study_help) in _DATA_FLAGS.items():
+        parser.add_argument(flag, type=kind, default=default,
+                            help=study_help if study else own_help)
+
+
+def add_iterations_argument(parser: argparse.ArgumentParser, flag: str, text: str) -> None:
+    parser.add_argument(flag, default=ITERATIONS_DEFAULT, help=text)
+
+
+def trajectory_counts(args: argparse.Namespace) -> tuple[int, ...]:
+    """Training, validation and test trajectories, each at least 1."""
+    return int_list(f"{args.train},{args.validation},{args.test}", COUNTS_FLAG)
+
+
+def iteration_counts(text: str, flag: str, high: int | None = None) -> tuple[int, ...]:
+    """L-BFGS iterations of the one-step and the free-run phase (0 skips a phase)."""
+    return int_list(text, flag, 2, low=0, high=high)
+
+
+def check_duration(duration: float, counts: tuple[int, ...], lags: tuple[int, ...],
+                   dt: float) -> None:
+    """Seconds per trajectory: positive, within the limits, long enough for the lags."""
+    if not (isinstance(duration, float) and math.isfinite(duration) and duration > 0):
+        raise DescriptionError("--duration", f"must be a positive number of seconds, got "
+                               f"{duration!r}")
+    if duration > size_limits.MAX_T_END:
+        raise DescriptionError("--duration", f"must be at most {size_limits.MAX_T_END:g} s, got "
+                               f"{duration:g}")
+    samples = sum(counts) * duration / dt
+    if samples > size_limits.MAX_IDENTIFY_SAMPLES:
+        raise DescriptionError("--duration", f"{sum(counts)} trajectories of {duration:g} s "
+                               f"at {dt:g} s per sample are {samples:.3g} "
+                               f"samples; at most {size_limits.MAX_IDENTIFY_SAMPLES} are allowed")
+    if round(duration / dt) < max(lags) + 2 + round(0.05 / dt):
+        raise DescriptionError("--duration", f"{duration:g} s is too short for lags "
+                               f"{lags} at {dt:g} s per sample after the 0.05 s transient")
+
+
+# ---- the controller's tuning ----------------------------------------------------------------
+
+def add_settings_arguments(p: argparse.ArgumentParser, d: ControllerSettings) -> None:
+    """The controller's tuning flags (``control`` and ``control-study``)."""
+    p.add_argument("--horizon", type=int, default=d.horizon,
+                   help="samples ahead the prediction is matched (default %(default)s)")
+    p.add_argument("--lambda", dest="lambda_", type=float, default=d.regularisation,
+                   help="regularisation of the inverse (default %(default)s)")
+    p.add_argument("--setpoint-filter", type=float, default=d.setpoint_filter,
+                   help="a in y_d(k+1) = a y_d(k) + (1 - a) r(k+1) (default %(default)s)")
+    p.add_argument("--mismatch-filter", type=float, default=d.mismatch_filter,
+                   help="b of the first-order mismatch filter (default %(default)s)")
+    p.add_argument("--iterations", type=int, default=d.iterations,
+                   help="linearisations per step (default %(default)s: the AIMNC law)")
+    p.add_argument("--track", help="outputs the controller matches, e.g. q2,q3 (default: the "
+                                   "end effector's position and velocity along the axis the "
+                                   "torques move it most, and the last joint's angle and "
+                                   "speed)")
+    p.add_argument("--scales", help="error of each tracked output that counts as 1 (default: "
+                                    "its spread in the training data)")
+    p.add_argument("--torque-limit", help="actuator limits per driven joint, N m (default: "
+                                          "the model's)")
+    p.add_argument("--rate-limit", help="limit on the outer loop's torque rate per driven "
+                                        "joint, N m/s (default: 10 x the torque limit)")
+    p.add_argument("--no-guard", action="store_true",
+                   help="run the network without its trust region and fallback (to see what "
+                        "the guard prevents; a diverging loop is still stopped and reported)")
+    p.add_argument("--trust-input", type=float, default=d.trust_input,
+                   help="|v| kept within this x the largest |v| in training (default "
+                        "%(default)s)")
+    p.add_argument("--trust-range", type=float, default=d.trust_range,
+                   help="the internal model's regressor and prediction must stay in the "
+                        "training range widened by this x its width (default %(default)s)")
+    p.add_argument("--trust-mismatch", type=float, default=d.trust_mismatch,
+                   help="largest scaled mismatch on a tracked output before the network is "
+                        "distrusted (default %(default)s)")
+    p.add_argument("--engage", type=float, default=None,
+                   help="seconds the outer loop waits at the start, the inner PD alone, before "
+                        "it starts its models from the measured history (default: twice the "
+                        "start-up the model's training runs left out, 0.1 s)")
+    p.add_argument("--fallback-hold", type=int, default=d.fallback_hold,
+                   help="samples on the fallback after a first intervention, doubling with "
+                        "each further one (default %(default)s)")
+
+
+def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> ControllerSettings:
+    """The settings the flags give; resolved against ``narx`` when given (defaults filled
+    from it, every value checked), else as given (each model resolves them for itself)."""
+    tracked = tuple(n.strip() for n in args.track.split(",") if n.strip()) if args.track else ()
+    settings = ControllerSettings(
+        horizon=args.horizon, regularisation=args.lambda_, setpoint_filter=args.setpoint_filter,
+        mismatch_filter=args.mismatch_filter, tracked=tracked,
+        scales=float_list(args.scales, "--scales"),
+        torque_limit=float_list(args.torque_limit, "--torque-limit"),
+        rate_limit=float_list(args.rate_limit, "--rate-limit"), iterations=args.iterations,
+        guard=not args.no_guard, trust_input=args.trust_input, trust_range=args.trust_range,
+        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold,
+        engage=args.engage)
+    return resolve_settings(narx, settings) if narx is not None else settings

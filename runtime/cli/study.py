@@ -1,0 +1,225 @@
+"""``jointplay control-study``: the controllers over training seeds, trajectories and
+clearances, the median and the worst seed (the study itself: :mod:`jointplay.neural.study`).
+
+Exit status 3 when an internal-model run diverged."""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import json
+import math
+import os
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from jointplay.cli.neural_args import (
+    add_identify_data_arguments,
+    add_iterations_argument,
+    add_settings_arguments,
+    float_list,
+    iteration_counts,
+    load_control_scene,
+    neural_scene_argument,
+    settings_from_args,
+    trajectory_counts,
+)
+from jointplay.common.errors import DescriptionError
+from jointplay.common.files import atomic_write_text
+from jointplay.neural.control import MODEL_BASED, load_twin
+from jointplay.neural.imc import ControllerSettings
+from jointplay.neural.narx import load_narx
+from jointplay.neural.study import (
+    _JOBS,
+    CASES,
+    REPORTED,
+    Case,
+    _pool_map,
+    case_list,
+    case_scene,
+    ensure_models,
+    goal_checks,
+    nominal_clearance,
+    plot_study,
+    summarise,
+    summary_table,
+)
+
+if TYPE_CHECKING:
+    from jointplay.scene.definition import Scene
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    """Add ``control-study`` to a ``jointplay`` argument parser's subcommands."""
+    p = subparsers.add_parser(
+        "control-study", help="the controllers over training seeds, trajectories and "
+                              "clearances: median and worst case",
+        description="Identify a model per seed (and per clearance), run every controller on "
+                    "several trajectories and loop conditions, report the median and the worst "
+                    "seed per controller, check the goals and plot. Exit status 3 when an "
+                    "internal-model run diverged.")
+    neural_scene_argument(p)
+    p.add_argument("--out", required=True, metavar="DIR",
+                   help="folder for models/, study.md, study.csv, study.json and the plots")
+    p.add_argument("--seeds", type=int, default=3,
+                   help="training seeds at the scene's clearance (default %(default)s)")
+    p.add_argument("--cases", default=",".join(CASES),
+                   help=f"cases to run (default: all: {','.join(CASES)})")
+    p.add_argument("--clearances", help="other radial clearances, m, e.g. 10e-6,60e-6 "
+                                        "(each identified again)")
+    p.add_argument("--clearance-seeds", type=int, default=2,
+                   help="seeds per other clearance (default %(default)s)")
+    p.add_argument("--workers", type=int, default=min(2, os.cpu_count() or 1),
+                   help="processes for the closed-loop runs (default %(default)s)")
+    add_identify_data_arguments(p, study=True)
+    add_iterations_argument(p, "--identify-iterations",
+                            "identify: L-BFGS iterations (default %(default)s)")
+    add_settings_arguments(p, ControllerSettings())
+    p.add_argument("--quiet", action="store_true", help="no progress, no report")
+    p.set_defaults(func=cmd_study)
+    return p
+
+
+@dataclass(frozen=True)
+class StudyPlan:
+    """What the flags resolve to, checked before any model is identified."""
+
+    scene: Scene
+    out: Path
+    cases: list[Case]
+    scenes: dict[str, Scene]
+    nominal: float
+    identify_args: dict[str, Any]
+
+
+def cmd_study(args: argparse.Namespace) -> int:
+    """``jointplay control-study``: identify, run every case, summarise, check and plot."""
+    plan = study_plan(args)
+    plan.out.mkdir(parents=True, exist_ok=True)
+    started = time.perf_counter()
+    models = identify_models(args, plan)
+    # Checked against the first model; each model then fills the defaults (tracked outputs,
+    # their scales) from its own training data.
+    resolved = settings_from_args(args, load_narx(models[plan.nominal][0]))
+    settings = settings_from_args(args, None)
+    compile_all(models, settings)
+    rows = run_cases(args, plan, models, settings)
+    summary = summarise(rows)
+    text = "\n".join([
+        f"# Controller study: {plan.scene.name}",
+        "",
+        f"{args.seeds} training seeds at {plan.nominal * 1e6:g} µm ("
+        f"{', '.join(f'{size * 1e6:g} µm: {len(p)}' for size, p in models.items())} usable "
+        "models); "
+        f"cases: {', '.join(c.name for c in plan.cases)}; controller settings: horizon "
+        f"{resolved.horizon}, guard {'on' if resolved.guard else 'OFF'}. Baselines run once per "
+        "case (they do not depend on the seed). Worst = the largest value over the seeds.",
+        "",
+        summary_table(summary, plan.cases),
+        "",
+        "Goals:",
+        "",
+        *goal_checks(summary, plan.cases),
+        "",
+        f"Wall time {time.perf_counter() - started:.0f} s.",
+    ])
+    written = write_study(plan, rows, summary, text)
+    if not args.quiet:
+        print(text)
+        for path in written:
+            print(f"wrote {path}")
+    diverged = any(r["diverged"] > 0 for r in rows if r["controller"] in MODEL_BASED)
+    return 3 if diverged else 0
+
+
+def study_plan(args: argparse.Namespace) -> StudyPlan:
+    """The scene, the cases and the identification settings, every flag checked."""
+    scene = load_control_scene(args.scene, args.quiet)
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        raise DescriptionError("--out", f"{out} exists and is not a folder")
+    if args.seeds < 1:
+        raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
+    names = tuple(c.strip() for c in args.cases.split(",") if c.strip())
+    unknown = [c for c in names if c not in CASES]
+    if unknown or not names:
+        raise DescriptionError("--cases", f"unknown case(s) {unknown}; choose from "
+                               f"{', '.join(CASES)}")
+    nominal = nominal_clearance(scene)
+    clearances = float_list(args.clearances, "--clearances") if args.clearances else ()
+    counts = trajectory_counts(args)
+    iters = iteration_counts(args.identify_iterations, "--identify-iterations")
+    identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
+                     "duration": args.duration, "one_step_iterations": iters[0],
+                     "multi_step_iterations": iters[1]}
+    cases = case_list(scene, names, clearances, nominal)
+    scenes = {c.name: case_scene(scene, c) for c in cases}
+    return StudyPlan(scene, out, cases, scenes, nominal, identify_args)
+
+
+def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, list[Path]]:
+    """Usable model folders per clearance (all seeds at the scene's, fewer at the others)."""
+    models: dict[float, list[Path]] = {}
+    for size in sorted({c.clearance for c in plan.cases}):
+        n = args.seeds if math.isclose(size, plan.nominal, rel_tol=1e-9) else min(
+            args.seeds, args.clearance_seeds)
+        robot_scene = plan.scenes[next(k.name for k in plan.cases if k.clearance == size)]
+        models[size] = ensure_models(robot_scene, plan.out / "models" / f"{size * 1e6:g}um", n,
+                                     plan.identify_args, args.quiet)
+    if not models[plan.nominal]:
+        raise DescriptionError("--seeds", "no seed gave a usable model; see the reports in "
+                               f"{plan.out / 'models'}")
+    return models
+
+
+def compile_all(models: dict[float, list[Path]], settings: ControllerSettings) -> None:
+    """Compile every controller once, before the workers fork (they then load it from the
+    cache instead of compiling it twice at the same time)."""
+    from jointplay.neural.imc import compile_controller
+
+    for paths in models.values():
+        for path in paths:
+            narx = load_narx(path)
+            arx = load_twin(path, narx)
+            compile_controller(narx, settings, fallback=arx)
+            compile_controller(arx, settings)
+
+
+def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, list[Path]],
+              settings: ControllerSettings) -> list[dict[str, Any]]:
+    """The baselines once per case, then both internal-model controllers per case and seed
+    (bounded by the baselines' divergence limit); one row per run."""
+    _JOBS.clear()
+    for c in plan.cases:
+        _JOBS.append((c, plan.scenes[c.name], None, settings, None))
+    base_rows = _pool_map(list(range(len(_JOBS))), args.workers, args.quiet, "baselines")
+    rows = [r for rs in base_rows for r in rs]
+    limits = {r["case"]: r["limit"] for r in rows if "limit" in r}
+    start = len(_JOBS)
+    for c in plan.cases:
+        for path in models[c.clearance]:
+            _JOBS.append((c, plan.scenes[c.name], path, settings, limits[c.name]))
+    model_rows = _pool_map(list(range(start, len(_JOBS))), args.workers, args.quiet,
+                           "internal-model runs")
+    return rows + [r for rs in model_rows for r in rs]
+
+
+def write_study(plan: StudyPlan, rows: list[dict[str, Any]],
+                summary: dict[tuple[str, str], dict[str, Any]], text: str) -> list[Path]:
+    """study.csv, study.md, study.json and the plots; the paths written."""
+    out = plan.out
+    buf = io.StringIO()
+    fields = ["case", "clearance_um", "controller", "seed", *REPORTED]
+    writer = csv.DictWriter(buf, fieldnames=fields, extrasaction="ignore")
+    writer.writeheader()
+    writer.writerows(rows)
+    atomic_write_text(out / "study.csv", buf.getvalue())
+    atomic_write_text(out / "study.md", text + "\n")
+    atomic_write_text(out / "study.json", json.dumps(
+        {"rows": rows, "summary": {f"{k[0]} / {k[1]}": v for k, v in summary.items()}},
+        indent=1, default=float) + "\n")
+    return [out / "study.md", out / "study.csv", out / "study.json",
+            *plot_study(rows, cases=plan.cases, folder=out)]

@@ -1,0 +1,35 @@
+"""The settings of one identification: the data it simulates and the training (all seeded)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class IdentifyConfig:
+    """Everything that decides the data and the training (all seeded by ``seed``)."""
+
+    duration: float = 2.0  # s per trajectory
+    n_train: int = 12
+    n_validation: int = 3
+    n_test: int = 3
+    output_lags: int = 2
+    input_lags: int = 2
+    hidden: tuple[int, ...] = (13, 14)
+    seed: int = 0
+    kp: tuple[float, ...] = ()  # empty: DEFAULT_KP on every moving joint
+    kd: tuple[float, ...] = ()
+    torque_limit: tuple[float, ...] = ()  # empty: LIMIT_FACTOR x the scene's peak torques
+    base_fraction: float = 0.5  # peak of the base excitation torques, x the limit
+    input_fraction: float = 0.03  # peak of the added-torque excitation, x the limit
+    transient: float = 0.05  # s at the start of each trajectory left out (journals settling)
+    linear_path: bool = True  # a linear direct path beside the hidden layers
+    one_step_iterations: int = 60
+    multi_step_iterations: int = 30
+    window: int = 200  # samples per free-run training window
+    patience: int = 8
+    workers: int = 0  # 0: one per core, at most 4
+
+
+
+__all__ = ["IdentifyConfig"]

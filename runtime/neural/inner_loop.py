@@ -1,0 +1,110 @@
+"""The plant identification sees: the clearance robot under a fixed inner loop (a PD on the
+moving joints around the ideal robot's motion, the scene's torques as feedforward). Its input
+is the torque added to the PD's; its outputs are the deviations from the ideal robot of the
+moving joints' angles and speeds and of the end effector's position, velocity and
+acceleration."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from jointplay.common.errors import DescriptionError
+from jointplay.scene.expressions import TimeFunction
+
+# Inner-loop defaults. The derivative gain is bounded by the journal: out of contact a link
+# turns about its own centre of mass, with an effective inertia ~50x smaller than when pinned,
+# and a sampled derivative gain near that inertia / sample period makes the loop chatter.
+DEFAULT_KP = 200.0  # N m/rad
+DEFAULT_KD = 5.0  # N m s/rad
+# Torque limit of each actuator, as a multiple of the scene's peak torque on that joint.
+LIMIT_FACTOR = 2.5
+
+
+@dataclass(frozen=True)
+class InnerLoop:
+    """PD on the moving joints around the reference motion: tau = -kp dq_err - kd d(dq)."""
+
+    joints: tuple[int, ...]
+    kp: tuple[float, ...]
+    kd: tuple[float, ...]
+
+    def torque(self, deviation: np.ndarray) -> np.ndarray:
+        n = len(self.joints)
+        return -np.asarray(self.kp) * deviation[:n] - np.asarray(self.kd) * deviation[n:2 * n]
+
+
+def output_names(joints: Sequence[int]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """Names and units of the plant's outputs (deviations from the ideal robot)."""
+    names = [f"q{j}" for j in joints] + [f"dq{j}" for j in joints] + \
+        ["tip_x", "tip_y", "tip_vx", "tip_vy", "tip_ax", "tip_ay"]
+    units = ["rad"] * len(joints) + ["rad/s"] * len(joints) + \
+        ["m", "m", "m/s", "m/s", "m/s^2", "m/s^2"]
+    return tuple(names), tuple(units)
+
+
+def output_increments(names: Sequence[str]) -> tuple[bool, ...]:
+    """Angles, speeds, positions and velocities integrate the input: predicted as increments.
+    Accelerations follow the torque directly: predicted as values."""
+    return tuple(not n.startswith("tip_a") for n in names)
+
+
+def input_names(joints: Sequence[int]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    return tuple(f"v{j}" for j in joints), tuple("N m" for _ in joints)
+
+
+def measure(stepper: Any, angle_index: Sequence[int]) -> np.ndarray:
+    """The plant's outputs (absolute) at the stepper's current sample."""
+    x = stepper.x
+    n = stepper.model.n_coordinates
+    ee = stepper.end_effector()
+    return np.concatenate([x[list(angle_index)], x[[n + i for i in angle_index]],
+                           ee["position"], ee["velocity"], ee["acceleration"]])
+
+
+def reference_outputs(ideal: Any) -> np.ndarray:
+    """The same outputs for a simulated ideal-joint robot (rows: samples)."""
+    return np.hstack([ideal.q, ideal.u, ideal.tip_position, ideal.tip_velocity,
+                      ideal.tip_acceleration])
+
+
+def default_limits(scene: Any) -> np.ndarray:
+    """Actuator torque limits: LIMIT_FACTOR x the scene's peak torque on each joint."""
+    t = np.linspace(0.0, scene.run.t_end, scene.run.n_outputs + 1)
+    peaks = np.array([float(np.max(np.abs(f.numpy(t)))) for f in scene.torques])
+    if peaks.size == 0 or not np.all(peaks > 0):
+        raise DescriptionError("--torque-limit", "the scene has no torque on some driven joint, "
+                               "so no default actuator limit can be inferred; give one per "
+                               "driven joint, e.g. --torque-limit 10,5 (N m)")
+    return LIMIT_FACTOR * peaks
+
+
+def with_torques(scene: Any, torques: Sequence[TimeFunction]) -> Any:
+    """The scene with other drive torques (and texts saying where they came from)."""
+    return replace(scene, torques=tuple(torques),
+                   torque_text={f"joint{j}": "excitation" for j in scene.robot.moving_joints})
+
+
+
+def inner_loop_for(scene: Any, kp: Sequence[float], kd: Sequence[float]) -> InnerLoop:
+    """The inner loop on the scene's moving joints; empty gains take the defaults."""
+    joints = tuple(scene.robot.moving_joints)
+    n = len(joints)
+    return InnerLoop(joints, tuple(kp) or (DEFAULT_KP,) * n, tuple(kd) or (DEFAULT_KD,) * n)
+
+
+def ideal_reference(scene: Any, ideal_model: Any | None = None) -> Any:
+    """The ideal-joint robot under the scene's torques: the motion the controller tracks."""
+    from jointplay.scene.definition import ideal_counterpart
+    from jointplay.sim import load_scene_model, simulate
+
+    model = ideal_model or load_scene_model(scene, ideal=True)
+    return simulate(scene.with_robot(ideal_counterpart(scene.robot)), model=model)
+
+
+__all__ = ["DEFAULT_KD", "DEFAULT_KP", "LIMIT_FACTOR", "InnerLoop", "default_limits",
+           "ideal_reference", "inner_loop_for", "input_names", "measure", "output_increments",
+           "output_names", "reference_outputs", "with_torques"]

@@ -1,0 +1,341 @@
+"""Training the NARX network and fitting its linear ARX twin.
+
+PyTorch, float64, CPU: one-step-ahead least squares (L-BFGS, full batch), then simulation
+error on windows of the training trajectories (the controller runs the model in free run),
+each phase stopped early on the validation loss. torch is imported inside the training
+function only, so importing jointplay does not import it. The exported weights are checked to
+reproduce torch's predictions through CasADi."""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from jointplay.neural.identify_config import IdentifyConfig
+from jointplay.neural.inner_loop import output_increments
+from jointplay.neural.narx import Narx
+from jointplay.neural.trajectories import Trajectory
+
+Segment = tuple[np.ndarray, np.ndarray]  # (deviations, added torques) of one trajectory
+
+
+# ---- regressors and the linear fit ----------------------------------------------------------
+
+def _segments(trajectories: Sequence[Trajectory], skip: int) -> list[Segment]:
+    return [(tr.deviation[skip:], tr.v[skip:]) for tr in trajectories]
+
+
+def _regress(segments: Sequence[Segment], na: int, nb: int,
+             carry: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Regressors and targets (increments where ``carry`` is 1, values where 0)."""
+    m = max(na, nb) - 1
+    xs, ts = [], []
+    for d, u in segments:
+        n = d.shape[0]
+        rows = [d[m - i: n - 1 - i] for i in range(na)] + [u[m - i: n - 1 - i] for i in range(nb)]
+        xs.append(np.concatenate(rows, axis=1))
+        ts.append(d[m + 1:] - carry * d[m: n - 1])
+    return np.vstack(xs), np.vstack(ts)
+
+
+def _least_squares(z: np.ndarray, t: np.ndarray, ridge: float) -> np.ndarray:
+    a = np.hstack([z, np.ones((z.shape[0], 1))])
+    return np.linalg.solve(a.T @ a + ridge * np.eye(a.shape[1]), a.T @ t)
+
+
+def _scale(std: np.ndarray) -> np.ndarray:
+    """Standard deviations floored so that constant columns normalise to themselves."""
+    return np.where(std > 1e-300, std, 1.0)
+
+
+def fit_arx(segments: Sequence[Segment], names: dict[str, Any],
+            na: int, nb: int, dt: float, ridge: float = 1e-9) -> Narx:
+    """The linear ARX baseline on the same regressor, by least squares (a network with no
+    hidden layer, so it runs through the same code)."""
+    carry = np.asarray(output_increments(names["output_names"]), dtype=float)
+    x, t = _regress(segments, na, nb, carry)
+    mu, sigma = x.mean(0), _scale(x.std(0))
+    tm, ts = t.mean(0), _scale(t.std(0))
+    theta = _least_squares((x - mu) / sigma, (t - tm) / ts, ridge)
+    return Narx(weights=(theta[:-1].T.copy(),), biases=(theta[-1].copy(),), regressor_mean=mu,
+                regressor_scale=sigma, increment_mean=tm, increment_scale=ts,
+                output_scale=_scale(np.vstack([d for d, _ in segments]).std(0)),
+                output_lags=na, input_lags=nb, sample_time=dt,
+                increment=tuple(bool(c) for c in carry), **names)
+
+
+# ---- the data a training sees ---------------------------------------------------------------
+
+@dataclass(frozen=True)
+class _Data:
+    """Regressors and targets of the training and validation runs, and their scales."""
+
+    segments: list[Segment]
+    validation_segments: list[Segment]
+    x: np.ndarray
+    t: np.ndarray
+    xv: np.ndarray
+    tv: np.ndarray
+    mu: np.ndarray  # regressor mean and scale
+    sigma: np.ndarray
+    tm: np.ndarray  # target mean and scale
+    ts: np.ndarray
+    ys: np.ndarray  # output scale
+    increment: tuple[bool, ...]
+
+
+def _training_data(train: Sequence[Trajectory], validation: Sequence[Trajectory],
+                   config: IdentifyConfig, names: dict[str, Any], dt: float) -> _Data:
+    skip = max(0, round(config.transient / dt))
+    seg_train, seg_val = _segments(train, skip), _segments(validation, skip)
+    increment = output_increments(names["output_names"])
+    carry = np.asarray(increment, dtype=float)
+    x, t = _regress(seg_train, config.output_lags, config.input_lags, carry)
+    xv, tv = _regress(seg_val, config.output_lags, config.input_lags, carry)
+    return _Data(seg_train, seg_val, x, t, xv, tv, x.mean(0), _scale(x.std(0)), t.mean(0),
+                 _scale(t.std(0)), _scale(np.vstack([d for d, _ in seg_train]).std(0)),
+                 increment)
+
+
+# ---- the network in torch -------------------------------------------------------------------
+
+class _Network:
+    """Hidden tanh layers, and (with ``linear_path``) a linear direct path beside them, on
+    normalised regressors; predicts the next outputs and runs itself in free run."""
+
+    def __init__(self, torch: Any, config: IdentifyConfig, data: _Data) -> None:
+        self.torch, self.dtype = torch, torch.float64
+        self.linear_path = config.linear_path
+        self.na, self.nb = config.output_lags, config.input_lags
+        self.m = max(self.na, self.nb) - 1
+        self.ny = data.t.shape[1]
+        layers: list[Any] = []
+        width = data.x.shape[1]
+        for h in config.hidden:
+            layers += [torch.nn.Linear(width, h, dtype=self.dtype), torch.nn.Tanh()]
+            width = h
+        layers.append(torch.nn.Linear(width, self.ny, dtype=self.dtype))
+        self.net = torch.nn.Sequential(*layers)
+        self.direct = torch.nn.Linear(data.x.shape[1], self.ny, bias=False, dtype=self.dtype)
+        self.params = list(self.net.parameters())
+        if self.linear_path:
+            self._start_linear(data)
+            self.params += list(self.direct.parameters())
+        self.mu, self.sigma, self.tm, self.ts, self.ys, self.carry = (
+            self.tensor(a) for a in (data.mu, data.sigma, data.tm, data.ts, data.ys,
+                                     np.asarray(data.increment, dtype=float)))
+
+    def _start_linear(self, data: _Data) -> None:
+        """Start from the least-squares linear model, with the hidden layers' output near
+        zero: training then only has to add what is nonlinear."""
+        theta = _least_squares((data.x - data.mu) / data.sigma, (data.t - data.tm) / data.ts,
+                               1e-9)
+        with self.torch.no_grad():
+            self.direct.weight.copy_(self.tensor(theta[:-1].T))
+            self.net[-1].bias.copy_(self.tensor(theta[-1]))
+            self.net[-1].weight.mul_(0.01)
+
+    def tensor(self, a: Any) -> Any:
+        return self.torch.tensor(a, dtype=self.dtype)
+
+    def out(self, z: Any) -> Any:
+        """Normalised increments (or values) from normalised regressors."""
+        return self.net(z) + self.direct(z) if self.linear_path else self.net(z)
+
+    def step(self, phi: Any) -> Any:
+        """The next outputs from a regressor."""
+        return self.carry * phi[..., :self.ny] + self.tm + self.ts * self.out(
+            (phi - self.mu) / self.sigma)
+
+    def free_run(self, d: Any, u: Any) -> Any:
+        """The model fed its own predictions, from the measured history of each window."""
+        m, torch = self.m, self.torch
+        hist = [d[:, m - i] for i in range(self.na)]
+        outs = []
+        for j in range(d.shape[1] - m - 1):
+            k = m + j
+            phi = torch.cat(hist + [u[:, k - i] for i in range(self.nb)], dim=1)
+            nxt = self.step(phi)
+            outs.append(nxt)
+            hist = [nxt, *hist[:-1]]
+        return torch.stack(outs, dim=1)
+
+    def sim_loss(self, d: Any, u: Any) -> Any:
+        return (((self.free_run(d, u) - d[:, self.m + 1:]) / self.ys) ** 2).mean()
+
+    def state(self) -> tuple[dict[str, Any], dict[str, Any]]:
+        return ({k: v.detach().clone() for k, v in self.net.state_dict().items()},
+                {k: v.detach().clone() for k, v in self.direct.state_dict().items()})
+
+    def restore(self, state: tuple[dict[str, Any], dict[str, Any]]) -> None:
+        self.net.load_state_dict(state[0])
+        self.direct.load_state_dict(state[1])
+
+    def windows(self, segments: Sequence[Segment], h: int) -> tuple[Any, Any]:
+        """Overlapping windows of ``h`` predicted samples (with the history before them)."""
+        m = self.m
+        ds, us = [], []
+        for d, u in segments:
+            for s in range(m, d.shape[0] - h, max(1, h // 2)):
+                ds.append(d[s - m: s + h + 1])
+                us.append(u[s - m: s + h + 1])
+        if not ds:  # trajectories shorter than a window: one window each, as long as it gets
+            h = min(d.shape[0] for d, _ in segments) - m - 1
+            ds = [d[: m + h + 1] for d, _ in segments]
+            us = [u[: m + h + 1] for _, u in segments]
+        return self.tensor(np.array(ds)), self.tensor(np.array(us))
+
+    def export(self, data: _Data, names: dict[str, Any], dt: float,
+               context: dict[str, Any]) -> Narx:
+        linear = [mod for mod in self.net if isinstance(mod, self.torch.nn.Linear)]
+        return Narx(weights=tuple(mod.weight.detach().numpy().astype(float).copy()
+                                  for mod in linear),
+                    biases=tuple(mod.bias.detach().numpy().astype(float).copy()
+                                 for mod in linear),
+                    regressor_mean=data.mu, regressor_scale=data.sigma,
+                    increment_mean=data.tm, increment_scale=data.ts, output_scale=data.ys,
+                    output_lags=self.na, input_lags=self.nb, sample_time=dt, context=context,
+                    increment=data.increment,
+                    linear=(self.direct.weight.detach().numpy().astype(float).copy()
+                            if self.linear_path else None), **names)
+
+
+# ---- training -------------------------------------------------------------------------------
+
+def train_narx(train: Sequence[Trajectory], validation: Sequence[Trajectory],
+               config: IdentifyConfig, names: dict[str, Any], dt: float,
+               context: dict[str, Any], quiet: bool = False) -> tuple[Narx, dict[str, Any]]:
+    """Train the network (PyTorch, float64); return the model and the loss history."""
+    import torch
+
+    threads, deterministic = torch.get_num_threads(), torch.are_deterministic_algorithms_enabled()
+    # One thread: these matrices are small, and OpenMP threads waiting on a busy machine cost
+    # ten times the arithmetic.
+    torch.set_num_threads(1)
+    torch.use_deterministic_algorithms(True)
+    torch.manual_seed(config.seed)
+    try:
+        return _train(torch, train, validation, config, names, dt, context, quiet)
+    finally:
+        torch.set_num_threads(threads)
+        torch.use_deterministic_algorithms(deterministic)
+
+
+def _train(torch: Any, train: Sequence[Trajectory], validation: Sequence[Trajectory],
+           config: IdentifyConfig, names: dict[str, Any], dt: float, context: dict[str, Any],
+           quiet: bool) -> tuple[Narx, dict[str, Any]]:
+    from tqdm import tqdm
+
+    data = _training_data(train, validation, config, names, dt)
+    net = _Network(torch, config, data)
+    history: dict[str, list[float | None]] = {"one_step_train": [], "one_step_validation": [],
+                                              "free_run_train": [], "free_run_validation": []}
+    total = config.one_step_iterations + config.multi_step_iterations
+    start = time.perf_counter()
+    with tqdm(total=total, disable=quiet, desc="training", unit="it") as bar:
+        _one_step_phase(torch, net, data, config, history, bar)
+        bar.n = config.one_step_iterations
+        bar.refresh()
+        if config.multi_step_iterations > 0:
+            _free_run_phase(torch, net, data, config, history, bar)
+    model = net.export(data, names, dt, context)
+    err = _export_error(torch, net, model, data)
+    history["seconds"] = [time.perf_counter() - start]
+    history["export_check"] = [err]
+    return model, history
+
+
+def _one_step_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConfig,
+                    history: dict[str, list[float | None]], bar: Any) -> None:
+    """Phase 1: one step ahead, full batch."""
+    zx, zt = net.tensor((data.x - data.mu) / data.sigma), net.tensor((data.t - data.tm) / data.ts)
+    zxv = net.tensor((data.xv - data.mu) / data.sigma)
+    ztv = net.tensor((data.tv - data.tm) / data.ts)
+    opt = torch.optim.LBFGS(net.params, lr=1.0, max_iter=20, history_size=50,
+                            line_search_fn="strong_wolfe")
+
+    def closure() -> Any:
+        opt.zero_grad()
+        loss = ((net.out(zx) - zt) ** 2).mean()
+        loss.backward()
+        return loss
+
+    def validate() -> float:
+        with torch.no_grad():
+            return float(((net.out(zxv) - ztv) ** 2).mean())
+
+    _early_stopped(opt, closure, validate, net, config.one_step_iterations, config.patience,
+                   best=math.inf, phase="one-step", history=history, bar=bar,
+                   stop_on_nonfinite=False)
+
+
+def _free_run_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConfig,
+                    history: dict[str, list[float | None]], bar: Any) -> None:
+    """Phase 2: simulation error on windows (what the controller relies on)."""
+    dw, uw = net.windows(data.segments, config.window)
+    dvw, uvw = net.windows(data.validation_segments, config.window)
+    opt = torch.optim.LBFGS(net.params, lr=1.0, max_iter=10, history_size=50,
+                            line_search_fn="strong_wolfe")
+
+    def closure() -> Any:
+        opt.zero_grad()
+        loss = net.sim_loss(dw, uw)
+        loss.backward()
+        return loss
+
+    def validate() -> float:
+        with torch.no_grad():
+            return float(net.sim_loss(dvw, uvw))
+
+    # A diverged L-BFGS step gives NaN: recorded as null (the run stops there and keeps its
+    # best state); metrics.json holds no NaN.
+    _early_stopped(opt, closure, validate, net, config.multi_step_iterations, config.patience,
+                   best=validate(), phase="free-run", history=history, bar=bar,
+                   stop_on_nonfinite=True)
+
+
+def _early_stopped(opt: Any, closure: Callable[[], Any], validate: Callable[[], float],
+                   net: _Network, iterations: int, patience: int, *, best: float, phase: str,
+                   history: dict[str, list[float | None]], bar: Any,
+                   stop_on_nonfinite: bool) -> None:
+    """Optimiser steps until ``iterations``, or ``patience`` steps without a better validation
+    loss than ``best``; the network is left at its best state."""
+    key = phase.replace("-", "_")
+    best_state, stale = net.state(), 0
+    for _ in range(iterations):
+        loss = float(opt.step(closure).detach())
+        val = validate()
+        history[f"{key}_train"].append(loss if math.isfinite(loss) else None)
+        history[f"{key}_validation"].append(val if math.isfinite(val) else None)
+        bar.update(1)
+        bar.set_postfix(phase=phase, train=f"{loss:.3g}", val=f"{val:.3g}")
+        if stop_on_nonfinite and not math.isfinite(loss):
+            break
+        if val < best * (1 - 1e-4):
+            best, best_state, stale = val, net.state(), 0
+        else:
+            stale += 1
+            if stale >= patience:
+                break
+    net.restore(best_state)
+
+
+def _export_error(torch: Any, net: _Network, model: Narx, data: _Data) -> float:
+    """float64 check: the exported weights reproduce torch's predictions through CasADi."""
+    xv = data.xv
+    with torch.no_grad():
+        ref = net.step(net.tensor(xv[:256])).numpy()
+    got = np.asarray(model.casadi_function().map(min(256, xv.shape[0]))(xv[:256].T)).T
+    err = float(np.max(np.abs(got - ref) / data.ys))
+    if not err < 1e-9:
+        raise RuntimeError(f"exported network differs from the trained one by {err:.3g} "
+                           "(output scales)")
+    return err
+
+
+__all__ = ["fit_arx", "train_narx"]

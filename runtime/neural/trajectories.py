@@ -1,0 +1,231 @@
+"""The identification data: every trajectory's excitation planned from one seeded generator
+per trajectory, then simulated (in worker processes where there are cores).
+
+Each trajectory drives the ideal robot with a base torque (the scene's own, random-phase
+multisines, amplitude-modulated steps) to get a reference motion, and the clearance robot,
+under the inner loop around that reference, with an added torque v of amplitude-modulated
+pseudo-random steps (holds from one sample up, so the response within one sample is
+identifiable) plus a random-phase multisine. Training, validation and test trajectories are
+separate realisations; the test base torques include a family never used in training (a
+swept sine)."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from jointplay.common import interrupts
+from jointplay.common.errors import DescriptionError
+from jointplay.neural.excitation import (
+    Chirp,
+    aprbs,
+    describe_torque,
+    random_multisine,
+    step_torque,
+)
+from jointplay.neural.identify_config import IdentifyConfig
+from jointplay.neural.inner_loop import (
+    InnerLoop,
+    ideal_reference,
+    measure,
+    reference_outputs,
+    with_torques,
+)
+from jointplay.scene.expressions import TimeFunction
+
+SPLITS = ("train", "validation", "test")
+TRAIN_FAMILIES = ("scene", "multisine", "steps")
+TEST_FAMILIES = ("chirp", "multisine", "steps")
+ARRAYS = ("t", "y", "r", "v", "tau_base", "tau_inner")  # a trajectory's sampled signals
+
+
+@dataclass
+class Trajectory:
+    """One identification run, sampled every ``dt``: absolute outputs ``y``, the reference's
+    ``r``, the added torque ``v`` (applied from each sample to the next), the base torque
+    (feedforward) and the inner loop's torque."""
+
+    split: str
+    family: str
+    seed: int
+    t: np.ndarray
+    y: np.ndarray
+    r: np.ndarray
+    v: np.ndarray
+    tau_base: np.ndarray
+    tau_inner: np.ndarray
+    description: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def deviation(self) -> np.ndarray:
+        return self.y - self.r
+
+
+@dataclass
+class _Task:
+    split: str
+    family: str
+    seed: int
+    scene: Any
+    v: np.ndarray
+    inner: InnerLoop
+    description: dict[str, Any]
+
+
+# ---- planning -----------------------------------------------------------------------------
+
+def _plan(scene: Any, config: IdentifyConfig, inner: InnerLoop,
+          limits: np.ndarray) -> list[_Task]:
+    """Every trajectory's excitation, drawn from one seeded generator per trajectory."""
+    run_scene = scene.with_run(t_end=config.duration)
+    tasks: list[_Task] = []
+    counts = {"train": config.n_train, "validation": config.n_validation, "test": config.n_test}
+    for s_index, split in enumerate(SPLITS):
+        families = TEST_FAMILIES if split == "test" else TRAIN_FAMILIES
+        for i in range(counts[split]):
+            seed = int(np.random.SeedSequence([config.seed, s_index, i]).generate_state(1)[0])
+            rng = np.random.default_rng(seed)
+            family = families[i % len(families)]
+            base = _base_torques(rng, family, split, scene, config, inner, limits)
+            v = _added_torque(rng, run_scene.run.n_outputs, scene.run.output_step, config,
+                              limits)
+            description = {"base": [describe_torque(f) for f in base],
+                           "added": "aprbs(1..100 samples) + multisine(0.1..10 Hz)",
+                           "added_peak": (config.input_fraction * limits).tolist()}
+            tasks.append(_Task(split, family, seed, with_torques(run_scene, base), v, inner,
+                               description))
+    return tasks
+
+
+def _base_torques(rng: np.random.Generator, family: str, split: str, scene: Any,
+                  config: IdentifyConfig, inner: InnerLoop,
+                  limits: np.ndarray) -> list[TimeFunction]:
+    """The feedforward of one trajectory: it drives the ideal robot to the reference."""
+    if family == "scene":
+        return list(scene.torques)
+    if family == "multisine":
+        band = (0.2, 4.0) if split == "test" else (0.2, 3.0)
+        return [random_multisine(rng, config.base_fraction * lim, *band, config.duration)
+                for lim in limits]
+    if family == "steps":
+        return [step_torque(rng, config.base_fraction * lim, config.duration, 0.1, 0.4, 0.01,
+                            f"joint{j}") for lim, j in zip(limits, inner.joints, strict=True)]
+    return [Chirp(0.6 * config.base_fraction * lim, 0.2, 3.0, config.duration,
+                  float(rng.uniform(0, 2 * np.pi))) for lim in limits]
+
+
+def _added_torque(rng: np.random.Generator, n: int, dt: float, config: IdentifyConfig,
+                  limits: np.ndarray) -> np.ndarray:
+    """The identified input v, per sample: pseudo-random steps plus a multisine."""
+    v = np.zeros((n + 1, len(limits)))
+    for c, lim in enumerate(limits):
+        peak = config.input_fraction * lim
+        v[:n, c] = aprbs(rng, n, 0.6 * peak, 1, 100)
+        v[:n, c] += random_multisine(rng, 0.4 * peak, 0.1, 10.0,
+                                     config.duration).numpy(np.arange(n) * dt)
+    return v
+
+
+# ---- simulating ---------------------------------------------------------------------------
+
+_MODELS: dict[str, Any] = {}
+
+
+def _models(scene: Any) -> tuple[Any, Any]:
+    from jointplay.sim import load_scene_model
+
+    key = scene.robot.structure_hash()
+    if key not in _MODELS:
+        _MODELS[key] = (load_scene_model(scene), load_scene_model(scene, ideal=True))
+    return _MODELS[key]
+
+
+def run_task(task: _Task) -> Trajectory:
+    """Simulate one identification trajectory (a worker's job)."""
+    from jointplay.sim import Stepper
+
+    clearance, ideal_model = _models(task.scene)
+    ideal = ideal_reference(task.scene, ideal_model)
+    r = reference_outputs(ideal)
+    stepper = Stepper(task.scene, model=clearance)
+    angle_index = [clearance.coordinates.index(f"q{j}") for j in task.inner.joints]
+    n = task.scene.run.n_outputs
+    y = np.zeros_like(r)
+    tau_inner = np.zeros((n + 1, len(task.inner.joints)))
+    for k in range(n + 1):
+        y[k] = measure(stepper, angle_index)
+        if k == n:
+            break
+        tau_inner[k] = task.inner.torque(y[k] - r[k])
+        stepper.step(tau_inner[k] + task.v[k])
+    return Trajectory(task.split, task.family, task.seed, ideal.t, y, r, task.v.copy(),
+                      ideal.tau.copy(), tau_inner, task.description)
+
+
+def collect(scene: Any, config: IdentifyConfig, inner: InnerLoop, limits: np.ndarray,
+            quiet: bool = False) -> list[Trajectory]:
+    """Simulate every planned trajectory, in parallel processes when there are cores."""
+    from tqdm import tqdm
+
+    tasks = _plan(scene, config, inner, limits)
+    workers = config.workers or min(4, os.cpu_count() or 1)
+    workers = max(1, min(workers, len(tasks)))
+    _models(scene)  # compile (or load) once before any worker starts
+    results: list[Trajectory] = []
+    with tqdm(total=len(tasks), disable=quiet, unit="traj", desc="simulating") as bar:
+        if workers == 1:
+            for task in tasks:
+                results.append(run_task(task))
+                bar.update(1)
+        else:
+            results = _pool_run(tasks, workers, bar)
+    return results
+
+
+def _pool_run(tasks: Sequence[_Task], workers: int, bar: Any) -> list[Trajectory]:
+    """The trajectories of ``tasks``, in order, from ``workers`` processes; Ctrl-C stops them
+    without waiting."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    # fork where there is one: no re-import of the caller's main module, and the compiled
+    # models are already loaded; workers use numpy and CasADi only.
+    methods = multiprocessing.get_all_start_methods()
+    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    # Workers leave Ctrl-C to this process, which stops them without waiting.
+    pool = ProcessPoolExecutor(workers, mp_context=context,
+                               initializer=interrupts.ignore_in_child)
+    results: list[Trajectory] = []
+    try:
+        for traj in pool.map(run_task, tasks):
+            results.append(traj)
+            bar.update(1)
+    except BaseException:
+        for process in list(getattr(pool, "_processes", {}).values()):
+            process.terminate()
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
+    return results
+
+
+def check_finite(trajectories: Sequence[Trajectory]) -> None:
+    """Refuse training data with NaN or Inf, naming the run, the sample and the column."""
+    for k, traj in enumerate(trajectories):
+        for name in ARRAYS:
+            values = np.asarray(getattr(traj, name), dtype=float)
+            bad = np.argwhere(~np.isfinite(values))
+            if bad.size:
+                where = ", column ".join(str(int(i)) for i in bad[0])
+                raise DescriptionError(
+                    "training data", f"run {k} ({traj.split}, {traj.family}) has a non-finite "
+                    f"{name} at sample {where}: identification needs finite data; check the "
+                    "scene's torques and limits")
+
+
+__all__ = ["ARRAYS", "SPLITS", "TEST_FAMILIES", "TRAIN_FAMILIES", "Trajectory", "check_finite",
+           "collect", "run_task"]
