@@ -25,8 +25,8 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from jointplay.neural.imc import (
-    ControllerSettings,
+from jointplay.neural.imc_settings import ControllerSettings
+from jointplay.neural.internal_model import (
     _inner_gains,
     affine_rollout,
     input_bound,

@@ -16,7 +16,9 @@ from typing import Any
 import numpy as np
 
 from jointplay.common.errors import SimulationError
-from jointplay.neural.imc import FLAGS, Controller, _inner_gains
+from jointplay.neural.imc import Controller
+from jointplay.neural.imc_step import FLAGS
+from jointplay.neural.internal_model import _inner_gains
 from jointplay.neural.narx import Narx
 
 
