@@ -10,11 +10,11 @@ directions through the same layers. Written as loops over the weight matrices (c
 the file, hexadecimal floats, so exact), the step is a few kilobytes of code the compiler can
 keep in cache and vectorise.
 
-The CasADi function (jointplay.neural.imc.build_step) stays the definition: the kernel is generated
-from the same model and settings, exported under the same C interface (so it loads and runs
-through the same buffers), and the tests check that the two agree to 1e-12 on random states,
-guard on and off, with and without the fallback. The kernel covers one Gauss-Newton iteration
-(the AIMNC law, the default); more iterations use CasADi's code.
+The CasADi function (jointplay.neural.imc_step.build_step) stays the definition: the kernel is
+generated from the same model and settings, exported under the same C interface (so it loads
+and runs through the same buffers), and the tests check that the two agree to 1e-12 on random
+states, guard on and off, with and without the fallback. The kernel covers one Gauss-Newton
+iteration (the AIMNC law, the default); more iterations use CasADi's code.
 """
 
 from __future__ import annotations
