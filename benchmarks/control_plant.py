@@ -21,7 +21,7 @@ from pathlib import Path
 from jointplay.common.files import atomic_write_text
 from jointplay.neural.control import NEURAL, ControllerSettings, compare, load_twin, run_metrics
 from jointplay.neural.plant import PLANT_TOLERANCE, SUBSTEPS
-from jointplay.neural.study import _dummy_model
+from jointplay.neural.study_runs import _dummy_model
 from jointplay.scene.definition import default_scene
 
 KEYS = ("max_position", "max_velocity_after", "rms_acceleration_after")

@@ -33,11 +33,9 @@ from jointplay.neural.control import MODEL_BASED, load_twin
 from jointplay.neural.imc import ControllerSettings
 from jointplay.neural.narx import load_narx
 from jointplay.neural.study import (
-    _JOBS,
     CASES,
     REPORTED,
     Case,
-    _pool_map,
     case_list,
     case_scene,
     ensure_models,
@@ -47,6 +45,7 @@ from jointplay.neural.study import (
     summarise,
     summary_table,
 )
+from jointplay.neural.study_runs import STUDY_JOBS, pool_map
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -192,17 +191,17 @@ def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, lis
               settings: ControllerSettings) -> list[dict[str, Any]]:
     """The baselines once per case, then both internal-model controllers per case and seed
     (bounded by the baselines' divergence limit); one row per run."""
-    _JOBS.clear()
+    STUDY_JOBS.clear()
     for c in plan.cases:
-        _JOBS.append((c, plan.scenes[c.name], None, settings, None))
-    base_rows = _pool_map(list(range(len(_JOBS))), args.workers, args.quiet, "baselines")
+        STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None))
+    base_rows = pool_map(list(range(len(STUDY_JOBS))), args.workers, args.quiet, "baselines")
     rows = [r for rs in base_rows for r in rs]
     limits = {r["case"]: r["limit"] for r in rows if "limit" in r}
-    start = len(_JOBS)
+    start = len(STUDY_JOBS)
     for c in plan.cases:
         for path in models[c.clearance]:
-            _JOBS.append((c, plan.scenes[c.name], path, settings, limits[c.name]))
-    model_rows = _pool_map(list(range(start, len(_JOBS))), args.workers, args.quiet,
+            STUDY_JOBS.append((c, plan.scenes[c.name], path, settings, limits[c.name]))
+    model_rows = pool_map(list(range(start, len(STUDY_JOBS))), args.workers, args.quiet,
                            "internal-model runs")
     return rows + [r for rs in model_rows for r in rs]
 

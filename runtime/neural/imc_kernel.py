@@ -10,162 +10,39 @@ directions through the same layers. Written as loops over the weight matrices (c
 the file, hexadecimal floats, so exact), the step is a few kilobytes of code the compiler can
 keep in cache and vectorise.
 
-The CasADi function (jointplay.neural.imc.build_step) stays the definition: the kernel is generated
-from the same model and settings, exported under the same C interface (so it loads and runs
-through the same buffers), and the tests check that the two agree to 1e-12 on random states,
-guard on and off, with and without the fallback. The kernel covers one Gauss-Newton iteration
-(the AIMNC law, the default); more iterations use CasADi's code.
+The CasADi function (jointplay.neural.imc_step.build_step) stays the definition: the kernel is
+generated from the same model and settings, exported under the same C interface (so it loads
+and runs through the same buffers), and the tests check that the two agree to 1e-12 on random
+states, guard on and off, with and without the fallback. The kernel covers one Gauss-Newton
+iteration (the AIMNC law, the default); more iterations use CasADi's code.
 """
 
 from __future__ import annotations
 
 import math
-from typing import Any
+from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
 
-from jointplay.neural.imc import (
-    ControllerSettings,
+from jointplay.neural.imc_settings import ControllerSettings
+from jointplay.neural.imc_step import _tracking_matrix
+from jointplay.neural.internal_model import (
     _inner_gains,
     affine_rollout,
     input_bound,
     is_linear,
     training_box,
 )
+from jointplay.neural.kernel_network import TANH, _array, _c, _network
 from jointplay.neural.narx import Narx
-
-# tanh through expm1: half the cost of libm's tanh here, within 4e-16 of it, exact in sign and
-# saturation (|x| > 20 gives +-1, where tanh is 1 to double precision).
-TANH = """#include <math.h>
-static inline double jp_tanh(double x) {
-  double e;
-  if (x > 20) return 1;
-  if (x < -20) return -1;
-  e = expm1(2 * x);
-  return e / (e + 2);
-}
-"""
-
-
-def _c(x: float) -> str:
-    """An exact C literal for a float64."""
-    if math.isinf(x):
-        return "1e300" if x > 0 else "-1e300"
-    return float(x).hex()
-
-
-def _array(name: str, values: Any) -> str:
-    flat = np.asarray(values, dtype=float).ravel()
-    if flat.size == 0:
-        return f"static const double {name}[1] = {{0}};\n"
-    body = ", ".join(_c(v) for v in flat)
-    return f"static const double {name}[{flat.size}] = {{{body}}};\n"
-
-
-def _network(prefix: str, model: Narx, nd: int) -> str:
-    """C for one network: ``{prefix}eval(phi, dphi, y, dy, tangent)``; ``dphi`` holds ``nd``
-    tangent directions (direction-major), ``dy`` likewise."""
-    ny, nphi = model.n_outputs, model.n_regressor
-    out = [_array(f"{prefix}MU", model.regressor_mean),
-           _array(f"{prefix}ISG", 1.0 / model.regressor_scale),
-           _array(f"{prefix}TM", model.increment_mean),
-           _array(f"{prefix}TS", model.increment_scale),
-           _array(f"{prefix}CARRY", model.carry)]
-    # Weights stored transposed (column by column): the products below are then sums of
-    # scaled columns, n_out independent accumulators the compiler vectorises without
-    # reassociating any sum (a row-by-row dot product is one serial chain of additions).
-    for i, (w, b) in enumerate(zip(model.weights, model.biases, strict=True)):
-        out += [_array(f"{prefix}W{i}", w.T), _array(f"{prefix}B{i}", b)]
-    if model.linear is not None:
-        out.append(_array(f"{prefix}L", model.linear.T))
-    widths = [nphi, *[w.shape[0] for w in model.weights]]
-    width_max = max(widths)
-    last = len(model.weights) - 1
-    lines = [f"static void {prefix}eval(const double* phi, const double* dphi, double* y, "
-             "double* dy, int tangent) {",
-             f"  double z[{nphi}], dz[{nd * nphi}], h[{width_max}], dh[{nd * width_max}];",
-             f"  double a[{width_max}], da[{nd * width_max}];",
-             "  int i, j, k;",
-             f"  for (i = 0; i < {nphi}; ++i) z[i] = (phi[i] - {prefix}MU[i]) * {prefix}ISG[i];",
-             "  if (tangent) {",
-             f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {nphi}; ++i)",
-             f"      dz[k * {nphi} + i] = dphi[k * {nphi} + i] * {prefix}ISG[i];",
-             "  }",
-             f"  for (i = 0; i < {nphi}; ++i) h[i] = z[i];",
-             "  if (tangent) {",
-             f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {nphi}; ++i)",
-             f"      dh[k * {width_max} + i] = dz[k * {nphi} + i];",
-             "  }"]
-    for i in range(len(model.weights)):
-        n_in, n_out = widths[i], widths[i + 1]
-        wname, bias = f"{prefix}W{i}", f"{prefix}B{i}"
-        # One pass over the weights for the value and every tangent direction.
-        tangents = "".join(f" da[{k * width_max} + i] += wji * dh{k};" for k in range(nd))
-        loads = " ".join(f"const double dh{k} = dh[{k * width_max} + j];" for k in range(nd))
-        lines += [
-            f"  for (i = 0; i < {n_out}; ++i) a[i] = {bias}[i];",
-            "  if (tangent) {",
-            f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {n_out}; ++i) "
-            f"da[k * {width_max} + i] = 0;",
-            f"    for (j = 0; j < {n_in}; ++j) {{",
-            f"      const double hj = h[j]; {loads}",
-            f"      for (i = 0; i < {n_out}; ++i) {{",
-            f"        const double wji = {wname}[j * {n_out} + i];",
-            f"        a[i] += wji * hj;{tangents}",
-            "      }",
-            "    }",
-            "  } else {",
-            f"    for (j = 0; j < {n_in}; ++j) {{",
-            "      const double hj = h[j];",
-            f"      for (i = 0; i < {n_out}; ++i) a[i] += {wname}[j * {n_out} + i] * hj;",
-            "    }",
-            "  }"]
-        if i < last:
-            lines += [
-                f"  for (i = 0; i < {n_out}; ++i) h[i] = jp_tanh(a[i]);",
-                "  if (tangent) {",
-                f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {n_out}; ++i)",
-                f"      dh[k * {width_max} + i] = (1 - h[i] * h[i]) * da[k * {width_max} + i];",
-                "  }"]
-    if model.linear is not None:
-        tangents = "".join(f" da[{k * width_max} + i] += lji * dz{k};" for k in range(nd))
-        loads = " ".join(f"const double dz{k} = dz[{k * nphi} + j];" for k in range(nd))
-        lines += [
-            "  if (tangent) {",
-            f"    for (j = 0; j < {nphi}; ++j) {{",
-            f"      const double zj = z[j]; {loads}",
-            f"      for (i = 0; i < {ny}; ++i) {{",
-            f"        const double lji = {prefix}L[j * {ny} + i];",
-            f"        a[i] += lji * zj;{tangents}",
-            "      }",
-            "    }",
-            "  } else {",
-            f"    for (j = 0; j < {nphi}; ++j) {{",
-            "      const double zj = z[j];",
-            f"      for (i = 0; i < {ny}; ++i) a[i] += {prefix}L[j * {ny} + i] * zj;",
-            "    }",
-            "  }"]
-    lines += [
-        f"  for (i = 0; i < {ny}; ++i)",
-        f"    y[i] = {prefix}CARRY[i] * phi[i] + {prefix}TM[i] + {prefix}TS[i] * a[i];",
-        "  if (tangent) {",
-        f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {ny}; ++i)",
-        f"      dy[k * {ny} + i] = {prefix}CARRY[i] * dphi[k * {nphi} + i] + "
-        f"{prefix}TS[i] * da[k * {width_max} + i];",
-        "  }",
-        "}"]
-    return "".join(out) + "\n".join(lines) + "\n"
 
 
 def _branch(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
             scales: tuple[float, ...]) -> str:
     """C for one internal model's increment and trust:
     ``{prefix}branch(hist, upast, v_prev, e_f, target, step) -> ok``."""
-    ny, nu, na, nb, d = (model.n_outputs, model.n_inputs, model.output_lags,
-                         model.input_lags, s.horizon)
-    nphi = model.n_regressor
-    nt = len(rows)
+    ny, nt = model.n_outputs, len(rows)
     lo, hi = training_box(model, s.trust_range)
     out = [_array(f"{prefix}LO", lo), _array(f"{prefix}HI", hi)]
     lines = [f"static int {prefix}branch(const double* hist, const double* upast, "
@@ -173,117 +50,157 @@ def _branch(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
              f"  double n0[{ny}], res[{nt}];",
              "  int i, j, k, ok = 1;"]
     if is_linear(model):
-        mh, mu, mv, c = affine_rollout(model, d)
-        cm = np.zeros((nt, ny))
-        for i, (row, scale) in enumerate(zip(rows, scales, strict=True)):
-            cm[i, row] = 1.0 / scale
-        cj = cm @ mv
-        gain = np.linalg.solve(cj.T @ cj + s.regularisation * np.eye(nu), cj.T)
-        out += [_array(f"{prefix}MH", mh), _array(f"{prefix}MUP", mu), _array(f"{prefix}MV", mv),
-                _array(f"{prefix}MC", c), _array(f"{prefix}G", gain)]
-        lines += [
-            f"  for (i = 0; i < {ny}; ++i) {{",
-            f"    double s = {prefix}MC[i];",
-            f"    for (j = 0; j < {na * ny}; ++j) s += {prefix}MH[i * {na * ny} + j] * hist[j];",
-            f"    for (j = 0; j < {nb * nu}; ++j) s += {prefix}MUP[i * {nb * nu} + j] * upast[j];",
-            f"    for (j = 0; j < {nu}; ++j) s += {prefix}MV[i * {nu} + j] * vp[j];",
-            "    n0[i] = s;",
-            "  }"]
-        for i, (row, scale) in enumerate(zip(rows, scales, strict=True)):
-            lines.append(f"  res[{i}] = (target[{row}] - ef[{row}] - n0[{row}]) * "
-                         f"{_c(1.0 / scale)};")
-        lines += [
-            f"  for (i = 0; i < {nu}; ++i) {{",
-            "    double s = 0;",
-            f"    for (j = 0; j < {nt}; ++j) s += {prefix}G[i * {nt} + j] * res[j];",
-            "    step[i] = s;",
-            "  }"]
+        arrays, body = _linear_increment(prefix, model, s, rows, scales)
+        out += arrays
+        lines += body
     else:
-        lines += [
-            f"  double phi[{nphi}], dphi[{nu * nphi}], ys[{na * ny}], dys[{nu * na * ny}];",
-            f"  double yn[{ny}], dyn[{nu * ny}], us[{nb * nu}], dus[{nu * nb * nu}];",
-            f"  double cj[{nt * nu}], a[{nu * nu}], b[{nu}];",
-            f"  for (i = 0; i < {na * ny}; ++i) ys[i] = hist[i];",
-            f"  for (i = 0; i < {nu * na * ny}; ++i) dys[i] = 0;",
-            f"  for (i = 0; i < {nu}; ++i) us[i] = vp[i];",
-            f"  for (i = {nu}; i < {nb * nu}; ++i) us[i] = upast[i - {nu}];",
-            f"  for (i = 0; i < {nu * nb * nu}; ++i) dus[i] = 0;",
-            f"  for (k = 0; k < {nu}; ++k) dus[k * {nb * nu} + k] = 1;",
-            f"  for (int t = 0; t < {d}; ++t) {{",
-            f"    for (i = 0; i < {na * ny}; ++i) phi[i] = ys[i];",
-            f"    for (i = 0; i < {nb * nu}; ++i) phi[{na * ny} + i] = us[i];",
-            f"    for (k = 0; k < {nu}; ++k) {{",
-            f"      for (i = 0; i < {na * ny}; ++i) dphi[k * {nphi} + i] = dys[k * {na * ny} + i];",
-            f"      for (i = 0; i < {nb * nu}; ++i) dphi[k * {nphi} + {na * ny} + i] = "
-            f"dus[k * {nb * nu} + i];",
-            "    }",
-            f"    {prefix}eval(phi, dphi, yn, dyn, 1);",
-            f"    for (i = {na * ny} - 1; i >= {ny}; --i) ys[i] = ys[i - {ny}];",
-            f"    for (i = 0; i < {ny}; ++i) ys[i] = yn[i];",
-            f"    for (k = 0; k < {nu}; ++k) {{",
-            f"      for (i = {na * ny} - 1; i >= {ny}; --i) dys[k * {na * ny} + i] = "
-            f"dys[k * {na * ny} + i - {ny}];",
-            f"      for (i = 0; i < {ny}; ++i) dys[k * {na * ny} + i] = dyn[k * {ny} + i];",
-            f"      for (i = {nb * nu} - 1; i >= {nu}; --i) dus[k * {nb * nu} + i] = "
-            f"dus[k * {nb * nu} + i - {nu}];",
-            f"      for (i = 0; i < {nu}; ++i) dus[k * {nb * nu} + i] = (i == k);",
-            "    }",
-            f"    for (i = {nb * nu} - 1; i >= {nu}; --i) us[i] = us[i - {nu}];",
-            f"    for (i = 0; i < {nu}; ++i) us[i] = vp[i];",
-            "  }",
-            f"  for (i = 0; i < {ny}; ++i) n0[i] = ys[i];"]
-        for i, (row, scale) in enumerate(zip(rows, scales, strict=True)):
-            lines.append(f"  res[{i}] = (target[{row}] - ef[{row}] - n0[{row}]) * "
-                         f"{_c(1.0 / scale)};")
-            lines.append(f"  for (k = 0; k < {nu}; ++k) cj[{i} * {nu} + k] = "
-                         f"dys[k * {na * ny} + {row}] * {_c(1.0 / scale)};")
-        lines += [
-            # (CJ)'(CJ) + lam I, (CJ)' res; solved by Cholesky (symmetric positive definite)
-            f"  for (i = 0; i < {nu}; ++i) {{",
-            "    double s = 0;",
-            f"    for (j = 0; j < {nt}; ++j) s += cj[j * {nu} + i] * res[j];",
-            "    b[i] = s;",
-            f"    for (k = 0; k < {nu}; ++k) {{",
-            f"      double q = (i == k) ? {_c(s.regularisation)} : 0.0;",
-            f"      for (j = 0; j < {nt}; ++j) q += cj[j * {nu} + i] * cj[j * {nu} + k];",
-            f"      a[i * {nu} + k] = q;",
-            "    }",
-            "  }",
-            f"  for (i = 0; i < {nu}; ++i) {{",
-            "    for (k = 0; k <= i; ++k) {",
-            f"      double q = a[i * {nu} + k];",
-            f"      for (j = 0; j < k; ++j) q -= a[i * {nu} + j] * a[k * {nu} + j];",
-            f"      if (i == k) a[i * {nu} + i] = sqrt(q); else a[i * {nu} + k] = q / "
-            f"a[k * {nu} + k];",
-            "    }",
-            "  }",
-            f"  for (i = 0; i < {nu}; ++i) {{",
-            "    double q = b[i];",
-            f"    for (j = 0; j < i; ++j) q -= a[i * {nu} + j] * step[j];",
-            f"    step[i] = q / a[i * {nu} + i];",
-            "  }",
-            f"  for (i = {nu} - 1; i >= 0; --i) {{",
-            "    double q = step[i];",
-            f"    for (j = i + 1; j < {nu}; ++j) q -= a[j * {nu} + i] * step[j];",
-            f"    step[i] = q / a[i * {nu} + i];",
-            "  }"]
+        lines += _network_increment(prefix, model, s, rows, scales)
     if s.guard:
-        lines += [
-            f"  for (i = 0; i < {na * ny}; ++i) ok &= (hist[i] - {prefix}LO[i] >= 0) & "
-            f"({prefix}HI[i] - hist[i] >= 0);",
-            f"  for (i = 0; i < {nu}; ++i) ok &= (vp[i] - {prefix}LO[{na * ny} + i] >= 0) & "
-            f"({prefix}HI[{na * ny} + i] - vp[i] >= 0);",
-            f"  for (i = 0; i < {(nb - 1) * nu}; ++i) ok &= "
-            f"(upast[i] - {prefix}LO[{na * ny + nu} + i] >= 0) & "
-            f"({prefix}HI[{na * ny + nu} + i] - upast[i] >= 0);",
-            f"  for (i = 0; i < {ny}; ++i) ok &= (n0[i] - {prefix}LO[i] >= 0) & "
-            f"({prefix}HI[i] - n0[i] >= 0);"]
-        for row, scale in zip(rows, scales, strict=True):
-            lines.append(f"  ok &= ({_c(s.trust_mismatch)} - fabs(ef[{row}] * "
-                         f"{_c(1.0 / scale)}) >= 0);")
-        lines.append(f"  for (i = 0; i < {nu}; ++i) ok &= (fabs(step[i]) < 1e300);")
+        lines += _trust_lines(prefix, model, s, rows, scales)
     lines += ["  return ok;", "}"]
     return "".join(out) + "\n".join(lines) + "\n"
+
+
+def _residual(i: int, row: int, scale: float) -> str:
+    """The scaled tracking residual of tracked output ``i`` (output ``row``)."""
+    return f"  res[{i}] = (target[{row}] - ef[{row}] - n0[{row}]) * {_c(1.0 / scale)};"
+
+
+def _linear_increment(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
+                      scales: tuple[float, ...]) -> tuple[list[str], list[str]]:
+    """(arrays, lines) for a linear model: its d-step prediction and the regularised inverse
+    are constant matrices."""
+    ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
+    nt = len(rows)
+    mh, mu, mv, c = affine_rollout(model, s.horizon)
+    cj = _tracking_matrix(model, s) @ mv
+    gain = np.linalg.solve(cj.T @ cj + s.regularisation * np.eye(nu), cj.T)
+    arrays = [_array(f"{prefix}MH", mh), _array(f"{prefix}MUP", mu), _array(f"{prefix}MV", mv),
+              _array(f"{prefix}MC", c), _array(f"{prefix}G", gain)]
+    lines = [
+        f"  for (i = 0; i < {ny}; ++i) {{",
+        f"    double s = {prefix}MC[i];",
+        f"    for (j = 0; j < {na * ny}; ++j) s += {prefix}MH[i * {na * ny} + j] * hist[j];",
+        f"    for (j = 0; j < {nb * nu}; ++j) s += {prefix}MUP[i * {nb * nu} + j] * upast[j];",
+        f"    for (j = 0; j < {nu}; ++j) s += {prefix}MV[i * {nu} + j] * vp[j];",
+        "    n0[i] = s;",
+        "  }"]
+    lines += [_residual(i, row, scale)
+              for i, (row, scale) in enumerate(zip(rows, scales, strict=True))]
+    lines += [
+        f"  for (i = 0; i < {nu}; ++i) {{",
+        "    double s = 0;",
+        f"    for (j = 0; j < {nt}; ++j) s += {prefix}G[i * {nt} + j] * res[j];",
+        "    step[i] = s;",
+        "  }"]
+    return arrays, lines
+
+
+def _network_increment(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
+                       scales: tuple[float, ...]) -> list[str]:
+    """Lines for a network: the d-step rollout with its Jacobian in v (nu tangent directions),
+    the scaled residual and tracked Jacobian, and the regularised normal equations solved."""
+    ny, nu, na = model.n_outputs, model.n_inputs, model.output_lags
+    lines = _rollout_lines(prefix, model, s.horizon, len(rows))
+    for i, (row, scale) in enumerate(zip(rows, scales, strict=True)):
+        lines.append(_residual(i, row, scale))
+        lines.append(f"  for (k = 0; k < {nu}; ++k) cj[{i} * {nu} + k] = "
+                     f"dys[k * {na * ny} + {row}] * {_c(1.0 / scale)};")
+    return lines + _normal_equation_lines(nu, len(rows), s.regularisation)
+
+
+def _rollout_lines(prefix: str, model: Narx, d: int, nt: int) -> list[str]:
+    """The network run ``d`` samples ahead with v held, carrying d y / d v forward."""
+    ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
+    nphi = model.n_regressor
+    return [
+        f"  double phi[{nphi}], dphi[{nu * nphi}], ys[{na * ny}], dys[{nu * na * ny}];",
+        f"  double yn[{ny}], dyn[{nu * ny}], us[{nb * nu}], dus[{nu * nb * nu}];",
+        f"  double cj[{nt * nu}], a[{nu * nu}], b[{nu}];",
+        f"  for (i = 0; i < {na * ny}; ++i) ys[i] = hist[i];",
+        f"  for (i = 0; i < {nu * na * ny}; ++i) dys[i] = 0;",
+        f"  for (i = 0; i < {nu}; ++i) us[i] = vp[i];",
+        f"  for (i = {nu}; i < {nb * nu}; ++i) us[i] = upast[i - {nu}];",
+        f"  for (i = 0; i < {nu * nb * nu}; ++i) dus[i] = 0;",
+        f"  for (k = 0; k < {nu}; ++k) dus[k * {nb * nu} + k] = 1;",
+        f"  for (int t = 0; t < {d}; ++t) {{",
+        f"    for (i = 0; i < {na * ny}; ++i) phi[i] = ys[i];",
+        f"    for (i = 0; i < {nb * nu}; ++i) phi[{na * ny} + i] = us[i];",
+        f"    for (k = 0; k < {nu}; ++k) {{",
+        f"      for (i = 0; i < {na * ny}; ++i) dphi[k * {nphi} + i] = dys[k * {na * ny} + i];",
+        f"      for (i = 0; i < {nb * nu}; ++i) dphi[k * {nphi} + {na * ny} + i] = "
+        f"dus[k * {nb * nu} + i];",
+        "    }",
+        f"    {prefix}eval(phi, dphi, yn, dyn, 1);",
+        f"    for (i = {na * ny} - 1; i >= {ny}; --i) ys[i] = ys[i - {ny}];",
+        f"    for (i = 0; i < {ny}; ++i) ys[i] = yn[i];",
+        f"    for (k = 0; k < {nu}; ++k) {{",
+        f"      for (i = {na * ny} - 1; i >= {ny}; --i) dys[k * {na * ny} + i] = "
+        f"dys[k * {na * ny} + i - {ny}];",
+        f"      for (i = 0; i < {ny}; ++i) dys[k * {na * ny} + i] = dyn[k * {ny} + i];",
+        f"      for (i = {nb * nu} - 1; i >= {nu}; --i) dus[k * {nb * nu} + i] = "
+        f"dus[k * {nb * nu} + i - {nu}];",
+        f"      for (i = 0; i < {nu}; ++i) dus[k * {nb * nu} + i] = (i == k);",
+        "    }",
+        f"    for (i = {nb * nu} - 1; i >= {nu}; --i) us[i] = us[i - {nu}];",
+        f"    for (i = 0; i < {nu}; ++i) us[i] = vp[i];",
+        "  }",
+        f"  for (i = 0; i < {ny}; ++i) n0[i] = ys[i];"]
+
+
+def _normal_equation_lines(nu: int, nt: int, regularisation: float) -> list[str]:
+    """((CJ)'(CJ) + lam I) step = (CJ)' res, solved by Cholesky (symmetric positive definite)."""
+    return [
+        f"  for (i = 0; i < {nu}; ++i) {{",
+        "    double s = 0;",
+        f"    for (j = 0; j < {nt}; ++j) s += cj[j * {nu} + i] * res[j];",
+        "    b[i] = s;",
+        f"    for (k = 0; k < {nu}; ++k) {{",
+        f"      double q = (i == k) ? {_c(regularisation)} : 0.0;",
+        f"      for (j = 0; j < {nt}; ++j) q += cj[j * {nu} + i] * cj[j * {nu} + k];",
+        f"      a[i * {nu} + k] = q;",
+        "    }",
+        "  }",
+        f"  for (i = 0; i < {nu}; ++i) {{",
+        "    for (k = 0; k <= i; ++k) {",
+        f"      double q = a[i * {nu} + k];",
+        f"      for (j = 0; j < k; ++j) q -= a[i * {nu} + j] * a[k * {nu} + j];",
+        f"      if (i == k) a[i * {nu} + i] = sqrt(q); else a[i * {nu} + k] = q / "
+        f"a[k * {nu} + k];",
+        "    }",
+        "  }",
+        f"  for (i = 0; i < {nu}; ++i) {{",
+        "    double q = b[i];",
+        f"    for (j = 0; j < i; ++j) q -= a[i * {nu} + j] * step[j];",
+        f"    step[i] = q / a[i * {nu} + i];",
+        "  }",
+        f"  for (i = {nu} - 1; i >= 0; --i) {{",
+        "    double q = step[i];",
+        f"    for (j = i + 1; j < {nu}; ++j) q -= a[j * {nu} + i] * step[j];",
+        f"    step[i] = q / a[i * {nu} + i];",
+        "  }"]
+
+
+def _trust_lines(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
+                 scales: tuple[float, ...]) -> list[str]:
+    """The guard: regressor and prediction inside the widened training box, the scaled
+    mismatch below its bound, and a finite increment."""
+    ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
+    lines = [
+        f"  for (i = 0; i < {na * ny}; ++i) ok &= (hist[i] - {prefix}LO[i] >= 0) & "
+        f"({prefix}HI[i] - hist[i] >= 0);",
+        f"  for (i = 0; i < {nu}; ++i) ok &= (vp[i] - {prefix}LO[{na * ny} + i] >= 0) & "
+        f"({prefix}HI[{na * ny} + i] - vp[i] >= 0);",
+        f"  for (i = 0; i < {(nb - 1) * nu}; ++i) ok &= "
+        f"(upast[i] - {prefix}LO[{na * ny + nu} + i] >= 0) & "
+        f"({prefix}HI[{na * ny + nu} + i] - upast[i] >= 0);",
+        f"  for (i = 0; i < {ny}; ++i) ok &= (n0[i] - {prefix}LO[i] >= 0) & "
+        f"({prefix}HI[i] - n0[i] >= 0);"]
+    for row, scale in zip(rows, scales, strict=True):
+        lines.append(f"  ok &= ({_c(s.trust_mismatch)} - fabs(ef[{row}] * "
+                     f"{_c(1.0 / scale)}) >= 0);")
+    lines.append(f"  for (i = 0; i < {nu}; ++i) ok &= (fabs(step[i]) < 1e300);")
+    return lines
 
 
 def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | None,
@@ -294,11 +211,9 @@ def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | No
         raise ValueError("the loop kernel implements one Gauss-Newton iteration")
     if fallback is not None and not s.guard:
         fallback = None
-    ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
-    naf = fallback.output_lags if fallback is not None else 0
+    nu = model.n_inputs
     rows = [model.output_index(n) for n in s.tracked]
-    parts = [TANH, _network("m_", model, nu), _branch("m_", model, s, rows,
-                                                                     s.scales)]
+    parts = [TANH, _network("m_", model, nu), _branch("m_", model, s, rows, s.scales)]
     if fallback is not None:
         parts += [_network("f_", fallback, nu), _branch("f_", fallback, s, rows, s.scales)]
     q_idx, dq_idx, kp, kd = _inner_gains(model)
@@ -308,46 +223,83 @@ def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | No
     parts += [_array("RATE", rate), _array("LIMIT", limit), _array("BOUND", bound),
               _array("KP", kp if len(kp) else np.zeros(nu)),
               _array("KD", kd if len(kd) else np.zeros(nu))]
-    o_hist, o_histf = 0, na * ny
-    o_up = o_histf + naf * ny
-    o_ef = o_up + nb * nu
-    o_eff = o_ef + ny
-    o_yd = o_eff + (ny if fallback is not None else 0)
-    o_hold = o_yd + ny
-    n_state = o_hold + 2
-    nbf = fallback.input_lags if fallback is not None else 1
-    n_phi_max = max(model.n_regressor, fallback.n_regressor if fallback is not None else 0)
-    a_d = s.setpoint_filter ** s.horizon
-    b = s.mismatch_filter
+    x = _Shape.of(model, fallback)
     inner = "\n".join(
         f"  inner[{i}] = -KP[{i}] * dev[{q}] - KD[{i}] * dev[{dq}];"
         for i, (q, dq) in enumerate(zip(q_idx, dq_idx, strict=True))) if q_idx else \
         f"  for (i = 0; i < {nu}; ++i) inner[i] = 0;"
-    fb = fallback is not None
-    body = f"""
+    body = (_kernel_head(name, x, s) + inner + "\n" + _kernel_limits(x, s)
+            + _kernel_predictions(x) + _kernel_next_state(x, s))
+    return "".join(parts) + body
+
+
+@dataclass(frozen=True)
+class _Shape:
+    """The step's sizes and where each part of its state starts (build_step's order; the
+    network's history starts at 0)."""
+
+    ny: int
+    nu: int
+    na: int
+    nb: int
+    naf: int  # the fallback's output lags, 0 without one
+    nbf: int  # the fallback's input lags, 1 without one
+    n_phi_max: int
+    fb: bool  # with a fallback
+    o_histf: int
+    o_up: int
+    o_ef: int
+    o_eff: int
+    o_yd: int
+    o_hold: int
+
+    @classmethod
+    def of(cls, model: Narx, fallback: Narx | None) -> _Shape:
+        ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
+        naf = fallback.output_lags if fallback is not None else 0
+        o_histf = na * ny
+        o_up = o_histf + naf * ny
+        o_ef = o_up + nb * nu
+        o_eff = o_ef + ny
+        o_yd = o_eff + (ny if fallback is not None else 0)
+        return cls(ny, nu, na, nb, naf, fallback.input_lags if fallback is not None else 1,
+                   max(model.n_regressor, fallback.n_regressor if fallback is not None else 0),
+                   fallback is not None, o_histf, o_up, o_ef, o_eff, o_yd, o_yd + ny)
+
+
+def _kernel_head(name: str, x: _Shape, s: ControllerSettings) -> str:
+    """The kernel's declarations, the mismatch filters, the target and both branches."""
+    ny, nu, fb = x.ny, x.nu, x.fb
+    a_d = s.setpoint_filter ** s.horizon
+    b = s.mismatch_filter
+    return f"""
 static int {name}_kernel(const double** arg, double** res) {{
   const double *y = arg[0], *r = arg[1], *ff = arg[2], *x = arg[3];
   double *tau = res[0], *xn = res[1], *vout = res[2], *ypred = res[3], *flags = res[4];
   double dev[{ny}], ef[{ny}], eff[{ny}], target[{ny}], dvm[{nu}], dvf[{nu}], step[{nu}];
-  double vtry[{nu}], vtr[{nu}], vnew[{nu}], inner[{nu}], phi[{n_phi_max}];
+  double vtry[{nu}], vtr[{nu}], vnew[{nu}], inner[{nu}], phi[{x.n_phi_max}];
   double yn[{ny}], yfn[{ny}];
-  const double *hist = x + {o_hist}, *histf = x + {o_histf}, *upast = x + {o_up};
+  const double *hist = x + 0, *histf = x + {x.o_histf}, *upast = x + {x.o_up};
   const double *vp = upast;
-  double hold = x[{o_hold}], episodes = x[{o_hold + 1}];
+  double hold = x[{x.o_hold}], episodes = x[{x.o_hold + 1}];
   int i, okm, okf = 0, use_main, use_back, at_bound = 0, at_limit = 0;
   for (i = 0; i < {ny}; ++i) {{
     dev[i] = y[i] - r[i];
-    ef[i] = {_c(b)} * x[{o_ef} + i] + {_c(1 - b)} * (dev[i] - hist[i]);
-    {f"eff[i] = {_c(b)} * x[{o_eff} + i] + {_c(1 - b)} * (dev[i] - histf[i]);" if fb else
+    ef[i] = {_c(b)} * x[{x.o_ef} + i] + {_c(1 - b)} * (dev[i] - hist[i]);
+    {f"eff[i] = {_c(b)} * x[{x.o_eff} + i] + {_c(1 - b)} * (dev[i] - histf[i]);" if fb else
      "eff[i] = 0;"}
-    target[i] = {_c(a_d)} * x[{o_yd} + i];
+    target[i] = {_c(a_d)} * x[{x.o_yd} + i];
   }}
   okm = m_branch(hist, upast, vp, ef, target, dvm);
   use_main = okm && hold <= 0;
   {"okf = f_branch(histf, upast, vp, eff, target, dvf);" if fb else ""}
   use_back = !use_main && okf;
-{inner}
-  for (i = 0; i < {nu}; ++i) {{
+"""
+
+
+def _kernel_limits(x: _Shape, s: ControllerSettings) -> str:
+    """The chosen increment through the rate limit, the trust bound and the actuator limits."""
+    return f"""  for (i = 0; i < {x.nu}; ++i) {{
     step[i] = use_main ? dvm[i] : (use_back ? dvf[i] : -vp[i]);
     step[i] = fmin(fmax(step[i], -RATE[i]), RATE[i]);
     vtry[i] = vp[i] + step[i];
@@ -358,15 +310,29 @@ static int {name}_kernel(const double** arg, double** res) {{
     at_bound |= fabs(vtr[i] - vtry[i]) > 0;
     at_limit |= fabs(vnew[i] - vtr[i]) > 0;
   }}
-  for (i = 0; i < {na * ny}; ++i) phi[i] = hist[i];
+"""
+
+
+def _kernel_predictions(x: _Shape) -> str:
+    """Both internal models advanced one sample with the applied v."""
+    ny, nu, na, nb, naf, nbf = x.ny, x.nu, x.na, x.nb, x.naf, x.nbf
+    return f"""  for (i = 0; i < {na * ny}; ++i) phi[i] = hist[i];
   for (i = 0; i < {nu}; ++i) phi[{na * ny} + i] = vnew[i];
   for (i = 0; i < {(nb - 1) * nu}; ++i) phi[{na * ny + nu} + i] = upast[i];
   m_eval(phi, 0, yn, 0, 0);
   {f'''for (i = 0; i < {naf * ny}; ++i) phi[i] = histf[i];
   for (i = 0; i < {nu}; ++i) phi[{naf * ny} + i] = vnew[i];
   for (i = 0; i < {(nbf - 1) * nu}; ++i) phi[{naf * ny + nu} + i] = upast[i];
-  f_eval(phi, 0, yfn, 0, 0);''' if fb else ""}
-  {{
+  f_eval(phi, 0, yfn, 0, 0);''' if x.fb else ""}
+"""
+
+
+def _kernel_next_state(x: _Shape, s: ControllerSettings) -> str:
+    """The next state in build_step's order, the predicted deviation and the flags."""
+    ny, nu, na, nb, naf, fb = x.ny, x.nu, x.na, x.nb, x.naf, x.fb
+    o_histf, o_up, o_ef, o_eff, o_yd = x.o_histf, x.o_up, x.o_ef, x.o_eff, x.o_yd
+    o_hold = x.o_hold
+    return f"""  {{
     /* next state: network history, fallback history, inputs, filters, setpoint, counters */
     int reseed = {"!use_main" if fb and naf == na else "0"};
     for (i = 0; i < {ny}; ++i) xn[i] = reseed ? yfn[i] : yn[i];
@@ -395,8 +361,6 @@ static int {name}_kernel(const double** arg, double** res) {{
   return 0;
 }}
 """
-    assert n_state == o_hold + 2
-    return "".join(parts) + body
 
 
 def kernel_library_source(model: Narx, settings: ControllerSettings, fallback: Narx | None,

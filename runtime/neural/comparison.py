@@ -1,0 +1,274 @@
+"""The whole comparison: every controller on one scene against the ideal-joint robot's motion,
+its metrics, what can be said about each loop's stability, and the runs written to HDF5.
+
+Without a given bound the open loop runs first and sets the divergence bound (twice its
+largest end-effector error by default: doing nothing does better). The stability verdict rests
+on the realised runs (bounded or not, and how often the guard acted), with the linearisations
+(at the nominal equilibrium and at states visited along the run) as supporting evidence.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointplay.common.files import atomic_path
+from jointplay.neural.imc import (
+    FLAGS,
+    Controller,
+    ControllerSettings,
+    compile_controller,
+    local_spectral_radii,
+    nominal_spectral_radius,
+    per_call_us,
+)
+from jointplay.neural.loop import (
+    NO_CONDITIONS,
+    Law,
+    LoopConditions,
+    Run,
+    computed_torque_law,
+    imc_law,
+    pd_law,
+    run_loop,
+)
+from jointplay.neural.metrics import run_metrics, tip_errors
+from jointplay.neural.narx import Narx
+
+DEFAULT_TRANSIENT = 0.05  # s: journals settling from e = 0, reported separately
+NEURAL, LINEAR = "neural IMC", "ARX-IMC"
+CONTROLLERS = ("open loop", "PD", "computed torque", LINEAR, NEURAL)
+MODEL_BASED = (LINEAR, NEURAL)
+DIVERGENCE_FACTOR = 2.0  # x the open loop's largest tip error
+
+
+@dataclass
+class Comparison:
+    runs: dict[str, Run]
+    reference: np.ndarray
+    metrics: dict[str, dict[str, float]]
+    transient: int
+    limit: float  # divergence bound on the tip error, m
+    controllers: dict[str, Controller] = field(default_factory=dict)
+    per_call_us: dict[str, float] = field(default_factory=dict)
+    nominal_radius: dict[str, float] = field(default_factory=dict)
+    local_radius: dict[str, np.ndarray] = field(default_factory=dict)
+    tau_ff: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+    # the reference's end-effector acceleration every T / SUBSTEPS from t = 0
+    dense_reference: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+
+    @property
+    def controller(self) -> Controller:
+        """The neural controller (or the only internal-model controller there is)."""
+        return self.controllers.get(NEURAL) or next(iter(self.controllers.values()))
+
+
+def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx | None = None,
+            transient: float = DEFAULT_TRANSIENT, ct_omega: float = 15.0,
+            ct_zeta: float = 0.2, pd_kp: Sequence[float] = (), pd_kd: Sequence[float] = (),
+            controllers: Sequence[str] = CONTROLLERS, quiet: bool = True,
+            analyse: bool = True, conditions: LoopConditions = NO_CONDITIONS,
+            limit: float | None = None, divergence_factor: float = DIVERGENCE_FACTOR,
+            compiled: dict[str, Controller] | None = None,
+            plant_tolerance: float | None = None) -> Comparison:
+    """Run the scene with every controller against the ideal robot's motion.
+
+    Without ``limit`` the open loop runs first and sets the divergence bound
+    (``divergence_factor`` x its largest tip error). ``arx`` is the linear twin: the
+    ARX-IMC's model and the neural controller's fallback (without it there is no ARX-IMC and
+    the neural controller falls back to the inner loop alone). ``analyse`` also measures each
+    compiled step's cost and its linearised loop's spectral radius (nominal, and along the
+    run).
+    """
+    from jointplay.neural.identify import ideal_reference, reference_outputs
+    from jointplay.neural.plant import PLANT_TOLERANCE, SUBSTEPS, control_plant
+    from jointplay.sim import load_scene_model
+
+    # One plant setting for every controller (jointplay.neural.plant); ``plant_tolerance`` only to
+    # measure what that setting changes (benchmarks/control_plant.py).
+    scene = control_plant(scene, plant_tolerance or PLANT_TOLERANCE)
+    ideal = ideal_reference(scene)
+    reference = reference_outputs(ideal)
+    model = load_scene_model(scene)
+    nj = len(scene.robot.moving_joints)
+    names = [c for c in controllers if arx is not None or c != LINEAR]
+    ctrls = _compile(names, narx, arx, settings, compiled)
+    if limit is None:
+        names = ["open loop", *[c for c in names if c != "open loop"]]
+    gains = _Gains(pd_kp, pd_kd, ct_omega, ct_zeta)
+    runs: dict[str, Run] = {}
+    for name in names:
+        log: dict[str, list[np.ndarray]] = {"v": [], "y_pred": [], "flags": [], "states": []}
+        law = _law(name, scene, narx, ideal, reference, ctrls, gains, log)
+        if limit is not None:
+            bound = limit
+        elif name == "open loop":
+            bound = math.inf
+        else:
+            bound = open_loop_bound(runs["open loop"], reference, nj, divergence_factor)
+        run = run_loop(scene, reference, law, name, model, limit=bound, conditions=conditions,
+                       substeps=SUBSTEPS)
+        _attach_log(run, log)
+        runs[name] = run
+        if not quiet:
+            note = f"; DIVERGED: {run.diverged}" if run.diverged else ""
+            print(f"  {name}: {run.seconds:.1f} s, {run.impacts} impacts{note}", flush=True)
+    if limit is None:
+        limit = open_loop_bound(runs["open loop"], reference, nj, divergence_factor)
+    k0 = max(0, round(transient / scene.run.output_step))
+    dense_reference = ideal_reference(scene.with_run(
+        output_step=scene.run.output_step / SUBSTEPS)).tip_acceleration
+    metrics = {name: run_metrics(run, reference, nj, k0, dense_reference)
+               for name, run in runs.items()}
+    result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau,
+                        dense_reference=dense_reference)
+    if analyse:
+        _analyse(result)
+    return result
+
+
+def open_loop_bound(open_loop: Run, reference: np.ndarray, nj: int, factor: float) -> float:
+    """The divergence bound: ``factor`` x the open loop's largest end-effector error (m)."""
+    return factor * float(np.max(tip_errors(open_loop, reference, nj)["position"]))
+
+
+def _compile(names: Sequence[str], narx: Narx, arx: Narx | None, settings: ControllerSettings,
+             compiled: dict[str, Controller] | None) -> dict[str, Controller]:
+    """The internal-model controllers ``names`` asks for; those in ``compiled`` are reused."""
+    ctrls: dict[str, Controller] = dict(compiled or {})
+    for name in names:
+        if name == NEURAL and name not in ctrls:
+            ctrls[name] = compile_controller(narx, settings, fallback=arx)
+        elif name == LINEAR and name not in ctrls and arx is not None:
+            ctrls[name] = compile_controller(arx, settings)
+    return ctrls
+
+
+@dataclass(frozen=True)
+class _Gains:
+    """The baselines' tuning: PD gains (empty: the inner loop's), computed torque's bandwidth
+    and damping ratio."""
+
+    pd_kp: Sequence[float]
+    pd_kd: Sequence[float]
+    ct_omega: float
+    ct_zeta: float
+
+
+def _law(name: str, scene: Any, narx: Narx, ideal: Any, reference: np.ndarray,
+         ctrls: dict[str, Controller], gains: _Gains, log: dict[str, list[np.ndarray]]) -> Law:
+    """The law of the controller called ``name``; an internal-model law logs into ``log``."""
+    nj = len(scene.robot.moving_joints)
+    if name == "open loop":
+        return lambda k, y: np.zeros(nj)
+    if name == "PD":
+        return pd_law(narx, reference, gains.pd_kp, gains.pd_kd)
+    if name == "computed torque":
+        return computed_torque_law(scene, ideal, reference, gains.ct_omega, gains.ct_zeta)
+    if name in ctrls:
+        return imc_law(ctrls[name], reference, ideal.tau, log)
+    raise ValueError(f"unknown controller {name!r}")
+
+
+def _attach_log(run: Run, log: dict[str, list[np.ndarray]]) -> None:
+    """Copy an internal-model law's log (v, flags, states) into its run, cut to its length."""
+    if log["v"]:
+        n = run.y.shape[0]
+        run.v[: min(n, len(log["v"]))] = np.array(log["v"])[:n]
+        run.flags = np.array(log["flags"])[:n]
+        run.states = np.array(log["states"])[:n]
+
+
+def _analyse(result: Comparison) -> None:
+    """Each compiled step's cost and its loop's spectral radii: nominal, and at up to eight
+    controller states visited along its run."""
+    for name, ctrl in result.controllers.items():
+        if name not in result.runs:
+            continue
+        result.per_call_us[name] = per_call_us(ctrl)
+        states = result.runs[name].states
+        picks = states[np.linspace(0, len(states) - 1, min(8, len(states))).astype(int)] \
+            if len(states) else states
+        nominal, local = stability_radii(ctrl, picks)
+        result.nominal_radius[name] = nominal
+        result.local_radius[name] = local
+
+
+def stability_radii(ctrl: Controller, states: np.ndarray) -> tuple[float, np.ndarray]:
+    """Nominal spectral radius and the radii at the given visited controller states."""
+    return nominal_spectral_radius(ctrl), local_spectral_radii(ctrl, states)
+
+
+MARGINAL = 1e-3  # a radius this close to 1 is an integrator the verdict cannot decide on
+
+
+def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
+    """What can be said about the loop's stability, and whether it calls for a warning."""
+    counts = run.guard_counts
+    duration = float(run.t[-1]) if run.t.size else 0.0
+    if run.diverged:
+        return f"{name}: DIVERGED ({run.diverged}); the run was stopped", True
+    parts: list[str] = []
+    warn = False
+    worse = run.y.shape[0] and comparison.metrics[name]["max_position"] > \
+        comparison.limit / DIVERGENCE_FACTOR
+    if counts.get("episodes", 0):
+        warn = True
+        parts.append(f"bounded over the {duration:g} s run only with the guard: the network was "
+                     f"distrusted {counts['episodes']} time(s) ({counts['on_fallback_model']} "
+                     f"samples on the ARX fallback, {counts['inner_loop_only']} with the inner "
+                     "loop alone)")
+    else:
+        parts.append(f"bounded over the {duration:g} s run, no fallback")
+    if counts.get("input_at_trust_bound", 0):
+        warn = True
+        parts.append(f"v held at the trust bound (training range) on "
+                     f"{counts['input_at_trust_bound']} samples")
+    if worse:
+        warn = True
+        parts.append("its largest tip error exceeds the open loop's")
+    nominal = comparison.nominal_radius.get(name)
+    local = comparison.local_radius.get(name)
+    if nominal is not None:
+        if nominal < 1 - MARGINAL:
+            lin = f"nominal linearisation stable (spectral radius {nominal:.4f})"
+        elif nominal <= 1 + MARGINAL:
+            lin = (f"nominal linearisation marginal (spectral radius {nominal:.4f}, within "
+                   f"{MARGINAL:g} of 1: an integrating mode the tracked outputs do not see; "
+                   "undecided)")
+        else:
+            lin = f"nominal linearisation unstable (spectral radius {nominal:.4f})"
+        if local is not None and local.size:
+            lin += (f"; at {local.size} states along the run {np.min(local):.4f} to "
+                    f"{np.max(local):.4f}")
+            if np.max(local) > 1 + MARGINAL:
+                lin += " (above 1 at some: stability beyond this run is not established)"
+        parts.append(lin)
+    return f"{name}: " + "; ".join(parts), warn
+
+
+def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any]) -> None:
+    import h5py
+
+    with atomic_path(path) as tmp, h5py.File(tmp, "w") as f:
+        f.attrs["format"] = "jointplay-control"
+        f.attrs["meta"] = json.dumps(meta, default=str)
+        f.create_dataset("reference", data=comparison.reference)
+        for name, run in comparison.runs.items():
+            g = f.create_group(name)
+            for key in ("t", "y", "tau", "v", "flags"):
+                g.create_dataset(key, data=getattr(run, key))
+            g.attrs["metrics"] = json.dumps(comparison.metrics[name])
+            g.attrs["diverged"] = run.diverged
+            g.attrs["flag_names"] = json.dumps(list(FLAGS))
+
+
+__all__ = ["CONTROLLERS", "DEFAULT_TRANSIENT", "DIVERGENCE_FACTOR", "LINEAR", "MARGINAL",
+           "MODEL_BASED", "NEURAL", "Comparison", "compare", "open_loop_bound", "stability_radii",
+           "verdict", "write_runs"]

@@ -1,0 +1,97 @@
+"""How well a run tracked the ideal robot: end-effector errors, their maxima and RMS (whole
+run and after the settling transient), the guard's counts, and the table that sets the
+controllers side by side."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from jointplay.neural.loop import Run
+
+METRICS = ("position", "velocity", "acceleration")
+_SLICES = {"position": slice(0, 2), "velocity": slice(2, 4), "acceleration": slice(4, 6)}
+
+
+def tip_errors(run: Run, reference: np.ndarray, nj: int) -> dict[str, np.ndarray]:
+    """|end-effector error| per sample (Euclidean norm over x, y) for each quantity."""
+    base = 2 * nj
+    ref = reference[: run.y.shape[0]]
+    return {k: np.linalg.norm(run.y[:, base + s.start: base + s.stop]
+                              - ref[:, base + s.start: base + s.stop], axis=1)
+            for k, s in _SLICES.items()}
+
+
+GUARD_METRICS = {"guard_episodes": "episodes", "distrusted_samples": "model_distrusted",
+                 "fallback_samples": "on_fallback_model", "inner_only_samples": "inner_loop_only",
+                 "input_bound_samples": "input_at_trust_bound"}
+
+
+def dense_acceleration_error(run: Run, dense_reference: np.ndarray) -> np.ndarray:
+    """|end-effector acceleration error| at the run's dense points; ``dense_reference`` is the
+    reference's acceleration on the same grid from t = 0 (row i at i T / SUBSTEPS)."""
+    n = run.dense_t.size
+    return np.linalg.norm(run.dense_acceleration - dense_reference[1: n + 1], axis=1)
+
+
+def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int,
+                dense_reference: np.ndarray | None = None) -> dict[str, float]:
+    """Maxima and RMS of the end-effector errors (whole run and after ``transient`` samples),
+    the largest added torque, impacts, whether the run diverged and the guard's counts.
+
+    With ``dense_reference`` and a run that recorded its acceleration between samples, the
+    acceleration metrics are taken over those points (the RMS a time average), the others at
+    the samples."""
+    err = tip_errors(run, reference, nj)
+    out: dict[str, float] = {}
+    dense = dense_reference is not None and run.dense_t.size > 0
+    for k, e in err.items():
+        if k == "acceleration" and dense:
+            assert dense_reference is not None
+            substeps = round(run.dense_t.size / max(1, run.y.shape[0] - 1))
+            after_k = transient * substeps  # the first point after the transient's end
+            e = dense_acceleration_error(run, dense_reference)
+            after = e[after_k:] if e.size > after_k else e
+        else:
+            after = e[transient:] if e.size > transient else e
+        out[f"max_{k}"] = float(np.max(e))
+        out[f"max_{k}_after"] = float(np.max(after))
+        out[f"rms_{k}"] = float(np.sqrt(np.mean(e ** 2)))
+        out[f"rms_{k}_after"] = float(np.sqrt(np.mean(after ** 2)))
+    out["max_torque_added"] = float(np.max(np.abs(run.tau)))
+    out["impacts"] = float(run.impacts)
+    out["diverged"] = 1.0 if run.diverged else 0.0
+    counts = run.guard_counts
+    for key, name in GUARD_METRICS.items():
+        out[key] = float(counts.get(name, 0))
+    return out
+
+
+def metrics_table(metrics: dict[str, dict[str, float]], transient_s: float) -> str:
+    """Markdown table: every controller side by side, and the open-loop / controller ratio."""
+    cols = [("max_position", "max \\|Δp\\| [m]"), ("max_velocity", "max \\|Δv\\| [m/s]"),
+            ("max_acceleration", "max \\|Δa\\| [m/s²]"),
+            ("rms_acceleration", "RMS \\|Δa\\| [m/s²]")]
+    ms = f"{transient_s * 1e3:g} ms"
+    head = ("| controller | " + " | ".join(f"{label}" for _, label in cols)
+            + f" | after {ms}: max \\|Δv\\| | max \\|Δa\\| | RMS \\|Δa\\| | impacts |")
+    lines = [head, "|---" * (len(cols) + 5) + "|"]
+    base = metrics.get("open loop")
+    for name, mt in metrics.items():
+        cells = [f"{mt[k]:.3g}" for k, _ in cols]
+        cells += [f"{mt['max_velocity_after']:.3g}", f"{mt['max_acceleration_after']:.3g}",
+                  f"{mt['rms_acceleration_after']:.3g}", f"{mt['impacts']:.0f}"]
+        label = f"{name} (DIVERGED)" if mt.get("diverged") else name
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    if base is not None:
+        for name, mt in metrics.items():
+            if name == "open loop":
+                continue
+            keys = [k for k, _ in cols] + ["max_velocity_after", "max_acceleration_after",
+                                            "rms_acceleration_after"]
+            cells = [f"{base[k] / mt[k]:.3g}x" if mt[k] > 0 else "-" for k in keys]
+            lines.append(f"| reduction, {name} | " + " | ".join(cells) + " | |")
+    return "\n".join(lines)
+
+
+__all__ = ["GUARD_METRICS", "METRICS", "dense_acceleration_error", "metrics_table",
+           "run_metrics", "tip_errors"]

@@ -1,0 +1,131 @@
+"""The study's report: median and worst seed per case and controller, the goals checked, the
+table and the figure."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointplay.neural.comparison import LINEAR, MODEL_BASED, NEURAL
+from jointplay.neural.study_cases import Case
+from jointplay.neural.study_runs import BASELINES, GOAL_METRICS, REPORTED
+
+PAPER = {"max_position": 2.4e-4, "max_velocity": 7.7e-3}
+
+
+def summarise(rows: list[dict[str, Any]]) -> dict[tuple[str, str], dict[str, Any]]:
+    """(case, controller) -> count, and median and worst of every metric over seeds."""
+    groups: dict[tuple[str, str], list[dict[str, Any]]] = {}
+    for row in rows:
+        groups.setdefault((row["case"], row["controller"]), []).append(row)
+    out = {}
+    for key, items in groups.items():
+        stats: dict[str, Any] = {"runs": len(items)}
+        for metric in REPORTED:
+            values = np.array([r[metric] for r in items], dtype=float)
+            stats[f"median_{metric}"] = float(np.median(values))
+            stats[f"worst_{metric}"] = float(np.max(values))
+        out[key] = stats
+    return out
+
+
+def goal_checks(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case]
+                ) -> list[str]:
+    lines = []
+    first = cases[0].name
+    neural, pd, linear, ol = ((first, n) for n in (NEURAL, "PD", LINEAR, "open loop"))
+    if neural in summary and pd in summary:
+        s, p = summary[neural], summary[pd]
+        diverged = sum(summary[(c.name, n)]["worst_diverged"] > 0 for c in cases
+                       for n in MODEL_BASED if (c.name, n) in summary)
+        lines.append(f"- runs diverged over all cases: {diverged or 'none'}"
+                     f" ({s['runs']} seeds)")
+        for key, label in GOAL_METRICS:
+            met = s[f"worst_{key}"] < p[f"median_{key}"]
+            lines.append(f"- {first}: neural IMC worst seed {s[f'worst_{key}']:.3g} vs PD "
+                         f"{p[f'median_{key}']:.3g} on {label}: "
+                         f"{'beats PD' if met else 'does NOT beat PD'}")
+        for key, label in GOAL_METRICS:
+            if linear in summary:
+                a = summary[linear][f"median_{key}"]
+                n = s[f"median_{key}"]
+                verdict = ("beats" if n < 0.98 * a else "matches (within 2 %)"
+                           if n <= 1.02 * a else "is WORSE than")
+                lines.append(f"- {first}: neural IMC median {n:.3g} {verdict} ARX-IMC median "
+                             f"{a:.3g} on {label}")
+        if ol in summary:
+            ratio = summary[ol]["median_rms_acceleration_after"] / \
+                s["median_rms_acceleration_after"]
+            lines.append(f"- {first}: paper figures: median max |Δp| "
+                         f"{s['median_max_position']:.3g} m (paper 2.4e-4), median max |Δv| "
+                         f"after 50 ms {s['median_max_velocity_after']:.3g} m/s (paper 7.7e-3;"
+                         f" over the whole run {s['median_max_velocity']:.3g}, the journals' "
+                         f"fall), RMS |Δa| after 50 ms reduced {ratio:.3g}x from the open loop "
+                         "(paper: tenfold)")
+    for c in cases[1:]:
+        worse = []
+        for key, label in GOAL_METRICS:
+            ns, ps = summary.get((c.name, NEURAL)), summary.get((c.name, "PD"))
+            if ns and ps and ns[f"worst_{key}"] > 1.1 * ps[f"median_{key}"]:
+                worse.append(f"{label} {ns[f'worst_{key}']:.3g} vs PD "
+                             f"{ps[f'median_{key}']:.3g} "
+                             f"({ns[f'worst_{key}'] / ps[f'median_{key}']:.2g}x)")
+        lines.append(f"- {c.name}: neural IMC worst seed "
+                     + ("within 10 % of PD or better on every metric" if not worse
+                        else "worse than PD by more than 10 %: " + "; ".join(worse)))
+    return lines
+
+
+def summary_table(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case]) -> str:
+    head = ("| case | controller | runs | " + " | ".join(
+        f"{label} median | worst" for _, label in GOAL_METRICS)
+        + " | diverged | guard episodes (median, worst) |")
+    lines = [head, "|---|---|---|" + "---|---|" * len(GOAL_METRICS) + "---|---|"]
+    for c in cases:
+        for name in (*BASELINES, LINEAR, NEURAL):
+            s = summary.get((c.name, name))
+            if not s:
+                continue
+            cells = [f"{s[f'median_{k}']:.3g} | {s[f'worst_{k}']:.3g}" for k, _ in GOAL_METRICS]
+            lines.append(f"| {c.name} | {name} | {s['runs']} | " + " | ".join(cells)
+                         + f" | {'YES' if s['worst_diverged'] > 0 else 'no'} | "
+                         f"{s['median_guard_episodes']:g}, "
+                         f"{s['worst_guard_episodes']:g} |")
+    return "\n".join(lines)
+
+
+def plot_study(rows: list[dict[str, Any]], cases: list[Case], folder: Path) -> list[Path]:
+    from jointplay.common.figures import figure, save
+    from jointplay.neural.control_plots import COLORS
+
+    names = (*BASELINES, LINEAR, NEURAL)
+    fig, axes = figure(len(GOAL_METRICS), 1, max(10, 1.6 * len(cases)), 10, sharex=True)
+    width = 0.8 / len(names)
+    rng = np.random.default_rng(0)
+    for row_i, (key, label) in enumerate(GOAL_METRICS):
+        ax = axes[row_i, 0]
+        for ci, case in enumerate(cases):
+            for ni, name in enumerate(names):
+                values = np.array([r[key] for r in rows if r["case"] == case.name
+                                   and r["controller"] == name], dtype=float)
+                if values.size == 0:
+                    continue
+                x = ci + (ni - (len(names) - 1) / 2) * width
+                jitter = rng.uniform(-0.25, 0.25, values.size) * width
+                ax.scatter(x + jitter, values, s=9, color=COLORS.get(name, "C5"), alpha=0.7,
+                           label=name if ci == 0 else None)
+                ax.hlines(np.median(values), x - 0.45 * width, x + 0.45 * width,
+                          color=COLORS.get(name, "C5"), lw=2)
+        ax.set_yscale("log")
+        ax.set_ylabel(label)
+        ax.grid(True, which="both", axis="y", alpha=0.3)
+    axes[-1, 0].set_xticks(range(len(cases)), [c.name for c in cases], rotation=20)
+    fig.suptitle("Controllers over training seeds, trajectories and clearances (dots: seeds; "
+                 "bars: medians; baselines do not depend on the seed)")
+    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=5)
+    return [save(fig, folder / "study_errors.png")]
+
+
+__all__ = ["PAPER", "goal_checks", "plot_study", "summarise", "summary_table"]

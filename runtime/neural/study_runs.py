@@ -1,0 +1,112 @@
+"""The study's work: one identified model per seed, and the closed-loop runs (baselines once
+per case, the internal-model controllers once per case and seed) through a process pool."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+from jointplay.neural.comparison import DIVERGENCE_FACTOR, MODEL_BASED, compare, open_loop_bound
+from jointplay.neural.control import load_twin
+from jointplay.neural.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_identity
+
+BASELINES = ("open loop", "PD", "computed torque")
+GOAL_METRICS = (("max_position", "max |Δp| [m]"),
+                ("max_velocity_after", "max |Δv| after 50 ms [m/s]"),
+                ("rms_acceleration_after", "RMS |Δa| after 50 ms [m/s²]"))
+REPORTED = (*(k for k, _ in GOAL_METRICS), "max_velocity", "max_acceleration_after",
+            "diverged", "guard_episodes", "fallback_samples", "input_bound_samples")
+
+
+STUDY_JOBS: list[Any] = []  # filled before the pool forks: workers read their job by index
+
+
+def _run_unit(index: int) -> list[dict[str, Any]]:
+    case, scene, model_dir, settings, limit = STUDY_JOBS[index]
+    rows = []
+    if model_dir is None:
+        narx = None
+        result = compare(scene, _dummy_model(scene), settings, controllers=BASELINES,
+                         analyse=False, conditions=case.conditions)
+        seed = -1
+    else:
+        narx = load_narx(model_dir)
+        arx = load_twin(model_dir, narx)
+        result = compare(scene, narx, settings, arx=arx, controllers=MODEL_BASED,
+                         analyse=False, conditions=case.conditions, limit=limit)
+        seed = int(narx.context["training"]["seed"])
+    nj = len(scene.robot.moving_joints)
+    for name, mt in result.metrics.items():
+        row = {"case": case.name, "clearance_um": case.clearance * 1e6, "controller": name,
+               "seed": seed, **{k: mt.get(k, math.nan) for k in REPORTED}}
+        if name == "open loop":
+            row["limit"] = open_loop_bound(result.runs[name], result.reference, nj,
+                                           DIVERGENCE_FACTOR)
+        rows.append(row)
+    return rows
+
+
+def _dummy_model(scene: Any) -> Any:
+    """The baselines need only the inner loop's gains: a model-shaped holder of them."""
+    from types import SimpleNamespace
+
+    from jointplay.neural.identify import DEFAULT_KD, DEFAULT_KP, output_names
+
+    joints = list(scene.robot.moving_joints)
+    names, _ = output_names(joints)
+    return SimpleNamespace(
+        context={"plant": {"inner_loop": {"joints": joints, "kp": [DEFAULT_KP] * len(joints),
+                                          "kd": [DEFAULT_KD] * len(joints)}}},
+        output_index=names.index)
+
+
+def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[Any]:
+    from tqdm import tqdm
+
+    out: list[Any] = []
+    with tqdm(total=len(indices), disable=quiet, desc=label, unit="run") as bar:
+        if workers <= 1:
+            for i in indices:
+                out.append(_run_unit(i))
+                bar.update(1)
+        else:
+            import multiprocessing
+            from concurrent.futures import ProcessPoolExecutor
+
+            methods = multiprocessing.get_all_start_methods()
+            context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+            with ProcessPoolExecutor(workers, mp_context=context) as pool:
+                for rows in pool.map(_run_unit, indices):
+                    out.append(rows)
+                    bar.update(1)
+    return out
+
+
+def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str, Any],
+                  quiet: bool) -> list[Path]:
+    """One identified model per seed (reused when its folder already holds one for this
+    robot); rejected models are left out, and said so."""
+    from jointplay.neural.identify import IdentifyConfig, ModelRejected, identify
+
+    out = []
+    for seed in range(seeds):
+        path = folder / f"seed{seed}"
+        ok = (path / MODEL_FILE).is_file() and load_narx(path).context.get("robot", {}).get(
+            "robot_hash") == robot_identity(scene.robot)["robot_hash"]
+        if not ok and not (path / REJECTED_FILE).is_file():
+            if not quiet:
+                print(f"identifying {path} ...", flush=True)
+            try:
+                identify(scene, path, IdentifyConfig(seed=seed, **identify_args), quiet=True)
+            except ModelRejected as err:
+                if not quiet:
+                    print(f"  {err}")
+        if (path / MODEL_FILE).is_file():
+            out.append(path)
+        elif not quiet:
+            print(f"  seed {seed}: no usable model (rejected by identify), left out")
+    return out
+
+
+__all__ = ["BASELINES", "GOAL_METRICS", "REPORTED", "ensure_models"]
