@@ -19,11 +19,10 @@ from jointplay.neural.control import (
     ControllerSettings,
     compare,
     compile_controller,
-    load_twin,
     verdict,
 )
 from jointplay.neural.imc import FLAGS, input_bound, training_box
-from jointplay.neural.narx import Narx, load_narx
+from jointplay.neural.narx import Narx
 from jointplay.neural.twin import Selection, blend, judge, select_residual, window_loss, windows
 
 
@@ -147,20 +146,6 @@ def test_a_model_worse_than_persistence_is_refused_with_what_to_change() -> None
 
 
 # ---- closed loop on an identified model (slow) ----------------------------------------------
-
-@pytest.fixture(scope="session")
-def identified(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Narx, Narx]:
-    pytest.importorskip("torch")
-    from jointplay.neural.identify import IdentifyConfig, identify
-    from jointplay.scene.definition import default_scene
-
-    out = tmp_path_factory.mktemp("model")
-    identify(default_scene(), out, IdentifyConfig(
-        duration=1.0, n_train=6, n_validation=2, n_test=1, one_step_iterations=30,
-        multi_step_iterations=10, workers=2), quiet=True)
-    narx = load_narx(out)
-    return out, narx, load_twin(out, narx)
-
 
 def _damaged(narx: Narx) -> Narx:
     """The network with the sign of every input's effect flipped: it believes each torque

@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -37,7 +37,9 @@ from jointplay.neural.control import (
     write_runs,
 )
 from jointplay.neural.imc import ControllerSettings
+from jointplay.neural.loop import NO_CONDITIONS, LoopConditions
 from jointplay.neural.narx import MODEL_FILE, Narx, check_robot, load_narx
+from jointplay.neural.noise_tuning import noise_vector
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -106,7 +108,8 @@ def cmd_control(args: argparse.Namespace) -> int:
     comparison = compare(job.scene, job.narx, job.settings, arx=job.arx,
                          transient=args.transient, ct_omega=args.ct_omega,
                          ct_zeta=args.ct_zeta, pd_kp=job.pd_kp, pd_kd=job.pd_kd,
-                         quiet=args.quiet, divergence_factor=args.divergence_factor)
+                         quiet=args.quiet, divergence_factor=args.divergence_factor,
+                         conditions=sensor_noise(job))
     lines = report_lines(args, job, comparison)
     warnings, diverged = stability_lines(comparison, lines)
     if job.scene.name == "paper_4dof":
@@ -171,7 +174,7 @@ def prepare_plot_dir(plot: Path) -> None:
 def report_lines(args: argparse.Namespace, job: ControlJob,
                  comparison: Comparison) -> list[str]:
     """The metrics table and every setting the runs used."""
-    settings, scene = job.settings, job.scene
+    settings, scene = ran_settings(job.settings, comparison), job.scene
     inner = job.narx.context["plant"]["inner_loop"]
     alpha = job.narx.context.get("training", {}).get("metrics", {}).get("residual_weight")
     guard = (f"on (|v| <= {settings.trust_input:g} x training, range margin "
@@ -192,6 +195,8 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         f"{list(job.pd_kp) or inner['kp']}, kd {list(job.pd_kd) or inner['kd']}; computed "
         f"torque omega {args.ct_omega:g} rad/s, zeta {args.ct_zeta:g}; network residual "
         f"weight {alpha if alpha is not None else 'not recorded'}",
+        *([comparison.noise_tuning.describe() + "; every controller measured through that "
+           "noise (seed 1)"] if comparison.noise_tuning else []),
         "compiled step: " + ", ".join(
             f"{name} {us:.2f} us per call" for name, us in comparison.per_call_us.items())
         + f" (buffer path); divergence bound {comparison.limit:.3g} m (x"
@@ -199,6 +204,23 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         "",
         "Stability:",
     ]
+
+
+def sensor_noise(job: ControlJob) -> LoopConditions:
+    """Declared sensor noise is also put on what every controller measures (seeded), so that
+    the baselines are judged under the same sensors."""
+    if not job.settings.measurement_noise:
+        return NO_CONDITIONS
+    return LoopConditions(noise=tuple(noise_vector(job.narx, job.settings)), seed=1)
+
+
+def ran_settings(settings: ControllerSettings, comparison: Comparison) -> ControllerSettings:
+    """The settings the internal-model controllers ran with: the horizon chosen for declared
+    sensor noise in place of the asked one (and the noise, having been used, not again)."""
+    tuning = comparison.noise_tuning
+    if tuning is None:
+        return settings
+    return replace(settings, horizon=tuning.horizon, measurement_noise=())
 
 
 def stability_lines(comparison: Comparison, lines: list[str]) -> tuple[list[str], bool]:
@@ -222,7 +244,8 @@ def test_case_rows(args: argparse.Namespace, job: ControlJob,
     --test-cases), and whether an internal-model controller diverged on one."""
     rows, diverged = [], False
     for label, case_scene in job.cases:
-        sub = compare(case_scene, job.narx, job.settings, arx=job.arx, transient=args.transient,
+        sub = compare(case_scene, job.narx, ran_settings(job.settings, comparison), arx=job.arx,
+                      transient=args.transient, conditions=sensor_noise(job),
                       controllers=("PD", LINEAR, NEURAL), quiet=True, analyse=False,
                       compiled=comparison.controllers)
         cells = []
@@ -256,6 +279,8 @@ def write_outputs(args: argparse.Namespace, job: ControlJob, comparison: Compari
     if args.out:
         write_runs(Path(args.out), comparison,
                    {"settings": asdict(job.settings), "scene": job.scene.name,
+                    "noise_tuning": (asdict(comparison.noise_tuning)
+                                     if comparison.noise_tuning else None),
                     "per_call_us": comparison.per_call_us,
                     "nominal_radius": comparison.nominal_radius,
                     "network_checksum": job.narx.checksum(),

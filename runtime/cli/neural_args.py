@@ -179,9 +179,39 @@ def add_settings_arguments(p: argparse.ArgumentParser, d: ControllerSettings) ->
                    help="seconds the outer loop waits at the start, the inner PD alone, before "
                         "it starts its models from the measured history (default: twice the "
                         "start-up the model's training runs left out, 0.1 s)")
+    p.add_argument("--measurement-noise", metavar="NAME=STD,...",
+                   help="the sensors' noise, standard deviation per measured output in its "
+                        "unit, e.g. q2=3e-6,dq2=4e-3,tip_vx=1e-3: every controller measures "
+                        "through it (control-study: see its noise case), and the "
+                        "internal-model controllers choose their horizon for it (the shortest "
+                        "whose predicted RMS tip acceleration from the noise is within "
+                        "1 + --noise-budget of the inner loop's alone)")
+    p.add_argument("--noise-budget", type=float, default=d.noise_budget,
+                   help="with --measurement-noise: the increase of the noise's RMS tip "
+                        "acceleration over the inner loop's alone that the outer loop may add "
+                        "(default %(default)s)")
     p.add_argument("--fallback-hold", type=int, default=d.fallback_hold,
                    help="samples on the fallback after a first intervention, doubling with "
                         "each further one (default %(default)s)")
+
+
+def noise_pairs(text: str | None) -> tuple[tuple[str, float], ...]:
+    """``--measurement-noise``'s NAME=STD pairs (names are checked against the model later)."""
+    out = []
+    for item in (text or "").split(","):
+        if not item.strip():
+            continue
+        name, sep, value = item.partition("=")
+        try:
+            std = float(value)
+        except ValueError:
+            std = math.nan
+        if not sep or not name.strip() or not math.isfinite(std) or std < 0:
+            raise DescriptionError("--measurement-noise", f"{item.strip()!r}: give NAME=STD "
+                                   "pairs, e.g. dq2=4e-3,tip_vx=1e-3 (STD >= 0, in the "
+                                   "output's unit)")
+        out.append((name.strip(), std))
+    return tuple(out)
 
 
 def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> ControllerSettings:
@@ -196,5 +226,6 @@ def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> Controlle
         rate_limit=float_list(args.rate_limit, "--rate-limit"), iterations=args.iterations,
         guard=not args.no_guard, trust_input=args.trust_input, trust_range=args.trust_range,
         trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold,
-        engage=args.engage)
+        engage=args.engage, measurement_noise=noise_pairs(args.measurement_noise),
+        noise_budget=args.noise_budget)
     return resolve_settings(narx, settings) if narx is not None else settings

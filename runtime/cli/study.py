@@ -38,6 +38,7 @@ from jointplay.neural.study import (
     Case,
     case_list,
     case_scene,
+    declared,
     ensure_models,
     goal_checks,
     nominal_clearance,
@@ -77,6 +78,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_iterations_argument(p, "--identify-iterations",
                             "identify: L-BFGS iterations (default %(default)s)")
     add_settings_arguments(p, ControllerSettings())
+    p.add_argument("--undeclared-noise", action="store_true",
+                   help="run the noise case without telling the controllers the sensors' "
+                        "noise (by default they are told, and choose their horizon for it)")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
     p.set_defaults(func=cmd_study)
     return p
@@ -119,6 +123,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         "",
         summary_table(summary, plan.cases),
         "",
+        *noise_note(rows, args.undeclared_noise),
         "Goals:",
         "",
         *goal_checks(summary, plan.cases),
@@ -134,12 +139,32 @@ def cmd_study(args: argparse.Namespace) -> int:
     return 3 if diverged else 0
 
 
+def noise_note(rows: list[dict[str, Any]], undeclared: bool) -> list[str]:
+    """A line saying what the noise case's controllers were told and which horizons they took."""
+    noisy = [r for r in rows if r["case"] == "noise" and "horizon" in r]
+    if not noisy:
+        return []
+    if undeclared:
+        return ["Noise case: the controllers were not told the sensors' noise "
+                "(--undeclared-noise).", ""]
+    horizons = sorted({int(r["horizon"]) for r in noisy})
+    return ["Noise case: the internal-model controllers were told the sensors' noise and "
+            f"chose horizon {', '.join(map(str, horizons))} (jointplay.neural.noise_tuning).",
+            ""]
+
+
 def study_plan(args: argparse.Namespace) -> StudyPlan:
     """The scene, the cases and the identification settings, every flag checked."""
     scene = load_control_scene(args.scene, args.quiet)
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise DescriptionError("--out", f"{out} exists and is not a folder")
+    if args.measurement_noise:
+        raise DescriptionError("--measurement-noise", "control-study's noise case puts its own "
+                               "noise on the measurements and tells the controllers (see "
+                               "--help); run it with --cases noise, or --undeclared-noise to "
+                               "leave them untold; `jointplay control --measurement-noise` "
+                               "runs one model under noise of your choice")
     if args.seeds < 1:
         raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
     names = tuple(c.strip() for c in args.cases.split(",") if c.strip())
@@ -199,8 +224,9 @@ def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, lis
     limits = {r["case"]: r["limit"] for r in rows if "limit" in r}
     start = len(STUDY_JOBS)
     for c in plan.cases:
+        told = settings if args.undeclared_noise else declared(settings, plan.scene, c)
         for path in models[c.clearance]:
-            STUDY_JOBS.append((c, plan.scenes[c.name], path, settings, limits[c.name]))
+            STUDY_JOBS.append((c, plan.scenes[c.name], path, told, limits[c.name]))
     model_rows = pool_map(list(range(start, len(STUDY_JOBS))), args.workers, args.quiet,
                            "internal-model runs")
     return rows + [r for rs in model_rows for r in rs]
@@ -211,7 +237,7 @@ def write_study(plan: StudyPlan, rows: list[dict[str, Any]],
     """study.csv, study.md, study.json and the plots; the paths written."""
     out = plan.out
     buf = io.StringIO()
-    fields = ["case", "clearance_um", "controller", "seed", *REPORTED]
+    fields = ["case", "clearance_um", "controller", "seed", "horizon", *REPORTED]
     writer = csv.DictWriter(buf, fieldnames=fields, extrasaction="ignore")
     writer.writeheader()
     writer.writerows(rows)

@@ -40,6 +40,7 @@ from jointplay.neural.loop import (
 )
 from jointplay.neural.metrics import run_metrics, tip_errors
 from jointplay.neural.narx import Narx
+from jointplay.neural.noise_tuning import NoiseTuning, tune_to_noise
 
 DEFAULT_TRANSIENT = 0.05  # s: journals settling from e = 0, reported separately
 NEURAL, LINEAR = "neural IMC", "ARX-IMC"
@@ -62,6 +63,7 @@ class Comparison:
     tau_ff: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
     # the reference's end-effector acceleration every T / SUBSTEPS from t = 0
     dense_reference: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    noise_tuning: NoiseTuning | None = None  # the horizon chosen for declared sensor noise
 
     @property
     def controller(self) -> Controller:
@@ -98,6 +100,9 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     model = load_scene_model(scene)
     nj = len(scene.robot.moving_joints)
     names = [c for c in controllers if arx is not None or c != LINEAR]
+    tuning = None
+    if settings.measurement_noise and any(c in MODEL_BASED for c in names):
+        settings, tuning = tune_to_noise(narx, arx, settings)
     ctrls = _compile(names, narx, arx, settings, compiled)
     if limit is None:
         names = ["open loop", *[c for c in names if c != "open loop"]]
@@ -127,7 +132,7 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     metrics = {name: run_metrics(run, reference, nj, k0, dense_reference)
                for name, run in runs.items()}
     result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau,
-                        dense_reference=dense_reference)
+                        dense_reference=dense_reference, noise_tuning=tuning)
     if analyse:
         _analyse(result)
     return result

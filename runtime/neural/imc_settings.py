@@ -38,7 +38,15 @@ class ControllerSettings:
     # torque prevents; engaging at its end the IMC still removed the decaying bounce in a
     # few samples: offset case, median RMS |Δa| 2.15e-3 against 1.25e-3; docs/control.md).
     engage: float | None = None
-
+    # The sensors' noise, (output name, standard deviation in its unit) per noisy output;
+    # when given, the horizon is chosen for it (jointplay.neural.noise_tuning): the shortest
+    # whose predicted RMS tip acceleration from the noise is within 1 + noise_budget of the
+    # inner loop's alone.
+    measurement_noise: tuple[tuple[str, float], ...] = ()
+    # 0.15: over 10 seeds under the study's noise, 0.10 took horizons 30-40 and kept the RMS
+    # acceleration within 10 % of PD's but let the worst seed's velocity and position errors
+    # grow to 1.4x and 1.3x PD's; 0.15 took 20-25 (docs/control.md, "Measurement noise").
+    noise_budget: float = 0.15
 
 
 def default_tracked(narx: Narx, horizon: int) -> tuple[str, ...]:
@@ -91,9 +99,12 @@ def resolve_settings(narx: Narx, settings: ControllerSettings) -> ControllerSett
             ("--fallback-hold", settings.fallback_hold, isinstance(settings.fallback_hold, int)
              and settings.fallback_hold >= 1, "an integer >= 1"),
             ("--engage", settings.engage, settings.engage is None
-             or (math.isfinite(settings.engage) and settings.engage >= 0), "a number >= 0")):
+             or (math.isfinite(settings.engage) and settings.engage >= 0), "a number >= 0"),
+            ("--noise-budget", settings.noise_budget, math.isfinite(settings.noise_budget)
+             and settings.noise_budget > 0, "a positive number")):
         if not ok:
             raise DescriptionError(flag, f"must be {allowed}, got {value!r}")
+    _check_noise(narx, settings.measurement_noise)
     tracked = settings.tracked or default_tracked(narx, max(1, settings.horizon))
     for name in tracked:
         if name not in narx.output_names:
@@ -119,6 +130,19 @@ def resolve_settings(narx: Narx, settings: ControllerSettings) -> ControllerSett
     return replace(settings, tracked=tuple(tracked), scales=tuple(float(s) for s in scales),
                    torque_limit=tuple(float(v) for v in limits),
                    rate_limit=tuple(float(v) for v in rates), engage=engage)
+
+
+def _check_noise(narx: Narx, noise: tuple[tuple[str, float], ...]) -> None:
+    names = [name for name, _ in noise]
+    for name, std in noise:
+        if name not in narx.output_names:
+            raise DescriptionError("--measurement-noise", f"{name!r} is not an output of the "
+                                   f"model (outputs: {', '.join(narx.output_names)})")
+        if not (math.isfinite(std) and std >= 0):
+            raise DescriptionError("--measurement-noise", f"{name}: the standard deviation "
+                                   f"must be a finite number >= 0, got {std!r}")
+    if len(set(names)) != len(names):
+        raise DescriptionError("--measurement-noise", "names an output twice")
 
 
 __all__ = ["ControllerSettings", "default_tracked", "resolve_settings"]

@@ -8,7 +8,9 @@ a trajectory and what the loop is exposed to:
 - ``slow``, ``fast``: other frequencies and amplitudes (0.5 Hz at 1.25x, 2 Hz at 0.5x);
 - ``offset``: two harmonics and a constant offset;
 - ``disturbance``: the scene, and a torque step on the plant at 1 s that no model knows;
-- ``noise``: the scene, with white noise on every signal the controllers measure;
+- ``noise``: the scene, with white noise on every signal the controllers measure; the
+  internal-model controllers are told the noise and choose their horizon for it
+  (jointplay.neural.noise_tuning; ``--undeclared-noise``: they are not told);
 - ``delay``: the scene, with one sample of actuator delay;
 - ``clearance <c>``: the scene's trajectory on a robot whose clearance joints have radial
   clearance c, with models identified on that robot.
@@ -27,6 +29,7 @@ from jointplay.neural.study_cases import (
     Case,
     case_list,
     case_scene,
+    declared,
     noise_levels,
     nominal_clearance,
 )
@@ -39,6 +42,6 @@ from jointplay.neural.study_runs import (
 )
 
 __all__ = ["BASELINES", "CASES", "GOAL_METRICS", "NOISE", "PAPER", "REPORTED", "Case",
-           "case_list", "case_scene", "ensure_models", "goal_checks",
+           "case_list", "case_scene", "declared", "ensure_models", "goal_checks",
            "noise_levels", "nominal_clearance", "plot_study", "summarise",
            "summary_table"]

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
+from jointplay.neural.imc_settings import ControllerSettings
 from jointplay.neural.loop import LoopConditions
 
 CASES = ("scene", "slow", "fast", "offset", "disturbance", "noise", "delay")
@@ -78,6 +79,19 @@ def noise_levels(scene: Any) -> tuple[float, ...]:
     return tuple(NOISE.get(n, NOISE["dq" if n.startswith("dq") else "q"]) for n in names)
 
 
+def declared(settings: ControllerSettings, scene: Any, case: Case) -> ControllerSettings:
+    """The settings a case's internal-model controllers run with: a case with measurement
+    noise declares it (as a sensor's data sheet would), unless the settings already declare
+    some noise."""
+    if not case.conditions.noise or settings.measurement_noise:
+        return settings
+    from jointplay.neural.identify import output_names
+
+    names, _ = output_names(scene.robot.moving_joints)
+    return replace(settings, measurement_noise=tuple(
+        (n, float(std)) for n, std in zip(names, case.conditions.noise, strict=True) if std))
+
+
 def case_scene(scene: Any, case: Case) -> Any:
     from jointplay.neural.identify import with_torques
     from jointplay.robot import with_parameters
@@ -105,5 +119,5 @@ def nominal_clearance(scene: Any) -> float:
     return values.pop()
 
 
-__all__ = ["CASES", "NOISE", "Case", "case_list", "case_scene", "noise_levels",
+__all__ = ["CASES", "NOISE", "Case", "case_list", "case_scene", "declared", "noise_levels",
            "nominal_clearance"]

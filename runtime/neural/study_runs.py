@@ -43,6 +43,9 @@ def _run_unit(index: int) -> list[dict[str, Any]]:
         if name == "open loop":
             row["limit"] = open_loop_bound(result.runs[name], result.reference, nj,
                                            DIVERGENCE_FACTOR)
+        if narx is not None:
+            row["horizon"] = (result.noise_tuning.horizon if result.noise_tuning is not None
+                              else settings.horizon)
         rows.append(row)
     return rows
 
