@@ -225,10 +225,12 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
         comparison.limit / DIVERGENCE_FACTOR
     if counts.get("episodes", 0):
         warn = True
-        parts.append(f"bounded over the {duration:g} s run only with the guard: the network was "
-                     f"distrusted {counts['episodes']} time(s) ({counts['on_fallback_model']} "
-                     f"samples on the ARX fallback, {counts['inner_loop_only']} with the inner "
-                     "loop alone)")
+        # A controller without a fallback (ARX-IMC) hands over to the inner loop alone.
+        what, where = (("the network was", f"{counts['on_fallback_model']} samples on the ARX "
+                        "fallback, ") if name == NEURAL else (f"its model ({name}) was", ""))
+        parts.append(f"bounded over the {duration:g} s run only with the guard: {what} "
+                     f"distrusted {counts['episodes']} time(s) ({where}"
+                     f"{counts['inner_loop_only']} samples with the inner loop alone)")
     else:
         parts.append(f"bounded over the {duration:g} s run, no fallback")
     if counts.get("input_at_trust_bound", 0):

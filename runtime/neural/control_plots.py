@@ -188,7 +188,7 @@ def _torque(comparison: Comparison, scene: Any) -> Figure:
 
 def _added(ax: Any, name: str, run: Run, j: int) -> None:
     """The torque a controller adds at joint index ``j``, its outer loop's v, and the samples
-    on which the guard distrusted the network."""
+    on which the guard distrusted the controller's model."""
     if name != "open loop":
         ax.plot(run.t, run.tau[:, j], color=_color(name), lw=_width(name),
                 label=f"{name}: added")
@@ -198,7 +198,7 @@ def _added(ax: Any, name: str, run: Run, j: int) -> None:
     if run.flags.size and np.any(run.flags[:, 0] > 0.5):
         hit = run.t[: run.flags.shape[0]][run.flags[:, 0] > 0.5]
         ax.plot(hit, np.zeros_like(hit), "|", color=_color(name), ms=10,
-                label=f"{name}: network distrusted")
+                label=f"{name}: model distrusted")
 
 
 __all__ = ["COLORS", "figure", "plot_comparison", "save"]

@@ -292,7 +292,7 @@ static int {name}_kernel(const double** arg, double** res) {{
   }}
   okm = m_branch(hist, upast, vp, ef, target, dvm);
   use_main = okm && hold <= 0;
-  {"okf = f_branch(histf, upast, vp, eff, target, dvf);" if fb else ""}
+  {"if (!use_main) okf = f_branch(histf, upast, vp, eff, target, dvf);" if fb else ""}
   use_back = !use_main && okf;
 """
 
