@@ -204,7 +204,9 @@ class NativeIntegrator:
         handle = getattr(self, "_handle", None)
         if handle is not None and handle.value:
             self.lib.jp_free(handle)
-            self._handle = ctypes.c_void_p(0)
+            # Cleared in place: at interpreter shutdown the ctypes module global may already
+            # be gone, and a new c_void_p could not be made.
+            handle.value = None
 
     def reset(self, x0: np.ndarray, t0: float = 0.0) -> None:
         x = np.ascontiguousarray(x0, dtype=np.float64)
