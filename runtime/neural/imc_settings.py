@@ -16,12 +16,13 @@ class ControllerSettings:
     """The controller's tuning; every field has a command-line flag of the same name."""
 
     horizon: int = 5  # d: samples ahead the prediction is matched (5: the horizon every
-    # study case was measured with; on the default scene the network tracks as well or
-    # better at 1, 3 and 4 over 10 seeds, a little worse at 10: docs/control.md)
+    # study case was measured with; on the default scene the network tracks a little better
+    # at 1, 3 and 4 over 10 seeds and worse at 10, but at 1 it rings at 10 µm clearance:
+    # docs/control.md)
     regularisation: float = 1e-3  # lam, in units of the scaled outputs per (N m)^2
     setpoint_filter: float = 0.9  # a: the target leaves the deviation measured at
     # engagement over about 10 samples instead of at once (median RMS |Δa| over 10 seeds,
-    # offset case 1.33e-3 -> 1.25e-3, scene 9.9e-4 -> 9.8e-4; docs/control.md)
+    # offset case 1.31e-3 -> 1.23e-3, scene 9.97e-4 -> 9.61e-4; docs/control.md)
     mismatch_filter: float = 0.9  # b
     tracked: tuple[str, ...] = ()  # outputs in C; default: see default_tracked
     scales: tuple[float, ...] = ()  # error of each tracked output that counts as 1
@@ -36,8 +37,9 @@ class ControllerSettings:
     # s the outer loop waits at the start (v = 0, the inner PD alone) before it starts its
     # models from the measured history; None: twice the start-up the model's training runs
     # left out (the journals falling from the centred start and bouncing, which no joint
-    # torque prevents; engaging at its end the IMC still removed the decaying bounce in a
-    # few samples: offset case, median RMS |Δa| 2.15e-3 against 1.25e-3; docs/control.md).
+    # torque prevents; engaging at its end, the IMC meets the decaying bounce: offset case,
+    # median RMS |Δa| 2.11e-3 against 1.23e-3; engaging at 0 the worst of 10 seeds is 4.4x
+    # worse on the scene; docs/control.md).
     engage: float | None = None
     # The sensors' noise, (output name, standard deviation in its unit) per noisy output;
     # when given, the horizon is chosen for it (jointplay.neural.noise_tuning): the shortest
