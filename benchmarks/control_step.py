@@ -3,7 +3,8 @@
     python benchmarks/control_step.py --out out/bench/control_step [--model MODEL_DIR]
 
 Variants, each generated, compiled (through the cache) and called through FastFunction's
-preallocated buffers, median of 5 x 20 000 calls:
+preallocated buffers, 15 rounds of 20 000 calls with the variants interleaved; the fastest
+round and the median round are reported:
 
 - ``trivial``: a function that doubles two numbers (the Python-to-C call overhead);
 - ``before``: the step as it was: CasADi's straight-line SX code, the network only, no guard,
@@ -40,7 +41,6 @@ from jointplay.neural.imc import (
     ControllerSettings,
     compile_controller,
     generate_c,
-    per_call_us,
     resolve_settings,
 )
 from jointplay.neural.narx import Narx
@@ -93,7 +93,8 @@ def main() -> None:
     else:
         model = random_model()
         twin = linear_twin(model)
-    rows = [_call_overhead_row(), *_variant_rows(model, twin)]
+    pairs = [_call_overhead(), *_variants(model, twin)]
+    rows = _measure(pairs, ROUNDS, CALLS)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     buf = io.StringIO()
@@ -107,26 +108,23 @@ def main() -> None:
     print(text)
 
 
-def _call_overhead_row() -> dict[str, Any]:
-    """The cost of calling a trivial compiled function: the floor under every variant."""
+ROUNDS = 15  # rounds over all variants, interleaved: a burst of other work on a shared
+CALLS = 20000  # machine then slows every variant's same round, not one variant's whole run
+
+
+def _call_overhead() -> tuple[dict[str, Any], FastFunction]:
+    """A trivial compiled function: the call's cost, the floor under every variant."""
     x = ca.SX.sym("x", 2)
     gen = ca.CodeGenerator("trivial.c", {"with_header": False})
     gen.add(ca.Function("trivial", [x], [2 * x]))
     lib, _ = compile_source(gen.dump())
     trivial = FastFunction(ca.external("trivial", str(lib)))
-    times = []
-    for _ in range(5):
-        t0 = time.process_time()
-        for _ in range(20000):
-            trivial.trigger()
-        times.append((time.process_time() - t0) / 20000)
-    return {"variant": "trivial (call overhead)", "horizon": "-", "guard": "-",
-            "code": "SX", "sx_operations": 2, "compile_s": 0.0,
-            "us_per_call": float(np.median(times)) * 1e6}
+    return ({"variant": "trivial (call overhead)", "horizon": "-", "guard": "-",
+             "code": "SX", "sx_operations": 2, "compile_s": 0.0}, trivial)
 
 
-def _variant_rows(model: Any, twin: Any) -> list[dict[str, Any]]:
-    """Each way of compiling the controller step: its size, gcc time and cost per call."""
+def _variants(model: Any, twin: Any) -> list[tuple[dict[str, Any], FastFunction]]:
+    """Each way of compiling the controller step: its size, gcc time and compiled call."""
     variants = [
         ("before: CasADi SX code, network only", model, None, False,
          ControllerSettings(horizon=10, guard=False, tracked=TRACKED)),
@@ -137,17 +135,36 @@ def _variant_rows(model: Any, twin: Any) -> list[dict[str, Any]]:
          ControllerSettings(tracked=TRACKED)),
         ("ARX-IMC, loop kernel (default)", twin, None, True, ControllerSettings(
             tracked=TRACKED))]
-    rows = []
+    out = []
     for label, m, fallback, kernel, settings in variants:
         settings = resolve_settings(m, settings)
         _, fn, _ = generate_c(m, settings, fallback)
         ctrl = compile_controller(m, settings, fallback=fallback, kernel=kernel)
-        rows.append({"variant": label, "horizon": settings.horizon,
+        ctrl.fast.inputs[3][:] = ctrl.initial_state(np.zeros(ctrl.model.n_outputs))
+        out.append(({"variant": label, "horizon": settings.horizon,
                      "guard": "on" if settings.guard else "off",
                      "code": "loops" if kernel else "SX",
                      "sx_operations": fn.n_instructions(),
-                     "compile_s": ctrl.compile_seconds, "us_per_call": per_call_us(ctrl)})
-        print(f"{label}: {rows[-1]['us_per_call']:.2f} us", flush=True)
+                     "compile_s": ctrl.compile_seconds}, ctrl.fast))
+    return out
+
+
+def _measure(pairs: list[tuple[dict[str, Any], FastFunction]], rounds: int,
+             calls: int) -> list[dict[str, Any]]:
+    """CPU time per call of every variant, ``rounds`` rounds of ``calls`` calls each, the
+    variants interleaved within a round; the fastest round and the median round."""
+    times: list[list[float]] = [[] for _ in pairs]
+    for _ in range(rounds):
+        for i, (_, fast) in enumerate(pairs):
+            t0 = time.process_time()
+            for _ in range(calls):
+                fast.trigger()
+            times[i].append((time.process_time() - t0) / calls * 1e6)
+    rows = []
+    for (row, _), t in zip(pairs, times, strict=True):
+        rows.append({**row, "us_per_call_min": min(t), "us_per_call": float(np.median(t))})
+        print(f"{row['variant']}: {min(t):.2f} us fastest, {np.median(t):.2f} median round",
+              flush=True)
     return rows
 
 
@@ -156,14 +173,14 @@ def _markdown(rows: list[dict[str, Any]], what: str) -> str:
     lines = [f"Compiled controller step ({what}); "
              f"gcc {' '.join(STEP_CFLAGS)}; {platform.processor() or platform.machine()}, "
              f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f} at the end", "",
-             "| variant | horizon | guard | code | SX operations | compile s | CPU µs per call | "
-             "vs before |",
+             "| variant | horizon | guard | code | SX operations | compile s | CPU µs per call, "
+             f"fastest / median of {ROUNDS} rounds | vs before (median) |",
              "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r['variant']} | {r['horizon']} | {r['guard']} | {r['code']} | "
                      f"{r['sx_operations']} | "
-                     f"{r['compile_s']:.1f} | {r['us_per_call']:.2f} | "
-                     f"{before / r['us_per_call']:.2f}x |")
+                     f"{r['compile_s']:.1f} | {r['us_per_call_min']:.2f} / "
+                     f"{r['us_per_call']:.2f} | {before / r['us_per_call']:.2f}x |")
     return "\n".join(lines) + "\n"
 
 

@@ -444,3 +444,21 @@ def test_training_data_with_nan_is_refused() -> None:
     bad = replace(good, y=y)
     with pytest.raises(DescriptionError, match=r"non-finite y at sample 3, column 1"):
         check_finite([good, bad])
+
+
+def test_step_vector_flags_follow_the_processor(tmp_path: Path,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    import platform
+
+    from jointplay.neural.imc import _vector_flags
+
+    info = tmp_path / "cpuinfo"
+    info.write_text("processor\t: 0\nflags\t\t: fpu sse2 avx avx2 fma bmi2\n")
+    monkeypatch.setattr(platform, "machine", lambda: "x86_64")
+    assert _vector_flags(str(info)) == ("-mavx2", "-mfma")
+    info.write_text("processor\t: 0\nflags\t\t: fpu sse2 avx\n")
+    assert _vector_flags(str(info)) == ()
+    assert _vector_flags(str(tmp_path / "missing")) == ()
+    monkeypatch.setattr(platform, "machine", lambda: "aarch64")
+    info.write_text("flags\t\t: avx2 fma\n")
+    assert _vector_flags(str(info)) == ()
