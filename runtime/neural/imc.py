@@ -73,10 +73,10 @@ def _vector_flags(cpuinfo: str = "/proc/cpuinfo") -> tuple[str, ...]:
 
 
 # The loop kernel is a few kilobytes: -O3 compiles it in about a second and vectorises its
-# column sums (2x faster than -O2 here), and with AVX2 and FMA about 20 % faster again
-# (4.8 -> 3.8 us per step, benchmarks/control_step.py; FMA changes the last bit of a product's
-# rounding, and the kernel stays within 1e-12 of CasADi's step). CasADi's straight-line code
-# (iterations > 1) keeps the models' -O1: -O2 compiled it 2.5x longer for no gain.
+# column sums (2x faster than -O2 here), and with AVX2 and FMA faster again (3.7 us per
+# step, docs/control.md "Cost of the controller step"; FMA changes the last bit of a
+# product's rounding, and the kernel stays within 1e-12 of CasADi's step). CasADi's code
+# for iterations > 1 keeps the models' -O1: -O2 compiled it 2.5x longer for no gain.
 STEP_CFLAGS = ("-O3", "-fPIC", "-shared", "-fno-math-errno", *_vector_flags())
 SX_CFLAGS = ("-O1", "-fPIC", "-shared", "-fno-math-errno")
 
