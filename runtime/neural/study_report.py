@@ -71,7 +71,7 @@ def goal_checks(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case
             if ns and ps and ns[f"worst_{key}"] > 1.1 * ps[f"median_{key}"]:
                 worse.append(f"{label} {ns[f'worst_{key}']:.3g} vs PD "
                              f"{ps[f'median_{key}']:.3g} "
-                             f"({ns[f'worst_{key}'] / ps[f'median_{key}']:.2g}x)")
+                             f"({ns[f'worst_{key}'] / ps[f'median_{key}']:.3g}x)")
         lines.append(f"- {c.name}: neural IMC worst seed "
                      + ("within 10 % of PD or better on every metric" if not worse
                         else "worse than PD by more than 10 %: " + "; ".join(worse)))
