@@ -112,6 +112,8 @@ def cmd_control(args: argparse.Namespace) -> int:
                          conditions=sensor_noise(job))
     lines = report_lines(args, job, comparison)
     warnings, diverged = stability_lines(comparison, lines)
+    if comparison.noise_tuning is not None and not comparison.noise_tuning.met:
+        warnings.append(comparison.noise_tuning.describe())
     if job.scene.name == "paper_4dof":
         lines += ["", "paper (its robot, with control): max |Δp| 2.4e-4 m, max |Δv| 7.7e-3 m/s, "
                       "acceleration error reduced tenfold"]
