@@ -194,3 +194,73 @@ def test_a_budget_no_horizon_meets_is_said_plainly() -> None:
     text = tuning.describe()
     assert "horizon 100" in text and "NO horizon up to" in text and "--noise-budget" in text
     assert HORIZONS[-1] == 100 and tuning.ratio == 1.05
+
+
+def test_pairwise_filter_reduces_to_the_first_order_one_without_the_position() -> None:
+    """With the position's noise far larger than its speed's, the pair's Kalman gain on the
+    speed is the first-order filter's 1 - b and the position adds nothing; with the
+    study's noise the position dominates the speed's estimate."""
+    from test_control import random_narx
+
+    from jointplay.neural.mismatch_filter import pair_gains
+
+    model = random_narx(5)
+    for b in (0.8, 0.9, 0.95):
+        blind = resolve_settings(model, ControllerSettings(
+            mismatch_filter=b, tracked=("q2", "q3"),
+            measurement_noise=(("q2", 1e3), ("dq2", 4e-3))))
+        (pg,) = pair_gains(model, blind)
+        assert (pg.position, pg.velocity) == (0, 2)
+        assert pg.gain[1, 1] == pytest.approx(1 - b, rel=1e-6)
+        assert abs(pg.gain[1, 0]) * 1e3 < 1e-6 * (1 - b)  # a position residual of 1 sigma
+    told = resolve_settings(model, ControllerSettings(
+        tracked=("q2", "q3"), measurement_noise=(("q2", 3e-6), ("dq2", 4e-3))))
+    (pg,) = pair_gains(model, told)
+    assert pg.gain[1, 1] < 0.1 and pg.gain[1, 0] * 3e-6 > pg.gain[1, 1] * 4e-3
+    # No pair without noise declared on both members; none without any noise.
+    assert pair_gains(model, resolve_settings(model, ControllerSettings(
+        tracked=("q2", "q3"), measurement_noise=(("dq2", 4e-3),)))) == []
+    assert pair_gains(model, resolve_settings(model, ControllerSettings(
+        tracked=("q2", "q3")))) == []
+
+
+def test_pairwise_filter_follows_a_ramp_without_lag() -> None:
+    """A mismatch growing at a constant rate (position a ramp, velocity its slope): the
+    steady-state filter's fixed point is the signal itself, so its error dies out."""
+    from test_control import random_narx
+
+    from jointplay.neural.mismatch_filter import pair_gains
+
+    model = random_narx(6)
+    settings = resolve_settings(model, ControllerSettings(
+        tracked=("q2", "q3"), measurement_noise=(("q3", 3e-6), ("dq3", 4e-3))))
+    (pg,) = pair_gains(model, settings)
+    t, slope = model.sample_time, 2e-3
+    est = np.zeros(2)
+    for k in range(3000):
+        truth = np.array([slope * k * t, slope])
+        pred = np.array([est[0] + t * est[1], est[1]])
+        est = pred + pg.gain @ (truth - pred)
+    assert est == pytest.approx(np.array([slope * 2999 * t, slope]), rel=1e-9)
+
+
+def test_declared_noise_steps_run_as_casadi_code() -> None:
+    from test_control import random_narx
+
+    from jointplay.neural.imc import compile_controller
+    from jointplay.neural.imc_kernel import kernel_source
+
+    model = random_narx(7)
+    settings = resolve_settings(model, ControllerSettings(
+        horizon=2, tracked=("q2", "q3"), measurement_noise=(("q2", 3e-6), ("dq2", 4e-3))))
+    with pytest.raises(ValueError, match="first-order mismatch filter only"):
+        kernel_source(model, settings, None, "step")
+    ctrl = compile_controller(model, settings)
+    assert "_kernel(" not in ctrl.source
+    # The compiled step is the CasADi function with the pairwise filter.
+    state = ctrl.initial_state(np.zeros(model.n_outputs))
+    y = np.linspace(-1e-3, 1e-3, model.n_outputs)
+    out = ctrl.step(y, np.zeros(model.n_outputs), np.zeros(2), state)
+    ref = ctrl.function(y, np.zeros(model.n_outputs), np.zeros(2), state)
+    assert np.allclose(np.asarray(out[1]).ravel(), np.asarray(ref[1]).ravel(), rtol=1e-12,
+                       atol=1e-15)

@@ -54,6 +54,7 @@ from jointplay.neural.internal_model import (
     is_linear,
     training_box,
 )
+from jointplay.neural.mismatch_filter import pair_gains
 from jointplay.neural.narx import Narx
 
 
@@ -187,7 +188,9 @@ def compile_controller(model: Narx, settings: ControllerSettings, fallback: Narx
     from jointplay.store.model import FastFunction
 
     settings = resolve_settings(model, settings)
-    if kernel and settings.iterations == 1:
+    # The loop kernel implements the first-order mismatch filter; the pairwise filter of
+    # declared noise (mismatch_filter.py) runs as CasADi's code.
+    if kernel and settings.iterations == 1 and not pair_gains(model, settings):
         from jointplay.neural.imc_kernel import kernel_library_source
 
         fn, layout = build_step(model, settings, fallback)

@@ -35,6 +35,7 @@ from jointplay.neural.internal_model import (
     training_box,
 )
 from jointplay.neural.kernel_network import TANH, _array, _c, _network
+from jointplay.neural.mismatch_filter import pair_gains
 from jointplay.neural.narx import Narx
 
 
@@ -209,6 +210,8 @@ def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | No
     s = settings
     if s.iterations != 1:
         raise ValueError("the loop kernel implements one Gauss-Newton iteration")
+    if pair_gains(model, s):
+        raise ValueError("the loop kernel implements the first-order mismatch filter only")
     if fallback is not None and not s.guard:
         fallback = None
     nu = model.n_inputs

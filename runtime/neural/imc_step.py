@@ -20,6 +20,7 @@ from jointplay.neural.internal_model import (
     is_linear,
     training_box,
 )
+from jointplay.neural.mismatch_filter import pair_gains
 from jointplay.neural.narx import Narx
 
 STEP_NAME = "imc_step"
@@ -44,6 +45,19 @@ def _branch(model: Narx, s: ControllerSettings, hist: Any, upast: Any, v_prev: A
     ny, nu, na, d = model.n_outputs, model.n_inputs, model.output_lags, s.horizon
     e = dev - hist[:ny]
     e_f = s.mismatch_filter * e_f_prev + (1 - s.mismatch_filter) * e
+    pairs = pair_gains(model, s)
+    if pairs:
+        # Declared noise: position-velocity pairs estimated together (mismatch_filter.py).
+        rows = [e_f[i] for i in range(ny)]
+        t = model.sample_time
+        for pg in pairs:
+            ip, iv, k = pg.position, pg.velocity, pg.gain
+            p_pred = e_f_prev[ip] + t * e_f_prev[iv]
+            v_pred = e_f_prev[iv]
+            rp, rv = e[ip] - p_pred, e[iv] - v_pred
+            rows[ip] = p_pred + k[0, 0] * rp + k[0, 1] * rv
+            rows[iv] = v_pred + k[1, 0] * rp + k[1, 1] * rv
+        e_f = ca.vertcat(*rows)
     cmd = ca.DM(cm)
     lam = s.regularisation * ca.DM.eye(nu)
     if is_linear(model):
