@@ -14,9 +14,12 @@ white noise on every measured output, and the stationary RMS of the model's acce
 is compared with that of the inner loop alone under the same noise. The shortest candidate
 horizon whose ratio is within ``1 + noise_budget`` is taken. With a perfect internal model
 the mismatch is the noise alone, so this is what the outer loop adds to the noise, not to the
-clearance's effect; on the seed-0 model the ratios it predicts agreed with the study's noise
-case (median over 10 seeds) within 2 % at horizons 20 to 30 and 3.1 % at 5
-(docs/control.md, "Measurement noise").
+clearance's effect. The step predicted is the one that will run, with the pairwise mismatch
+filter of declared noise (jointplay.neural.mismatch_filter). With the first-order filter the
+seed-0 model's predicted ratios agreed with the study's noise case (median over 10 seeds)
+within 2 % at horizons 20 to 30 and 3.1 % at 5; with the pairwise filter the study measured
+1.09x in the median where seed 0's prediction at its horizon was 1.071x (docs/control.md,
+"Measurement noise").
 """
 
 from __future__ import annotations
