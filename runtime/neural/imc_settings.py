@@ -49,7 +49,7 @@ class ControllerSettings:
     # 0.08: over 10 seeds under the study's noise (with the pairwise mismatch filter) the
     # worst seed was then within 3 % of PD's position and velocity errors and 10.3 % above
     # its RMS acceleration; 0.07 kept the acceleration within 9 % but let velocity and
-    # position grow to 1.17x and 1.25x PD's, 0.10 the reverse (acceleration 1.12x);
+    # position grow to 1.16x and 1.25x PD's, 0.10 the reverse (acceleration 1.12x);
     # docs/control.md, "Measurement noise".
     noise_budget: float = 0.08
 
