@@ -202,8 +202,10 @@ def test_pairwise_filter_reduces_to_the_first_order_one_without_the_position() -
     study's noise the position dominates the speed's estimate."""
     from test_control import random_narx
 
-    from jointplay.neural.mismatch_filter import pair_gains
+    from jointplay.neural.mismatch_filter import pair_gains, position_of
 
+    assert [position_of(n) for n in ("dq7", "tip_vy", "q7", "tip_ax")] == \
+        ["q7", "tip_y", None, None]
     model = random_narx(5)
     for b in (0.8, 0.9, 0.95):
         blind = resolve_settings(model, ControllerSettings(

@@ -22,9 +22,15 @@ import numpy as np
 from jointplay.neural.imc_settings import ControllerSettings
 from jointplay.neural.narx import Narx
 
-# velocity output -> its position output
-PAIRS = {"dq2": "q2", "dq3": "q3", "dq4": "q4", "dq5": "q5", "dq6": "q6",
-         "tip_vx": "tip_x", "tip_vy": "tip_y"}
+
+def position_of(name: str) -> str | None:
+    """The position output whose slope the velocity output ``name`` is (dqN -> qN,
+    tip_vA -> tip_A), or None when ``name`` is no velocity."""
+    if name.startswith("dq"):
+        return name[1:]
+    if name.startswith("tip_v"):
+        return "tip_" + name.removeprefix("tip_v")
+    return None
 
 
 @dataclass(frozen=True)
@@ -45,8 +51,9 @@ def pair_gains(model: Narx, settings: ControllerSettings) -> list[PairGain]:
     b = settings.mismatch_filter
     t = model.sample_time
     out = []
-    for vname, pname in PAIRS.items():
-        if vname not in names or pname not in names:
+    for vname in names:
+        pname = position_of(vname)
+        if pname is None or pname not in names:
             continue
         sp, sv = std.get(pname, 0.0), std.get(vname, 0.0)
         if not (sp > 0 and sv > 0 and b > 0):
@@ -62,4 +69,4 @@ def pair_gains(model: Narx, settings: ControllerSettings) -> list[PairGain]:
     return out
 
 
-__all__ = ["PAIRS", "PairGain", "pair_gains"]
+__all__ = ["PairGain", "pair_gains", "position_of"]
