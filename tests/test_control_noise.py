@@ -111,6 +111,8 @@ def test_the_shortest_horizon_within_the_budget_is_chosen(
     ratios = dict(tuning.ratios)
     assert ratios[tuning.horizon] <= 1 + settings.noise_budget
     assert all(r > 1 + settings.noise_budget for h, r in ratios.items() if h < tuning.horizon)
+    # Found to the sample, not to the coarse list's gap: one sample shorter is outside.
+    assert ratios[tuning.horizon - 1] > 1 + settings.noise_budget
     # The outer loop adds to the noise: every ratio is above 1, and falls as the horizon grows.
     values = [ratios[h] for h in sorted(ratios)]
     assert all(r > 1 for r in values) and values == sorted(values, reverse=True)
@@ -186,6 +188,22 @@ def test_study_refuses_its_own_noise_flag_and_declares_the_case_noise() -> None:
     assert declared(base, scene, quiet) is base
     told = declared(base, scene, noisy)
     assert told.measurement_noise[0] == ("q2", 1e-6) and len(told.measurement_noise) == 9
+
+
+def test_study_sets_the_predicted_ratio_beside_the_measured_one() -> None:
+    from jointplay.cli.study import noise_note
+
+    def row(controller: str, seed: int, accel: float, **extra: float) -> dict[str, object]:
+        return {"case": "noise", "controller": controller, "seed": seed,
+                "rms_acceleration_after": accel, **extra}
+    rows = [row("PD", -1, 0.5),
+            *(row("neural IMC", s, a, horizon=h, predicted_noise_ratio=p)
+              for s, a, h, p in ((0, 0.55, 20, 1.07), (1, 0.54, 22, 1.06)))]
+    text = " ".join(noise_note(rows, undeclared=False))
+    assert "chose horizon 20, 22" in text
+    assert "neural IMC: RMS |Δa| after 50 ms predicted 1.060-1.070x" in text
+    assert "measured 1.080-1.100x PD's" in text
+    assert noise_note(rows, undeclared=True)[0].startswith("Noise case: the controllers were not")
 
 
 def test_a_budget_no_horizon_meets_is_said_plainly() -> None:

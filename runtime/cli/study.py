@@ -148,9 +148,24 @@ def noise_note(rows: list[dict[str, Any]], undeclared: bool) -> list[str]:
         return ["Noise case: the controllers were not told the sensors' noise "
                 "(--undeclared-noise).", ""]
     horizons = sorted({int(r["horizon"]) for r in noisy})
-    return ["Noise case: the internal-model controllers were told the sensors' noise and "
-            f"chose horizon {', '.join(map(str, horizons))} (jointplay.neural.noise_tuning).",
-            ""]
+    lines = ["Noise case: the internal-model controllers were told the sensors' noise and "
+             f"chose horizon {', '.join(map(str, horizons))} (jointplay.neural.noise_tuning)."]
+    pd = [r for r in rows if r["case"] == "noise" and r["controller"] == "PD"]
+    if pd:
+        base = pd[0]["rms_acceleration_after"]
+        for name in sorted({r["controller"] for r in noisy}):
+            mine = [r for r in noisy if r["controller"] == name]
+            predicted = [r["predicted_noise_ratio"] for r in mine]
+            measured = [r["rms_acceleration_after"] / base for r in mine]
+            lines.append(f"{name}: RMS |Δa| after 50 ms predicted {_span(predicted)}x the "
+                         f"inner loop's alone, measured {_span(measured)}x PD's (over the "
+                         "seeds; the prediction is the linear twin's, the measurement the "
+                         "clearance robot's).")
+    return [*lines, ""]
+
+
+def _span(values: list[float]) -> str:
+    return f"{min(values):.3f}-{max(values):.3f}" if len(values) > 1 else f"{values[0]:.3f}"
 
 
 def study_plan(args: argparse.Namespace) -> StudyPlan:
@@ -237,7 +252,8 @@ def write_study(plan: StudyPlan, rows: list[dict[str, Any]],
     """study.csv, study.md, study.json and the plots; the paths written."""
     out = plan.out
     buf = io.StringIO()
-    fields = ["case", "clearance_um", "controller", "seed", "horizon", *REPORTED]
+    fields = ["case", "clearance_um", "controller", "seed", "horizon", "predicted_noise_ratio",
+              *REPORTED]
     writer = csv.DictWriter(buf, fieldnames=fields, extrasaction="ignore")
     writer.writeheader()
     writer.writerows(rows)

@@ -44,8 +44,11 @@ def _run_unit(index: int) -> list[dict[str, Any]]:
             row["limit"] = open_loop_bound(result.runs[name], result.reference, nj,
                                            DIVERGENCE_FACTOR)
         if narx is not None:
-            row["horizon"] = (result.noise_tuning.horizon if result.noise_tuning is not None
-                              else settings.horizon)
+            tuning = result.noise_tuning
+            row["horizon"] = tuning.horizon if tuning is not None else settings.horizon
+            # What the horizon was chosen by: the twin's predicted RMS acceleration ratio
+            # (against the inner loop alone), to set beside the ratio measured against PD.
+            row["predicted_noise_ratio"] = tuning.ratio if tuning is not None else math.nan
         rows.append(row)
     return rows
 
