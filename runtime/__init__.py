@@ -13,6 +13,7 @@ from jointplay.common.errors import (
     SimulationError,
 )
 from jointplay.results.records import Impacts, SimulationResult
+from jointplay.results.write import read
 from jointplay.robot import (
     Contact,
     Friction,
@@ -79,6 +80,7 @@ __all__ = [
     "load_scene",
     "load_scene_model",
     "model_for",
+    "read",
     "robot_from_dict",
     "robot_from_flags",
     "robot_to_toml",

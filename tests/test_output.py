@@ -14,6 +14,7 @@ import h5py
 import numpy as np
 import pytest
 
+import jointplay
 from jointplay.common.errors import DescriptionError
 from jointplay.results.animate import (
     animate_result,
@@ -29,11 +30,11 @@ from jointplay.results.plots import (
 )
 from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult
 from jointplay.results.write import (
-    IMPACT_COLUMNS,
     impacts_csv_path,
     read_hdf5,
     write_csv,
     write_hdf5,
+    write_hdf5_v1,
 )
 
 LENGTHS = np.array([0.40, 0.30, 0.25, 0.15])
@@ -220,61 +221,66 @@ def test_result_is_consistent(result: SimulationResult) -> None:
 
 @pytest.mark.parametrize("compress", [False, True])
 def test_hdf5_round_trip(result: SimulationResult, tmp_path: Path, compress: bool) -> None:
+    """Every field, exactly (dtype, shape, value, Python type), ideal run included."""
     path = tmp_path / "run.h5"
     write_hdf5(result, path, compress=compress)
-    back = read_hdf5(path)
+    back = jointplay.read(path)
     assert_same(result, back)
     assert back.ideal is not None
+    assert read_hdf5 is jointplay.read  # the earlier name stays
     assert sorted(os.listdir(tmp_path)) == ["run.h5"]
-    with h5py.File(path, "r") as fh:
-        assert (fh["q"].compression == "gzip") is compress  # 500 x 8 doubles: 31 KiB
+    longer = make_result(n=600, ideal=False)  # 600 x 4 doubles: above the 16 KiB threshold
+    write_hdf5(longer, tmp_path / "longer.h5", compress=compress)
+    with h5py.File(tmp_path / "longer.h5", "r") as fh:
+        assert (fh["joint_angle"].compression == "gzip") is compress
+        assert fh["impact_time"].compression is None  # small: never compressed
 
 
-def test_hdf5_layout(result: SimulationResult, tmp_path: Path) -> None:
+def test_hdf5_is_cf_netcdf(result: SimulationResult, tmp_path: Path) -> None:
+    """xarray (and any netCDF reader) sees named dimensions, coordinates and CF units."""
+    import xarray as xr
+
     path = tmp_path / "run.h5"
     write_hdf5(result, path)
-    with h5py.File(path, "r") as fh:
-        assert fh.attrs["format"] == "jointplay-result"
-        assert fh.attrs["format_version"] == 1
-        assert list(fh.attrs["coordinate_names"]) == result.coordinate_names
-        assert fh["q"].attrs["unit"] == "rad or m"
-        assert list(fh["q"].attrs["column_units"])[-1] == "m"
-        assert fh["u"].attrs["unit"] == "rad/s or m/s"
-        assert list(fh["udot"].attrs["column_units"])[:1] == ["rad/s^2"]
-        assert fh["tip_velocity"].attrs["unit"] == "m/s"
-        assert fh["energy/balance"].attrs["unit"] == "J"
-        assert all("doc" in ds.attrs for ds in fh["impacts"].values())
-        assert fh["metadata"].attrs["model_hash"] == "0123abcd"
-        assert fh["metadata/json"].attrs["versions"].startswith("{")
-        assert list(fh["parameters"].attrs["names"]) == result.parameter_names
-        assert fh["ideal/q"].shape == (result.n_samples, 4)
-        assert fh["ideal/eccentricity"].shape == (result.n_samples, 0, 2)
+    with xr.open_dataset(path) as ds:
+        assert ds.attrs["Conventions"] == "CF-1.11"
+        assert ds.attrs["format_version"] == 2
+        assert ds.attrs["model_hash"] == "0123abcd"  # string metadata: attributes of its own
+        assert dict(ds.sizes) == {"time": 500, "coordinate": 4, "joint": 2, "axis": 2,
+                                  "drive": 4, "parameter": 5, "impact": 6}
+        assert list(ds["coordinate"].values) == ["q1", "q2", "q3", "q4"]
+        assert list(ds["joint"].values) == [2, 3] and list(ds["axis"].values) == ["x", "y"]
+        assert ds["joint_angle"].dims == ("time", "coordinate")
+        assert ds["journal_offset"].dims == ("time", "joint", "axis")
+        assert ds["eccentricity"].dims == ("time", "joint", "axis")
+        assert ds["impact_peak_force"].dims == ("impact",)
+        assert ds["impact_eccentricity"].dims == ("impact", "axis")
+        for name, var in ds.variables.items():
+            assert "long_name" in var.attrs, name
+            if var.dtype.kind in "fiu":
+                assert "units" in var.attrs, name
+        units = {name: ds[name].attrs["units"] for name in (
+            "time", "joint_angle", "joint_angular_velocity", "journal_offset_acceleration",
+            "tip_velocity", "drive_torque", "energy_balance", "impact_impulse")}
+        assert units == {"time": "s", "joint_angle": "rad", "joint_angular_velocity": "rad s-1",
+                         "journal_offset_acceleration": "m s-2", "tip_velocity": "m s-1",
+                         "drive_torque": "N m", "energy_balance": "J",
+                         "impact_impulse": "N s"}
+        # the journal offsets are the q columns of ex, ey; the eccentricity equals them here
+        ex3 = result.coordinate_names.index("ex3")
+        assert np.array_equal(ds["journal_offset"].sel(joint=3, axis="x"), result.q[:, ex3])
+        assert float(ds["impact_time"][0]) == result.impacts.time[0]
+    with xr.open_dataset(path, group="ideal") as ideal:
+        assert ideal.sizes["joint"] == 0 and ideal["tip_position"].dims == ("time", "axis")
 
 
-def test_hdf5_impact_table(result: SimulationResult, tmp_path: Path) -> None:
-    """One dataset per column of the phase table, one row per phase, each with its unit."""
-    path = tmp_path / "run.h5"
-    write_hdf5(result, path)
-    with h5py.File(path, "r") as fh:
-        table = fh["impacts"]
-        assert table.attrs["rows"] == len(result.impacts) == 6
-        assert list(table.attrs["columns"]) == list(Impacts.column_names())
-        assert list(table) == list(Impacts.column_names())  # in order
-        for name, unit, _ in IMPACT_COLUMNS:
-            assert table[name].shape[0] == 6, name
-            assert table[name].attrs["unit"] == unit, name
-        assert table["peak_force"].attrs["unit"] == "N"
-        assert table["impulse"].attrs["unit"] == "N s"
-        assert table["separated"].dtype == bool
-        assert table["eccentricity"].shape == (6, 2)
-
-
-def test_hdf5_written_before_the_phase_columns_still_reads(result: SimulationResult,
-                                                           tmp_path: Path) -> None:
-    """A file with only time, joint, speed and eccentricity under /impacts (the layout before
-    the phase table) reads back with the onset columns intact and the phase columns NaN."""
+def test_hdf5_of_the_earlier_layout_still_reads(result: SimulationResult,
+                                                tmp_path: Path) -> None:
+    """Files of format_version 1 (plain HDF5), also those written before the phase columns
+    existed: onset columns intact, the phase columns NaN."""
     path = tmp_path / "old.h5"
-    write_hdf5(result, path)
+    write_hdf5_v1(result, path)
+    assert_same(result, jointplay.read(path))
     with h5py.File(path, "r+") as fh:
         for group in (fh, fh["ideal"]):
             table = group["impacts"]
@@ -294,6 +300,30 @@ def test_hdf5_written_before_the_phase_columns_still_reads(result: SimulationRes
         else:
             assert np.isnan(values).all(), name
     assert_same(result.q, back.q)
+
+
+def test_optional_groups_hook(result: SimulationResult, tmp_path: Path,
+                              monkeypatch: pytest.MonkeyPatch) -> None:
+    """An optional part of a result is one entry of OPTIONAL_GROUPS: written into a group
+    named after the result's attribute when present, read back into the same attribute."""
+    from jointplay.results import netcdf
+
+    def write(group: Any, value: dict[str, float]) -> None:
+        for key, number in value.items():
+            group.attrs[key] = number
+
+    def read(group: Any) -> dict[str, float]:
+        return {key: float(value) for key, value in group.attrs.items()}
+
+    monkeypatch.setitem(netcdf.OPTIONAL_GROUPS, "wear", netcdf.OptionalGroup(write, read))
+    summary = {"tip_error_estimate": 2.5e-6, "energy_residual": 1e-9}
+    with_part = dataclasses.replace(result, wear=summary)
+    path = tmp_path / "run.h5"
+    write_hdf5(with_part, path)
+    with h5py.File(path, "r") as fh:
+        assert fh["wear"].attrs["tip_error_estimate"] == 2.5e-6
+        assert "wear" not in fh["ideal"]  # the ideal run holds none
+    assert_same(with_part, jointplay.read(path))
 
 
 def test_hdf5_without_ideal(tmp_path: Path) -> None:
@@ -432,7 +462,7 @@ def test_failed_hdf5_write_leaves_nothing(result: SimulationResult, tmp_path: Pa
     original = h5py.Group.create_dataset
 
     def failing(self: h5py.Group, *args: Any, **kwargs: Any) -> Any:
-        calls.append(args[0])
+        calls.append(args[0] if args else kwargs["name"])
         if len(calls) > 1:
             raise RuntimeError("disk on fire")
         return original(self, *args, **kwargs)

@@ -93,7 +93,7 @@ def no_temporaries(folder: Path) -> None:
 
 # Columns of the contact-phase table that are NaN, by definition, for a phase still in contact
 # at the end of the run (no separation, so no exit speed or restitution).
-_OPEN_PHASE_NAN = ("impacts/separation_time", "impacts/exit_speed", "impacts/restitution")
+_OPEN_PHASE_NAN = ("impact_separation_time", "impact_exit_speed", "impact_restitution")
 
 
 def finite_hdf5(path: Path) -> None:
@@ -101,7 +101,7 @@ def finite_hdf5(path: Path) -> None:
     without separation leaves NaN, and only in those rows."""
     with h5py.File(path, "r") as fh:
         assert fh.attrs["format"] == "jointplay-result"
-        separated = fh["impacts/separated"][()] if "impacts/separated" in fh else None
+        separated = fh["impact_separated"][()] if "impact_separated" in fh else None
 
         def visit(name: str, obj: Any) -> None:
             if not (isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f"):

@@ -161,18 +161,18 @@ def test_simulate_command_writes_results_and_plots(tmp_path: Path,
     text = capsys.readouterr().out
     assert "x real time" in text and "error vs ideal joints" in text
     with h5py.File(out) as f:
-        assert f["t"].shape == (21,)
-        assert f["q"].shape == (21, 6)
+        assert f["time"].shape == (21,)
+        assert f["joint_angle"].shape == (21, 2) and f["journal_offset"].shape == (21, 2, 2)
         assert "ideal" in f
-        assert f["impacts/time"].shape[0] >= 2
-        names = [n.decode() if isinstance(n, bytes) else n for n in f.attrs["parameter_names"]]
-        assert f["parameters"][names.index("payload.mass")] == 2.5
+        assert f["impact_time"].shape[0] >= 2
+        names = [n.decode() if isinstance(n, bytes) else n for n in f["parameter"][()]]
+        assert f["parameter_value"][names.index("payload.mass")] == 2.5
     header = csv.read_text().splitlines()[0]
     assert header.startswith("t [s],") and "delta2 [m]" in header
     phases = (tmp_path / "run.impacts.csv").read_text().splitlines()
     assert phases[0].startswith("time [s],joint,speed [m/s],")
     with h5py.File(out) as f:
-        assert len(phases) - 1 == f["impacts/time"].shape[0]
+        assert len(phases) - 1 == f["impact_time"].shape[0]
     assert sorted(p.name for p in plots.iterdir()) == [
         "contact_force.png", "contact_timeline_joint2.png", "contact_timeline_joint3.png",
         "end_effector.png", "energy.png", "orbit_joint2.png", "orbit_joint3.png"]
@@ -191,12 +191,12 @@ def test_output_step_flag_and_run_settings_through_set(tmp_path: Path,
     assert main(["simulate", "--t-end", "0.004", "--output-step", "1e-4", "--out", str(out),
                  "--quiet"]) == 0
     with h5py.File(out) as f:
-        assert f["t"].shape == (41,)
-        assert f["t"][1] == pytest.approx(1e-4, rel=1e-12)
+        assert f["time"].shape == (41,)
+        assert f["time"][1] == pytest.approx(1e-4, rel=1e-12)
     assert main(["simulate", "--t-end", "0.004", "--set", "run.output_step=5e-4",
                  "--out", str(out), "--quiet"]) == 0
     with h5py.File(out) as f:
-        assert f["t"].shape == (9,)
+        assert f["time"].shape == (9,)
     for flags, field, message in (
             (["--output-step", "3e-7"], "--output-step", "must divide run.t_end"),
             (["--output-step=-1e-3"], "--output-step", "must be > 0"),

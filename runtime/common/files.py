@@ -10,7 +10,9 @@ next run. Every failure to read or write is a :class:`FileError` naming the path
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import errno
+import fnmatch
 import hashlib
 import os
 import re
@@ -19,8 +21,10 @@ import socket
 import stat
 import tempfile
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from jointplay.common import interrupts
 from jointplay.common.errors import FileError
@@ -93,7 +97,11 @@ def atomic_path(path: str | Path, suffix: str = ".part") -> Iterator[Path]:
         with open(tmp_path, "rb") as fh:
             os.fsync(fh.fileno())
         interrupts.raise_if_interrupted()
-        os.replace(tmp_path, path)
+        pending = _TRANSACTION.get()
+        if pending is not None and pending.defers(path):
+            pending.hold(tmp_path, path)  # renamed with the command's other outputs at the end
+        else:
+            os.replace(tmp_path, path)
     except FileError:
         tmp_path.unlink(missing_ok=True)
         raise
@@ -108,6 +116,240 @@ def atomic_path(path: str | Path, suffix: str = ".part") -> Iterator[Path]:
 def atomic_write_text(path: str | Path, text: str) -> None:
     with atomic_path(path) as tmp:
         tmp.write_text(text, encoding="utf-8")
+
+
+def atomic_write_bytes(path: str | Path, data: bytes) -> None:
+    """Write ``data`` with plain file I/O (errors are ``OSError``, reported naming ``path``)."""
+    with atomic_path(path) as tmp, open(tmp, "wb") as fh:
+        fh.write(data)
+
+
+def write_hdf5_in_memory(path: str | Path, build: Callable[[Any], None]) -> None:
+    """Build an HDF5 file in memory (the HDF5 core driver) with ``build(h5py_file)``, then
+    write its bytes atomically with plain file I/O.
+
+    A full disk, a quota or an I/O error then surfaces as an ``OSError`` of an ordinary
+    ``write`` (a :class:`FileError` naming ``path``), never inside HDF5, whose failures while
+    flushing to a full disk happen in destructors and can crash the process.
+    """
+    import h5py
+
+    fh = h5py.File(f"jointplay-{id(build)}.h5", "w", driver="core", backing_store=False,
+                   track_order=True)
+    try:
+        build(fh)
+        fh.flush()
+        image = fh.id.get_file_image()
+    finally:
+        fh.close()
+    atomic_write_bytes(path, image)
+
+
+# ------------------------------------------------------------------------- all or nothing
+
+
+@dataclass
+class _Transaction:
+    """Completed temporaries waiting to be renamed onto their targets together."""
+
+    targets: frozenset[Path]  # resolved real paths the transaction owns
+    folders: tuple[tuple[Path, str], ...]  # folders (and name patterns) whose files it owns
+    held: list[tuple[Path, Path]] = field(default_factory=list)
+    created: list[Path] = field(default_factory=list)  # folders it made, deepest last
+
+    def defers(self, path: Path) -> bool:
+        real = Path(os.path.realpath(path))
+        return real in self.targets or any(
+            folder in real.parents and fnmatch.fnmatch(real.name, pattern)
+            for folder, pattern in self.folders)
+
+    def hold(self, tmp: Path, path: Path) -> None:
+        self.held.append((tmp, path))
+
+    def discard(self) -> None:
+        for tmp, _ in self.held:
+            tmp.unlink(missing_ok=True)
+        self.held.clear()
+        for folder in reversed(self.created):
+            with contextlib.suppress(OSError):
+                folder.rmdir()  # only if still empty: never someone else's files
+
+    def commit(self) -> list[Path]:
+        placed: list[Path] = []
+        for k, (tmp, path) in enumerate(self.held):
+            try:
+                os.replace(tmp, path)
+            except OSError as err:
+                # Complete outputs of a run that failed must not stay: take back what is placed.
+                for done in placed:
+                    done.unlink(missing_ok=True)
+                for rest, _ in self.held[k:]:
+                    rest.unlink(missing_ok=True)
+                self.held.clear()
+                raise file_error(path, err) from None
+            placed.append(path)
+        self.held.clear()
+        return placed
+
+
+_TRANSACTION: contextvars.ContextVar[_Transaction | None] = contextvars.ContextVar(
+    "jointplay_output_transaction", default=None)
+
+
+def make_folder(path: str | Path, flag: str = "--out") -> Path:
+    """Create an output folder (and its parents); inside :func:`all_or_nothing`, a failed run
+    removes the folders it created (when they are empty again)."""
+    path = Path(path)
+    missing = []
+    probe = path
+    while not probe.exists() and probe != probe.parent:
+        missing.append(probe)
+        probe = probe.parent
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise file_error(path, err, "cannot create folder") from None
+    pending = _TRANSACTION.get()
+    if pending is not None:
+        pending.created.extend(reversed(missing))
+    return path
+
+
+@contextlib.contextmanager
+def all_or_nothing(plan: OutputPlan) -> Iterator[None]:
+    """Write the outputs of ``plan`` together: each is completed under a temporary name, and
+    only when the block ends without error are all renamed into place. On any error (or
+    interrupt) no planned output appears, no temporary stays, and folders this block created
+    are removed again. Writes to paths outside the plan (the model cache) are not deferred.
+    Nested blocks join the outermost one.
+    """
+    if _TRANSACTION.get() is not None:
+        yield
+        return
+    pending = _Transaction(frozenset(Path(os.path.realpath(o.path)) for o in plan.outputs
+                                     if o.kind == "file"),
+                           tuple((Path(os.path.realpath(o.path)), o.pattern)
+                                 for o in plan.outputs if o.kind == "folder"))
+    token = _TRANSACTION.set(pending)
+    try:
+        yield
+        interrupts.raise_if_interrupted()
+    except BaseException:
+        _TRANSACTION.reset(token)
+        pending.discard()
+        raise
+    _TRANSACTION.reset(token)
+    try:
+        pending.commit()
+    except BaseException:
+        pending.discard()
+        raise
+
+
+# ----------------------------------------------------------------------------- output plan
+
+
+@dataclass(frozen=True)
+class PlannedOutput:
+    """One output of a command: a file, or a folder the command writes files into."""
+
+    flag: str  # the option it comes from, e.g. "--csv"
+    path: Path
+    kind: str  # "file" or "folder"
+    derived: str = ""  # how it follows from the flag's value, e.g. "the impacts table"
+    pattern: str = "*"  # a folder: the names of the files written into it (fnmatch)
+
+    def describe(self) -> str:
+        what = f" ({self.derived})" if self.derived else ""
+        return f"{self.flag} {self.path}{what}"
+
+
+@dataclass(frozen=True)
+class PlannedInput:
+    flag: str
+    path: Path
+
+
+def _real(path: Path) -> Path:
+    return Path(os.path.realpath(path))
+
+
+def _same(a: Path, b: Path) -> bool:
+    if _real(a) == _real(b):
+        return True
+    try:
+        return a.exists() and b.exists() and os.path.samefile(a, b)  # hard links
+    except OSError:
+        return False
+
+
+def _inside(path: Path, folder: Path) -> bool:
+    return _real(folder) in _real(path).parents
+
+
+@dataclass
+class OutputPlan:
+    """Every file a command will write, and every file it reads, known before any work.
+
+    :meth:`check` refuses (a :class:`~jointplay.common.errors.DescriptionError`, exit 2) two
+    outputs that are one file, an output that is one of the inputs, and an output that would
+    land in a folder another output fills or that holds an input folder's files, comparing
+    resolved real paths (links, ``..`` and hard links included).
+    """
+
+    outputs: list[PlannedOutput] = field(default_factory=list)
+    inputs: list[PlannedInput] = field(default_factory=list)
+
+    def file(self, flag: str, path: str | Path, derived: str = "") -> Path:
+        self.outputs.append(PlannedOutput(flag, Path(path), "file", derived))
+        return Path(path)
+
+    def folder(self, flag: str, path: str | Path, derived: str = "", pattern: str = "*"
+               ) -> Path:
+        """A folder the command fills with files named like ``pattern`` (at any depth)."""
+        self.outputs.append(PlannedOutput(flag, Path(path), "folder", derived, pattern))
+        return Path(path)
+
+    def input(self, flag: str, path: str | Path | None) -> None:
+        if path is not None and str(path):
+            self.inputs.append(PlannedInput(flag, Path(path)))
+
+    def add_inputs(self, flag: str, paths: Iterable[str | Path | None]) -> None:
+        for path in paths:
+            self.input(flag, path)
+
+    def check(self) -> None:
+        from jointplay.common.errors import DescriptionError
+
+        files = [o for o in self.outputs if o.kind == "file"]
+        folders = [o for o in self.outputs if o.kind == "folder"]
+        for i, a in enumerate(files):
+            for b in files[i + 1:]:
+                if _same(a.path, b.path):
+                    raise DescriptionError(b.flag, f"{b.describe()} is the same file as "
+                                           f"{a.describe()}; give each output its own name")
+            for inp in self.inputs:
+                if _same(a.path, inp.path):
+                    raise DescriptionError(a.flag, f"{a.describe()} is the input {inp.flag} "
+                                           f"{inp.path}; writing it would overwrite the input: "
+                                           "give another name")
+                if inp.path.is_dir() and _inside(a.path, inp.path):
+                    raise DescriptionError(a.flag, f"{a.describe()} lies inside the input "
+                                           f"{inp.flag} {inp.path}; write elsewhere")
+            for f in folders:
+                if _same(a.path, f.path) or (_inside(a.path, f.path)
+                                             and fnmatch.fnmatch(a.path.name, f.pattern)):
+                    raise DescriptionError(a.flag, f"{a.describe()} lies in {f.describe()}, "
+                                           "which that output fills; write elsewhere")
+        for i, f in enumerate(folders):
+            for g in folders[i + 1:]:
+                if _same(f.path, g.path):
+                    raise DescriptionError(g.flag, f"{g.describe()} is the same folder as "
+                                           f"{f.describe()}; give each its own folder")
+            for inp in self.inputs:
+                if _same(f.path, inp.path) or (inp.path.is_dir() and _inside(f.path, inp.path)):
+                    raise DescriptionError(f.flag, f"{f.describe()} is or lies in the input "
+                                           f"{inp.flag} {inp.path}; write elsewhere")
 
 
 def _alive(pid: int) -> bool:

@@ -38,7 +38,7 @@ from jointplay.results import wear as wear_files
 from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult
 
 FORMAT = "jointplay-result"
-FORMAT_VERSION = 1
+FORMAT_VERSION = 1  # of the legacy layout read by _read_group; the current: netcdf.py
 # With compress=True, only datasets big enough for it to pay are compressed (gzip level 1 with
 # shuffle: about 40 % smaller on smooth signals, but ~10x slower to write than raw).
 _COMPRESS_MIN_BYTES = 1 << 14
@@ -135,36 +135,70 @@ def check_distinct_outputs(paths: Mapping[str, str | Path | None]) -> None:
 
 
 def write_hdf5(result: SimulationResult, path: str | Path, *, compress: bool = False) -> None:
-    """Write ``result`` (and its ideal counterpart) to an HDF5 file, atomically.
+    """Write ``result`` (and its ideal counterpart) as a netCDF-4/CF file, atomically.
 
-    ``compress`` gzips the large datasets: smaller files, slower writes; readers need nothing.
+    The file is built in memory and written with plain file I/O (see
+    :func:`~jointplay.common.files.write_hdf5_in_memory`): a full disk is a one-line
+    :class:`~jointplay.common.errors.FileError` and leaves nothing behind. ``compress`` gzips
+    the large variables: smaller files, slower writes; readers need nothing. The layout is
+    described in :mod:`jointplay.results.netcdf`.
     """
-    import h5py
+    import h5netcdf
+
+    from jointplay.common.files import write_hdf5_in_memory
+    from jointplay.results import netcdf
 
     path = check_output_path(path)
-    with atomic_path(path) as tmp, h5py.File(tmp, "w", track_order=True) as fh:
-        fh.attrs["format"] = FORMAT
-        fh.attrs["format_version"] = FORMAT_VERSION
-        _write_group(fh, result, compress)
-        if result.ideal is not None:
-            _write_group(fh.create_group("ideal", track_order=True), result.ideal, compress)
+
+    def build(fh: Any) -> None:
+        with h5netcdf.File(fh, "w") as nc:
+            netcdf.write_file(nc, result, compress)
+
+    write_hdf5_in_memory(path, build)
 
 
-def read_hdf5(path: str | Path) -> SimulationResult:
-    """Read a file written by :func:`write_hdf5` back into an equal :class:`SimulationResult`."""
+def read(path: str | Path) -> SimulationResult:
+    """The :class:`SimulationResult` stored in a results file by ``jointplay simulate --out``
+    (or :func:`write_hdf5`): equal, field by field, to the one that was written.
+
+    Files of the earlier layout (``format_version`` 1) are read as well.
+    """
+    import h5netcdf
     import h5py
 
-    with h5py.File(path, "r") as fh:
-        fmt, version = fh.attrs.get("format"), fh.attrs.get("format_version")
-        if fmt != FORMAT or version != FORMAT_VERSION:
-            raise DescriptionError("format", f"expected {FORMAT} version {FORMAT_VERSION}, "
-                                   f"found {fmt!r} version {version!r}", str(path))
-        ideal = _read_group(fh["ideal"]) if "ideal" in fh else None
-        return _read_group(fh, ideal)
+    from jointplay.results import netcdf
+
+    path = Path(path)
+    try:
+        with h5py.File(path, "r") as fh:
+            fmt, version = _text(fh.attrs.get("format")), fh.attrs.get("format_version")
+            if fmt == FORMAT and version == 1:
+                ideal = _read_group(fh["ideal"]) if "ideal" in fh else None
+                return _read_group(fh, ideal)
+            if fmt != FORMAT or version != netcdf.FORMAT_VERSION:
+                raise DescriptionError("format", f"expected {FORMAT} version "
+                                       f"{netcdf.FORMAT_VERSION}, found {fmt!r} version "
+                                       f"{version!r}", str(path))
+            with h5netcdf.File(fh, "r") as nc:
+                return netcdf.read_file(nc)
+    except OSError as err:
+        from jointplay.common.files import describe_os_error
+
+        raise DescriptionError("path", f"cannot read a results file ({describe_os_error(err)})",
+                               str(path)) from None
+
+
+read_hdf5 = read
+"""The name :func:`read` had before the results file became netCDF-4 (kept for callers)."""
+
+
+def _text(value: Any) -> Any:
+    return value.decode() if isinstance(value, bytes) else value
 
 
 def _dataset(group: Any, name: str, data: np.ndarray, unit: str, doc: str,
              compress: bool = False) -> None:
+    """A dataset of the version-1 layout (kept to write such files in tests of the reader)."""
     data = np.asarray(data)
     big = compress and data.nbytes >= _COMPRESS_MIN_BYTES and all(data.shape)
     opts: dict[str, Any] = {"compression": "gzip", "compression_opts": 1, "shuffle": True}
@@ -188,6 +222,19 @@ def _to_json(value: Any) -> str:
         raise TypeError(f"cannot store {type(obj).__name__} in a result file")
 
     return json.dumps(value, default=default)
+
+
+def write_hdf5_v1(result: SimulationResult, path: str | Path) -> None:
+    """The version-1 layout (plain HDF5, no dimensions), for tests that the reader keeps
+    reading files written before the netCDF-4 layout."""
+    import h5py
+
+    with atomic_path(path) as tmp, h5py.File(tmp, "w", track_order=True) as fh:
+        fh.attrs["format"] = FORMAT
+        fh.attrs["format_version"] = 1
+        _write_group(fh, result, False)
+        if result.ideal is not None:
+            _write_group(fh.create_group("ideal", track_order=True), result.ideal, False)
 
 
 def _write_group(group: Any, r: SimulationResult, compress: bool) -> None:

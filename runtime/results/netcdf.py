@@ -1,0 +1,321 @@
+"""A :class:`SimulationResult` as a netCDF-4 file (HDF5 underneath) in the CF conventions.
+
+Any netCDF reader sees named dimensions, coordinate variables and a ``units`` (UDUNITS) and
+``long_name`` on every numeric variable: ``xarray.open_dataset("run.h5")``, ncdump, Panoply,
+MATLAB's ``ncread``. :func:`read_result` gives back the very result that was written.
+
+Layout (``format = "jointplay-result"``, ``format_version = 2``):
+
+* dimensions ``time`` (output samples), ``coordinate`` (the joint-angle coordinates q2, q3,
+  ...), ``joint`` (the clearance joints, coordinate variable: their 1-based numbers),
+  ``axis`` (x, y), ``drive`` (the driven joints), ``parameter`` (names), ``impact`` (the
+  contact phases, numbered from 1);
+* per sample: ``joint_angle``, ``joint_angular_velocity``, ``joint_angular_acceleration``
+  (time, coordinate); the journal-centre coordinates ex, ey of each clearance joint and their
+  rates as ``journal_offset*`` (time, joint, axis); ``drive_torque``; ``tip_*``; the contact
+  quantities (time, joint[, axis]); ``energy_<component>`` (time);
+* the contact-phase table as ``impact_<column>`` variables along ``impact``;
+* the scene's and the run's provenance as global attributes (``Conventions = "CF-1.11"``,
+  ``scene_name``, ``integrator``, every string metadata item under its own name, the rest as
+  JSON in ``metadata_json``, the solver statistics as JSON in ``solver_stats``);
+* the ideal-joint counterpart in the group ``/ideal`` (same layout), and the optional groups of
+  :data:`OPTIONAL_GROUPS` (``/wear`` today) when the result holds them.
+
+Adding an optional part of a result to the file is one entry in :data:`OPTIONAL_GROUPS`: the
+result's attribute name, a function writing the value into a new group and one reading it back
+(see :func:`_write_wear` and :func:`_read_wear`).
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult, eccentricity_columns
+
+FORMAT = "jointplay-result"
+FORMAT_VERSION = 2
+CONVENTIONS = "CF-1.11"
+# gzip level 1 with shuffle, only where it pays (see write_hdf5's ``compress``).
+_COMPRESS_MIN_BYTES = 1 << 14
+
+# UDUNITS spellings of the units the records' docstrings write as "m/s^2" and so on.
+UDUNITS = {"s": "s", "m": "m", "m/s": "m s-1", "m/s^2": "m s-2", "rad": "rad",
+           "rad/s": "rad s-1", "rad/s^2": "rad s-2", "N": "N", "N m": "N m", "N s": "N s",
+           "J": "J", "1": "1", "bool": "1", "m^3": "m3"}
+
+
+class Field(NamedTuple):
+    """A per-sample array of the result and its variable in the file."""
+
+    attribute: str  # field of SimulationResult
+    variable: str  # name in the file
+    dims: tuple[str, ...]
+    units: str
+    long_name: str
+
+
+# Per-sample arrays stored as they are (q, u and udot are split by unit, see _write_motion).
+SAMPLE_FIELDS: tuple[Field, ...] = (
+    Field("tau", "drive_torque", ("time", "drive"), "N m", "drive torque of each driven joint"),
+    Field("tip_position", "tip_position", ("time", "axis"), "m", "end effector position"),
+    Field("tip_velocity", "tip_velocity", ("time", "axis"), "m s-1", "end effector velocity"),
+    Field("tip_acceleration", "tip_acceleration", ("time", "axis"), "m s-2",
+          "end effector acceleration"),
+    Field("eccentricity", "eccentricity", ("time", "joint", "axis"), "m",
+          "journal centre minus bearing centre"),
+    Field("penetration", "penetration", ("time", "joint"), "m",
+          "penetration |e| - c (negative: no contact)"),
+    Field("penetration_rate", "penetration_rate", ("time", "joint"), "m s-1",
+          "time derivative of the penetration"),
+    Field("normal_force", "normal_force", ("time", "joint"), "N", "normal contact force"),
+    Field("friction_force", "friction_force", ("time", "joint"), "N",
+          "friction force on the journal along the tangent"),
+    Field("contact_force", "contact_force", ("time", "joint", "axis"), "N",
+          "total contact force on the journal"),
+    Field("sliding_speed", "sliding_speed", ("time", "joint"), "m s-1",
+          "relative tangential speed in the contact"),
+)
+# q, u, udot: angle columns (rad) along "coordinate", journal offsets (m) along joint x axis.
+_MOTION = (("q", "", "joint_angle", "journal_offset", "", "position"),
+           ("u", " s-1", "joint_angular_velocity", "journal_offset_velocity", "time derivative",
+            "velocity"),
+           ("udot", " s-2", "joint_angular_acceleration", "journal_offset_acceleration",
+            "second time derivative", "acceleration"))
+_IMPACT_ONSET = (("time", "s", "onset of contact, located by event detection"),
+                 ("joint", "1", "1-based number of the joint in contact"),
+                 ("speed", "m/s", "normal approach speed at onset (before flooring)"),
+                 ("eccentricity", "m", "journal centre minus bearing centre at onset"))
+IMPACT_COLUMNS: tuple[tuple[str, str, str], ...] = (*_IMPACT_ONSET, *PHASE_FIELDS)
+
+
+# Attributes of the format itself: metadata items of these names go into metadata_json.
+_RESERVED = frozenset({"Conventions", "title", "source", "format", "format_version", "comment",
+                       "scene_name", "integrator", "coordinate_names", "energy_components",
+                       "solver_stats", "metadata_text", "metadata_json", "history"})
+
+
+class OptionalGroup(NamedTuple):
+    """An optional part of a result, stored in a group of its own when present."""
+
+    write: Callable[[Any, Any], None]  # (new group, value)
+    read: Callable[[Any], Any]  # (group) -> value
+
+
+def _write_wear(group: Any, wear: Any) -> None:
+    nc, bins = np.asarray(wear.bearing_depth).reshape(len(wear.joints), -1).shape
+    group.dimensions = {"joint": nc, "angle": bins}
+    _variable(group, "joint", ("joint",), np.asarray(wear.joints, dtype=np.int64), "1",
+              "1-based number of the clearance joint")
+    _variable(group, "angle", ("angle",), wear.angle, "rad",
+              "angular bin centre, in the frame of the surface's link")
+    _variable(group, "bearing_depth", ("joint", "angle"), wear.bearing_depth, "m",
+              "mean worn depth over the bin on the bearing")
+    _variable(group, "journal_depth", ("joint", "angle"), wear.journal_depth, "m",
+              "mean worn depth over the bin on the journal")
+    _variable(group, "volume", ("joint",), wear.volume, "m3", "worn volume of each surface")
+    group.attrs["comment"] = ("Archard wear integrated over the run; the geometry is not "
+                              "updated with it")
+
+
+def _read_wear(group: Any) -> Any:
+    from jointplay.results.wear import WearProfile
+
+    return WearProfile(joints=[int(j) for j in group.variables["joint"][...]],
+                       angle=group.variables["angle"][...],
+                       bearing_depth=group.variables["bearing_depth"][...],
+                       journal_depth=group.variables["journal_depth"][...],
+                       volume=group.variables["volume"][...])
+
+
+OPTIONAL_GROUPS: dict[str, OptionalGroup] = {"wear": OptionalGroup(_write_wear, _read_wear)}
+"""Result attribute -> how its value is stored in the group of that name (None: no group)."""
+
+
+# ------------------------------------------------------------------------------------ writing
+
+
+def _variable(group: Any, name: str, dims: tuple[str, ...], data: Any, units: str | None,
+              long_name: str, compress: bool = False, **attrs: Any) -> Any:
+    import h5py
+
+    values = np.asarray(data)
+    kwargs: dict[str, Any] = {}
+    if values.dtype.kind in "UO":
+        kwargs["dtype"] = h5py.string_dtype()
+        values = values.astype(object)
+    elif compress and values.nbytes >= _COMPRESS_MIN_BYTES and all(values.shape):
+        kwargs.update(compression="gzip", compression_opts=1, shuffle=True)
+    var = group.create_variable(name, dims, data=values, **kwargs)
+    if units is not None:
+        var.attrs["units"] = units
+    var.attrs["long_name"] = long_name
+    for key, value in attrs.items():
+        var.attrs[key] = value
+    return var
+
+
+def _to_json(value: Any) -> str:
+    def default(obj: Any) -> Any:
+        if isinstance(obj, np.ndarray | np.generic):
+            return obj.tolist()
+        if isinstance(obj, Path):
+            return str(obj)
+        raise TypeError(f"cannot store {type(obj).__name__} in a result file")
+
+    return json.dumps(value, default=default)
+
+
+def write_result(group: Any, r: SimulationResult, compress: bool = False) -> None:
+    """Write ``r`` into an open h5netcdf group (the file's root, or ``/ideal``)."""
+    columns = eccentricity_columns(r.coordinate_names, r.clearance_joints)
+    offset_cols = {c for pair in columns.values() for c in pair}
+    angle_cols = [i for i in range(len(r.coordinate_names)) if i not in offset_cols]
+    n_impacts = len(r.impacts)
+    group.dimensions = {"time": r.t.size, "coordinate": len(angle_cols),
+                        "joint": len(r.clearance_joints), "axis": 2,
+                        "drive": len(r.torque_joints), "parameter": len(r.parameter_names),
+                        "impact": n_impacts}
+    _variable(group, "time", ("time",), r.t, "s", "time since the start of the run",
+              compress, standard_name="time", axis="T")
+    _variable(group, "coordinate", ("coordinate",),
+              np.array([r.coordinate_names[i] for i in angle_cols], dtype=object), None,
+              "joint-angle coordinate (relative angle of the joint)")
+    _variable(group, "joint", ("joint",), np.asarray(r.clearance_joints, dtype=np.int64), "1",
+              "1-based number of the clearance joint")
+    _variable(group, "axis", ("axis",), np.array(["x", "y"], dtype=object), None,
+              "axis of the base frame")
+    _variable(group, "drive", ("drive",), np.asarray(r.torque_joints, dtype=np.int64), "1",
+              "1-based number of the driven joint")
+    _variable(group, "parameter", ("parameter",), np.array(r.parameter_names, dtype=object),
+              None, "model parameter name")
+    _variable(group, "impact", ("impact",), np.arange(1, n_impacts + 1, dtype=np.int64), "1",
+              "contact phase number, in onset order")
+    nc = len(r.clearance_joints)
+    offset_index = [c for j in r.clearance_joints for c in columns[j]]
+    for attribute, per, angle_name, offset_name, what, kind in _MOTION:
+        values = np.asarray(getattr(r, attribute))
+        prefix = f"{what} of the " if what else ""
+        _variable(group, angle_name, ("time", "coordinate"), values[:, angle_cols],
+                  f"rad{per}", f"{prefix}joint angle", compress)
+        _variable(group, offset_name, ("time", "joint", "axis"),
+                  values[:, offset_index].reshape(values.shape[0], nc, 2), f"m{per}",
+                  f"journal centre {kind} coordinates (ex, ey) relative to the bearing centre",
+                  compress)
+    for f in SAMPLE_FIELDS:
+        _variable(group, f.variable, f.dims, getattr(r, f.attribute), f.units, f.long_name,
+                  compress)
+    _variable(group, "radial_clearance", ("joint",), r.radial_clearance, "m",
+              "radial clearance Rb - Rj")
+    for name, values in r.energy.items():
+        _variable(group, f"energy_{name}", ("time",), values, "J", f"energy: {name}", compress)
+    _variable(group, "parameter_value", ("parameter",), r.parameters, "1",
+              "parameter vector the run used, each in the SI unit its name implies (see the "
+              "model's layout.json)")
+    for name, unit, doc in IMPACT_COLUMNS:
+        values = np.asarray(getattr(r.impacts, name))
+        extra: dict[str, Any] = {}
+        if name == "eccentricity":
+            dims: tuple[str, ...] = ("impact", "axis")
+            values = values.reshape(n_impacts, 2)
+        else:
+            dims = ("impact",)
+        if name == "separated":
+            values = values.astype(np.int8)
+            extra = {"flag_values": np.array([0, 1], dtype=np.int8),
+                     "flag_meanings": "still_in_contact_at_end separated"}
+        elif name == "joint":
+            values = values.astype(np.int64)
+        _variable(group, f"impact_{name}", dims, values, UDUNITS[unit], doc, **extra)
+    group.attrs["scene_name"] = r.scene_name
+    group.attrs["integrator"] = r.integrator
+    # the full coordinate order (angles and journal offsets interleaved as the model has them)
+    group.attrs["coordinate_names"] = " ".join(r.coordinate_names)
+    group.attrs["energy_components"] = " ".join(r.energy)
+    group.attrs["solver_stats"] = _to_json(r.stats)
+    # string metadata (the scene's text, its source) readable as attributes of their own
+    text = {k: v for k, v in r.metadata.items()
+            if isinstance(v, str) and k.isidentifier() and k not in _RESERVED}
+    for key, value in text.items():
+        group.attrs[key] = value
+    group.attrs["metadata_text"] = " ".join(text)
+    group.attrs["metadata_json"] = _to_json({k: v for k, v in r.metadata.items()
+                                             if k not in text})
+    for attribute, hooks in OPTIONAL_GROUPS.items():
+        value = getattr(r, attribute, None)
+        if value is not None:
+            hooks.write(group.create_group(attribute), value)
+
+
+def write_file(fh: Any, r: SimulationResult, compress: bool = False) -> None:
+    """The whole file: root attributes, the result, its ideal counterpart in ``/ideal``."""
+    from jointplay import __version__
+
+    fh.attrs["Conventions"] = CONVENTIONS
+    fh.attrs["title"] = f"jointplay simulation of scene {r.scene_name!r}"
+    fh.attrs["source"] = f"jointplay {__version__}"
+    fh.attrs["format"] = FORMAT
+    fh.attrs["format_version"] = FORMAT_VERSION
+    write_result(fh, r, compress)
+    if r.ideal is not None:
+        ideal = fh.create_group("ideal")
+        ideal.attrs["comment"] = "the same scene with ideal joints"
+        write_result(ideal, r.ideal, compress)
+
+
+# ------------------------------------------------------------------------------------ reading
+
+
+def _values(group: Any, name: str) -> np.ndarray:
+    return np.asarray(group.variables[name][...])
+
+
+def _text(value: Any) -> str:
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def read_result(group: Any, ideal: SimulationResult | None = None) -> SimulationResult:
+    """The result stored in an open h5netcdf group by :func:`write_result`."""
+    attrs = group.attrs
+    names = _text(attrs["coordinate_names"]).split()
+    clearance = [int(j) for j in _values(group, "joint")]
+    columns = eccentricity_columns(names, clearance)
+    offset_index = [c for j in clearance for c in columns[j]]
+    angle_cols = [i for i in range(len(names)) if i not in set(offset_index)]
+    t = _values(group, "time")
+    motion: dict[str, np.ndarray] = {}
+    for attribute, _, angle_name, offset_name, _, _ in _MOTION:
+        values = np.empty((t.size, len(names)))
+        values[:, angle_cols] = _values(group, angle_name)
+        values[:, offset_index] = _values(group, offset_name).reshape(t.size, -1)
+        motion[attribute] = values
+    arrays = {f.attribute: _values(group, f.variable) for f in SAMPLE_FIELDS}
+    table: dict[str, np.ndarray] = {}
+    for name, _, _ in IMPACT_COLUMNS:
+        values = _values(group, f"impact_{name}")
+        table[name] = values.astype(bool) if name == "separated" else values
+    energy = {name: _values(group, f"energy_{name}")
+              for name in _text(attrs["energy_components"]).split()}
+    metadata: dict[str, Any] = {key: _text(attrs[key])
+                                for key in _text(attrs["metadata_text"]).split()}
+    metadata.update(json.loads(_text(attrs["metadata_json"])))
+    optional = {attribute: hooks.read(group.groups[attribute])
+                for attribute, hooks in OPTIONAL_GROUPS.items() if attribute in group.groups}
+    return SimulationResult(
+        scene_name=_text(attrs["scene_name"]), integrator=_text(attrs["integrator"]),
+        t=t, coordinate_names=names, torque_joints=[int(j) for j in _values(group, "drive")],
+        clearance_joints=clearance, radial_clearance=_values(group, "radial_clearance"),
+        impacts=Impacts(**table), energy=energy,
+        parameter_names=[_text(n) for n in _values(group, "parameter")],
+        parameters=_values(group, "parameter_value"),
+        stats=json.loads(_text(attrs["solver_stats"])), metadata=metadata, ideal=ideal,
+        **motion, **arrays, **optional)
+
+
+def read_file(fh: Any) -> SimulationResult:
+    ideal = read_result(fh.groups["ideal"]) if "ideal" in fh.groups else None
+    return read_result(fh, ideal)
