@@ -12,6 +12,7 @@ from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_settings_arguments,
     float_list,
@@ -20,7 +21,7 @@ from jointplay.cli.neural_args import (
     settings_from_args,
 )
 from jointplay.common.errors import DescriptionError
-from jointplay.common.files import atomic_write_text
+from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
 from jointplay.neural.control import (
     DEFAULT_TRANSIENT,
     DIVERGENCE_FACTOR,
@@ -142,15 +143,13 @@ def control_job(args: argparse.Namespace) -> ControlJob:
     pd_kp = float_list(args.pd_kp, "--pd-kp", nj)
     pd_kd = float_list(args.pd_kd, "--pd-kd", nj, positive=False)
     check_loop_flags(args, scene)
+    output_plan(args, scene)
     if args.plot:
-        prepare_plot_dir(Path(args.plot))
+        check_plot_dir(Path(args.plot))
     if args.out:
         from jointplay.results.write import check_output_path
-        from jointplay.scene.definition import scene_inputs
 
-        check_output_path(args.out, "--out",
-                          inputs=[*scene_inputs(scene), model_dir / MODEL_FILE,
-                                  model_dir / "datasets.h5"])
+        check_output_path(args.out, "--out")
     cases = test_case_scenes(model_dir, scene) if args.test_cases else []
     return ControlJob(scene, model_dir, narx, arx, settings, pd_kp, pd_kd, cases)
 
@@ -164,13 +163,26 @@ def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
         raise DescriptionError("--transient", f"must be in [0, run.t_end), got {args.transient}")
 
 
-def prepare_plot_dir(plot: Path) -> None:
+def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
+    """The files the command writes (--out, the figures and control.md in --plot) and reads
+    (the scene, its torque table, the model folder); refused when they meet (exit 2)."""
+    from jointplay.scene.definition import scene_inputs
+
+    plan = OutputPlan()
+    plan.add_inputs("scene", scene_inputs(scene))
+    plan.input("--model", args.model)
+    if args.out:
+        plan.file("--out", args.out)
+    if args.plot:
+        plan.folder("--plot", args.plot, "its figures and control.md")
+    plan.check()
+    return plan
+
+
+def check_plot_dir(plot: Path) -> None:
     if plot.exists() and not plot.is_dir():
         raise DescriptionError("--plot", f"{plot} exists and is not a folder")
-    try:
-        plot.mkdir(parents=True, exist_ok=True)
-    except OSError as err:
-        raise DescriptionError("--plot", f"cannot create folder {plot}: {err}") from None
+    check_writable_dir(plot, "--plot")
 
 
 def report_lines(args: argparse.Namespace, job: ControlJob,
@@ -270,6 +282,14 @@ def test_case_rows(args: argparse.Namespace, job: ControlJob,
 def write_outputs(args: argparse.Namespace, job: ControlJob, comparison: Comparison,
                   text: str) -> list[str]:
     """Figures and control.md under --plot, the runs in --out; the paths written."""
+    with all_or_nothing(output_plan(args, job.scene)):
+        if args.plot:
+            make_folder(args.plot, "--plot")
+        return _write_each(args, job, comparison, text)
+
+
+def _write_each(args: argparse.Namespace, job: ControlJob, comparison: Comparison,
+                text: str) -> list[str]:
     written = []
     if args.plot:
         from jointplay.neural.control_plots import plot_comparison
@@ -286,6 +306,7 @@ def write_outputs(args: argparse.Namespace, job: ControlJob, comparison: Compari
                     "per_call_us": comparison.per_call_us,
                     "nominal_radius": comparison.nominal_radius,
                     "network_checksum": job.narx.checksum(),
-                    "arx_checksum": job.arx.checksum()})
+                    "arx_checksum": job.arx.checksum()},
+                   tuple(zip(job.narx.output_names, job.narx.output_units, strict=True)))
         written.append(args.out)
     return written

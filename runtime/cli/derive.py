@@ -7,6 +7,8 @@ from pathlib import Path
 from typing import Any
 
 from jointplay.cli.args import check_writable_dir, robot_arguments, robot_from_args
+from jointplay.common.files import OutputPlan, all_or_nothing, make_folder
+from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
@@ -22,10 +24,17 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 def cmd_derive(args: argparse.Namespace) -> int:
     robot = robot_from_args(args)
     out = Path(args.out)
+    plan = OutputPlan()
+    plan.input("robot", args.robot)
+    for name in (SOURCE_NAME, LAYOUT_NAME, ROBOT_NAME):
+        plan.file("--out", out / name, f"the generated {name}")
+    plan.check()
     check_writable_dir(out, "--out")
     from jointplay.derive import write_generated
 
-    emitted = write_generated(robot, out)
+    with all_or_nothing(plan):
+        make_folder(out, "--out")
+        emitted = write_generated(robot, out)
     t = emitted.timings
     print(f"wrote {out}/model.c ({len(emitted.source) / 1024:.0f} KiB), layout.json, robot.toml "
           f"in {t['derive']:.2f} s derive + {t['emit']:.2f} s emit")

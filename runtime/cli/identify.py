@@ -34,6 +34,7 @@ from jointplay.neural.identify import (
 )
 
 if TYPE_CHECKING:
+    from jointplay.common.files import OutputPlan
     from jointplay.scene.definition import Scene
 
 
@@ -77,6 +78,7 @@ def cmd_identify(args: argparse.Namespace) -> int:
     """``jointplay identify``: validate everything, then simulate, train and write."""
     scene = load_control_scene(args.scene, args.quiet)
     out = Path(args.out)
+    output_plan(args, scene)
     check_writable_dir(out, "--out")
     config = identify_config(args, scene)
     check_scene_for(config, scene)
@@ -92,6 +94,22 @@ def cmd_identify(args: argparse.Namespace) -> int:
         print(f"wrote {out}/narx.json, datasets.h5, metrics.json, report.md in "
               f"{time.perf_counter() - started:.1f} s")
     return 0
+
+
+def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
+    """The model folder's files and the scene's: refused when one is the other (exit 2)."""
+    from jointplay.common.files import OutputPlan
+    from jointplay.neural.identify import ARX_FILE, DATASETS_FILE, METRICS_FILE, REJECTED_FILE
+    from jointplay.neural.narx import MODEL_FILE
+    from jointplay.scene.definition import scene_inputs
+
+    plan = OutputPlan()
+    plan.add_inputs("scene", scene_inputs(scene))
+    for name in (MODEL_FILE, REJECTED_FILE, ARX_FILE, DATASETS_FILE, METRICS_FILE,
+                 REPORT_FILE):
+        plan.file("--out", Path(args.out) / name, f"the model folder's {name}")
+    plan.check()
+    return plan
 
 
 def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from jointplay.cli.args import check_writable_file, robot_arguments, robot_from_args
+from jointplay.common.files import OutputPlan
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
@@ -24,7 +25,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 def cmd_inspect(args: argparse.Namespace) -> int:
     robot = robot_from_args(args)
     out = Path(args.out) if args.out else None
+    plan = OutputPlan()
+    plan.input("robot", args.robot)
     if out is not None:
+        plan.file("--out", out)
+        plan.check()
         check_writable_file(out, "--out")
     from jointplay.derive import derive
     from jointplay.derive.inspect import render
@@ -34,8 +39,9 @@ def cmd_inspect(args: argparse.Namespace) -> int:
     if out is None:
         sys.stdout.write(text)
     else:
-        from jointplay.common.files import atomic_write_text
+        from jointplay.common.files import all_or_nothing, atomic_write_text
 
-        atomic_write_text(out, text)
+        with all_or_nothing(plan):
+            atomic_write_text(out, text)
         print(f"wrote {out} ({fmt})")
     return 0

@@ -14,6 +14,7 @@ from jointplay.cli.summary import summary
 from jointplay.common.errors import DescriptionError
 
 if TYPE_CHECKING:
+    from jointplay.common.files import OutputPlan
     from jointplay.results.records import SimulationResult
     from jointplay.scene.definition import Scene
 
@@ -54,7 +55,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     from jointplay.sim import load_scene_model, simulate
 
     # Everything is validated before anything is derived, compiled or written.
-    scene = _scene(args)
+    scene, plan = _scene(args)
     quiet = args.quiet
     t0 = time.perf_counter()
     model = load_scene_model(scene)
@@ -62,7 +63,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         print(f"scene {scene.name}: model {model.name} ready in "
               f"{time.perf_counter() - t0:.2f} s ({', '.join(model.coordinates)})")
     result = simulate(scene, model=model, compare_ideal=args.compare_ideal, quiet=quiet)
-    written = _write(result, args, quiet)
+    written = _write(result, args, plan, quiet)
     if not quiet:
         print(summary(result))
         for path in written:
@@ -70,8 +71,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     return 0
 
 
-def _scene(args: argparse.Namespace) -> Scene:
-    """The scene with the command's overrides, every output path checked."""
+def _scene(args: argparse.Namespace) -> tuple[Scene, OutputPlan]:
+    """The scene with the command's overrides, and the output plan, every path checked."""
     scene = scene_from_args(args)
     changes = {k: v for k, v in (("integrator", args.integrator), ("rtol", args.rtol),
                                  ("atol", args.atol), ("t_end", args.t_end),
@@ -91,7 +92,7 @@ def _scene(args: argparse.Namespace) -> Scene:
             scene = scene.with_run(**run_changes)
         except DescriptionError as err:
             raise DescriptionError(f"--set {err.field}", err.message) from None
-    _check_outputs(args, scene)
+    plan = _check_outputs(args, scene)
     if overrides:
         from jointplay.robot import with_parameters
 
@@ -99,31 +100,63 @@ def _scene(args: argparse.Namespace) -> Scene:
             scene = scene.with_robot(with_parameters(scene.robot, overrides))
         except DescriptionError as err:
             raise DescriptionError(f"--set {err.field}", err.message) from None
-    return scene
+    return scene, plan
 
 
-def _check_outputs(args: argparse.Namespace, scene: Scene) -> None:
-    from jointplay.results.write import check_distinct_outputs, check_output_path
+def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
+    """Every file the command will write (given and derived) and every file it reads,
+    refused before any work when two coincide or an output is an input (exit 2)."""
+    from jointplay.common.files import OutputPlan
+    from jointplay.results import wear
+    from jointplay.results.write import impacts_csv_path
     from jointplay.scene.definition import scene_inputs
 
-    check_distinct_outputs({"--out": args.out, "--csv": args.csv})
-    for flag, path in (("--out", args.out), ("--csv", args.csv)):
-        if path:
-            check_output_path(path, flag, inputs=scene_inputs(scene))
+    plan = OutputPlan()
+    plan.add_inputs("scene", scene_inputs(scene))
+    if args.out:
+        plan.file("--out", args.out)
     if args.csv:
-        from jointplay.results.write import impacts_csv_path
+        plan.file("--csv", args.csv)
+        plan.file("--csv", impacts_csv_path(args.csv), "its contact-phase table")
+        if scene.robot.structure().wear is not None:
+            plan.file("--csv", wear.csv_path(args.csv), "its wear table")
+    if args.plot:
+        plan.folder("--plot", args.plot, "its figures", pattern="*.png")
+    if args.animate:
+        plan.file("--animate", args.animate)
+    plan.check()
+    return plan
 
-        check_output_path(impacts_csv_path(args.csv), "--csv", inputs=scene_inputs(scene))
+
+def _check_outputs(args: argparse.Namespace, scene: Scene) -> OutputPlan:
+    from jointplay.results.write import check_output_path
+
+    plan = output_plan(args, scene)
+    for output in plan.outputs:
+        if output.kind == "file" and output.flag != "--animate":
+            check_output_path(output.path, output.flag)
     if args.plot:
         check_writable_dir(Path(args.plot), "--plot")
     if args.animate:
         from jointplay.results.animate import check_animation_path
 
         check_animation_path(args.animate)
+    return plan
 
 
-def _write(result: SimulationResult, args: argparse.Namespace, quiet: bool) -> list[str]:
-    """Write the files asked for; their paths."""
+def _write(result: SimulationResult, args: argparse.Namespace, plan: OutputPlan,
+           quiet: bool) -> list[str]:
+    """Write the files asked for, all or none (see
+    :func:`~jointplay.common.files.all_or_nothing`); their paths."""
+    from jointplay.common.files import all_or_nothing, make_folder
+
+    with all_or_nothing(plan):
+        if args.plot:
+            make_folder(args.plot, "--plot")
+        return _write_each(result, args, quiet)
+
+
+def _write_each(result: SimulationResult, args: argparse.Namespace, quiet: bool) -> list[str]:
     written = []
     if args.out:
         from jointplay.results.write import write_hdf5

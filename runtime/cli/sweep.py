@@ -7,14 +7,40 @@ import argparse
 from pathlib import Path
 from typing import Any
 
+from jointplay.common.files import OutputPlan
 from jointplay.sweep import CASES_DIR, default_workers, load_sweep, run_sweep
+from jointplay.sweep.records import MANIFEST_NAME, PLOTS_DIR, SERIES_DIR, TABLE_NAME
 from jointplay.sweep.run import check_options
+
+
+def output_plan(args: argparse.Namespace, scene: Any) -> OutputPlan:
+    """The folder's table, manifest, case records, series files and figures, and the files
+    read (the sweep file, the scene, its torque table): refused when they meet (exit 2).
+
+    The case records and series files are written one by one as cases finish (each
+    atomically): they are what a later run resumes from.
+    """
+    from jointplay.scene.definition import scene_inputs
+
+    out = Path(args.out)
+    plan = OutputPlan()
+    plan.input("sweep", args.sweep)
+    plan.add_inputs("scene", scene_inputs(scene))
+    plan.file("--out", out / TABLE_NAME, "the table")
+    plan.file("--out", out / MANIFEST_NAME, "the manifest")
+    plan.folder("--out", out / CASES_DIR, "the case records")
+    if args.series:
+        plan.folder("--out", out / SERIES_DIR, "the series files")
+    plan.folder("--out", out / PLOTS_DIR, "the figures", pattern="*.png")
+    plan.check()
+    return plan
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
     """``jointplay sweep``: validate, run what is not done yet, write the table and plots."""
     sweep = load_sweep(args.sweep)
     check_options(None, args.workers, args.scheduler)
+    output_plan(args, sweep.scene)
     quiet = bool(args.quiet)
     if not quiet:
         where = (f"the cluster at {args.scheduler}" if args.scheduler

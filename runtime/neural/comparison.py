@@ -18,7 +18,6 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.common.files import atomic_path
 from jointplay.neural.imc import (
     FLAGS,
     Controller,
@@ -260,20 +259,87 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
     return f"{name}: " + "; ".join(parts), warn
 
 
-def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any]) -> None:
-    import h5py
+def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any],
+               outputs: Sequence[tuple[str, str]]) -> None:
+    """Every run of the comparison as a netCDF-4/CF file (the results file's conventions):
+    the reference at the root, one group per controller, one variable per plant output
+    (``outputs``: name and unit, e.g. ``("q2", "rad")``) with its UDUNITS ``units``.
 
-    with atomic_path(path) as tmp, h5py.File(tmp, "w") as f:
-        f.attrs["format"] = "jointplay-control"
-        f.attrs["meta"] = json.dumps(meta, default=str)
-        f.create_dataset("reference", data=comparison.reference)
-        for name, run in comparison.runs.items():
-            g = f.create_group(name)
-            for key in ("t", "y", "tau", "v", "flags"):
-                g.create_dataset(key, data=getattr(run, key))
-            g.attrs["metrics"] = json.dumps(comparison.metrics[name])
-            g.attrs["diverged"] = run.diverged
-            g.attrs["flag_names"] = json.dumps(list(FLAGS))
+    Built in memory and written with plain file I/O, atomically (a full disk: one line, no
+    file).
+    """
+    import h5netcdf
+
+    from jointplay.common.files import write_hdf5_in_memory
+    from jointplay.results.netcdf import CONVENTIONS, UDUNITS
+
+    def units(unit: str) -> str:
+        return UDUNITS.get(unit, unit)
+
+    def times(n: int) -> np.ndarray:
+        """Output times of the reference: those of the longest run, continued at its step."""
+        longest = max(comparison.runs.values(), key=lambda r: np.asarray(r.t).size).t
+        longest = np.asarray(longest, dtype=np.float64)
+        if longest.size >= n:
+            return longest[:n]
+        step = longest[1] - longest[0] if longest.size > 1 else 1.0
+        start = longest[0] if longest.size else 0.0
+        return start + step * np.arange(n)
+
+    def variable(group: Any, name: str, dims: tuple[str, ...], data: Any, unit: str | None,
+                 long_name: str) -> None:
+        import h5py
+
+        values = np.asarray(data)
+        kwargs = {"dtype": h5py.string_dtype()} if values.dtype.kind in "UO" else {}
+        var = group.create_variable(name, dims, data=values.astype(object) if kwargs
+                                    else values, **kwargs)
+        if unit is not None:
+            var.attrs["units"] = unit
+        var.attrs["long_name"] = long_name
+
+    def signals(group: Any, values: np.ndarray, what: str) -> None:
+        values = np.asarray(values, dtype=np.float64).reshape(group.dimensions["time"].size, -1)
+        for k, (name, unit) in enumerate(outputs):
+            variable(group, f"output_{name}", ("time",), values[:, k], units(unit),
+                     f"{what}: plant output {name}")
+
+    def build(fh: Any) -> None:
+        with h5netcdf.File(fh, "w") as f:
+            f.attrs["Conventions"] = CONVENTIONS
+            f.attrs["title"] = "jointplay closed-loop comparison"
+            f.attrs["format"] = "jointplay-control"
+            f.attrs["format_version"] = 2
+            f.attrs["meta"] = json.dumps(meta, default=str)
+            f.attrs["controllers"] = json.dumps(list(comparison.runs))
+            reference = np.asarray(comparison.reference)
+            f.dimensions = {"time": reference.shape[0]}
+            variable(f, "time", ("time",), times(reference.shape[0]), "s",
+                     "time since the start of the run")
+            signals(f, reference, "reference (the ideal robot)")
+            for name, run in comparison.runs.items():
+                g = f.create_group(name)
+                t = np.asarray(run.t, dtype=np.float64)
+                tau, v = np.asarray(run.tau), np.asarray(run.v)
+                flags = np.asarray(run.flags)
+                g.dimensions = {"time": t.size, "drive": tau.shape[1] if tau.ndim == 2 else 0,
+                                "torque_sample": tau.shape[0], "flag": len(FLAGS),
+                                "flag_sample": flags.shape[0]}
+                variable(g, "time", ("time",), t, "s", "time since the start of the run")
+                signals(g, np.asarray(run.y), f"controller {name}")
+                variable(g, "flag", ("flag",), np.array(list(FLAGS), dtype=object), None,
+                         "guard flag name")
+                variable(g, "torque", ("torque_sample", "drive"), tau, "N m",
+                         "torque added to the scene's from each sample (last row 0)")
+                variable(g, "outer_torque", ("torque_sample", "drive"), v.reshape(tau.shape),
+                         "N m", "the outer loop's part of the added torque")
+                variable(g, "flags", ("flag_sample", "flag"),
+                         flags.reshape(flags.shape[0], len(FLAGS)).astype(np.int8), "1",
+                         "guard flags raised at each sample (1: raised)")
+                g.attrs["metrics"] = json.dumps(comparison.metrics[name])
+                g.attrs["diverged"] = run.diverged
+
+    write_hdf5_in_memory(path, build)
 
 
 __all__ = ["CONTROLLERS", "DEFAULT_TRANSIENT", "DIVERGENCE_FACTOR", "LINEAR", "MARGINAL",

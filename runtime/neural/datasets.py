@@ -12,33 +12,35 @@ from typing import Any
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.files import atomic_path
+from jointplay.common.files import write_hdf5_in_memory
 from jointplay.neural.trajectories import ARRAYS, SPLITS, Trajectory
 
 DATA_FORMAT = "jointplay-narx-data"
 
 
 def write_datasets(path: Path, trajectories: Sequence[Trajectory], meta: dict[str, Any]) -> None:
-    import h5py
+    write_hdf5_in_memory(path, lambda f: _fill(f, trajectories, meta))
 
-    with atomic_path(path) as tmp, h5py.File(tmp, "w") as f:
-        f.attrs["format"] = DATA_FORMAT
-        f.attrs["format_version"] = 1
-        f.attrs["meta"] = json.dumps(meta)
-        f.attrs["doc"] = ("Identification trajectories, one group per split and run. y: plant "
-                          "outputs (absolute), r: the ideal robot's, v: torque added to the "
-                          "inner loop's from each sample to the next, tau_base: feedforward "
-                          "(drives the ideal robot), tau_inner: the inner PD's torque.")
-        for split in SPLITS:
-            group = f.create_group(split)
-            for i, tr in enumerate(t for t in trajectories if t.split == split):
-                g = group.create_group(f"{i:03d}")
-                for name in ARRAYS:
-                    g.create_dataset(name, data=getattr(tr, name), compression="gzip",
-                                     shuffle=True)
-                g.attrs["family"] = tr.family
-                g.attrs["seed"] = tr.seed
-                g.attrs["description"] = json.dumps(tr.description)
+
+def _fill(f: Any, trajectories: Sequence[Trajectory], meta: dict[str, Any]) -> None:
+    """The file's layout, written into an open h5py file."""
+    f.attrs["format"] = DATA_FORMAT
+    f.attrs["format_version"] = 1
+    f.attrs["meta"] = json.dumps(meta)
+    f.attrs["doc"] = ("Identification trajectories, one group per split and run. y: plant "
+                      "outputs (absolute), r: the ideal robot's, v: torque added to the "
+                      "inner loop's from each sample to the next, tau_base: feedforward "
+                      "(drives the ideal robot), tau_inner: the inner PD's torque.")
+    for split in SPLITS:
+        group = f.create_group(split)
+        for i, tr in enumerate(t for t in trajectories if t.split == split):
+            g = group.create_group(f"{i:03d}")
+            for name in ARRAYS:
+                g.create_dataset(name, data=getattr(tr, name), compression="gzip",
+                                 shuffle=True)
+            g.attrs["family"] = tr.family
+            g.attrs["seed"] = tr.seed
+            g.attrs["description"] = json.dumps(tr.description)
 
 
 def read_datasets(path: str | Path) -> tuple[list[Trajectory], dict[str, Any]]:

@@ -1,24 +1,15 @@
-"""Writing a :class:`SimulationResult` to HDF5 (lossless, self-describing) and CSV (one table).
+"""Writing a :class:`SimulationResult` to a results file (netCDF-4/CF, lossless,
+self-describing) and CSV (one table), and reading the file back (:func:`read`).
 
-Both writers go through a temporary file beside the target and rename it only when complete,
-so an interrupted or failed write never leaves a truncated file under the final name.
+The results file's layout is described in :mod:`jointplay.results.netcdf`. It is built in
+memory and written with plain file I/O through a temporary file beside the target, renamed
+only when complete, so an interrupted or failed write never leaves a truncated file under the
+final name; inside a command every output is renamed together at the end
+(:func:`~jointplay.common.files.all_or_nothing`).
 
-HDF5 layout (format "jointplay-result", version 1); every array carries attrs "unit" and "doc":
-
-* ``/``: the array fields (t, q, u, udot, tau, tip_*, radial_clearance, eccentricity, ...,
-  parameters with attr names); attrs scene_name, integrator, coordinate_names, coordinate_units,
-  clearance_joints, torque_joints, parameter_names, format, format_version. q, u and udot mix
-  angles and lengths, so they also carry per-column "column_units".
-* ``/impacts``: the contact-phase table, one row per phase, one dataset per column (time, joint,
-  speed, eccentricity, then :data:`~jointplay.results.records.PHASE_FIELDS`), each with its unit;
-  group attrs ``rows`` and ``columns``. Files written before the phase columns existed hold
-  the first four only and read back with the others NaN (``separated`` False).
-* ``/energy``: one dataset per energy component.
-* ``/metadata``: string metadata as attrs, other values as JSON attrs of ``/metadata/json``;
-  solver statistics as the JSON text dataset ``/metadata/stats``.
-* ``/wear``: Archard wear (angle, bearing_depth, journal_depth, volume), when the robot asks
-  for it (see :mod:`jointplay.results.wear`); CSV: ``RUN.wear.csv`` beside the samples.
-* ``/ideal``: the ideal-joint result, same layout (without format attrs), when present.
+:func:`read` also reads the earlier plain-HDF5 layout (format "jointplay-result", version 1:
+arrays at the root with attrs "unit" and "doc", the phase table in ``/impacts``, energies in
+``/energy``, metadata in ``/metadata``, wear in ``/wear``, the ideal run in ``/ideal``).
 """
 
 from __future__ import annotations
@@ -26,7 +17,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -116,19 +107,6 @@ def _same_file(a: Path, b: Path) -> bool:
         return a.resolve() == b.resolve()
     except OSError:
         return False
-
-
-def check_distinct_outputs(paths: Mapping[str, str | Path | None]) -> None:
-    """Refuse two output flags naming one file (one result would silently replace the other)."""
-    seen: dict[Path, str] = {}
-    for flag, value in paths.items():
-        if not value:
-            continue
-        resolved = Path(value).resolve()
-        if resolved in seen:
-            raise DescriptionError(flag, f"{value} is also given to {seen[resolved]}; give each "
-                                   "output its own file", None)
-        seen[resolved] = flag
 
 
 # --------------------------------------------------------------------------------------- HDF5
@@ -378,34 +356,34 @@ def impact_csv_columns(impacts: Impacts) -> Iterator[tuple[str, np.ndarray, str]
 
 def write_csv(result: SimulationResult, path: str | Path) -> list[Path]:
     """Write one row per output sample to ``path`` and one row per contact phase to
-    :func:`impacts_csv_path` beside it (phases are events, not samples); return both paths.
+    :func:`impacts_csv_path` beside it (phases are events, not samples), and the wear table
+    when the result has one; return the paths.
 
-    Each file is written atomically; the phase table first, so a samples file under its
-    final name always has its phase table beside it, and a samples file that cannot be
-    written takes the phase table with it.
+    The files are one result: written together (:func:`~jointplay.common.files.all_or_nothing`),
+    so either all appear or none does, and a previous set stays as it was.
     """
-    path = check_output_path(path)
-    phases = check_output_path(impacts_csv_path(path))
+    from jointplay.common.files import OutputPlan, all_or_nothing
+
+    plan = OutputPlan()
+    path = check_output_path(plan.file("--csv", path))
+    phases = check_output_path(plan.file("--csv", impacts_csv_path(path), "the phase table"))
     side = [phases]
     if result.wear is not None:
-        side.append(check_output_path(wear_files.csv_path(path)))
+        side.append(check_output_path(plan.file("--csv", wear_files.csv_path(path),
+                                                "the wear table")))
+    plan.check()
     heads, cols, fmts = zip(*impact_csv_columns(result.impacts), strict=True)
     rows = np.column_stack([np.asarray(c, dtype=np.float64) for c in cols]) if len(
         result.impacts) else np.zeros((0, len(heads)))
-    with atomic_path(phases) as tmp:
-        np.savetxt(tmp, rows, fmt=list(fmts), delimiter=",", header=",".join(heads),
-                   comments="", encoding="utf-8")
     headers, columns = zip(*csv_columns(result), strict=True)
     table = np.column_stack([np.asarray(c, dtype=np.float64) for c in columns])
-    try:
+    with all_or_nothing(plan):
+        with atomic_path(phases) as tmp:
+            np.savetxt(tmp, rows, fmt=list(fmts), delimiter=",", header=",".join(heads),
+                       comments="", encoding="utf-8")
         if result.wear is not None:
             wear_files.write_csv(result.wear, side[-1])
         with atomic_path(path) as tmp:
             np.savetxt(tmp, table, fmt="%.17g", delimiter=",", header=",".join(headers),
                        comments="", encoding="utf-8")
-    except BaseException:
-        # the files are one result: without its samples the tables must not stay behind
-        for table_path in side:
-            table_path.unlink(missing_ok=True)
-        raise
     return [path, *side]
