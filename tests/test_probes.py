@@ -196,7 +196,7 @@ def test_fifo_scene_is_refused_without_blocking(tmp_path: Path) -> None:
 @pytest.mark.parametrize(("flags", "field", "word"), [
     (["--out", "{scene}"], "--out", "input"),
     (["--csv", "{scene}"], "--csv", "input"),
-    (["--out", "{tmp}/r", "--csv", "{tmp}/r"], "--csv", "also given"),
+    (["--out", "{tmp}/r", "--csv", "{tmp}/r"], "--csv", "same file"),
     (["--out", "{tmp}/no/such/r.h5"], "--out", "does not exist"),
     (["--out", "{tmp}"], "--out", "folder"),
     (["--out", "/dev/null"], "--out", "not a regular file"),
@@ -387,8 +387,8 @@ def test_interrupt_during_integration(tmp_path: Path) -> None:
 
 _WRITE_HOOK = """
 import os, signal, sys
-import jointplay.results.write as output
-real = output._write_group
+import jointplay.results.netcdf as output
+real = output.write_result
 def interrupted(group, *args):
     os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C in the middle of the HDF5 write
     try:
@@ -397,7 +397,7 @@ def interrupted(group, *args):
         if {swallow}:  # as a library might: the run must still end as interrupted
             return None
         raise
-output._write_group = interrupted
+output.write_result = interrupted
 print("ready", flush=True)
 from jointplay.cli import main
 sys.exit(main(["simulate", "--t-end", "0.1", "--quiet", "--out", {out!r}]))

@@ -19,6 +19,7 @@ from jointplay.common.errors import DescriptionError, JointplayError
 from jointplay.robot import Robot, load_robot, robot_from_flags
 
 if TYPE_CHECKING:
+    from jointplay.common.files import OutputPlan
     from jointplay.scene.definition import Scene
 
 EXIT_BAD_INPUT = 2
@@ -231,3 +232,11 @@ def report_error(err: Exception, args: argparse.Namespace) -> int:
     if len(lines) > 1:  # a compiler's output, say: the detail, after the one line
         print("\n".join(lines[1:]), file=sys.stderr)
     return 1
+
+
+def plan_scene_inputs(plan: OutputPlan, scene: Scene) -> None:
+    """The files a scene was read from, as inputs of ``plan``: the scene, its torque table."""
+    from jointplay.scene.definition import scene_inputs
+
+    for k, path in enumerate(scene_inputs(scene)):
+        plan.input("scene" if k == 0 else "torque table", path)

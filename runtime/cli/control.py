@@ -134,6 +134,7 @@ def cmd_control(args: argparse.Namespace) -> int:
 def control_job(args: argparse.Namespace) -> ControlJob:
     """Load the scene, the model and its twin; check every flag; prepare the outputs."""
     scene = load_control_scene(args.scene, args.quiet)
+    output_plan(args, scene)  # outputs meeting each other or an input: refused first
     model_dir = Path(args.model)
     narx = load_narx(model_dir)
     check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
@@ -143,7 +144,6 @@ def control_job(args: argparse.Namespace) -> ControlJob:
     pd_kp = float_list(args.pd_kp, "--pd-kp", nj)
     pd_kd = float_list(args.pd_kd, "--pd-kd", nj, positive=False)
     check_loop_flags(args, scene)
-    output_plan(args, scene)
     if args.plot:
         check_plot_dir(Path(args.plot))
     if args.out:
@@ -166,10 +166,10 @@ def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
 def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
     """The files the command writes (--out, the figures and control.md in --plot) and reads
     (the scene, its torque table, the model folder); refused when they meet (exit 2)."""
-    from jointplay.scene.definition import scene_inputs
+    from jointplay.cli.args import plan_scene_inputs
 
     plan = OutputPlan()
-    plan.add_inputs("scene", scene_inputs(scene))
+    plan_scene_inputs(plan, scene)
     plan.input("--model", args.model)
     if args.out:
         plan.file("--out", args.out)

@@ -98,13 +98,13 @@ def cmd_identify(args: argparse.Namespace) -> int:
 
 def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
     """The model folder's files and the scene's: refused when one is the other (exit 2)."""
+    from jointplay.cli.args import plan_scene_inputs
     from jointplay.common.files import OutputPlan
     from jointplay.neural.identify import ARX_FILE, DATASETS_FILE, METRICS_FILE, REJECTED_FILE
     from jointplay.neural.narx import MODEL_FILE
-    from jointplay.scene.definition import scene_inputs
 
     plan = OutputPlan()
-    plan.add_inputs("scene", scene_inputs(scene))
+    plan_scene_inputs(plan, scene)
     for name in (MODEL_FILE, REJECTED_FILE, ARX_FILE, DATASETS_FILE, METRICS_FILE,
                  REPORT_FILE):
         plan.file("--out", Path(args.out) / name, f"the model folder's {name}")

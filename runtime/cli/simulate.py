@@ -106,13 +106,13 @@ def _scene(args: argparse.Namespace) -> tuple[Scene, OutputPlan]:
 def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
     """Every file the command will write (given and derived) and every file it reads,
     refused before any work when two coincide or an output is an input (exit 2)."""
+    from jointplay.cli.args import plan_scene_inputs
     from jointplay.common.files import OutputPlan
     from jointplay.results import wear
     from jointplay.results.write import impacts_csv_path
-    from jointplay.scene.definition import scene_inputs
 
     plan = OutputPlan()
-    plan.add_inputs("scene", scene_inputs(scene))
+    plan_scene_inputs(plan, scene)
     if args.out:
         plan.file("--out", args.out)
     if args.csv:

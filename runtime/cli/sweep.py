@@ -20,12 +20,12 @@ def output_plan(args: argparse.Namespace, scene: Any) -> OutputPlan:
     The case records and series files are written one by one as cases finish (each
     atomically): they are what a later run resumes from.
     """
-    from jointplay.scene.definition import scene_inputs
+    from jointplay.cli.args import plan_scene_inputs
 
     out = Path(args.out)
     plan = OutputPlan()
     plan.input("sweep", args.sweep)
-    plan.add_inputs("scene", scene_inputs(scene))
+    plan_scene_inputs(plan, scene)
     plan.file("--out", out / TABLE_NAME, "the table")
     plan.file("--out", out / MANIFEST_NAME, "the manifest")
     plan.folder("--out", out / CASES_DIR, "the case records")

@@ -175,21 +175,45 @@ class _Transaction:
                 folder.rmdir()  # only if still empty: never someone else's files
 
     def commit(self) -> list[Path]:
-        placed: list[Path] = []
-        for k, (tmp, path) in enumerate(self.held):
-            try:
+        """Rename every held temporary onto its target. Should one rename fail, the targets
+        are put back as they were (a previous file restored, a new one removed)."""
+        placed: list[tuple[Path, Path | None]] = []  # target, the previous file kept aside
+        try:
+            for tmp, path in self.held:
+                previous = _set_aside(path)
+                placed.append((path, previous))
                 os.replace(tmp, path)
-            except OSError as err:
-                # Complete outputs of a run that failed must not stay: take back what is placed.
-                for done in placed:
-                    done.unlink(missing_ok=True)
-                for rest, _ in self.held[k:]:
-                    rest.unlink(missing_ok=True)
-                self.held.clear()
-                raise file_error(path, err) from None
-            placed.append(path)
+        except OSError as err:
+            for path, previous in reversed(placed):
+                with contextlib.suppress(OSError):
+                    if previous is None:
+                        path.unlink(missing_ok=True)
+                    elif os.path.samefile(previous, path):  # not replaced yet: the link goes
+                        previous.unlink()
+                    else:
+                        os.replace(previous, path)
+            for tmp, _ in self.held:
+                tmp.unlink(missing_ok=True)
+            self.held.clear()
+            raise file_error(path, err) from None
+        for _, previous in placed:
+            if previous is not None:
+                previous.unlink(missing_ok=True)
         self.held.clear()
-        return placed
+        return [path for path, _ in placed]
+
+
+def _set_aside(path: Path) -> Path | None:
+    """A hard link to the file at ``path`` under a temporary name (None if there is none),
+    so that the file can be put back; where links are not supported, the file is moved."""
+    if not path.exists():
+        return None
+    aside = path.with_name(f".{path.name}.{temp_tag()}.{os.urandom(4).hex()}.old.part")
+    try:
+        os.link(path, aside)
+    except OSError:
+        os.replace(path, aside)
+    return aside
 
 
 _TRANSACTION: contextvars.ContextVar[_Transaction | None] = contextvars.ContextVar(
@@ -350,6 +374,10 @@ class OutputPlan:
                 if _same(f.path, inp.path) or (inp.path.is_dir() and _inside(f.path, inp.path)):
                     raise DescriptionError(f.flag, f"{f.describe()} is or lies in the input "
                                            f"{inp.flag} {inp.path}; write elsewhere")
+                if _inside(inp.path, f.path) and fnmatch.fnmatch(inp.path.name, f.pattern):
+                    raise DescriptionError(f.flag, f"{f.describe()} would hold the input "
+                                           f"{inp.flag} {inp.path} among its files; write "
+                                           "elsewhere")
 
 
 def _alive(pid: int) -> bool:
