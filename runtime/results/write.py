@@ -121,18 +121,12 @@ def write_hdf5(result: SimulationResult, path: str | Path, *, compress: bool = F
     the large variables: smaller files, slower writes; readers need nothing. The layout is
     described in :mod:`jointplay.results.netcdf`.
     """
-    import h5netcdf
-
     from jointplay.common.files import write_hdf5_in_memory
     from jointplay.results import netcdf
 
     path = check_output_path(path)
-
-    def build(fh: Any) -> None:
-        with h5netcdf.File(fh, "w") as nc:
-            netcdf.write_file(nc, result, compress)
-
-    write_hdf5_in_memory(path, build)
+    write_hdf5_in_memory(path, lambda fh: netcdf.write_file(netcdf.NetcdfGroup(fh), result,
+                                                            compress))
 
 
 def read(path: str | Path) -> SimulationResult:
@@ -141,7 +135,6 @@ def read(path: str | Path) -> SimulationResult:
 
     Files of the earlier layout (``format_version`` 1) are read as well.
     """
-    import h5netcdf
     import h5py
 
     from jointplay.results import netcdf
@@ -157,8 +150,7 @@ def read(path: str | Path) -> SimulationResult:
                 raise DescriptionError("format", f"expected {FORMAT} version "
                                        f"{netcdf.FORMAT_VERSION}, found {fmt!r} version "
                                        f"{version!r}", str(path))
-            with h5netcdf.File(fh, "r") as nc:
-                return netcdf.read_file(nc)
+            return netcdf.read_file(netcdf.StoredGroup(fh))
     except OSError as err:
         from jointplay.common.files import describe_os_error
 
