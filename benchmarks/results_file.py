@@ -1,0 +1,144 @@
+"""What writing and reading a results file costs, by way of writing it, side by side.
+
+Two real runs of the paper scene with their ideal counterparts: ``short`` (``--short-t-end``,
+output every 1 ms; the size of a README run) and ``series`` (``--series-t-end`` at
+``--series-step``; the size of a large sweep series file). For each, the median of
+``--repeats`` writes of the same result by:
+
+* ``netcdf_h5py_memory``: the netCDF-4/CF layout with h5py dimension scales, built in memory
+  (HDF5 core driver) and written with plain file I/O: what ``jointplay`` does;
+* ``netcdf_h5netcdf_memory``: the same layout through h5netcdf, in memory;
+* ``netcdf_h5py_disk``: the same layout written by HDF5 straight to the file (no memory
+  image): the alternative to the core driver;
+* ``legacy_h5py_disk``: the earlier plain-HDF5 layout (no dimensions), straight to the file;
+
+and two ways of reading the file back: ``jointplay.read`` and
+``xarray.open_dataset(...).load()``. Bytes are the file's size; ``peak_image_mb`` the memory
+image's size (the extra memory the core driver needs).
+
+Writes ``results_file.csv`` and ``results_file.md`` into ``--out`` (atomically) and prints
+the Markdown.
+
+    python benchmarks/results_file.py --out out/results_file
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import os
+import statistics
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import jointplay
+from jointplay.common.files import atomic_path, atomic_write_text, write_hdf5_in_memory
+from jointplay.results import netcdf
+from jointplay.results.write import write_hdf5, write_hdf5_v1
+
+
+def _h5netcdf_memory(result: Any, path: Path) -> None:
+    import h5netcdf
+
+    def build(fh: Any) -> None:
+        with h5netcdf.File(fh, "w") as nc:
+            netcdf.write_file(nc, result)
+
+    write_hdf5_in_memory(path, build)
+
+
+def _h5py_disk(result: Any, path: Path) -> None:
+    import h5py
+
+    with atomic_path(path) as tmp, h5py.File(tmp, "w", track_order=True) as fh:
+        netcdf.write_file(netcdf.NetcdfGroup(fh), result)
+
+
+WRITERS: dict[str, Callable[[Any, Path], None]] = {
+    "netcdf_h5py_memory": write_hdf5,
+    "netcdf_h5netcdf_memory": _h5netcdf_memory,
+    "netcdf_h5py_disk": _h5py_disk,
+    "legacy_h5py_disk": write_hdf5_v1,
+}
+
+
+def _xarray_read(path: Path) -> None:
+    import xarray as xr
+
+    with xr.open_dataset(path) as ds:
+        ds.load()
+
+
+READERS: dict[str, Callable[[Path], Any]] = {"jointplay_read": jointplay.read,
+                                             "xarray_load": _xarray_read}
+
+
+def _median_s(action: Callable[[], Any], repeats: int) -> float:
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        action()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
+
+
+def measure(name: str, result: Any, repeats: int, folder: Path) -> list[dict[str, Any]]:
+    rows = []
+    for writer, write in WRITERS.items():
+        path = folder / f"{name}_{writer}.h5"
+        seconds = _median_s(lambda write=write, path=path: write(result, path), repeats)
+        row = {"run": name, "samples": result.n_samples, "action": f"write {writer}",
+               "median_s": seconds, "bytes": path.stat().st_size}
+        rows.append(row)
+    current = folder / f"{name}_netcdf_h5py_memory.h5"
+    for reader, read in READERS.items():
+        seconds = _median_s(lambda read=read: read(current), repeats)
+        rows.append({"run": name, "samples": result.n_samples, "action": f"read {reader}",
+                     "median_s": seconds, "bytes": current.stat().st_size})
+    base = next(r["median_s"] for r in rows if r["action"] == "write netcdf_h5py_memory")
+    for row in rows:
+        row["ratio_to_jointplay_write"] = row["median_s"] / base
+    return rows
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, required=True)
+    parser.add_argument("--short-t-end", type=float, default=0.2)
+    parser.add_argument("--series-t-end", type=float, default=2.0)
+    parser.add_argument("--series-step", type=float, default=1e-4)
+    parser.add_argument("--repeats", type=int, default=5)
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    scene = jointplay.default_scene()
+    runs = {"short": scene.with_run(t_end=args.short_t_end),
+            "series": scene.with_run(t_end=args.series_t_end, output_step=args.series_step)}
+    rows = []
+    load = os.getloadavg()[0]
+    with tempfile.TemporaryDirectory(dir=args.out) as tmp:
+        for name, run_scene in runs.items():
+            result = jointplay.simulate(run_scene, compare_ideal=True, quiet=True)
+            rows += measure(name, result, args.repeats, Path(tmp))
+    keys = list(rows[0])
+    buf = io.StringIO()
+    table = csv.DictWriter(buf, keys, lineterminator="\n")
+    table.writeheader()
+    table.writerows(rows)
+    atomic_write_text(args.out / "results_file.csv", buf.getvalue())
+    md = [f"Results file: median of {args.repeats} (1-minute load average {load:.1f} before; "
+          f"{os.cpu_count()} CPUs)", "",
+          "| run | samples | action | median s | MB | ratio to jointplay's write |",
+          "|---|---:|---|---:|---:|---:|"]
+    md += [f"| {r['run']} | {r['samples']} | {r['action']} | {r['median_s']:.3f} | "
+           f"{r['bytes'] / 1e6:.2f} | {r['ratio_to_jointplay_write']:.2f} |" for r in rows]
+    text = "\n".join(md) + "\n"
+    atomic_write_text(args.out / "results_file.md", text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
