@@ -11,6 +11,8 @@ output every 1 ms; the size of a README run) and ``series`` (``--series-t-end`` 
 * ``netcdf_h5py_disk``: the same layout written by HDF5 straight to the file (no memory
   image): the alternative to the core driver;
 * ``legacy_h5py_disk``: the earlier plain-HDF5 layout (no dimensions), straight to the file;
+* ``netcdf_netcdf4_memory``: the same layout through netCDF4-python (the netCDF-C library)
+  in memory, when that package is importable (it is not a dependency);
 
 and two ways of reading the file back: ``jointplay.read`` and
 ``xarray.open_dataset(...).load()``. Bytes are the file's size; ``peak_image_mb`` the memory
@@ -26,6 +28,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import importlib.util
 import io
 import os
 import statistics
@@ -35,8 +38,15 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 import jointplay
-from jointplay.common.files import atomic_path, atomic_write_text, write_hdf5_in_memory
+from jointplay.common.files import (
+    atomic_path,
+    atomic_write_bytes,
+    atomic_write_text,
+    write_hdf5_in_memory,
+)
 from jointplay.results import netcdf
 from jointplay.results.write import write_hdf5, write_hdf5_v1
 
@@ -58,12 +68,70 @@ def _h5py_disk(result: Any, path: Path) -> None:
         netcdf.write_file(netcdf.NetcdfGroup(fh), result)
 
 
+class _Attrs:
+    def __init__(self, target: Any) -> None:
+        self.target = target
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.target.setncattr(key, value)
+
+
+class _Nc4Variable:
+    def __init__(self, var: Any) -> None:
+        self.attrs = _Attrs(var)
+
+
+class _Nc4Group:
+    """The layout's few netCDF operations on netCDF4-python (the netCDF-C library)."""
+
+    def __init__(self, group: Any) -> None:
+        self.group = group
+        self.attrs = _Attrs(group)
+
+    @property
+    def dimensions(self) -> dict[str, int]:
+        return {name: len(dim) for name, dim in self.group.dimensions.items()}
+
+    @dimensions.setter
+    def dimensions(self, sizes: dict[str, int]) -> None:
+        for name, size in sizes.items():
+            self.group.createDimension(name, size)
+
+    def create_variable(self, name: str, dims: tuple[str, ...], data: Any = None,
+                        dtype: Any = None, **options: Any) -> _Nc4Variable:
+        values = np.asarray(data)
+        kind = str if values.dtype.kind in "UO" else values.dtype
+        var = self.group.createVariable(name, kind, dims, zlib="compression" in options)
+        if kind is str:
+            for i, text in enumerate(values.tolist()):
+                var[i] = text
+        elif values.size:
+            var[...] = values
+        return _Nc4Variable(var)
+
+    def create_group(self, name: str) -> _Nc4Group:
+        return _Nc4Group(self.group.createGroup(name))
+
+
+def _netcdf4_memory(result: Any, path: Path) -> None:
+    import netCDF4
+
+    ds = netCDF4.Dataset("memory.nc", "w", memory=1 << 16)
+    try:
+        netcdf.write_file(_Nc4Group(ds), result)
+    finally:
+        image = ds.close()
+    atomic_write_bytes(path, bytes(image))
+
+
 WRITERS: dict[str, Callable[[Any, Path], None]] = {
     "netcdf_h5py_memory": write_hdf5,
     "netcdf_h5netcdf_memory": _h5netcdf_memory,
     "netcdf_h5py_disk": _h5py_disk,
     "legacy_h5py_disk": write_hdf5_v1,
 }
+if importlib.util.find_spec("netCDF4") is not None:  # not a dependency: measured if present
+    WRITERS["netcdf_netcdf4_memory"] = _netcdf4_memory
 
 
 def _xarray_read(path: Path) -> None:
