@@ -495,3 +495,35 @@ def test_a_plan_owns_only_its_outputs(tmp_path: Path) -> None:
         files.atomic_write_text(tmp_path / "r.txt", "later")
         assert not (tmp_path / "r.txt").exists()
     assert (tmp_path / "r.txt").read_text() == "later"
+
+
+def test_sweep_table_and_figures_all_or_nothing(tmp_path: Path,
+                                                capsys: pytest.CaptureFixture[str],
+                                                monkeypatch: pytest.MonkeyPatch) -> None:
+    """A full disk at the last figure: exit 1, one line, neither the table nor any figure;
+    the finished cases stay (a sweep resumes from them) and the next run completes."""
+    sweep = tmp_path / "tiny.toml"
+    sweep.write_text(f'name = "tiny"\nscene = "{REPO / "scenes" / "paper_4dof.toml"}"\n'
+                     'mode = "product"\n[run]\nt_end = 0.005\n'
+                     '[parameters."joint2.clearance"]\nvalues = [5.0e-5, 1.0e-4]\n',
+                     encoding="utf-8")
+    argv = ["sweep", str(sweep), "--workers", "0", "--series", "--quiet"]
+    complete = tmp_path / "complete"
+    probe = Faults(monkeypatch, "none", 0)
+    assert main([*argv, "--out", str(complete)]) == 0
+    last = probe.calls["fsync"]
+    figures = sorted(p.name for p in (complete / "plots").iterdir())
+    assert figures and (complete / "sweep.parquet").is_file()
+    capsys.readouterr()
+    out = tmp_path / "full"
+    Faults(monkeypatch, "fsync", last)
+    assert main([*argv, "--out", str(out)]) == 1
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and err.startswith(f"jointplay: error: {out / 'plots'}"), err
+    assert "no space left on device" in err
+    assert sorted(p.name for p in out.iterdir()) == ["cases", "series", "sweep.json"]
+    assert len(list((out / "cases").iterdir())) == len(list((out / "series").iterdir())) == 2
+    Faults(monkeypatch, "none", 0)
+    assert main([*argv, "--out", str(out)]) == 0
+    assert sorted(p.name for p in (out / "plots").iterdir()) == figures
+    assert jointplay.read(next((out / "series").iterdir())).ideal is not None

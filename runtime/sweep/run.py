@@ -204,7 +204,7 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     """
     from tqdm import tqdm
 
-    from jointplay.common.files import sweep_stale
+    from jointplay.common.files import OutputPlan, all_or_nothing, make_folder, sweep_stale
     from jointplay.sim import load_scene_model
 
     started = time.perf_counter()
@@ -239,8 +239,15 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
             for case in pending:
                 record(out, run_case(case, series=series, hook=hook))
                 progress.update(1)
-    table = build_table(sweep, out)
-    figures = plot_sweep(sweep, table, out / PLOTS_DIR) if plots else []
+    # The table and the figures are one output: both appear, or (a full disk) neither.
+    final = OutputPlan()
+    final.file("--out", out / TABLE_NAME, "the table")
+    final.folder("--out", out / PLOTS_DIR, "the figures", pattern="*.png")
+    with all_or_nothing(final):
+        if plots:
+            make_folder(out / PLOTS_DIR)
+        table = build_table(sweep, out)
+        figures = plot_sweep(sweep, table, out / PLOTS_DIR) if plots else []
     failed = sum(1 for s in table.column("status").to_pylist() if s != "ok")
     return SweepResult(table=table, path=out / TABLE_NAME, cases=len(sweep.cases),
                        ran=len(pending), reused=reused, failed=failed,
