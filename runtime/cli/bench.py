@@ -49,6 +49,7 @@ from jointplay.cli.args import (
     scene_from_args,
 )
 from jointplay.common.errors import DescriptionError
+from jointplay.common.files import OutputPlan, all_or_nothing
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -105,16 +106,29 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
     if args.check == "radau":
         _with_run(scene, integrator="radau", step=args.check_step)
     laws = _stiffness_option(args, scene)
+    plan = bench_plan(args, scene)
     out = prepare_out_dir(args.out)
+    reports: list[list[Path]] = []
     if len(laws) == 1:
-        _work_precision_one(_law_scene(scene, laws[0]), args, out, methods, rtols, steps,
-                            repeats)
+        with all_or_nothing(plan):
+            _work_precision_one(_law_scene(scene, laws[0]), args, out, methods, rtols, steps,
+                                repeats, reports)
+        _report(reports[0], reports[0][1], args.quiet)
         return 0
     # One full work-precision (own model, own reference) per law, and a table of all rows.
     rows: list[dict[str, Any]] = []
-    for law in laws:
-        rows += _work_precision_one(_law_scene(scene, law), args,
-                                    prepare_out_dir(out / law), methods, rtols, steps, repeats)
+    with all_or_nothing(plan):
+        for law in laws:
+            rows += _work_precision_one(_law_scene(scene, law), args, prepare_out_dir(out / law),
+                                        methods, rtols, steps, repeats, reports)
+        _laws_table(scene, rows, out)
+    for paths in reports:
+        _report(paths, paths[1], args.quiet)
+    _report([out / "work_precision_laws.csv"], out / "work_precision_laws.md", args.quiet)
+    return 0
+
+
+def _laws_table(scene: Scene, rows: list[dict[str, Any]], out: Path) -> None:
     md = [f"# Work-precision per contact stiffness law: {scene.name}", "",
           f"Command: `{command_line()}`", "",
           "Each law's errors are against its own reference (see the law's folder).", "",
@@ -124,8 +138,6 @@ def cmd_work_precision(args: argparse.Namespace) -> int:
 
     atomic_write_text(out / "work_precision_laws.csv", bench.to_csv(rows, bench.WP_CSV_KEYS))
     atomic_write_text(out / "work_precision_laws.md", "\n".join(md))
-    _report([out / "work_precision_laws.csv"], out / "work_precision_laws.md", args.quiet)
-    return 0
 
 
 def _stiffness_option(args: argparse.Namespace, scene: Scene) -> list[str]:
@@ -157,8 +169,9 @@ def _law_scene(scene: Scene, law: str) -> Scene:
 
 def _work_precision_one(scene: Scene, args: argparse.Namespace, out: Path,
                         methods: list[str], rtols: list[float], steps: list[float],
-                        repeats: int) -> list[dict[str, Any]]:
-    """One work-precision of ``scene``: its model, its reference, its rows and report."""
+                        repeats: int, reports: list[list[Path]]) -> list[dict[str, Any]]:
+    """One work-precision of ``scene``: its model, its reference, its rows and report (the
+    paths written go to ``reports``, to be shown once every output is in place)."""
     from jointplay.sim import load_scene_model
 
     t0 = time.perf_counter()
@@ -180,9 +193,23 @@ def _work_precision_one(scene: Scene, args: argparse.Namespace, out: Path,
                                     check_step=args.check_step, quiet=args.quiet)
     wp = WorkPrecision(scene=scene, reference=reference, rows=rows, compile_s=compile_s,
                        load_s=load_s, repeats=repeats, facts=machine_facts())
-    paths = write_work_precision(wp, out, command_line())
-    _report(paths, paths[1], args.quiet)
+    reports.append(write_work_precision(wp, out, command_line()))
     return rows
+
+
+def bench_plan(args: argparse.Namespace, scene: Scene | None) -> OutputPlan:
+    """The report folder's tables, Markdown and figures (law folders included) and the
+    files read (the scene, its torque table, a surrogate's folder): refused when an output
+    would be one of them (exit 2), before any measurement."""
+    from jointplay.cli.args import plan_scene_inputs
+
+    plan = OutputPlan()
+    if scene is not None:
+        plan_scene_inputs(plan, scene)
+    plan.input("--surrogate", getattr(args, "surrogate", None))
+    plan.folder("--out", args.out, "the report", pattern="*.csv|*.md|*.png")
+    plan.check()
+    return plan
 
 
 def cmd_fidelity(args: argparse.Namespace) -> int:
@@ -196,6 +223,7 @@ def cmd_fidelity(args: argparse.Namespace) -> int:
         raise DescriptionError("--surrogate", f"{surrogate} is not a folder holding a trained "
                                               "model")
     laws = _stiffness_option(args, scene) if args.stiffness else []
+    plan = bench_plan(args, scene)
     out = prepare_out_dir(args.out)
     fid = fidelity(scene, run_scene=run_scene, reference_rtol=args.reference_rtol,
                    repeats=repeats, surrogate=surrogate, quiet=args.quiet,
@@ -203,7 +231,8 @@ def cmd_fidelity(args: argparse.Namespace) -> int:
     skipped = [r for r in fid.rows if r["status"] == "skipped" and surrogate is not None]
     for r in skipped:
         print(f"jointplay: note: surrogate row skipped: {r['note']}", file=sys.stderr)
-    paths = write_fidelity(fid, out, command_line())
+    with all_or_nothing(plan):
+        paths = write_fidelity(fid, out, command_line())
     _report(paths, paths[1], args.quiet)
     return 0
 
@@ -219,13 +248,15 @@ def cmd_scaling(args: argparse.Namespace) -> int:
     repeats = positive_int(args.repeats, "--repeats")
     if args.timeout <= 0:
         raise DescriptionError("--timeout", f"must be > 0 s, got {args.timeout}")
+    plan = bench_plan(args, None)
     out = prepare_out_dir(args.out)
     load_before = " ".join(f"{v:.2f}" for v in os.getloadavg())
     rows = scaling(links, structures, sim_time=args.sim_time, repeats=repeats,
                    timeout=args.timeout, quiet=args.quiet)
     facts = {"load average (1/5/15 min) at the start": load_before, **machine_facts()}
-    paths = write_scaling(rows, out, sim_time=args.sim_time, facts=facts,
-                          command=command_line())
+    with all_or_nothing(plan):
+        paths = write_scaling(rows, out, sim_time=args.sim_time, facts=facts,
+                              command=command_line())
     _report(paths, paths[1], args.quiet)
     return 0 if all("build_s" in r for r in rows) else 1
 

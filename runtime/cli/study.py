@@ -28,7 +28,7 @@ from jointplay.cli.neural_args import (
     trajectory_counts,
 )
 from jointplay.common.errors import DescriptionError
-from jointplay.common.files import atomic_write_text
+from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
 from jointplay.neural.control import MODEL_BASED, load_twin
 from jointplay.neural.imc import ControllerSettings
 from jointplay.neural.narx import load_narx
@@ -174,6 +174,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise DescriptionError("--out", f"{out} exists and is not a folder")
+    study_outputs(out, scene)
     if args.measurement_noise:
         raise DescriptionError("--measurement-noise", "control-study's noise case puts its own "
                                "noise on the measurements and tells the controllers (see "
@@ -197,6 +198,21 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     cases = case_list(scene, names, clearances, nominal)
     scenes = {c.name: case_scene(scene, c) for c in cases}
     return StudyPlan(scene, out, cases, scenes, nominal, identify_args)
+
+
+def study_outputs(out: Path, scene: Scene) -> OutputPlan:
+    """study.csv, .md, .json and the figures, the model folders under models/, and the
+    files read (the scene, its torque table): refused when they meet (exit 2)."""
+    from jointplay.cli.args import plan_scene_inputs
+
+    plan = OutputPlan()
+    plan_scene_inputs(plan, scene)
+    for name in ("study.csv", "study.md", "study.json"):
+        plan.file("--out", out / name, f"the study's {name}")
+    plan.folder("--out", out / "models", "the identified models")
+    plan.folder("--out", out, "the figures", pattern="*.png")
+    plan.check()
+    return plan
 
 
 def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, list[Path]]:
@@ -250,6 +266,12 @@ def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, lis
 def write_study(plan: StudyPlan, rows: list[dict[str, Any]],
                 summary: dict[tuple[str, str], dict[str, Any]], text: str) -> list[Path]:
     """study.csv, study.md, study.json and the plots; the paths written."""
+    with all_or_nothing(study_outputs(plan.out, plan.scene)):
+        return _write_study(plan, rows, summary, text)
+
+
+def _write_study(plan: StudyPlan, rows: list[dict[str, Any]],
+                 summary: dict[tuple[str, str], dict[str, Any]], text: str) -> list[Path]:
     out = plan.out
     buf = io.StringIO()
     fields = ["case", "clearance_um", "controller", "seed", "horizon", "predicted_noise_ratio",

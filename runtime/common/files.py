@@ -160,7 +160,7 @@ class _Transaction:
     def defers(self, path: Path) -> bool:
         real = Path(os.path.realpath(path))
         return real in self.targets or any(
-            folder in real.parents and fnmatch.fnmatch(real.name, pattern)
+            folder in real.parents and _matches(real.name, pattern)
             for folder, pattern in self.folders)
 
     def hold(self, tmp: Path, path: Path) -> None:
@@ -281,7 +281,7 @@ class PlannedOutput:
     path: Path
     kind: str  # "file" or "folder"
     derived: str = ""  # how it follows from the flag's value, e.g. "the impacts table"
-    pattern: str = "*"  # a folder: the names of the files written into it (fnmatch)
+    pattern: str = "*"  # a folder: the names of the files written into it (fnmatch, "|": or)
 
     def describe(self) -> str:
         what = f" ({self.derived})" if self.derived else ""
@@ -292,6 +292,11 @@ class PlannedOutput:
 class PlannedInput:
     flag: str
     path: Path
+
+
+def _matches(name: str, pattern: str) -> bool:
+    """``name`` matches one of the ``|``-separated fnmatch patterns."""
+    return any(fnmatch.fnmatch(name, p) for p in pattern.split("|"))
 
 
 def _real(path: Path) -> Path:
@@ -362,7 +367,7 @@ class OutputPlan:
                                            f"{inp.flag} {inp.path}; write elsewhere")
             for f in folders:
                 if _same(a.path, f.path) or (_inside(a.path, f.path)
-                                             and fnmatch.fnmatch(a.path.name, f.pattern)):
+                                             and _matches(a.path.name, f.pattern)):
                     raise DescriptionError(a.flag, f"{a.describe()} lies in {f.describe()}, "
                                            "which that output fills; write elsewhere")
         for i, f in enumerate(folders):
@@ -374,7 +379,7 @@ class OutputPlan:
                 if _same(f.path, inp.path) or (inp.path.is_dir() and _inside(f.path, inp.path)):
                     raise DescriptionError(f.flag, f"{f.describe()} is or lies in the input "
                                            f"{inp.flag} {inp.path}; write elsewhere")
-                if _inside(inp.path, f.path) and fnmatch.fnmatch(inp.path.name, f.pattern):
+                if _inside(inp.path, f.path) and _matches(inp.path.name, f.pattern):
                     raise DescriptionError(f.flag, f"{f.describe()} would hold the input "
                                            f"{inp.flag} {inp.path} among its files; write "
                                            "elsewhere")
