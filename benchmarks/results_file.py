@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import functools
 import importlib.util
 import io
 import os
@@ -161,13 +162,13 @@ def measure(name: str, result: Any, repeats: int, folder: Path) -> list[dict[str
     rows = []
     for writer, write in WRITERS.items():
         path = folder / f"{name}_{writer}.h5"
-        wall, cpu = _medians(lambda write=write, path=path: write(result, path), repeats)
+        wall, cpu = _medians(functools.partial(write, result, path), repeats)
         rows.append({"run": name, "samples": result.n_samples, "action": f"write {writer}",
                      "median_wall_s": wall, "median_cpu_s": cpu,
                      "bytes": path.stat().st_size})
     current = folder / f"{name}_netcdf_h5py_memory.h5"
     for reader, read in READERS.items():
-        wall, cpu = _medians(lambda read=read: read(current), repeats)
+        wall, cpu = _medians(functools.partial(read, current), repeats)
         rows.append({"run": name, "samples": result.n_samples, "action": f"read {reader}",
                      "median_wall_s": wall, "median_cpu_s": cpu,
                      "bytes": current.stat().st_size})

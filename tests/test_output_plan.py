@@ -154,10 +154,9 @@ def test_simulate_output_onto_an_input(tmp_path: Path, capsys: pytest.CaptureFix
         scene.write_text(text, encoding="utf-8")
     (tmp_path / "sub").mkdir()
     spelled = str(tmp_path / "sub" / ".." / name)  # the same file, spelled otherwise
-    flags = _slot(slot, spelled)
-    assert flags is not None or slot == "figure"
-    if slot == "figure":
-        flags = ["--plot", str(tmp_path / "sub" / ".." / "plots")]
+    flags = (["--plot", str(tmp_path / "sub" / ".." / "plots")] if slot == "figure"
+             else _slot(slot, spelled))
+    assert flags is not None
     line = refused_before_work(capsys, ["simulate", str(scene), *flags], tmp_path,
                                flags[0], f"input {input_kind}", Path(name).name)
     assert "overwrite the input" in line or "would hold the input" in line
@@ -244,6 +243,30 @@ def test_sweep_never_writes_over_its_sweep_file(tmp_path: Path, name: str,
                       encoding="utf-8")
     refused_before_work(capsys, ["sweep", str(target), "--out", str(tmp_path / "out")],
                         tmp_path, "--out", "input sweep")
+
+
+def test_bench_and_study_never_write_over_their_scene(tmp_path: Path,
+                                                      capsys: pytest.CaptureFixture[str],
+                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    import jointplay.cli.bench as bench
+    import jointplay.cli.study as study
+
+    monkeypatch.setattr(bench, "fidelity", _trap)
+    monkeypatch.setattr(bench, "prepare_out_dir", _trap)
+    monkeypatch.setattr(study, "identify_models", _trap)
+    scene, _ = wear_scene_with_table(tmp_path)
+    report = tmp_path / "report"
+    report.mkdir()
+    shutil.move(scene, report / "fidelity.md")
+    text = (report / "fidelity.md").read_text(encoding="utf-8")
+    (report / "fidelity.md").write_text(text.replace('"torques.csv"',
+                                                     f'"{tmp_path / "torques.csv"}"'),
+                                        encoding="utf-8")
+    refused_before_work(capsys, ["bench", "fidelity", str(report / "fidelity.md"), "--out",
+                                 str(report)], tmp_path, "--out", "input scene")
+    shutil.move(report / "fidelity.md", report / "study.md")
+    refused_before_work(capsys, ["control-study", str(report / "study.md"), "--out",
+                                 str(report)], tmp_path, "--out", "input scene", "study.md")
 
 
 def test_plan_refuses_an_output_inside_an_input_folder(tmp_path: Path) -> None:

@@ -310,9 +310,9 @@ def write_result(group: Any, r: SimulationResult, compress: bool = False) -> Non
     group.attrs["metadata_json"] = _to_json({k: v for k, v in r.metadata.items()
                                              if k not in text})
     for attribute, hooks in OPTIONAL_GROUPS.items():
-        value = getattr(r, attribute, None)
-        if value is not None:
-            hooks.write(group.create_group(attribute), value)
+        part = getattr(r, attribute, None)
+        if part is not None:
+            hooks.write(group.create_group(attribute), part)
 
 
 def write_file(fh: Any, r: SimulationResult, compress: bool = False) -> None:
