@@ -550,3 +550,32 @@ def test_sweep_table_and_figures_all_or_nothing(tmp_path: Path,
     assert main([*argv, "--out", str(out)]) == 0
     assert sorted(p.name for p in (out / "plots").iterdir()) == figures
     assert jointplay.read(next((out / "series").iterdir())).ideal is not None
+
+
+@pytest.mark.parametrize("failure", [OSError(errno.EIO, "I/O error"), KeyboardInterrupt()])
+def test_a_rename_that_fails_puts_everything_back(tmp_path: Path, failure: BaseException,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    """An error or a Ctrl-C between the final renames: the earlier files are back, the new
+    ones gone, no temporary stays."""
+    plan = files.OutputPlan()
+    names = ["a.txt", "b.txt", "c.txt"]
+    for name in names:
+        plan.file("--out", tmp_path / name)
+    (tmp_path / "a.txt").write_text("old a")
+    (tmp_path / "c.txt").write_text("old c")
+    real_replace, calls = os.replace, []
+
+    def replace(src: Any, dst: Any) -> None:
+        calls.append(dst)
+        if len(calls) == 3:
+            raise failure
+        real_replace(src, dst)
+
+    monkeypatch.setattr(files.os, "replace", replace)
+    expected = files.FileError if isinstance(failure, OSError) else KeyboardInterrupt
+    with pytest.raises(expected), files.all_or_nothing(plan):
+        for name in names:
+            files.atomic_write_text(tmp_path / name, f"new {name[0]}")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.txt", "c.txt"]
+    assert (tmp_path / "a.txt").read_text() == "old a"
+    assert (tmp_path / "c.txt").read_text() == "old c"

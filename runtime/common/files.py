@@ -183,19 +183,21 @@ class _Transaction:
                 previous = _set_aside(path)
                 placed.append((path, previous))
                 os.replace(tmp, path)
-        except OSError as err:
-            for path, previous in reversed(placed):
+        except BaseException as err:  # a failed rename, or an interrupt between two
+            for target, previous in reversed(placed):
                 with contextlib.suppress(OSError):
                     if previous is None:
-                        path.unlink(missing_ok=True)
-                    elif os.path.samefile(previous, path):  # not replaced yet: the link goes
+                        target.unlink(missing_ok=True)
+                    elif os.path.samefile(previous, target):  # not replaced yet: drop the link
                         previous.unlink()
                     else:
-                        os.replace(previous, path)
+                        os.replace(previous, target)
             for tmp, _ in self.held:
                 tmp.unlink(missing_ok=True)
             self.held.clear()
-            raise file_error(path, err) from None
+            if isinstance(err, OSError):
+                raise file_error(path, err) from None
+            raise
         for _, previous in placed:
             if previous is not None:
                 previous.unlink(missing_ok=True)
