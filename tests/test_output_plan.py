@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import errno
 import itertools
+import json
 import os
 import shutil
 import subprocess
@@ -295,13 +296,15 @@ class Faults:
     """Counts the low-level steps of writing and fails the n-th of one kind."""
 
     def __init__(self, monkeypatch: pytest.MonkeyPatch, kind: str, at: int,
-                 error: int = errno.ENOSPC) -> None:
+                 error: int = errno.ENOSPC, name: str = "") -> None:
         self.calls = {"fsync": 0, "replace": 0}
-        self.kind, self.at, self.error = kind, at, error
+        self.kind, self.at, self.error, self.name = kind, at, error, name
         real_fsync, real_replace = os.fsync, os.replace
 
         def fsync(fd: int) -> None:
-            self._step("fsync")
+            # with ``name``: only the temporaries of that output count
+            if not name or f".{name}." in os.readlink(f"/proc/self/fd/{fd}"):
+                self._step("fsync")
             real_fsync(fd)
 
         def replace(src: Any, dst: Any) -> None:
@@ -523,7 +526,8 @@ def test_a_plan_owns_only_its_outputs(tmp_path: Path) -> None:
 def test_sweep_table_and_figures_all_or_nothing(tmp_path: Path,
                                                 capsys: pytest.CaptureFixture[str],
                                                 monkeypatch: pytest.MonkeyPatch) -> None:
-    """A full disk at the last figure: exit 1, one line, neither the table nor any figure;
+    """A full disk at the last figure (the table is complete by then): exit 1, one line,
+    neither the table nor any figure;
     the finished cases stay (a sweep resumes from them) and the next run completes."""
     sweep = tmp_path / "tiny.toml"
     sweep.write_text(f'name = "tiny"\nscene = "{REPO / "scenes" / "paper_4dof.toml"}"\n'
@@ -532,14 +536,14 @@ def test_sweep_table_and_figures_all_or_nothing(tmp_path: Path,
                      encoding="utf-8")
     argv = ["sweep", str(sweep), "--workers", "0", "--series", "--quiet"]
     complete = tmp_path / "complete"
-    probe = Faults(monkeypatch, "none", 0)
+    probe = Faults(monkeypatch, "none", 0, name="png")
     assert main([*argv, "--out", str(complete)]) == 0
-    last = probe.calls["fsync"]
+    last = probe.calls["fsync"]  # the figures' writes (the compile cache's do not count)
     figures = sorted(p.name for p in (complete / "plots").iterdir())
-    assert figures and (complete / "sweep.parquet").is_file()
+    assert len(figures) == last > 0 and (complete / "sweep.parquet").is_file()
     capsys.readouterr()
     out = tmp_path / "full"
-    Faults(monkeypatch, "fsync", last)
+    Faults(monkeypatch, "fsync", last, name="png")
     assert main([*argv, "--out", str(out)]) == 1
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and err.startswith(f"jointplay: error: {out / 'plots'}"), err
@@ -579,3 +583,37 @@ def test_a_rename_that_fails_puts_everything_back(tmp_path: Path, failure: BaseE
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.txt", "c.txt"]
     assert (tmp_path / "a.txt").read_text() == "old a"
     assert (tmp_path / "c.txt").read_text() == "old c"
+
+
+@pytest.mark.slow
+def test_control_writes_everything_or_nothing(tmp_path: Path,
+                                              capsys: pytest.CaptureFixture[str],
+                                              monkeypatch: pytest.MonkeyPatch,
+                                              identified: tuple[Path, Any, Any]) -> None:
+    """`control --out --plot` on the session's model: the runs file opens in xarray with a
+    group per controller; a full disk at the runs file (written after the figures) leaves
+    neither it nor any figure, and no empty --plot folder."""
+    import xarray as xr
+
+    model, _, _ = identified
+    scene = tmp_path / "short.toml"
+    scene.write_text((REPO / "scenes" / "paper_4dof.toml").read_text(encoding="utf-8")
+                     .replace("t_end = 2.0", "t_end = 0.1"), encoding="utf-8")
+    argv = ["control", str(scene), "--model", str(model), "--quiet"]
+    probe = Faults(monkeypatch, "none", 0)
+    code = main([*argv, "--out", str(tmp_path / "runs.h5"), "--plot", str(tmp_path / "plots")])
+    assert code in (0, 3), capsys.readouterr().err
+    with xr.open_dataset(tmp_path / "runs.h5") as root:
+        controllers = json.loads(root.attrs["controllers"])
+        assert root["time"].attrs["units"] == "s" and "output_q2" in root
+    with xr.open_dataset(tmp_path / "runs.h5", group=controllers[0]) as run:
+        assert run["torque"].attrs["units"] == "N m"
+    assert probe.calls["fsync"] > 1
+    capsys.readouterr()
+    full = tmp_path / "full"
+    full.mkdir()
+    Faults(monkeypatch, "fsync", 1, name="runs.h5")
+    code = main([*argv, "--out", str(full / "runs.h5"), "--plot", str(full / "plots")])
+    err = capsys.readouterr().err.strip()
+    assert code == 1 and "\n" not in err and "no space left on device" in err, err
+    assert list(full.iterdir()) == []
