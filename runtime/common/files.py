@@ -210,7 +210,7 @@ def _set_aside(path: Path) -> Path | None:
     so that the file can be put back; where links are not supported, the file is moved."""
     if not path.exists():
         return None
-    aside = path.with_name(f".{path.name}.{temp_tag()}.{os.urandom(4).hex()}.old.part")
+    aside = path.with_name(f".{path.name}.{temp_tag()}.old{os.urandom(4).hex()}.part")
     try:
         os.link(path, aside)
     except OSError:
