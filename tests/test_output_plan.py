@@ -617,3 +617,43 @@ def test_control_writes_everything_or_nothing(tmp_path: Path,
     err = capsys.readouterr().err.strip()
     assert code == 1 and "\n" not in err and "no space left on device" in err, err
     assert list(full.iterdir()) == []
+
+
+def test_identify_model_folder_all_or_nothing(tmp_path: Path,
+                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    """The model folder's files are staged and moved in together: a full disk at any of
+    them is one error naming the file in the model folder (not its staging copy), and a
+    folder the run created is gone; without a fault every file is in place."""
+    import jointplay.neural.identify as ident
+    from jointplay.neural.narx import MODEL_FILE
+
+    names = [ident.DATASETS_FILE, ident.METRICS_FILE, ident.REPORT_FILE, ident.ARX_FILE,
+             MODEL_FILE]
+
+    runs = itertools.count()
+
+    def staged(scene: Any, stage: Path, *args: Any) -> dict[str, Any]:
+        run = next(runs)  # each run's files differ from the last's
+        for name in names:
+            files.atomic_write_text(stage / name, f"{name} of run {run}")
+        return {}
+
+    monkeypatch.setattr(ident, "_identify_into", staged)
+    config = ident.IdentifyConfig()
+    for name in names:
+        out = tmp_path / f"full-{name}"
+        Faults(monkeypatch, "fsync", 1, name=name)
+        with pytest.raises(files.FileError) as info:
+            ident.identify(jointplay.default_scene(), out, config, quiet=True)
+        assert info.value.path == str(out / name)
+        assert not out.exists()
+    for k, name in enumerate(names):  # a rename that fails: the earlier model stays whole
+        out = tmp_path / f"rename-{name}"
+        Faults(monkeypatch, "none", 0)
+        ident.identify(jointplay.default_scene(), out, config, quiet=True)
+        before = snapshot(out)
+        Faults(monkeypatch, "replace", len(names) + k + 1)  # after the staging writes
+        with pytest.raises(files.FileError):
+            ident.identify(jointplay.default_scene(), out, config, quiet=True)
+        # the model file goes first (never beside another run's data); the rest as before
+        assert snapshot(out) == {n: v for n, v in before.items() if n != MODEL_FILE}

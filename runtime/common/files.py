@@ -218,6 +218,15 @@ def _set_aside(path: Path) -> Path | None:
     return aside
 
 
+def replace_together(pairs: Iterable[tuple[Path, Path]]) -> list[Path]:
+    """Rename each complete file onto its target, in order; should one rename fail (or an
+    interrupt arrive between two), every target is put back as it was and the sources are
+    removed. Errors are a :class:`FileError` naming the target."""
+    moves = _Transaction(frozenset(), ())
+    moves.held.extend(pairs)
+    return moves.commit()
+
+
 _TRANSACTION: contextvars.ContextVar[_Transaction | None] = contextvars.ContextVar(
     "jointplay_output_transaction", default=None)
 

@@ -31,7 +31,6 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import json
-import os
 import shutil
 import tempfile
 import time
@@ -41,8 +40,14 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.common.errors import DescriptionError, JointplayError
-from jointplay.common.files import atomic_write_text, file_error, sweep_stale, temp_tag
+from jointplay.common.errors import DescriptionError, FileError, JointplayError
+from jointplay.common.files import (
+    atomic_write_text,
+    file_error,
+    replace_together,
+    sweep_stale,
+    temp_tag,
+)
 from jointplay.neural.datasets import DATA_FORMAT, read_datasets, write_datasets
 from jointplay.neural.evaluation import evaluate, identify_report, metrics_table
 from jointplay.neural.excitation import Chirp, Multisine, aprbs, random_multisine, step_torque
@@ -115,11 +120,14 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False)
     try:
         metrics = _identify_into(scene, stage, config, inner, limits, quiet)
         _move_in(stage, out, rejected="rejected" in metrics)
-    except BaseException:
+    except BaseException as err:
         shutil.rmtree(stage, ignore_errors=True)
         if created:  # leave no empty model folder behind
             with contextlib.suppress(OSError):
                 out.rmdir()
+        if isinstance(err, FileError) and Path(err.path).parent == stage:
+            # the file the user asked for, not its hidden staging copy
+            raise FileError(str(out / Path(err.path).name), err.cause) from None
         raise
     shutil.rmtree(stage, ignore_errors=True)
     if "rejected" in metrics:
@@ -131,9 +139,9 @@ def _move_in(stage: Path, out: Path, rejected: bool) -> None:
     """The staged files into the model folder; the model file (usable or not) last."""
     for name in (MODEL_FILE, REJECTED_FILE):  # a model only once every file is in
         (out / name).unlink(missing_ok=True)
-    for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, ARX_FILE,
-                 REJECTED_FILE if rejected else MODEL_FILE):
-        os.replace(stage / name, out / name)
+    replace_together((stage / name, out / name)
+                     for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, ARX_FILE,
+                                  REJECTED_FILE if rejected else MODEL_FILE))
 
 
 def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLoop,
