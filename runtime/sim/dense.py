@@ -1,0 +1,110 @@
+"""Dense output of a finished run (``result.sol``), for the adaptive methods.
+
+``bdf`` replays the run in the compiled driver with the asked times added to its outputs:
+the driver interpolates outputs on its steps and never steps to them, so the replay takes
+the run's own steps (same calls, same bounds) and returns its interpolating polynomials.
+``cvodes`` and ``idas`` restart from the last sample before each time and integrate to it
+through every contact transition, with the run's tolerances.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from jointplay.results.records import SimulationResult
+from jointplay.results.solution import DenseSolution
+from jointplay.sim.bdf import PROGRESS_CALLS, _joint_at_failure, native_integrator, torque_fields
+from jointplay.sim.casadi_methods import _AdaptiveIntegrator, _resolve_interval
+from jointplay.sim.events import _EventState
+from jointplay.sim.native import raise_for_status
+from jointplay.sim.problem import _Accumulated, _Problem, _Trajectory
+
+Evaluate = Callable[[np.ndarray], np.ndarray]
+
+
+def attach(result: SimulationResult, pr: _Problem, traj: _Trajectory, x0: np.ndarray
+           ) -> SimulationResult:
+    """Give ``result`` the dense output of the method that made it (adaptive methods)."""
+    run = pr.scene.run
+    t = result.t
+    if run.integrator == "bdf":
+        evaluate = _bdf_replay(pr, x0, t)
+        accuracy = ("the compiled BDF's own interpolating polynomial on each of the run's "
+                    f"steps: within the run's tolerances (rtol {run.rtol:g}, atol "
+                    f"{run.atol:g}, scaled) between samples as at them, and equal to the "
+                    "samples at the output times")
+    elif run.integrator in ("cvodes", "idas"):
+        evaluate = _adaptive_restart(pr, traj, t)
+        accuracy = (f"{run.integrator} restarted from the last sample before each time, "
+                    f"through every contact event, with the run's tolerances (rtol "
+                    f"{run.rtol:g}, atol {run.atol:g}, scaled)")
+    else:
+        return result
+    return result.with_dense_output(DenseSolution(
+        float(t[0]), float(t[-1]), pr.nx, evaluate, method=run.integrator, accuracy=accuracy))
+
+
+def _bdf_replay(pr: _Problem, x0: np.ndarray, t: np.ndarray) -> Evaluate:
+    nx = pr.nx
+    bounds = np.linspace(0.0, float(t[-1]), PROGRESS_CALLS + 1)[1:]
+
+    def evaluate(times: np.ndarray) -> np.ndarray:
+        # The run's own output times ride along: the driver's per-output step limit counts
+        # from the last output, so the replay must see the outputs the run saw.
+        grid, inverse = np.unique(np.concatenate([t[1:], times[times > t[0]]]),
+                                  return_inverse=True)
+        integ = native_integrator(pr)
+        integ.reset(x0)
+        values = np.empty((grid.size, nx))
+        done = 0
+        for bound in bounds:
+            upto = int(np.searchsorted(grid, bound, side="right"))
+            out, _, status = integ.integrate(float(bound), grid[done:upto])
+            if status:
+                raise_for_status(status, integ, torque_fields(pr),
+                                 lambda: _joint_at_failure(pr, integ))
+            values[done:upto] = out[:, :nx]
+            done = upto
+        result = np.empty((times.size, nx))
+        later = times > t[0]
+        result[~later] = x0
+        result[later] = values[inverse[t.size - 1:]]
+        return result
+
+    return evaluate
+
+
+def _adaptive_restart(pr: _Problem, traj: _Trajectory, t: np.ndarray) -> Evaluate:
+    run = pr.scene.run
+    states, speeds = traj.x.copy(), traj.v_imp.copy()
+    integ = _AdaptiveIntegrator(pr, run.integrator, run.rtol, run.atol, run.max_steps)
+
+    def evaluate(times: np.ndarray) -> np.ndarray:
+        out = np.empty((times.size, pr.nx))
+        stats = _Accumulated()
+        k_prev, x, t_cur, events = -1, states[0], float(t[0]), None
+        for i, time in enumerate(times):
+            k = min(int(np.searchsorted(t, time, side="right")) - 1, t.size - 1)
+            if time == t[k]:
+                out[i] = states[k]
+                continue
+            if k != k_prev:  # restart from sample k: its state, flags and captured speeds
+                k_prev, x, t_cur = k, states[k], float(t[k])
+                events = _EventState.__new__(_EventState)
+                events.pr, events.impacts = pr, []
+                events.v_imp = speeds[k].copy()
+                events.flags = np.zeros(pr.nc)
+                if pr.nc:
+                    events.flags[:] = pr.contact_at(x, events.v_imp)["delta"] > 0
+            step = _Trajectory(x=np.zeros((2, pr.nx)), v_imp=np.zeros((2, pr.nc)),
+                               work=np.zeros(2), dissipated=np.zeros(2))
+            assert events is not None
+            x = _resolve_interval(integ, pr, x, t_cur, float(time) - t_cur, events, step, 0,
+                                  stats)
+            t_cur = float(time)
+            out[i] = x
+        return out
+
+    return evaluate
