@@ -116,3 +116,13 @@ def test_fixed_step_sol_is_hermite_with_its_accuracy_stated() -> None:
     assert "h^4" in result.sol.accuracy and "fixed-step" in result.sol.accuracy
     assert result.nlu == 0 and result.njev == 0
     np.testing.assert_array_equal(result.sol(result.t).T, _state(result))
+
+
+def test_a_pickled_result_travels_without_its_integrator(
+        bdf_runs: tuple[SimulationResult, SimulationResult]) -> None:
+    import pickle
+
+    result, _ = bdf_runs
+    copy = pickle.loads(pickle.dumps(result))
+    assert copy.sol.method == "hermite" and result.sol.method == "bdf"
+    np.testing.assert_array_equal(copy.q, result.q)

@@ -215,6 +215,13 @@ class SimulationResult:
                     "result was read or rebuilt")
         return sample_solution(self, why)
 
+    def __getstate__(self) -> dict[str, Any]:
+        # The dense output holds the live integrator (compiled code, closures): it does not
+        # travel (pickle, Dask workers, deepcopy); a copy's ``sol`` interpolates the samples.
+        state = dict(self.__dict__)
+        state.pop("_dense", None)
+        return state
+
     def with_dense_output(self, solution: DenseSolution) -> SimulationResult:
         """This result with ``solution`` as its ``sol`` (set by the simulator)."""
         object.__setattr__(self, "_dense", solution)
