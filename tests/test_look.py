@@ -94,7 +94,9 @@ def test_plot_command_draws_every_effect_and_warns_nothing(dry: SimulationResult
              "contact_timeline_joint2.png", "contact_timeline_joint3.png",
              "eccentricity_ratio.png", "film_force.png", "energy.png", "wear.png"]
     assert sorted(os.listdir(out)) == sorted(names)
-    assert done.stdout.splitlines() == [f"wrote {out / name}" for name in names]
+    lines = done.stdout.splitlines()
+    assert lines[0].startswith("wet.h5: orbits by cubic Hermite between the samples: ")
+    assert lines[1:] == [f"wrote {out / name}" for name in names]
 
 
 def test_compare_command(dry: SimulationResult, tmp_path: Path,
@@ -107,6 +109,8 @@ def test_compare_command(dry: SimulationResult, tmp_path: Path,
     assert main(["compare", *map(str, paths), "--out", str(tmp_path / "cmp")]) == 0
     printed = capsys.readouterr().out
     lines = printed.splitlines()
+    assert lines[0].startswith("a: orbits by cubic Hermite between the samples: ")
+    lines = lines[2:]  # each run says where its orbits come from, then the table
     assert lines[0].split()[:3] == ["run", "integrator", "impacts"]
     a_row, b_row = lines[2].split(), lines[3].split()
     assert a_row[:3] == ["a", dry.integrator, str(len(dry.impacts))]
@@ -148,3 +152,27 @@ def test_plot_refuses_a_file_that_is_not_a_result(tmp_path: Path,
     bad.write_text("not HDF5")
     assert main(["plot", str(bad), "--out", str(tmp_path / "d")]) == EXIT_BAD_INPUT
     assert "is not a jointplay results file" in capsys.readouterr().err
+
+
+def test_replay_gives_a_read_result_its_dense_output(tmp_path: Path) -> None:
+    """The file's scene, settings and parameters run again reproduce its samples, so the
+    read result gets the run's own dense output back; a file whose samples the scene does
+    not reproduce is refused, with the reason."""
+    from jointplay.results.look import read_result
+    from jointplay.scene.definition import default_scene
+    from jointplay.sim import simulate
+    from jointplay.sim.dense import replay
+
+    run = tmp_path / "run.h5"
+    assert main(["simulate", "--t-end", "0.05", "--out", str(run), "--quiet"]) == 0
+    back = read_result(run)
+    solution, how = replay(back)
+    assert solution is not None and solution.method == "bdf", how
+    assert "matching the file's to 0 " in solution.accuracy
+    fresh = simulate(default_scene().with_run(t_end=0.05))
+    times = np.linspace(0.0, 0.05, 777)
+    np.testing.assert_array_equal(solution(times), fresh.sol(times))
+
+    changed = dataclasses.replace(back, q=back.q * (1 + 1e-6))
+    solution, how = replay(changed)
+    assert solution is None and "does not reproduce the file" in how

@@ -8,10 +8,12 @@ import numpy as np
 from jointplay.results.records import SimulationResult
 
 # Dense orbits: at least this many points per output interval, and per integrator step; at
-# most MAX_DENSE_POINTS in all (a figure cannot show more).
+# most MAX_DENSE_POINTS in all (a figure cannot show more); PHASE_POINTS across each contact
+# phase.
 DENSE_PER_SAMPLE = 10
 DENSE_PER_STEP = 4
 MAX_DENSE_POINTS = 400_001
+PHASE_POINTS = 32
 
 
 def is_lubricated(result: SimulationResult) -> bool:
@@ -78,11 +80,21 @@ def release_transient_end(result: SimulationResult) -> float | None:
 
 
 def dense_times(result: SimulationResult) -> np.ndarray:
-    """A uniform time grid finer than both the output samples and the integrator's steps."""
+    """A time grid finer than both the output samples and the integrator's steps, with
+    PHASE_POINTS more across every contact phase (onset to separation: microseconds that a
+    uniform grid would step over)."""
     samples = max(result.n_samples - 1, 1)
     steps = int(result.stats.get("steps", 0) or 0)
     points = min(max(DENSE_PER_SAMPLE * samples, DENSE_PER_STEP * steps) + 1, MAX_DENSE_POINTS)
-    return np.linspace(float(result.t[0]), float(result.t[-1]), points)
+    t0, t1 = float(result.t[0]), float(result.t[-1])
+    grids = [np.linspace(t0, t1, points)]
+    impacts = result.impacts
+    ends = np.where(np.isfinite(impacts.separation_time), impacts.separation_time,
+                    impacts.time)
+    for start, end in zip(impacts.time, ends, strict=True):
+        if np.isfinite(start) and end > start:
+            grids.append(np.linspace(start, min(end, t1), PHASE_POINTS))
+    return np.unique(np.clip(np.concatenate(grids), t0, t1))
 
 
 def dense_eccentricity(result: SimulationResult) -> tuple[np.ndarray, np.ndarray, str]:

@@ -10,6 +10,7 @@ through every contact transition, with the run's tolerances.
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 
@@ -108,3 +109,58 @@ def _adaptive_restart(pr: _Problem, traj: _Trajectory, t: np.ndarray) -> Evaluat
         return out
 
     return evaluate
+
+
+# Samples of a replay must match the file's to this fraction of each state's largest value.
+REPLAY_MATCH = 1e-9
+
+
+def replay(result: SimulationResult) -> tuple[DenseSolution | None, str]:
+    """The dense output of a result read from a file, by running its scene again.
+
+    The file keeps the scene text, the run settings, the parameter vector and the model's
+    input hash; the run is repeated with them and used only if the model is the one that
+    made the file and every sample matches the file's (to ``REPLAY_MATCH`` of each state's
+    scale). Returns the solution, or None and why not, in a few words.
+    """
+    import tomllib
+
+    from jointplay.common.errors import DescriptionError
+    from jointplay.scene.definition import ADAPTIVE, scene_from_dict
+    from jointplay.sim import load_scene_model, simulate
+
+    meta = result.metadata
+    if result.integrator not in ADAPTIVE:
+        return None, f"the fixed-step {result.integrator} method has no dense output"
+    text = meta.get("scene")
+    if not isinstance(text, str) or not text.strip():
+        return None, "the file keeps no scene text to run again"
+    source = str(meta.get("scene_source") or "") or None
+    try:
+        data = tomllib.loads(text)
+        base = Path(source).parent if source else None
+        scene = scene_from_dict(data, source=source or "the results file", base=base,
+                                text=text)
+        settings = meta.get("run")
+        if isinstance(settings, dict):
+            scene = scene.with_run(**settings)
+    except (tomllib.TOMLDecodeError, DescriptionError, OSError, TypeError) as err:
+        return None, f"its scene cannot be read again ({err})"
+    model = load_scene_model(scene)
+    if model.layout.input_hash != meta.get("model_input_hash"):
+        return None, "the model its scene builds now is not the one that made the file"
+    if len(result.parameters) != len(model.parameters):
+        return None, "the file's parameters do not fit the model"
+    again = simulate(scene, model=model, parameters=result.parameters)
+    state, replayed = np.hstack([result.q, result.u]), np.hstack([again.q, again.u])
+    if state.shape != replayed.shape:
+        return None, "running its scene again gives other output times"
+    scale = np.max(np.abs(state), axis=0) + np.finfo(float).tiny
+    apart = float(np.max(np.abs(replayed - state) / scale))
+    if apart > REPLAY_MATCH:
+        return None, (f"running its scene again does not reproduce the file (apart by "
+                      f"{apart:.2g} of the states' scale)")
+    sol = again.sol
+    sol.accuracy = (f"its scene run again, every sample matching the file's to {apart:.2g} "
+                    f"of the states' scale: {sol.accuracy}")
+    return sol, f"dense output of the {sol.method} run, its scene run again"
