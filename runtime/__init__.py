@@ -13,6 +13,7 @@ from jointplay.common.errors import (
     SimulationError,
 )
 from jointplay.results.records import Impacts, SimulationResult
+from jointplay.results.solution import DenseSolution
 from jointplay.robot import (
     Contact,
     Friction,
@@ -49,6 +50,7 @@ __all__ = [
     "BuildError",
     "Contact",
     "Coordinate",
+    "DenseSolution",
     "DescriptionError",
     "FastFunction",
     "Friction",

@@ -96,6 +96,11 @@ def test_cvodes_sol_within_the_runs_own_disagreement() -> None:
     between = _between(result, fine)
     sol_apart = np.max(np.abs(result.sol(fine.t[between]).T - _state(fine)[between]), axis=0)
     assert np.all(sol_apart <= 5.0 * runs_apart + 1e-12), (sol_apart, runs_apart)
+    from jointplay.results.solution import sample_solution
+
+    hermite_apart = np.max(np.abs(sample_solution(result, "compared")(fine.t[between]).T
+                                  - _state(fine)[between]), axis=0)
+    assert np.all(hermite_apart > 100.0 * sol_apart), hermite_apart / sol_apart
 
 
 def test_hermite_is_fourth_order() -> None:
