@@ -3,6 +3,8 @@ ratio, the lubricant film's force, the end of the release transient, the dense o
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from jointplay.results.records import SimulationResult
@@ -83,11 +85,14 @@ def dense_times(result: SimulationResult) -> np.ndarray:
     """A time grid finer than both the output samples and the integrator's steps, with
     PHASE_POINTS more across every contact phase (onset to separation: microseconds that a
     uniform grid would step over)."""
-    samples = max(result.n_samples - 1, 1)
+    intervals = max(result.n_samples - 1, 1)
     steps = int(result.stats.get("steps", 0) or 0)
-    points = min(max(DENSE_PER_SAMPLE * samples, DENSE_PER_STEP * steps) + 1, MAX_DENSE_POINTS)
+    # Whole subdivisions of every output interval: a method restarted from the samples
+    # (cvodes, idas) then reads an interval's points in one call.
+    per = max(DENSE_PER_SAMPLE, math.ceil(DENSE_PER_STEP * steps / intervals))
+    per = max(1, min(per, (MAX_DENSE_POINTS - 1) // intervals))
     t0, t1 = float(result.t[0]), float(result.t[-1])
-    grids = [np.linspace(t0, t1, points)]
+    grids = [np.linspace(t0, t1, intervals * per + 1)]
     impacts = result.impacts
     ends = np.where(np.isfinite(impacts.separation_time), impacts.separation_time,
                     impacts.time)

@@ -209,7 +209,7 @@ class SimulationResult:
 
         dense = self.__dict__.get("_dense")
         if dense is not None:
-            return dense  # type: ignore[no-any-return]
+            return dense
         why = ("a fixed-step run" if self.integrator in ("rk4", "radau")
                else "the integrator's dense output lives only in the run that made it; this "
                     "result was read or rebuilt")

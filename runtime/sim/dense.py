@@ -23,6 +23,9 @@ from jointplay.sim.native import raise_for_status
 from jointplay.sim.problem import _Accumulated, _Problem, _Trajectory
 
 Evaluate = Callable[[np.ndarray], np.ndarray]
+# Most points read in one call by a restarted cvodes / idas (a power of two: few integrator
+# objects are built).
+_BLOCK = 256
 
 
 def attach(result: SimulationResult, pr: _Problem, traj: _Trajectory, x0: np.ndarray
@@ -80,32 +83,64 @@ def _bdf_replay(pr: _Problem, x0: np.ndarray, t: np.ndarray) -> Evaluate:
 def _adaptive_restart(pr: _Problem, traj: _Trajectory, t: np.ndarray) -> Evaluate:
     run = pr.scene.run
     states, speeds = traj.x.copy(), traj.v_imp.copy()
-    integ = _AdaptiveIntegrator(pr, run.integrator, run.rtol, run.atol, run.max_steps)
+    made: list[_AdaptiveIntegrator] = []  # built on first use: most results never call sol
+
+    def restart(k: int) -> _EventState:
+        """The contact state at sample k: its captured speeds, flags from its penetration."""
+        events = _EventState.__new__(_EventState)
+        events.pr, events.impacts = pr, []
+        events.v_imp = speeds[k].copy()
+        events.flags = np.zeros(pr.nc)
+        if pr.nc:
+            events.flags[:] = pr.contact_at(states[k], events.v_imp)["delta"] > 0
+        return events
 
     def evaluate(times: np.ndarray) -> np.ndarray:
+        if not made:
+            made.append(_AdaptiveIntegrator(pr, run.integrator, run.rtol, run.atol,
+                                            run.max_steps))
+        integ = made[0]
         out = np.empty((times.size, pr.nx))
         stats = _Accumulated()
-        k_prev, x, t_cur, events = -1, states[0], float(t[0]), None
-        for i, time in enumerate(times):
-            k = min(int(np.searchsorted(t, time, side="right")) - 1, t.size - 1)
-            if time == t[k]:
-                out[i] = states[k]
+        index = np.minimum(np.searchsorted(t, times, side="right") - 1, t.size - 1)
+        for k in np.unique(index):
+            rows = np.flatnonzero(index == k)
+            at = times[rows]
+            on_sample = at == t[k]
+            out[rows[on_sample]] = states[k]
+            rows, at = rows[~on_sample], at[~on_sample]
+            if not rows.size:
                 continue
-            if k != k_prev:  # restart from sample k: its state, flags and captured speeds
-                k_prev, x, t_cur = k, states[k], float(t[k])
-                events = _EventState.__new__(_EventState)
-                events.pr, events.impacts = pr, []
-                events.v_imp = speeds[k].copy()
-                events.flags = np.zeros(pr.nc)
-                if pr.nc:
-                    events.flags[:] = pr.contact_at(x, events.v_imp)["delta"] > 0
-            step = _Trajectory(x=np.zeros((2, pr.nx)), v_imp=np.zeros((2, pr.nc)),
-                               work=np.zeros(2), dissipated=np.zeros(2))
-            assert events is not None
-            x = _resolve_interval(integ, pr, x, t_cur, float(time) - t_cur, events, step, 0,
-                                  stats)
-            t_cur = float(time)
-            out[i] = x
+            events = restart(int(k))
+            x, t_cur = states[k], float(t[k])
+            spacing = float(at[0] - t_cur)
+            equal = bool(np.allclose(np.diff(at, prepend=t_cur), spacing, rtol=0.0,
+                                     atol=1e-12 * max(float(t[-1]), 1.0)))
+            i = 0
+            while i < rows.size:
+                if equal:
+                    # Equally spaced: a block of points in one call, kept up to the first
+                    # point whose stretch holds a contact change (as the run itself does).
+                    count = min(_BLOCK, 1 << int(np.log2(rows.size - i)))
+                    xs, qs = integ.run(x, t_cur, count * spacing, count, events.v_imp,
+                                       events.flags, stats)
+                    hits = (np.flatnonzero(np.any(qs[:, :pr.nc] > 0, axis=1)) if pr.nc
+                            else np.zeros(0, int))
+                    accept = int(hits[0]) if hits.size else count
+                    if accept:
+                        out[rows[i:i + accept]] = xs[:accept]
+                        x, t_cur = xs[accept - 1], float(at[i + accept - 1])
+                        i += accept
+                    if accept == count:
+                        continue
+                # Through the contact change(s) to the next point, located as in the run.
+                step = _Trajectory(x=np.zeros((2, pr.nx)), v_imp=np.zeros((2, pr.nc)),
+                                   work=np.zeros(2), dissipated=np.zeros(2))
+                x = _resolve_interval(integ, pr, x, t_cur, float(at[i]) - t_cur, events,
+                                      step, 0, stats)
+                t_cur = float(at[i])
+                out[rows[i]] = x
+                i += 1
         return out
 
     return evaluate
