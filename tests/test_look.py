@@ -73,9 +73,22 @@ def test_eccentricity_ratio_and_release_transient(dry: SimulationResult) -> None
     assert ratio.min() > 0.97 and ratio.max() < 1.03  # c (1 +- 0.02) in the synthetic orbit
     # The synthetic impacts are evenly spread (one per period), no burst ends early: the
     # first "burst" closes at the first phase's separation, well inside the first half.
-    end = release_transient_end(dry)
+    end, rule = release_transient_end(dry) or (None, "")
     first = dry.impacts.for_joint(2)
     assert end is not None and end >= float(first.separation_time[0])
+    assert rule == "end of the first impact burst"
+
+
+def test_release_transient_without_impacts(dry: SimulationResult) -> None:
+    """No impacts: the transient ends after the last early sample whose acceleration leaves
+    the range of the second half; a run without such a sample has none."""
+    quiet = dataclasses.replace(dry, impacts=dry.impacts.for_joint(99))
+    assert release_transient_end(quiet) is None
+    kicked = dry.tip_acceleration.copy()
+    kicked[3] = 50.0 * np.max(np.abs(kicked))
+    end, rule = release_transient_end(dataclasses.replace(quiet, tip_acceleration=kicked)) \
+        or (None, "")
+    assert end == float(dry.t[4]) and rule == "acceleration back in its later range"
 
 
 def test_plot_command_draws_every_effect_and_warns_nothing(dry: SimulationResult,

@@ -65,20 +65,36 @@ def film_components(result: SimulationResult) -> tuple[np.ndarray, np.ndarray]:
     return -(film * n).sum(axis=-1), (film * t).sum(axis=-1)
 
 
-def release_transient_end(result: SimulationResult) -> float | None:
-    """When the release transient is over: the end of the first impact burst of every joint
-    (see :func:`jointplay.results.plots.first_burst`), if it ends in the first half of the
-    run; None without impacts (nothing swamps the rest) or when it lasts longer."""
+def release_transient_end(result: SimulationResult) -> tuple[float, str] | None:
+    """When the release transient is over, and by which rule; None when nothing swamps the
+    rest of the run.
+
+    With impacts: the end of the first impact burst of every joint (see
+    :func:`jointplay.results.plots.first_burst`). Without (a lubricated joint takes up the
+    load without a dry impact): just after the last sample of the first half of the run whose
+    end-effector acceleration leaves the range the second half keeps (its 0.5-99.5 %
+    percentiles, widened by half their span). Either must end within the first half.
+    """
     from jointplay.results.plots import first_burst
 
-    if result.n_samples < 2:
+    if result.n_samples < 4:
         return None
-    span = float(result.t[-1] - result.t[0])
+    t0, span = float(result.t[0]), float(result.t[-1] - result.t[0])
     ends = [first_burst(result.impacts.for_joint(j), span)[1] for j in result.clearance_joints]
     ends = [e for e in ends if np.isfinite(e)]
-    if not ends or max(ends) > result.t[0] + 0.5 * span:
+    if ends:
+        end = max(ends)
+        return (end, "end of the first impact burst") if end <= t0 + 0.5 * span else None
+    acceleration = result.tip_acceleration
+    later = result.t >= t0 + 0.5 * span
+    lo, hi = np.percentile(acceleration[later], [0.5, 99.5], axis=0)
+    lo, hi = lo - 0.5 * (hi - lo), hi + 0.5 * (hi - lo)
+    outside = np.any((acceleration < lo) | (acceleration > hi), axis=1) & ~later
+    if not outside.any():
         return None
-    return float(max(ends))
+    end = float(result.t[min(int(np.flatnonzero(outside)[-1]) + 1, result.n_samples - 1)])
+    return (end, "acceleration back in its later range") \
+        if end <= t0 + 0.5 * span else None
 
 
 def dense_times(result: SimulationResult) -> np.ndarray:

@@ -94,14 +94,16 @@ def _limits(values: np.ndarray, pad: float = 0.08, clip: float = 0.0) -> tuple[f
 def plot_end_effector(result: SimulationResult, path: Path) -> Path:
     """End-effector displacement, velocity and acceleration; with an ideal run, the error too.
 
-    When the run begins with an impact burst (a journal released inside its clearance), its
-    accelerations dwarf the rest; a last row then shows the acceleration after that release
-    transient (:func:`jointplay.results.derived.release_transient_end`) on its own scale.
+    When the run begins with a release transient (journals released inside their clearance:
+    an impact burst, or a film taking up the load), its accelerations dwarf the rest; a last
+    row then shows the acceleration after it
+    (:func:`jointplay.results.derived.release_transient_end`) on its own scale.
     """
     from jointplay.results.derived import release_transient_end
 
     ideal = result.ideal
-    after = release_transient_end(result)
+    transient = release_transient_end(result)
+    after, rule = transient if transient is not None else (None, "")
     rows: list[tuple[str, str, str, float | None]] = [
         ("displacement", "tip_position", "m", None), ("velocity", "tip_velocity", "m/s", None),
         ("acceleration", "tip_acceleration", "m/s²", None)]
@@ -125,9 +127,8 @@ def plot_end_effector(result: SimulationResult, path: Path) -> Path:
         if start is not None:
             ax.set_xlim(start, float(result.t[-1]))
             ax.set_ylim(*_limits(values[shown], 0.3, TRANSIENT_CLIP_PERCENT))
-            title = (f"{label} after the release transient\n(t ≥ {start:.4g} s, end of the "
-                     f"first impact burst; scale: {100 - 2 * TRANSIENT_CLIP_PERCENT:g} % of "
-                     "samples)")
+            title = (f"{label} after the release transient\n(t ≥ {start:.4g} s, {rule}; "
+                     f"scale: {100 - 2 * TRANSIENT_CLIP_PERCENT:g} % of samples)")
         ax.set_title(title, fontsize="medium")
         if ideal is not None:
             error = values - getattr(ideal, name)
