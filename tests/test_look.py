@@ -7,6 +7,7 @@ import dataclasses
 import os
 import subprocess
 import sys
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -119,8 +120,12 @@ def test_compare_command(dry: SimulationResult, tmp_path: Path,
     paths = [tmp_path / "a.h5", tmp_path / "b.h5"]
     write_hdf5(dry, paths[0])
     write_hdf5(fewer, paths[1])
-    assert main(["compare", *map(str, paths), "--out", str(tmp_path / "cmp")]) == 0
-    printed = capsys.readouterr().out
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a library warning fails the command
+        assert main(["compare", *map(str, paths), "--out", str(tmp_path / "cmp")]) == 0
+    captured = capsys.readouterr()
+    assert captured.err == ""
+    printed = captured.out
     lines = printed.splitlines()
     assert lines[0].startswith("a: orbits by cubic Hermite between the samples: ")
     lines = lines[2:]  # each run says where its orbits come from, then the table
