@@ -121,7 +121,11 @@ def _adaptive_restart(pr: _Problem, traj: _Trajectory, t: np.ndarray) -> Evaluat
                 if equal:
                     # Equally spaced: a block of points in one call, kept up to the first
                     # point whose stretch holds a contact change (as the run itself does).
-                    count = min(_BLOCK, 1 << int(np.log2(rows.size - i)))
+                    # The whole interval at once (one integrator object for every interval
+                    # of a grid), what is left after a contact change in powers of two.
+                    left = rows.size - i
+                    count = left if i == 0 and left <= _BLOCK else \
+                        min(_BLOCK, 1 << int(np.log2(left)))
                     xs, qs = integ.run(x, t_cur, count * spacing, count, events.v_imp,
                                        events.flags, stats)
                     hits = (np.flatnonzero(np.any(qs[:, :pr.nc] > 0, axis=1)) if pr.nc
