@@ -13,6 +13,7 @@ from jointplay.common.errors import (
     SimulationError,
 )
 from jointplay.results.records import Impacts, SimulationResult
+from jointplay.results.solution import DenseSolution
 from jointplay.results.write import read
 from jointplay.robot import (
     Contact,
@@ -50,6 +51,7 @@ __all__ = [
     "BuildError",
     "Contact",
     "Coordinate",
+    "DenseSolution",
     "DescriptionError",
     "FastFunction",
     "Friction",

@@ -522,7 +522,8 @@ def test_plots(result: SimulationResult, tmp_path: Path) -> None:
     folder = tmp_path / "plots"
     paths = plot_result(result, folder)
     names = ["end_effector.png", "orbit_joint2.png", "orbit_joint3.png", "contact_force.png",
-             "contact_timeline_joint2.png", "contact_timeline_joint3.png", "energy.png"]
+             "contact_timeline_joint2.png", "contact_timeline_joint3.png",
+             "eccentricity_ratio.png", "energy.png"]
     assert [p.name for p in paths] == names
     assert sorted(os.listdir(folder)) == sorted(names)
     for p in paths:
@@ -533,7 +534,7 @@ def test_plots(result: SimulationResult, tmp_path: Path) -> None:
 
 def test_plots_without_ideal_or_clearance(tmp_path: Path) -> None:
     paths = plot_result(make_result(n=100, ideal=False), tmp_path / "a")
-    assert len(paths) == 7
+    assert len(paths) == 8
     paths = plot_result(make_ideal(100), tmp_path / "b")
     assert [p.name for p in paths] == ["end_effector.png", "energy.png"]
 

@@ -5,6 +5,8 @@
   jointplay inspect [ROBOT.toml | flags] [--format text|latex|markdown] [--out FILE.md]
   jointplay simulate [SCENE.toml] [--out RUN.h5] [--csv RUN.csv] [--plot DIR] [--compare-ideal]
                      [--output-step H] [--animate FILE.gif|mp4]
+  jointplay plot RUN.h5 --out DIR                        every figure of a results file
+  jointplay compare A.h5 B.h5 [...] --out DIR            runs overlaid, table of differences
   jointplay identify | control | control-study ...       identification, the neural controller
   jointplay sweep SWEEP.toml --out DIR                   parameter sweeps on Dask
   jointplay bench work-precision | fidelity | scaling    what accuracy costs, measured
@@ -22,7 +24,18 @@ from __future__ import annotations
 import argparse
 import sys
 
-from jointplay.cli import bench, build, control, derive, identify, inspect, simulate, study, sweep
+from jointplay.cli import (
+    bench,
+    build,
+    control,
+    derive,
+    identify,
+    inspect,
+    look,
+    simulate,
+    study,
+    sweep,
+)
 from jointplay.cli.args import EXIT_BAD_INPUT, add_debug_flag, interrupted, report_error
 from jointplay.cli.summary import contact_lines, summary
 from jointplay.common import interrupts
@@ -37,6 +50,7 @@ def make_parser() -> argparse.ArgumentParser:
     derive.register(sub)
     inspect.register(sub)
     simulate.register(sub)
+    look.register(sub)
     identify.register(sub)
     control.register(sub)
     study.register(sub)

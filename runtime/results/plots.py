@@ -24,20 +24,32 @@ _PREFIXES = ((1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n"))
 
 
 def plot_result(result: SimulationResult, folder: str | Path) -> list[Path]:
-    """Write every standard figure into ``folder`` (created if missing); return the paths."""
+    """Write every figure the run's effects call for into ``folder`` (created if missing);
+    return the paths.
+
+    Always the end effector and the energy; with clearance joints, each journal's orbit (from
+    the dense output), the contact forces, each joint's contact timeline and the eccentricity
+    ratio; with a lubricant, the film force; with wear, the worn depth around each surface.
+    """
+    from jointplay.results.derived import dense_eccentricity, is_lubricated
+
     folder = Path(folder)
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise DescriptionError("--plots", f"cannot create folder {folder}: {exc}", None) from exc
     paths = [plot_end_effector(result, folder / "end_effector.png")]
-    for k, joint in enumerate(result.clearance_joints):
-        paths.append(plot_orbit(result, k, folder / f"orbit_joint{joint}.png"))
     if result.clearance_joints:
+        dense = dense_eccentricity(result)
+        for k, joint in enumerate(result.clearance_joints):
+            paths.append(plot_orbit(result, k, folder / f"orbit_joint{joint}.png", dense))
         paths.append(plot_contact_force(result, folder / "contact_force.png"))
-    for k, joint in enumerate(result.clearance_joints):
-        paths.append(plot_contact_timeline(result, k,
-                                           folder / f"contact_timeline_joint{joint}.png"))
+        for k, joint in enumerate(result.clearance_joints):
+            paths.append(plot_contact_timeline(result, k,
+                                               folder / f"contact_timeline_joint{joint}.png"))
+        paths.append(plot_eccentricity_ratio(result, folder / "eccentricity_ratio.png"))
+        if is_lubricated(result):
+            paths.append(plot_film(result, folder / "film_force.png"))
     paths.append(plot_energy(result, folder / "energy.png"))
     if result.wear is not None:
         from jointplay.results.wear import plot as plot_wear
@@ -64,34 +76,77 @@ def _time_axis(ax: Axes) -> None:
     ax.grid(True, alpha=0.3)
 
 
+# The scale after the release transient leaves out the most extreme samples on either side
+# (ringing of the last impacts), as a share of the samples shown.
+TRANSIENT_CLIP_PERCENT = 0.5
+
+
+def _limits(values: np.ndarray, pad: float = 0.08, clip: float = 0.0) -> tuple[float, float]:
+    """y limits that show ``values`` with a margin (never a zero-height range); ``clip`` > 0
+    leaves out that percentage of the samples at either end."""
+    finite = values[np.isfinite(values)]
+    lo, hi = ((float(np.percentile(finite, clip)), float(np.percentile(finite, 100 - clip)))
+              if finite.size else (0.0, 0.0))
+    width = hi - lo if hi > lo else max(abs(hi), 1e-12)
+    return lo - pad * width, hi + pad * width
+
+
 def plot_end_effector(result: SimulationResult, path: Path) -> Path:
-    """End-effector displacement, velocity and acceleration; with an ideal run, the error too."""
+    """End-effector displacement, velocity and acceleration; with an ideal run, the error too.
+
+    When the run begins with a release transient (journals released inside their clearance:
+    an impact burst, or a film taking up the load), its accelerations dwarf the rest; a last
+    row then shows the acceleration after it
+    (:func:`jointplay.results.derived.release_transient_end`) on its own scale.
+    """
+    from jointplay.results.derived import release_transient_end
+
     ideal = result.ideal
-    rows = (("displacement", "tip_position", "m"), ("velocity", "tip_velocity", "m/s"),
-            ("acceleration", "tip_acceleration", "m/s²"))
-    fig, axes = figure(3, 2 if ideal else 1, 12 if ideal else 7, 9.5, sharex=True)
-    for row, (label, name, unit) in enumerate(rows):
+    transient = release_transient_end(result)
+    after, rule = transient if transient is not None else (None, "")
+    rows: list[tuple[str, str, str, float | None]] = [
+        ("displacement", "tip_position", "m", None), ("velocity", "tip_velocity", "m/s", None),
+        ("acceleration", "tip_acceleration", "m/s²", None)]
+    if after is not None:
+        rows.append(("acceleration", "tip_acceleration", "m/s²", after))
+    fig, axes = figure(len(rows), 2 if ideal else 1, 12 if ideal else 7,
+                       3.2 * len(rows), sharex=False)
+    for row, (label, name, unit, start) in enumerate(rows):
         ax = axes[row, 0]
+        values = getattr(result, name)
+        shown = result.t >= start if start is not None else np.ones(result.t.shape, bool)
         for c, (comp, color) in enumerate(_XY):
-            ax.plot(result.t, getattr(result, name)[:, c], color=color, lw=1.4,
+            ax.plot(result.t, values[:, c], color=color, lw=1.4 if start is None else 0.9,
                     label=f"{comp} (clearance)" if ideal else comp)
         if ideal is not None:
             for c in range(2):
-                ax.plot(ideal.t, getattr(ideal, name)[:, c], color="k", lw=0.8, ls="--", alpha=0.8,
-                        label="ideal joints" if c == 0 else None)
+                ax.plot(ideal.t, getattr(ideal, name)[:, c], color="k", lw=0.8, ls="--",
+                        alpha=0.8, label="ideal joints" if c == 0 else None)
         ax.set_ylabel(f"{label} [{unit}]")
-        ax.set_title(f"end-effector {label}")
+        title = f"end-effector {label}"
+        if start is not None:
+            ax.set_xlim(start, float(result.t[-1]))
+            ax.set_ylim(*_limits(values[shown], 0.3, TRANSIENT_CLIP_PERCENT))
+            title = (f"{label} after the release transient\n(t ≥ {start:.4g} s, {rule}; "
+                     f"scale: {100 - 2 * TRANSIENT_CLIP_PERCENT:g} % of samples)")
+        ax.set_title(title, fontsize="medium")
         if ideal is not None:
-            error = getattr(result, name) - getattr(ideal, name)
-            factor, prefix = _scale(error)
+            error = values - getattr(ideal, name)
+            factor, prefix = _scale(error[shown])
             ax = axes[row, 1]
             for c, (_, color) in enumerate(_XY):
                 ax.plot(result.t, factor * error[:, c], color=color, lw=1.0)
             ax.axhline(0.0, color="0.5", lw=0.6)
             ax.set_ylabel(f"error [{prefix}{unit}]")
-            ax.set_title(f"{label} error (clearance − ideal)")
+            ax.set_title(f"{label} error (clearance − ideal)", fontsize="medium")
+            if start is not None:
+                ax.set_xlim(start, float(result.t[-1]))
+                ax.set_ylim(*_limits(factor * error[shown], 0.3, TRANSIENT_CLIP_PERCENT))
+        if start is None:
+            ax.set_xlim(float(result.t[0]), float(result.t[-1]))
     for ax in axes.ravel():
-        _time_axis(ax)
+        ax.set_xlabel("time [s]")
+        ax.grid(True, alpha=0.3)
     fig.suptitle(f"{result.scene_name}: end-effector response")
     fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=3)
     return save(fig, path)
@@ -103,22 +158,29 @@ def impact_positions(result: SimulationResult, k: int) -> np.ndarray:
     return result.impacts.eccentricity[result.impacts.joint == joint].reshape(-1, 2)
 
 
-def plot_orbit(result: SimulationResult, k: int, path: Path) -> Path:
-    """Path of the journal centre inside the clearance circle, in micrometres."""
+def plot_orbit(result: SimulationResult, k: int, path: Path,
+               dense: tuple[np.ndarray, np.ndarray, str] | None = None) -> Path:
+    """Path of the journal centre inside the clearance circle, in micrometres, drawn from the
+    dense output (``result.sol``: the output samples alias the fast motion in contact);
+    ``dense`` is :func:`jointplay.results.derived.dense_eccentricity` when already at hand."""
+    from jointplay.results.derived import dense_eccentricity
+
     joint, um = result.clearance_joints[k], 1e6
     c = um * float(result.radial_clearance[k])
-    ex, ey = um * result.eccentricity[:, k, 0], um * result.eccentricity[:, k, 1]
+    times, ecc, source = dense if dense is not None else dense_eccentricity(result)
+    ex, ey = um * ecc[:, k, 0], um * ecc[:, k, 1]
     hits = um * impact_positions(result, k)
-    fig, axes = figure(1, 1, 8.5, 6.0)
+    fig, axes = figure(1, 1, 10.0, 6.0)
     ax = axes[0, 0]
     angle = np.linspace(0.0, 2.0 * np.pi, 361)
     ax.plot(c * np.cos(angle), c * np.sin(angle), color="0.3", lw=1.5,
             label=f"clearance c = {c:.4g} µm")
-    ax.plot(ex, ey, color="C0", lw=0.8, alpha=0.9, label="journal centre")
+    ax.plot(ex, ey, color="C0", lw=0.6, alpha=0.9,
+            label=f"journal centre, {times.size} points:\n{source}")
     ax.plot(hits[:, 0], hits[:, 1], "o", color="C3", ms=4, label=f"impacts ({len(hits)})")
-    ax.plot(ex[0], ey[0], "^", color="C2", ms=9, mec="k", label=f"start, t = {result.t[0]:.3g} s")
+    ax.plot(ex[0], ey[0], "^", color="C2", ms=9, mec="k", label=f"start, t = {times[0]:.3g} s")
     ax.plot(ex[-1], ey[-1], "s", color="C1", ms=8, mec="k",
-            label=f"end, t = {result.t[-1]:.3g} s")
+            label=f"end, t = {times[-1]:.3g} s")
     reach = 1.15 * max(c, float(np.nanmax(np.hypot(ex, ey))) if ex.size else 0.0)
     ax.set_xlim(-reach, reach)
     ax.set_ylim(-reach, reach)
@@ -133,25 +195,96 @@ def plot_orbit(result: SimulationResult, k: int, path: Path) -> Path:
 
 
 def plot_contact_force(result: SimulationResult, path: Path) -> Path:
-    """Normal and friction force of each clearance joint, impacts ticked along the time axis."""
+    """Normal and friction force of each clearance joint, and the lubricant film's force
+    where there is one, impacts ticked along the time axis."""
     from matplotlib.transforms import blended_transform_factory
 
+    from jointplay.results.derived import film_force, is_lubricated
+
     nc = len(result.clearance_joints)
-    fig, axes = figure(nc, 1, 10, 1.0 + 2.6 * nc, sharex=True)
+    film = np.hypot(*np.moveaxis(film_force(result), -1, 0)) if is_lubricated(result) else None
+    fig, axes = figure(nc, 1, 10, 1.2 + 2.6 * nc, sharex=True)
     for k, joint in enumerate(result.clearance_joints):
         ax: Any = axes[k, 0]
-        ax.plot(result.t, result.normal_force[:, k], color="C0", lw=1.2, label="normal $F_n$")
+        drawn = [result.normal_force[:, k], result.friction_force[:, k]]
+        ax.plot(result.t, result.normal_force[:, k], color="C0", lw=1.2,
+                label="dry normal $F_n$")
         ax.plot(result.t, result.friction_force[:, k], color="C1", lw=0.7,
-                label="friction $F_t$")
+                label="dry friction $F_t$")
+        if film is not None:
+            ax.plot(result.t, film[:, k], color="C2", lw=1.0, label="film |$F_{film}$|")
+            drawn.append(film[:, k])
         times = result.impacts.time[result.impacts.joint == joint]
-        ticks = blended_transform_factory(ax.transData, ax.transAxes)
-        ax.plot(times, np.full(times.shape, 0.0), "|", color="C3", ms=12, mew=1.2,
-                transform=ticks, clip_on=False, label="impact onset")
+        if times.size:  # an empty unclipped line has no extent: constrained layout fails
+            ticks = blended_transform_factory(ax.transData, ax.transAxes)
+            ax.plot(times, np.full(times.shape, 0.0), "|", color="C3", ms=12, mew=1.2,
+                    transform=ticks, clip_on=False, label="impact onset")
+        ax.set_ylim(*_limits(np.concatenate([*drawn, [0.0]])))
         ax.set_ylabel("force [N]")
-        ax.set_title(f"joint {joint}: {times.size} impacts")
+        ax.set_title(f"joint {joint}: {times.size} impacts", fontsize="medium")
         _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: contact forces")
-    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=3)
+    fig.legend(*_legend_entries(axes), loc="outside lower center", ncols=4)
+    return save(fig, path)
+
+
+def _legend_entries(axes: Any) -> tuple[list[Any], list[str]]:
+    """Handles and labels of every panel, each label once, in order of appearance."""
+    handles: dict[str, Any] = {}
+    for ax in np.ravel(axes):
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            handles.setdefault(label, handle)
+    return list(handles.values()), list(handles)
+
+
+def plot_eccentricity_ratio(result: SimulationResult, path: Path) -> Path:
+    """epsilon(t) = |e| / c of every clearance joint: 1 where dry contact begins; with a
+    lubricant, the ratio where the film's coefficients freeze (``lubrication.transition``)."""
+    from jointplay.results.derived import eccentricity_ratio, is_lubricated, parameter
+
+    ratio = eccentricity_ratio(result)
+    fig, axes = figure(1, 1, 10, 4.2)
+    ax = axes[0, 0]
+    for k, joint in enumerate(result.clearance_joints):
+        ax.plot(result.t, ratio[:, k], lw=1.0, color=f"C{k}", label=f"joint {joint}")
+    ax.axhline(1.0, color="k", lw=0.8, ls="--", label="ε = 1: dry contact")
+    transition = parameter(result, "lubrication.transition")
+    if is_lubricated(result) and transition is not None:
+        ax.axhline(transition, color="C3", lw=0.8, ls=":",
+                   label=f"ε = {transition:g}: film closing (lubrication.transition)")
+    ax.set_ylim(0.0, max(1.1, 1.05 * float(np.nanmax(ratio, initial=0.0))))
+    ax.set_ylabel("eccentricity ratio ε = |e| / c")
+    ax.set_title(f"{result.scene_name}: eccentricity ratio (output samples)")
+    ax.legend(fontsize="small", loc="lower right")
+    _time_axis(ax)
+    return save(fig, path)
+
+
+def plot_film(result: SimulationResult, path: Path) -> Path:
+    """The lubricant film's force on each journal: its load-carrying part along the line of
+    centres, its part across it, and the dry contact's normal force where the film closed."""
+    from jointplay.results.derived import film_components
+
+    radial, across = film_components(result)
+    nc = len(result.clearance_joints)
+    fig, axes = figure(nc, 1, 10, 1.2 + 2.8 * nc, sharex=True)
+    for k, joint in enumerate(result.clearance_joints):
+        ax: Any = axes[k, 0]
+        ax.plot(result.t, np.hypot(radial[:, k], across[:, k]), color="k", lw=1.4,
+                label="film |$F_{film}$|")
+        ax.plot(result.t, radial[:, k], color="C2", lw=0.9,
+                label="film, along the line of centres (towards the centre)")
+        ax.plot(result.t, across[:, k], color="C4", lw=0.9, label="film, across it")
+        ax.plot(result.t, result.normal_force[:, k], color="C0", lw=0.9, ls="--",
+                label="dry normal $F_n$ (film closed)")
+        peak = int(np.argmax(np.hypot(radial[:, k], across[:, k])))
+        ax.set_title(f"joint {joint}: largest film force sample "
+                     f"{np.hypot(radial[peak, k], across[peak, k]):.4g} N at "
+                     f"{result.t[peak]:.4g} s", fontsize="medium")
+        ax.set_ylabel("force [N]")
+        _time_axis(ax)
+    fig.suptitle(f"{result.scene_name}: lubricant film force")
+    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=2)
     return save(fig, path)
 
 
@@ -217,6 +350,7 @@ def plot_contact_timeline(result: SimulationResult, k: int, path: Path) -> Path:
     """Normal force of clearance joint ``k`` against time with every onset, located peak and
     separation marked; below, a zoom on the first impact burst."""
     from jointplay.results.contacts import joint_contact
+    from jointplay.results.derived import film_force, is_lubricated
 
     summary = joint_contact(result, k)
     joint = summary.joint
@@ -228,10 +362,18 @@ def plot_contact_timeline(result: SimulationResult, k: int, path: Path) -> Path:
     fig, axes = figure(2, 1, 11, 7.5, sharex=False)
     full, zoom = axes[0, 0], axes[1, 0]
     sampled = f"sampled every {step * 1e3:.3g} ms" if step else "sampled"
+    film = None
+    if is_lubricated(result):
+        film = np.hypot(*np.moveaxis(film_force(result)[:, k], -1, 0))
+        factor, prefix = _scale(np.r_[force, peaks, film, 0.0])
     for ax in (full, zoom):
-        ax.plot(result.t, factor * force, color="C0", lw=0.9, label=f"normal force, {sampled}")
+        ax.plot(result.t, factor * force, color="C0", lw=0.9,
+                label=f"dry normal force, {sampled}")
+        if film is not None:
+            ax.plot(result.t, factor * film, color="C2", lw=0.9,
+                    label=f"film |$F_{{film}}$|, {sampled}")
         _mark_phases(ax, rows, factor, summary.located and len(rows) > 0)
-        ax.set_ylabel(f"normal force [{prefix}N]")
+        ax.set_ylabel(f"force [{prefix}N]")
         _time_axis(ax)
     if summary.located and summary.impacts:
         full.set_title(f"joint {joint}: {summary.impacts} contact phases; largest located peak "

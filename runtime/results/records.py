@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 if TYPE_CHECKING:
+    from jointplay.results.solution import DenseSolution
     from jointplay.results.wear import WearProfile
 
 # Columns of the contact-phase table beyond the four an impact always had, with their units.
@@ -150,6 +151,81 @@ class SimulationResult:
     @property
     def n_samples(self) -> int:
         return int(self.t.size)
+
+    # --- The fields SciPy's solve_ivp returns, for code written against it. A run that cannot
+    # go on raises SimulationError (time, joint, cause) instead of returning, so a result in
+    # hand always reached its end: status 0, success True.
+
+    @property
+    def status(self) -> int:
+        """0: the integration reached the end of the run (as ``solve_ivp``'s status 0)."""
+        return int(self.stats.get("status", 0))
+
+    @property
+    def success(self) -> bool:
+        """True when the integration reached the end of the run (``status == 0``)."""
+        return self.status == 0
+
+    @property
+    def message(self) -> str:
+        """What happened, in words."""
+        if self.success:
+            return (f"The solver ({self.integrator}) reached the end of the run, "
+                    f"t = {float(self.t[-1]):g} s, with {len(self.impacts)} contact phases.")
+        return str(self.stats.get("message", f"status {self.status}"))
+
+    @property
+    def nfev(self) -> int:
+        """Evaluations of the right-hand side (the forward dynamics)."""
+        return int(self.stats.get("rhs_evaluations", 0))
+
+    @property
+    def njev(self) -> int:
+        """Evaluations of its Jacobian."""
+        return int(self.stats.get("jacobian_evaluations", 0))
+
+    @property
+    def nlu(self) -> int:
+        """Factorisations of the Newton matrix: LU decompositions for bdf, linear-solver
+        set-ups for cvodes and idas, one per step for radau (its inverse is taken once per
+        step), none for rk4."""
+        if "lu_decompositions" in self.stats:
+            return int(self.stats["lu_decompositions"])
+        if self.integrator == "radau":
+            return int(self.stats.get("steps", 0))
+        return 0
+
+    @property
+    def sol(self) -> DenseSolution:
+        """The state x = (q, u) at any time of the run: ``result.sol(t)`` with a scalar t
+        gives shape (n,), with a 1-D array (n, m), like ``solve_ivp``'s ``sol``.
+
+        From the integrator's dense output for a result just simulated with ``bdf``,
+        ``cvodes`` or ``idas``; otherwise (fixed-step methods, results read from a file) a
+        cubic Hermite interpolant of the samples. ``sol.method`` says which and
+        ``sol.accuracy`` what error to expect (see :mod:`jointplay.results.solution`).
+        """
+        from jointplay.results.solution import sample_solution
+
+        dense = self.__dict__.get("_dense")
+        if dense is not None:
+            return dense
+        why = ("a fixed-step run" if self.integrator in ("rk4", "radau")
+               else "the integrator's dense output lives only in the run that made it; this "
+                    "result was read or rebuilt")
+        return sample_solution(self, why)
+
+    def __getstate__(self) -> dict[str, Any]:
+        # The dense output holds the live integrator (compiled code, closures): it does not
+        # travel (pickle, Dask workers, deepcopy); a copy's ``sol`` interpolates the samples.
+        state = dict(self.__dict__)
+        state.pop("_dense", None)
+        return state
+
+    def with_dense_output(self, solution: DenseSolution) -> SimulationResult:
+        """This result with ``solution`` as its ``sol`` (set by the simulator)."""
+        object.__setattr__(self, "_dense", solution)
+        return self
 
     @property
     def eccentricity_columns(self) -> dict[int, tuple[int, int]]:

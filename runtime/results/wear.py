@@ -133,17 +133,11 @@ def write_csv(wear: WearProfile, path: Path) -> None:
 
 def plot(wear: WearProfile, path: str | Path, title: str = "") -> Path:
     """Polar plot of the worn depth around each bearing and journal (nm or um), angles in
-    the frame of each surface's link."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from jointplay.common.files import atomic_path
+    the frame of each surface's link (PNG, drawn on an Agg canvas without pyplot)."""
+    from jointplay.common.figures import figure, save
 
     nc = len(wear.joints)
-    fig, axes = plt.subplots(nc, 2, subplot_kw={"projection": "polar"},
-                             figsize=(8.5, 4.2 * nc), squeeze=False)
+    fig, axes = figure(nc, 2, 8.5, 4.4 * nc, projection="polar")
     closed = np.append(wear.angle, wear.angle[0])
     deepest = max(float(wear.bearing_depth.max()), float(wear.journal_depth.max()))
     scale, unit = (1e9, "nm") if deepest < 1e-6 else (1e6, "um")
@@ -163,9 +157,4 @@ def plot(wear: WearProfile, path: str | Path, title: str = "") -> Path:
             ax.tick_params(labelsize=7)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    path = Path(path)
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=110, format=path.suffix.lstrip(".") or "png")
-    plt.close(fig)
-    return path
+    return save(fig, path, dpi=110)

@@ -90,7 +90,9 @@ def simulate(scene: Scene, *, model: Model | None = None,
         phases = METHODS[run.integrator](pr, x0, traj, stats, progress)
     wall = time.perf_counter() - start
     counts: dict[str, Any] = dict(stats.counts)
-    return _assemble(pr, traj, t, counts, wall, ideal_result, phases)
+    from jointplay.sim.dense import attach
+
+    return attach(_assemble(pr, traj, t, counts, wall, ideal_result, phases), pr, traj, x0)
 
 
 

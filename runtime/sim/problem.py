@@ -53,6 +53,7 @@ class _Accumulated:
         c["rhs_evaluations"] += int(stats.get("nfevals", 0))
         c["jacobian_evaluations"] += int(stats.get("n_call_jacF", 0))
         c["error_test_failures"] += int(stats.get("netfails", 0))
+        c["lu_decompositions"] = c.get("lu_decompositions", 0) + int(stats.get("nlinsetups", 0))
 
 
 def _scaling(model: Model, p: np.ndarray) -> np.ndarray:

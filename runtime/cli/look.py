@@ -1,0 +1,107 @@
+"""``jointplay plot`` and ``jointplay compare``: results files looked at again, no Python."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from jointplay.cli.args import check_writable_dir
+from jointplay.common.errors import DescriptionError
+
+if TYPE_CHECKING:
+    from jointplay.results.records import SimulationResult
+
+
+def register(subparsers: Any) -> None:
+    p_plot = subparsers.add_parser(
+        "plot", help="draw every figure a results file's effects call for",
+        description="Draw every figure the run's effects call for (end effector, energy; with "
+                    "clearance: orbits, contact forces and timelines, eccentricity ratio; with "
+                    "a lubricant: the film force; with wear: the worn depth) from a results "
+                    "file written by `jointplay simulate --out`.")
+    p_plot.add_argument("run", metavar="RUN.h5", help="results file")
+    p_plot.add_argument("--out", required=True, metavar="DIR",
+                        help="folder for the PNG figures (created if missing)")
+    _replay_flag(p_plot)
+    p_plot.set_defaults(func=cmd_plot)
+
+    p_cmp = subparsers.add_parser(
+        "compare", help="overlay runs and print a table of their differences",
+        description="Overlay two or more runs (tip path and the distance between runs, journal "
+                    "orbits, contact forces, impacts side by side, energy) and print a table "
+                    "of their differences against the first: largest tip difference, impacts, "
+                    "peak force, approach speed, energy.")
+    p_cmp.add_argument("runs", nargs="+", metavar="RUN.h5",
+                       help="results files; the first is the reference")
+    p_cmp.add_argument("--out", required=True, metavar="DIR",
+                       help="folder for the PNG figures (created if missing)")
+    _replay_flag(p_cmp)
+    p_cmp.set_defaults(func=cmd_compare)
+
+
+def _replay_flag(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--no-replay", action="store_true",
+                        help="draw orbits by cubic Hermite between the file's samples; by "
+                             "default the run's scene is run again for its dense output "
+                             "(used only if it reproduces the file's samples)")
+
+
+def _dense_output(result: SimulationResult, label: str, skip: bool) -> None:
+    """Give a result read from a file its dense output back (see jointplay.sim.dense.replay)
+    and say where its orbits come from."""
+    if not result.clearance_joints:
+        return
+    if skip:
+        print(f"{label}: orbits by cubic Hermite between the samples (--no-replay)")
+        return
+    from jointplay.sim.dense import replay
+
+    solution, how = replay(result)
+    if solution is not None:
+        result.with_dense_output(solution)
+        print(f"{label}: orbits from the {how}")
+    else:
+        print(f"{label}: orbits by cubic Hermite between the samples: {how}")
+
+
+def _check_out(folder: str) -> Path:
+    path = Path(folder)
+    check_writable_dir(path, "--out")
+    return path
+
+
+def cmd_plot(args: argparse.Namespace) -> int:
+    from jointplay.results.look import read_result
+    from jointplay.results.plots import plot_result
+
+    folder = _check_out(args.out)
+    result = read_result(args.run, "RUN.h5")
+    _dense_output(result, Path(args.run).name, args.no_replay)
+    for path in plot_result(result, folder):
+        print(f"wrote {path}")
+    return 0
+
+
+def cmd_compare(args: argparse.Namespace) -> int:
+    from jointplay.results.look import (
+        compare_runs,
+        difference_table,
+        differences,
+        labelled,
+        read_result,
+    )
+
+    if len(args.runs) < 2:
+        raise DescriptionError("RUN.h5", "compare needs two or more results files; for one "
+                               "run use `jointplay plot RUN.h5 --out DIR`")
+    folder = _check_out(args.out)
+    runs = labelled(args.runs, [read_result(p, f"RUN.h5 #{i + 1}")
+                                for i, p in enumerate(args.runs)])
+    for label, result in runs:
+        _dense_output(result, label, args.no_replay)
+    paths = compare_runs(runs, folder)
+    print(difference_table(differences(runs)))
+    for path in paths:
+        print(f"wrote {path}")
+    return 0
