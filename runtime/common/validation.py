@@ -9,12 +9,44 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from jointplay.common.errors import DescriptionError
+from jointplay.common.errors import DescriptionError, combined
 from jointplay.common.hints import did_you_mean
+
+
+class Problems:
+    """Collects the invalid fields of one description, so that all are reported at once.
+
+        problems = Problems()
+        with problems.check():
+            positive("links[1].mass", mass)
+        ...
+        problems.raise_any()   # one DescriptionError, or DescriptionErrors for several
+    """
+
+    def __init__(self) -> None:
+        self.found: list[DescriptionError] = []
+
+    @contextmanager
+    def check(self) -> Iterator[None]:
+        """Run a check; a :class:`DescriptionError` it raises is kept, not raised."""
+        try:
+            yield
+        except DescriptionError as err:
+            self.found.extend(err.problems)
+
+    def __bool__(self) -> bool:
+        return bool(self.found)
+
+    def raise_any(self, source: str | None = None) -> None:
+        """Raise everything found (attributed to ``source`` when it is given); else nothing."""
+        if self.found:
+            raise combined([p if p.source or source is None else p.with_source(source)
+                            for p in self.found])
 
 
 def positive(field_name: str, value: float, *, allow_zero: bool = False) -> None:
@@ -25,6 +57,21 @@ def positive(field_name: str, value: float, *, allow_zero: bool = False) -> None
     if value < 0 or (value == 0 and not allow_zero):
         bound = ">= 0" if allow_zero else "> 0"
         raise DescriptionError(field_name, f"must be {bound}, got {value!r}")
+
+
+def plausible(field_name: str, value: float, kind: str) -> None:
+    """A finite number inside the documented range of its kind of quantity
+    (:data:`jointplay.common.limits.PHYSICAL_RANGES`): no real robot has a link of 1e-300 m
+    or a contact exponent of 1e300, and such numbers only overflow later, mid-run."""
+    from jointplay.common.limits import PHYSICAL_RANGES
+
+    finite(field_name, value)
+    low, high, unit, what = PHYSICAL_RANGES[kind]
+    if not low <= value <= high:
+        units = f" {unit}" if unit else ""
+        raise DescriptionError(field_name, f"{value:g}{units} is outside the range a real "
+                               f"robot's {what} has ({low:g} to {high:g}{units}); see the "
+                               "README, \"Limits, interrupts and errors\"")
 
 
 def finite(field_name: str, value: float) -> None:

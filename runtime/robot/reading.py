@@ -9,7 +9,7 @@ from typing import Any
 
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
-from jointplay.common.validation import boolean, check_keys, number, read_toml
+from jointplay.common.validation import Problems, boolean, check_keys, number, read_toml
 from jointplay.robot.description import (
     MAX_LINKS,
     Contact,
@@ -35,6 +35,13 @@ _FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", 
                  "coefficient", "hardness"}
 
 
+def check_robot_name(name: Any) -> None:
+    """A robot's name: it names generated folders and files, so letters, digits, '_', '-'."""
+    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum() \
+            or not name.isascii():
+        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
+
+
 def _numbers(table: Mapping[str, Any], where: str) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for key, value in table.items():
@@ -47,23 +54,36 @@ def robot_from_dict(data: Mapping[str, Any], source: str | None = None) -> Robot
     try:
         return _robot_from_dict(data)
     except DescriptionError as err:
-        err.source = source
-        raise DescriptionError(err.field, err.message, source) from None
+        raise err.with_source(source) from None
 
 
 def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
     if "robot" in data and isinstance(data["robot"], Mapping):
         data = data["robot"]
-    check_keys(data, _TOP_KEYS, "")
-    links = _links(data)
-    joints = _joints(data, len(links))
+    # Every part is read even after one fails, so that all problems are reported together.
+    problems = Problems()
+    with problems.check():
+        check_keys(data, _TOP_KEYS, "")
+    links: tuple[Link, ...] = ()
+    with problems.check():
+        links = _links(data)
+    joints: tuple[Joint, ...] = ()
+    with problems.check():
+        joints = _joints(data, len(links) or 1)
     payload = data.get("payload", {})
-    check_keys(payload, ("mass",), "payload")
-    gravity = _gravity(data)
-    tables = _option_tables(data)
+    with problems.check():
+        check_keys(payload, ("mass",), "payload")
+        number(payload.get("mass", 0.0), "payload.mass")
+    gravity = Gravity()
+    with problems.check():
+        gravity = _gravity(data)
+    tables: dict[str, Mapping[str, Any]] = {}
+    with problems.check():
+        tables = _option_tables(data)
     name = data.get("name", "robot")
-    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
-        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
+    with problems.check():
+        check_robot_name(name)
+    problems.raise_any()
     return Robot(
         links=links,
         joints=joints,
@@ -85,12 +105,15 @@ def _links(data: Mapping[str, Any]) -> tuple[Link, ...]:
         raise DescriptionError("links", "must be a non-empty array of [[links]] tables "
                                         f"(1 to {MAX_LINKS} links)")
     links = []
+    problems = Problems()
     for i, raw in enumerate(raw_links, start=1):
-        check_keys(raw, _LINK_KEYS, f"links[{i}]")
-        missing = [key for key in _LINK_KEYS if key not in raw]
-        if missing:
-            raise DescriptionError(f"links[{i}].{missing[0]}", "is required")
-        links.append(Link(**_numbers(raw, f"links[{i}]")))
+        with problems.check():
+            check_keys(raw, _LINK_KEYS, f"links[{i}]")
+            missing = [key for key in _LINK_KEYS if key not in raw]
+            if missing:
+                raise DescriptionError(f"links[{i}].{missing[0]}", "is required")
+            links.append(Link(**_numbers(raw, f"links[{i}]")))
+    problems.raise_any()
     return tuple(links)
 
 
@@ -100,19 +123,27 @@ def _joints(data: Mapping[str, Any], n_links: int) -> tuple[Joint, ...]:
     if not isinstance(raw_joints, list):
         raise DescriptionError("joints", "must be an array of [[joints]] tables")
     joints = []
+    problems = Problems()
     for i, raw in enumerate(raw_joints, start=1):
-        check_keys(raw, _JOINT_KEYS, f"joints[{i}]")
-        kind = raw.get("kind", "ideal")
-        if isinstance(kind, list):
-            raise DescriptionError(f"joints[{i}].kind",
-                                   f"a joint has one kind, got {kind}; a locked joint with play "
-                                   "is kind = \"locked_clearance\"")
-        if kind not in JOINT_KINDS:
-            hint = did_you_mean(str(kind), JOINT_KINDS)
-            raise DescriptionError(f"joints[{i}].kind",
-                                   f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
-        joints.append(Joint(**_numbers(raw, f"joints[{i}]")))
+        with problems.check():
+            joints.append(_joint(i, raw))
+    problems.raise_any()
     return tuple(joints)
+
+
+def _joint(i: int, raw: Any) -> Joint:
+    """One [[joints]] table: known keys, one known kind, numbers."""
+    check_keys(raw, _JOINT_KEYS, f"joints[{i}]")
+    kind = raw.get("kind", "ideal")
+    if isinstance(kind, list):
+        raise DescriptionError(f"joints[{i}].kind",
+                               f"a joint has one kind, got {kind}; a locked joint with play "
+                               "is kind = \"locked_clearance\"")
+    if kind not in JOINT_KINDS:
+        hint = did_you_mean(str(kind), JOINT_KINDS)
+        raise DescriptionError(f"joints[{i}].kind",
+                               f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
+    return Joint(**_numbers(raw, f"joints[{i}]"))
 
 
 def _gravity(data: Mapping[str, Any]) -> Gravity:
