@@ -29,9 +29,9 @@ from pathlib import Path
 from typing import Any
 
 from jointplay.common import limits
-from jointplay.common.errors import DescriptionError
+from jointplay.common.errors import DescriptionError, combined
 from jointplay.common.hints import did_you_mean
-from jointplay.common.validation import check_keys, read_toml
+from jointplay.common.validation import Problems, check_keys, plausible, read_toml
 from jointplay.robot import Joint, JointKind, Robot, load_robot, robot_from_dict
 from jointplay.robot.structure import coordinate_layout
 from jointplay.scene.expressions import FUNCTIONS, TimeFunction, parse_expression
@@ -63,6 +63,10 @@ class RunSettings:
     step: float = 1e-5
     max_steps: int = 200_000
 
+    def __post_init__(self) -> None:
+        # Built from a file, flags or the API alike, the settings are checked here, once.
+        _validate_run(self, None)
+
     @property
     def n_outputs(self) -> int:
         return round(self.t_end / self.output_step)
@@ -86,17 +90,81 @@ class Scene:
     source: str | None = None
     text: str = ""  # the scene file as read, kept with the results
 
+    def __post_init__(self) -> None:
+        # One validation for every front door: a scene read from TOML, built by the API or
+        # changed with dataclasses.replace is checked here, all problems reported together.
+        problems = Problems()
+        with problems.check():
+            check_scene_name(self.name)
+        with problems.check():
+            if not isinstance(self.robot, Robot):
+                raise _error("robot", f"must be a jointplay.Robot, got "
+                             f"{type(self.robot).__name__}", None)
+            driven = self.robot.moving_joints if self.robot.drive else ()
+            if len(self.torques) != len(driven):
+                raise _error("torques", f"needs one torque per driven joint "
+                             f"({len(driven)}), got {len(self.torques)}", None)
+        with problems.check():
+            if not isinstance(self.run, RunSettings):
+                raise _error("run", "must be a jointplay.RunSettings (use scene.with_run(...) "
+                             "to change run settings)", None)
+        with problems.check():
+            if isinstance(self.robot, Robot):
+                object.__setattr__(self, "initial", validate_initial(self.initial, self.robot))
+        problems.raise_any(self.source)
+
     def with_run(self, **changes: Any) -> Scene:
         """The same scene with some run settings changed (validated)."""
-        run = replace(self.run, **changes)
-        _validate_run(run, self.source)
+        unknown = [key for key in changes if key not in _RUN_KEYS]
+        if unknown:
+            raise combined([_error(f"run.{key}", f"unknown run setting (allowed: "
+                                   f"{', '.join(_RUN_KEYS)}){did_you_mean(key, _RUN_KEYS)}",
+                                   self.source) for key in unknown])
+        try:
+            run = replace(self.run, **changes)
+        except DescriptionError as err:
+            raise err.with_source(self.source) from None
         scene = replace(self, run=run)
         if {"t_end", "output_step"} & set(changes):  # a new output grid
             check_torques_finite(scene)
         return scene
 
     def with_robot(self, robot: Robot) -> Scene:
-        return replace(self, robot=robot)
+        """The same scene with another robot (validated). The initial eccentricities of a
+        joint that has no play in ``robot`` (its ideal counterpart, say) are left out; every
+        other initial value must exist in ``robot``."""
+        coords = set(coordinate_names(robot))
+        initial = {k: v for k, v in self.initial.items()
+                   if k in coords or k.removeprefix("d") in coords
+                   or not k.removeprefix("d").startswith("e")}
+        return replace(self, robot=robot, initial=initial)
+
+    def with_initial(self, values: Mapping[str, float | str] | None = None,
+                     **more: float | str) -> Scene:
+        """The same scene with some initial coordinates or speeds changed, validated as the
+        scene file's ``[initial]`` is: ``scene.with_initial(q2=0.1, dq2=0.0)``. Values may be
+        numbers or constant expressions (``"-pi/2"``); unnamed ones keep their value."""
+        raw = {**(values or {}), **more}
+        initial = {**self.initial, **_initial_numbers(raw, self.constants, self.source)}
+        return replace(self, initial=initial)
+
+    def with_torques(self, values: Mapping[str, float | str] | None = None,
+                     **more: float | str) -> Scene:
+        """The same scene with other drive torques, validated as the scene file's
+        ``[torques]`` is: ``scene.with_torques(joint2="3*sin(2*pi*t)")`` (expressions of t
+        over the scene's constants; unnamed joints keep theirs) or ``table="torques.csv"``
+        (relative to the scene file), which replaces every joint's torque."""
+        raw = {**(values or {}), **more}
+        if "table" not in raw:
+            current = {k: v for k, v in self.torque_text.items() if k != "table"}
+            if "table" in self.torque_text:  # expressions replace a table entirely
+                current = {}
+            raw = {**current, **raw}
+        base = Path(self.source).parent if self.source else None
+        torques, texts = _torques(raw, self.robot, self.constants, base, self.source)
+        scene = replace(self, torques=torques, torque_text=texts)
+        check_torques_finite(scene)
+        return scene
 
 
 def ideal_counterpart(robot: Robot) -> Robot:
@@ -180,9 +248,10 @@ def _run_settings(raw: Any, source: str | None) -> RunSettings:
             values[key] = value
         else:
             values[key] = _finite_number(value, f"run.{key}", source)
-    run = RunSettings(**values)
-    _validate_run(run, source)
-    return run
+    try:
+        return RunSettings(**values)
+    except DescriptionError as err:
+        raise err.with_source(source) from None
 
 
 def _robot(raw: Any, base: Path | None, source: str | None) -> Robot:
@@ -265,47 +334,123 @@ def coordinate_names(robot: Robot) -> list[str]:
     return [c.name for c in coordinate_layout(robot.structure())]
 
 
-def _initial(raw: Any, robot: Robot, constants: Mapping[str, float],
-             source: str | None) -> dict[str, float]:
+def _initial_numbers(raw: Any, constants: Mapping[str, float],
+                     source: str | None) -> dict[str, Any]:
+    """``[initial]`` as read: constant expressions (``"-pi/2"``) evaluated; the values are
+    checked by :func:`validate_initial`."""
+    if not isinstance(raw, Mapping):
+        raise _error("initial", f"must be a table, got {type(raw).__name__}", source)
+    problems = Problems()
+    out: dict[str, Any] = {}
+    for key, value in raw.items():
+        with problems.check():
+            if isinstance(value, str):
+                expr = parse_expression(value, field=f"initial.{key}", constants=constants,
+                                        source=source)
+                if not expr.is_constant:
+                    raise _error(f"initial.{key}", "must not depend on t", source)
+                value = float(expr.numpy(0.0))
+            out[key] = value
+    problems.raise_any(source)
+    return out
+
+
+def _initial_kind(key: str) -> str:
+    """The PHYSICAL_RANGES kind of an initial value (eccentricities: the clearance bound)."""
+    if key.startswith("dq"):
+        return "initial.speed"
+    if key.startswith("de"):
+        return "initial.eccentricity_rate"
+    return "initial.angle"
+
+
+def validate_initial(values: Any, robot: Robot) -> dict[str, float]:
+    """The initial state's values, every one checked: a known coordinate or speed of the robot
+    (did-you-mean otherwise), a finite number in its physical range, and each journal inside
+    its bearing. All problems are reported together."""
+    if not isinstance(values, Mapping):
+        raise _error("initial", f"must be a mapping of names to numbers, got "
+                     f"{type(values).__name__}", None)
     coords = coordinate_names(robot)
     allowed = (*coords, *[f"d{c}" for c in coords])
-    check_keys(raw, allowed, "initial", source)
+    problems = Problems()
     out: dict[str, float] = {}
-    for key, value in raw.items():
-        if isinstance(value, str):
-            expr = parse_expression(value, field=f"initial.{key}", constants=constants,
-                                    source=source)
-            if not expr.is_constant:
-                raise _error(f"initial.{key}", "must not depend on t", source)
-            value = float(expr.numpy(0.0))
-        out[key] = _finite_number(value, f"initial.{key}", source)
+    for key, value in values.items():
+        with problems.check():
+            if key not in allowed:
+                raise _error(f"initial.{key}", f"unknown key (allowed: {', '.join(allowed)})"
+                             f"{did_you_mean(str(key), allowed)}", None)
+            number = _finite_number(value, f"initial.{key}", None)
+            if not key.startswith("e"):  # eccentricities: the clearance bound below
+                plausible(f"initial.{key}", number, _initial_kind(key))
+            out[key] = number
     for j, joint in enumerate(robot.joints, start=1):
         if joint.has_clearance:
-            ex, ey = out.get(f"ex{j}", 0.0), out.get(f"ey{j}", 0.0)
-            if math.hypot(ex, ey) > 2 * (joint.bearing_radius - joint.journal_radius):
-                raise _error(f"initial.ex{j}", "the journal must start inside its bearing: "
-                             f"|e| <= 2 x the radial clearance "
-                             f"({joint.bearing_radius - joint.journal_radius:g} m)", source)
+            with problems.check():
+                ex, ey = out.get(f"ex{j}", 0.0), out.get(f"ey{j}", 0.0)
+                if math.hypot(ex, ey) > 2 * (joint.bearing_radius - joint.journal_radius):
+                    raise _error(f"initial.ex{j}", "the journal must start inside its bearing: "
+                                 f"|e| <= 2 x the radial clearance "
+                                 f"({joint.bearing_radius - joint.journal_radius:g} m)", None)
+    problems.raise_any()
     return out
+
+
+def check_scene_name(name: Any) -> None:
+    """A scene's name: printed, written into results and file attributes, so one line of
+    printable text (a NUL or a newline would break them, or fail only after the run)."""
+    if not isinstance(name, str) or not name.strip():
+        raise _error("name", f"must be a non-empty string, got {name!r}", None)
+    bad = [c for c in name if not c.isprintable()]
+    if bad:
+        raise _error("name", f"must be printable text on one line, got the control character "
+                     f"{bad[0]!r} in {name!r}", None)
+    if len(name) > 200:
+        raise _error("name", f"must be at most 200 characters, got {len(name)}", None)
 
 
 def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Scene:
     """Validate a parsed scene document; relative paths resolve against ``base``."""
-    check_keys(data, _TOP_KEYS, "", source)
-    if "robot" not in data:
-        raise _error("robot", "is required: a [robot] table or the path of a robot file",
-                     source)
-    robot = _robot(data["robot"], base, source)
-    name = data.get("name", robot.name)
-    if not isinstance(name, str) or not name:
-        raise _error("name", f"must be a non-empty string, got {name!r}", source)
-    if "description" in data and not isinstance(data["description"], str):
-        raise _error("description", "must be a string", source)
-    constants = _constants(data.get("constants", {}), source)
-    torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
-    initial = _initial(data.get("initial", {}), robot, constants, source)
-    run = _run_settings(data.get("run", {}), source)
+    problems = Problems()
+    with problems.check():
+        if not isinstance(data, Mapping):
+            raise _error("(top level)", "must be a table", source)
+        if ("scene" in data or "parameters" in data) and "robot" not in data:
+            raise _error("(file)", "is a sweep file (it has scene = ... or [parameters]), not "
+                         "a scene; run it with: jointplay sweep FILE --out DIR", source)
+        check_keys(data, _TOP_KEYS, "", source)
+    problems.raise_any(source)
+    robot: Robot | None = None
+    with problems.check():
+        if "robot" not in data:
+            raise _error("robot", "is required: a [robot] table or the path of a robot file",
+                         source)
+        robot = _robot(data["robot"], base, source)
+    name = data.get("name", robot.name if robot is not None else "scene")
+    with problems.check():
+        check_scene_name(name)
+    with problems.check():
+        if "description" in data and not isinstance(data["description"], str):
+            raise _error("description", "must be a string", source)
+    constants: dict[str, float] = {}
+    with problems.check():
+        constants = _constants(data.get("constants", {}), source)
+    torques: tuple[TimeFunction, ...] = ()
+    texts: dict[str, str] = {}
+    initial: dict[str, Any] = {}
+    with problems.check():
+        initial = _initial_numbers(data.get("initial", {}), constants, source)
+        if robot is not None:
+            initial = validate_initial(initial, robot)
+    if robot is not None:
+        with problems.check():
+            torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
+    run = RunSettings()
+    with problems.check():
+        run = _run_settings(data.get("run", {}), source)
+    problems.raise_any(source)
+    assert robot is not None
     scene = Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
                   run=run, constants=constants, source=source, text=text)
     check_torques_finite(scene)
