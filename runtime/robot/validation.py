@@ -8,6 +8,7 @@ so a TOML file, ``--set``, a sweep case and the Python API's overrides are check
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 from jointplay.common.errors import DescriptionError
@@ -93,7 +94,9 @@ def _validate_links(robot: Robot) -> None:
                 plausible(f"links[{i}].{name}", getattr(link, name), f"link.{name}")
         with problems.check():
             finite(f"links[{i}].com", link.com)
-            if not 0.0 <= link.com <= link.length:
+            # (a length that is not a number is reported by itself, not again here)
+            if isinstance(link.length, (int, float)) and math.isfinite(link.length) \
+                    and not 0.0 <= link.com <= link.length:
                 raise DescriptionError(
                     f"links[{i}].com",
                     f"must lie on the link, 0 <= com <= length ({link.length}), got {link.com}")

@@ -18,6 +18,7 @@ from jointplay.common.errors import DescriptionError, JointplayError
 from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import check_keys, read_toml
 from jointplay.robot import Robot, with_parameters
+from jointplay.robot.description import parameter_name
 from jointplay.scene.definition import (
     RunSettings,
     Scene,
@@ -109,12 +110,7 @@ def _run_overrides(raw: Any, scene: Scene, source: str | None) -> Scene:
 
 def _robot_field_to_name(field_name: str) -> str:
     """``joints[2].journal_radius`` -> ``joint2.journal_radius`` (names of the vector)."""
-    m = re.fullmatch(r"(links|joints)\[(\d+)\]\.(\w+)", field_name)
-    if m:
-        return f"{m.group(1)[:-1]}{m.group(2)}.{m.group(3)}"
-    if field_name.startswith("gravity.vector."):
-        return f"gravity.{field_name.rsplit('.', 1)[1]}"
-    return field_name
+    return parameter_name(field_name)
 
 
 def _case_robot(base: Robot, index: int, swept: Mapping[str, float], source: str | None
