@@ -119,6 +119,13 @@ def _check_outputs(args: argparse.Namespace, scene: Scene) -> None:
 
         check_output_path(impacts_csv_path(args.csv), "--csv", inputs=scene_inputs(scene))
     if args.plot:
+        from jointplay.results.write import impacts_csv_path
+
+        derived = impacts_csv_path(args.csv) if args.csv else None
+        for flag, path in (("--out", args.out), ("--csv", args.csv), ("--csv", derived)):
+            if path and Path(path).resolve() == Path(args.plot).resolve():
+                raise DescriptionError("--plot", f"names the same path as {flag} ({path}); "
+                                       "--plot takes a folder for the figures")
         check_writable_dir(Path(args.plot), "--plot")
     if args.animate:
         from jointplay.results.animate import check_animation_path

@@ -27,6 +27,9 @@ MIN_ATOL = 1.0e-20
 # ---- files read ------------------------------------------------------------------------------
 MAX_TOML_BYTES = 1 << 20
 """A scene, robot or sweep file (1 MiB): these are hand-written descriptions."""
+MAX_TOML_NESTING = 64
+"""Nesting of arrays and inline tables in a scene, robot or sweep file (deeper would exhaust
+the parser's recursion; a description needs three)."""
 MAX_TABLE_BYTES = 256 << 20
 """A torque table (CSV, 256 MiB)."""
 

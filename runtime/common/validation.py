@@ -113,16 +113,37 @@ def read_toml(path: str | Path, what: str) -> tuple[dict[str, Any], str]:
     once instead of blocking or filling memory.
     """
     from jointplay.common.files import read_input
-    from jointplay.common.limits import MAX_TOML_BYTES
+    from jointplay.common.limits import MAX_TOML_BYTES, MAX_TOML_NESTING
 
     path = Path(path)
     data = read_input(path, "(file)", f"{what} TOML file", MAX_TOML_BYTES)
     try:
-        # Newlines translated as by a text-mode read.
-        text = data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")
+        # Newlines translated as by a text-mode read; a UTF-8 byte-order mark (which some
+        # Windows editors write) is accepted and dropped, as TOML's text is UTF-8 anyway.
+        text = data.decode("utf-8-sig").replace("\r\n", "\n").replace("\r", "\n")
     except UnicodeDecodeError as err:
-        raise DescriptionError("(file)", f"cannot be read ({err})", str(path)) from None
+        raise DescriptionError("(file)", f"is not UTF-8 text ({err})", str(path)) from None
+    depth = _nesting_depth(text)
+    if depth > MAX_TOML_NESTING:
+        raise DescriptionError("(toml)", f"nests arrays or inline tables {depth} deep; at most "
+                               f"{MAX_TOML_NESTING} levels are allowed (a description needs "
+                               "three)", str(path))
     try:
         return tomllib.loads(text), text
     except tomllib.TOMLDecodeError as err:
         raise DescriptionError("(toml)", f"malformed TOML: {err}", str(path)) from None
+    except RecursionError:  # nesting that the count above did not see (inside strings, say)
+        raise DescriptionError("(toml)", "nests too deeply to be read", str(path)) from None
+
+
+def _nesting_depth(text: str) -> int:
+    """An upper bound of the nesting depth of ``[``/``{`` in the text (brackets inside strings
+    and comments counted too: a bound is all the check needs, and descriptions nest little)."""
+    depth = deepest = 0
+    for char in text:
+        if char in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif char in "]}":
+            depth = max(0, depth - 1)
+    return deepest

@@ -11,7 +11,8 @@ file, the field and what is allowed.
     [constants]              # named numbers usable in the expressions below
     A = 4.0
     [torques]                # per moving joint: an expression of t; absent joints get 0 N m
-    joint2 = "A*sin(2*pi*t)" # or: table = "torques.csv" (t, then one column per driven joint)
+    joint2 = "A*sin(2*pi*t)" # or: table = "torques.csv" (t, then one column per driven joint,
+                             # covering [0, t_end]; hold_ends = true holds its end rows)
     [initial]                # coordinates (q2, ex2, ...) and speeds (dq2, dex2, ...); default 0
     q2 = "-pi"
     [run]
@@ -108,6 +109,7 @@ class Scene:
             if not isinstance(self.run, RunSettings):
                 raise _error("run", "must be a jointplay.RunSettings (use scene.with_run(...) "
                              "to change run settings)", None)
+            _check_table_covers_run(self)
         with problems.check():
             if isinstance(self.robot, Robot):
                 object.__setattr__(self, "initial", validate_initial(self.initial, self.robot))
@@ -156,7 +158,8 @@ class Scene:
         (relative to the scene file), which replaces every joint's torque."""
         raw = {**(values or {}), **more}
         if "table" not in raw:
-            current = {k: v for k, v in self.torque_text.items() if k != "table"}
+            current = {k: v for k, v in self.torque_text.items()
+                       if k not in ("table", "hold_ends")}
             if "table" in self.torque_text:  # expressions replace a table entirely
                 current = {}
             raw = {**current, **raw}
@@ -289,12 +292,16 @@ def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path 
              source: str | None) -> tuple[tuple[TimeFunction, ...], dict[str, str]]:
     driven = robot.moving_joints if robot.drive else ()
     keys = tuple(f"joint{j}" for j in driven)
-    check_keys(raw, (*keys, "table"), "torques", source)
+    check_keys(raw, (*keys, "table", "hold_ends"), "torques", source)
     if raw and not robot.drive:
         raise _error("torques", "the robot's drive is disabled (drive.enabled = false); "
                      "remove [torques] or enable the drive", source)
+    hold = raw.get("hold_ends", False)
+    if "hold_ends" in raw and ("table" not in raw or not isinstance(hold, bool)):
+        raise _error("torques.hold_ends", "is true or false, and only beside table = ...: it "
+                     "holds a table's first and last rows outside its time range", source)
     if "table" in raw:
-        if len(raw) > 1:
+        if len(raw) > 1 + ("hold_ends" in raw):
             raise _error("torques.table", "give either a table or expressions, not both",
                          source)
         if not isinstance(raw["table"], str):
@@ -302,8 +309,10 @@ def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path 
         path = (base / raw["table"]) if base is not None else Path(raw["table"])
         table = load_torque_table(path, columns=len(driven), field="torques.table",
                                   source=source)
-        return (tuple(table.column(i) for i in range(len(driven))),
-                {"table": str(raw["table"])})
+        texts = {"table": str(raw["table"])}
+        if hold:
+            texts["hold_ends"] = "true"
+        return tuple(table.column(i) for i in range(len(driven))), texts
     functions: list[TimeFunction] = []
     texts: dict[str, str] = {}
     for key in keys:
@@ -332,6 +341,25 @@ def scene_inputs(scene: Scene) -> list[Path]:
 def coordinate_names(robot: Robot) -> list[str]:
     """Generalised coordinates in model order: moving angles, then (ex, ey) per clearance."""
     return [c.name for c in coordinate_layout(robot.structure())]
+
+
+def _check_table_covers_run(scene: Scene) -> None:
+    """A torque table must cover [0, run.t_end], unless ``hold_ends = true`` asks for its first
+    and last rows to be held outside its range: a table that ends at 0.5 s for a 2 s run is
+    otherwise a mistake that would pass unseen."""
+    from jointplay.scene.tables import TableColumn
+
+    if scene.torque_text.get("hold_ends") == "true":
+        return
+    t_end = scene.run.t_end
+    for torque in scene.torques:
+        if isinstance(torque, TableColumn):
+            first, last = float(torque.times[0]), float(torque.times[-1])
+            if first > 0.0 or last < t_end * (1 - 1e-12):
+                raise _error("torques.table", f"covers t = {first:g} to {last:g} s, but the run "
+                             f"lasts from 0 to run.t_end = {t_end:g} s; extend the table, "
+                             "shorten the run, or add hold_ends = true to [torques] to hold "
+                             "its first and last rows", None)
 
 
 def _initial_numbers(raw: Any, constants: Mapping[str, float],
