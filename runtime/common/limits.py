@@ -91,11 +91,11 @@ MIN_RADIAL_CLEARANCE = 1.0e-9
 MAX_PENETRATION_FRACTION = 0.02
 """Penetration of a journal into its bearing, as a fraction of the journal radius, beyond which
 the run stops: the contact laws describe small elastic deformations (micrometres in the
-built-in scenes, under 1e-4 of the radius); 2 % of the radius (0.2 mm for a 10 mm journal) is
+built-in scenes, below 2e-4 of the radius); 2 % of the radius (0.2 mm for a 10 mm journal) is
 a state no metal joint survives, reached only from an impossible input."""
 MAX_ENERGY_RESIDUAL = 0.01
 """The energy balance's residual (total energy change - drive work + dissipated energy), as a
 fraction of the largest energy of the run (kinetic, drive work or dissipated), beyond which
-the run stops: the built-in scenes close it to below 1e-3."""
+the run stops: the built-in scenes close it to below 5e-4."""
 
 __all__ = [name for name in dir() if name.isupper()]
