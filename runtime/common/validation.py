@@ -98,12 +98,12 @@ def check_keys(table: Any, allowed: Sequence[str], where: str,
     if not isinstance(table, Mapping):
         raise DescriptionError(where or "(top level)",
                                f"must be a table, got {type(table).__name__}", source)
-    for key in table:
-        if key not in allowed:
-            hint = did_you_mean(key, allowed)
-            prefix = f"{where}." if where else ""
-            raise DescriptionError(f"{prefix}{key}",
-                                   f"unknown key (allowed: {', '.join(allowed)}){hint}", source)
+    prefix = f"{where}." if where else ""
+    unknown = [DescriptionError(f"{prefix}{key}", f"unknown key (allowed: {', '.join(allowed)})"
+                                f"{did_you_mean(str(key), allowed)}", source)
+               for key in table if key not in allowed]
+    if unknown:  # all of them, so that one round of corrections fixes them all
+        raise combined(unknown)
 
 
 def read_toml(path: str | Path, what: str) -> tuple[dict[str, Any], str]:

@@ -477,12 +477,13 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
     run = RunSettings()
     with problems.check():
         run = _run_settings(data.get("run", {}), source)
+    if robot is not None and texts:
+        with problems.check():
+            _check_torques_finite(torques, texts, robot, run, source)
     problems.raise_any(source)
     assert robot is not None
-    scene = Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
-                  run=run, constants=constants, source=source, text=text)
-    check_torques_finite(scene)
-    return scene
+    return Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
+                 run=run, constants=constants, source=source, text=text)
 
 
 def check_torques_finite(scene: Scene) -> None:
@@ -492,23 +493,28 @@ def check_torques_finite(scene: Scene) -> None:
     (inside the integrator); a torque such as ``1/(t - 0.3)`` would put NaN or inf into the
     results, so it is refused before anything runs.
     """
+    _check_torques_finite(scene.torques, scene.torque_text, scene.robot, scene.run,
+                          scene.source)
+
+
+def _check_torques_finite(torques: tuple[TimeFunction, ...], torque_text: Mapping[str, str],
+                          robot: Robot, run: RunSettings, source: str | None) -> None:
     import numpy as np
 
-    run = scene.run
     t = np.arange(run.n_outputs + 1) * run.output_step
-    keys = [f"joint{j}" for j in scene.robot.moving_joints] if scene.robot.drive else []
-    for k, torque in enumerate(scene.torques):
+    keys = [f"joint{j}" for j in robot.moving_joints] if robot.drive else []
+    for k, torque in enumerate(torques):
         values = np.asarray(torque.numpy(t), dtype=np.float64)
         bad = ~np.isfinite(values)
         if bad.any():
             i = int(np.argmax(bad))
             key = keys[k] if k < len(keys) else f"[{k}]"
-            field_name = "torques.table" if "table" in scene.torque_text else f"torques.{key}"
-            text = scene.torque_text.get(key)
+            field_name = "torques.table" if "table" in torque_text else f"torques.{key}"
+            text = torque_text.get(key)
             shown = f" {text!r}" if text else ""
             raise _error(field_name, f"the torque{shown} is {values[i]} at t = {t[i]:.9g} s "
                          "(an output time); every torque must be finite over [0, run.t_end]",
-                         scene.source)
+                         source)
 
 
 def load_scene(path: str | Path) -> Scene:
