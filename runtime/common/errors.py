@@ -70,8 +70,14 @@ class DescriptionErrors(DescriptionError):
 
 
 def combined(problems: Sequence[DescriptionError]) -> DescriptionError:
-    """One error for several problems (the problem itself when there is one)."""
-    flat = [p for problem in problems for p in problem.problems]
+    """One error for several problems (the problem itself when there is one); a field is
+    named once, by its first problem (a value that is not a number, say, not again as NaN)."""
+    flat: list[DescriptionError] = []
+    seen: set[tuple[str | None, str]] = set()
+    for one in (p for problem in problems for p in problem.problems):
+        if (one.source, one.field) not in seen:
+            seen.add((one.source, one.field))
+            flat.append(one)
     return flat[0] if len(flat) == 1 else DescriptionErrors(flat)
 
 

@@ -18,7 +18,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
-from jointplay.common.errors import DescriptionError
+from jointplay.common.errors import DescriptionError, combined
 from jointplay.common.hints import did_you_mean
 from jointplay.robot.structure import (
     JointKind,
@@ -323,9 +323,10 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
                "lubrication": vars(robot.lubrication).copy(), "wear": vars(robot.wear).copy()}
     gravity = list(robot.gravity.vector)
     payload = robot.payload_mass
+    unknown = [unknown_parameter(name, robot) for name in values if name not in known]
     for name, value in values.items():
         if name not in known:
-            raise unknown_parameter(name, robot)
+            continue
         prm = known[name]
         if prm.owner == "link":
             links[_index(prm) - 1][prm.attribute] = value
@@ -337,6 +338,17 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
             gravity["xy".index(prm.attribute)] = value
         else:
             effects[prm.owner][prm.attribute] = value
+    try:
+        changed = _rebuilt(robot, links, joints, effects, gravity, payload)
+    except DescriptionError as err:
+        raise combined([*unknown, err]) from None
+    if unknown:
+        raise combined(unknown)
+    return changed
+
+
+def _rebuilt(robot: Robot, links: list[dict[str, Any]], joints: list[dict[str, Any]],
+             effects: dict[str, dict[str, Any]], gravity: list[float], payload: float) -> Robot:
     return replace(
         robot,
         links=tuple(Link(**d) for d in links),

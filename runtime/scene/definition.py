@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from jointplay.common import limits
-from jointplay.common.errors import DescriptionError, combined
+from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import Problems, check_keys, plausible, read_toml
 from jointplay.robot import Joint, JointKind, Robot, load_robot, robot_from_dict
@@ -117,15 +117,15 @@ class Scene:
 
     def with_run(self, **changes: Any) -> Scene:
         """The same scene with some run settings changed (validated)."""
-        unknown = [key for key in changes if key not in _RUN_KEYS]
-        if unknown:
-            raise combined([_error(f"run.{key}", f"unknown run setting (allowed: "
-                                   f"{', '.join(_RUN_KEYS)}){did_you_mean(key, _RUN_KEYS)}",
-                                   self.source) for key in unknown])
-        try:
-            run = replace(self.run, **changes)
-        except DescriptionError as err:
-            raise err.with_source(self.source) from None
+        problems = Problems()
+        for key in changes:
+            if key not in _RUN_KEYS:
+                problems.found.append(_error(
+                    f"run.{key}", f"unknown run setting (allowed: {', '.join(_RUN_KEYS)})"
+                    f"{did_you_mean(key, _RUN_KEYS)}", self.source))
+        with problems.check():
+            run = replace(self.run, **{k: v for k, v in changes.items() if k in _RUN_KEYS})
+        problems.raise_any(self.source)
         scene = replace(self, run=run)
         if {"t_end", "output_step"} & set(changes):  # a new output grid
             check_torques_finite(scene)
@@ -195,22 +195,33 @@ def _positive_number(value: Any, where: str, source: str | None) -> float:
 
 
 def _validate_run(run: RunSettings, source: str | None) -> None:
-    for name in ("t_end", "output_step", "rtol", "atol", "step"):
-        _positive_number(getattr(run, name), f"run.{name}", source)
-    if run.integrator not in INTEGRATORS:
-        hint = did_you_mean(str(run.integrator), INTEGRATORS)
-        raise _error("run.integrator", f"must be one of {', '.join(INTEGRATORS)}, got "
-                     f"{run.integrator!r}{hint}", source)
+    # Each setting by itself (all reported together), then how they fit one another.
+    problems = Problems()
     for name, low, high in (("t_end", 0.0, limits.MAX_T_END),
                             ("output_step", limits.MIN_OUTPUT_STEP, math.inf),
                             ("step", limits.MIN_STEP, math.inf),
                             ("rtol", limits.MIN_RTOL, math.inf),
                             ("atol", limits.MIN_ATOL, math.inf)):
-        value = getattr(run, name)
-        if value > high:
-            raise _error(f"run.{name}", f"must be at most {high:g}, got {value:g}", source)
-        if value < low:
-            raise _error(f"run.{name}", f"must be at least {low:g}, got {value:g}", source)
+        with problems.check():
+            value = _positive_number(getattr(run, name), f"run.{name}", source)
+            if value > high:
+                raise _error(f"run.{name}", f"must be at most {high:g}, got {value:g}", source)
+            if value < low:
+                raise _error(f"run.{name}", f"must be at least {low:g}, got {value:g}", source)
+    with problems.check():
+        if not isinstance(run.integrator, str) or run.integrator not in INTEGRATORS:
+            hint = did_you_mean(str(run.integrator), INTEGRATORS)
+            raise _error("run.integrator", f"must be one of {', '.join(INTEGRATORS)}, got "
+                         f"{run.integrator!r}{hint}", source)
+    with problems.check():
+        if isinstance(run.max_steps, bool) or not isinstance(run.max_steps, int) \
+                or not 1 <= run.max_steps <= limits.MAX_MAX_STEPS:
+            raise _error("run.max_steps", f"must be an integer from 1 to "
+                         f"{limits.MAX_MAX_STEPS}, got {run.max_steps!r}", source)
+    with problems.check():
+        if isinstance(run.rtol, (int, float)) and run.rtol >= 1:
+            raise _error("run.rtol", f"must be < 1, got {run.rtol}", source)
+    problems.raise_any()
     if run.t_end / run.output_step > limits.MAX_OUTPUTS + 0.5:
         raise _error("run.output_step", f"gives {run.t_end / run.output_step:.3g} output "
                      f"samples over run.t_end = {run.t_end:g} s; at most "
@@ -230,31 +241,21 @@ def _validate_run(run: RunSettings, source: str | None) -> None:
             run.steps_per_output * run.step - run.output_step) > 1e-9 * run.output_step):
         raise _error("run.step", f"the fixed step must divide run.output_step "
                      f"({run.output_step}), got {run.step}", source)
-    if run.rtol >= 1:
-        raise _error("run.rtol", f"must be < 1, got {run.rtol}", source)
-    if isinstance(run.max_steps, bool) or not isinstance(run.max_steps, int) \
-            or not 1 <= run.max_steps <= limits.MAX_MAX_STEPS:
-        raise _error("run.max_steps", f"must be an integer from 1 to {limits.MAX_MAX_STEPS}, "
-                     f"got {run.max_steps!r}", source)
 
 
 def _run_settings(raw: Any, source: str | None) -> RunSettings:
-    check_keys(raw, _RUN_KEYS, "run", source)
-    values: dict[str, Any] = {}
-    for key, value in raw.items():
-        if key == "integrator":
-            if not isinstance(value, str):
-                raise _error("run.integrator",
-                             f"must be one of {', '.join(INTEGRATORS)}, got {value!r}", source)
-            values[key] = value
-        elif key == "max_steps":
-            values[key] = value
-        else:
-            values[key] = _finite_number(value, f"run.{key}", source)
+    # The same checks as run settings built in Python: RunSettings checks its own values.
+    problems = Problems()
+    if not isinstance(raw, Mapping):
+        check_keys(raw, _RUN_KEYS, "run", source)
+    with problems.check():
+        check_keys(raw, _RUN_KEYS, "run", source)
     try:
-        return RunSettings(**values)
+        run = RunSettings(**{k: v for k, v in raw.items() if k in _RUN_KEYS})
     except DescriptionError as err:
-        raise err.with_source(source) from None
+        problems.found.extend(err.problems)
+    problems.raise_any(source)
+    return run
 
 
 def _robot(raw: Any, base: Path | None, source: str | None) -> Robot:
