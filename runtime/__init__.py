@@ -8,6 +8,7 @@ from jointplay import _moved
 from jointplay.common.errors import (
     BuildError,
     DescriptionError,
+    DescriptionErrors,
     GeneratedCodeError,
     JointplayError,
     SimulationError,
@@ -50,6 +51,7 @@ __all__ = [
     "Contact",
     "Coordinate",
     "DescriptionError",
+    "DescriptionErrors",
     "FastFunction",
     "Friction",
     "GeneratedCodeError",

@@ -24,6 +24,7 @@ from jointplay.robot.description import (
     uniform_chain,
 )
 from jointplay.robot.structure import JOINT_KINDS
+from jointplay.robot.validation import check_robot_name
 
 _TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive",
              "lubrication", "wear")
@@ -34,13 +35,6 @@ _FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", 
                  "bearing_E", "bearing_nu", "journal_E", "journal_nu", "exponent", "restitution",
                  "impact_speed_floor", "mu", "v0", "v1", "viscosity", "transition",
                  "coefficient", "hardness"}
-
-
-def check_robot_name(name: Any) -> None:
-    """A robot's name: it names generated folders and files, so letters, digits, '_', '-'."""
-    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum() \
-            or not name.isascii():
-        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
 
 
 def _known(table: Any, allowed: tuple[str, ...], where: str, values: Problems
@@ -111,9 +105,9 @@ def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
         check_robot_name(name)
         drive = boolean(tables["drive"].get("enabled", True), "drive.enabled") \
             if tables else True
-    if structure:
-        structure.found.extend(values.found)
-        structure.raise_any()
+    if structure:  # unknown keys first: a misspelt key is often why another one is missing
+        values.found.extend(structure.found)
+        values.raise_any()
     with values.check():
         robot = Robot(
             links=links,

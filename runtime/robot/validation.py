@@ -53,9 +53,18 @@ def _validate_effects(robot: Robot) -> None:
     problems.raise_any()
 
 
+def check_robot_name(name: object) -> None:
+    """A robot's name: it names generated folders and files, so letters, digits, '_', '-'."""
+    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum() \
+            or not name.isascii():
+        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
+
+
 def validate(robot: Robot) -> None:
     """Raise :class:`DescriptionError` naming the invalid fields (all of them)."""
     problems = Problems()
+    with problems.check():
+        check_robot_name(robot.name)
     with problems.check():
         _validate_links(robot)
     with problems.check():

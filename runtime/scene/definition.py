@@ -545,4 +545,5 @@ __all__ = [
     "load_scene",
     "scene_from_dict",
     "scene_inputs",
+    "validate_initial",
 ]
