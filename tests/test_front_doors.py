@@ -348,3 +348,14 @@ def test_scene_from_dict_api_reports_like_the_file() -> None:
     with pytest.raises(DescriptionErrors) as err:
         scene_from_dict(data, source="api")
     assert fields(err.value) == {"robot", "run.t_end"}  # initial needs the robot: not guessed
+
+
+def test_every_problem_of_a_sweep_is_reported_at_once() -> None:
+    from jointplay.sweep.spec import sweep_from_dict
+
+    data = {"scene": "default", "mode": "prodct", "seed": -1,
+            "parameters": {"friction.mu": {"values": [0.1]}, "link1.mas": {"values": [1.0]}}}
+    with pytest.raises(DescriptionErrors) as err:
+        sweep_from_dict(data, source="api")
+    assert fields(err.value) == {"mode", "seed", "parameters.link1.mas"}
+    assert "did you mean 'link1.mass'" in str(err.value)
