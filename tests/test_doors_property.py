@@ -78,7 +78,7 @@ def scene_edits(draw: st.DrawFn) -> dict[str, dict[str, Any]]:
                                         max_size=2)),
         "run": draw(st.dictionaries(st.sampled_from(RUN_KEYS), run_values, max_size=2)),
         "torques": draw(st.dictionaries(st.sampled_from(TORQUE_KEYS), torque_values,
-                                        max_size=1)),
+                                        max_size=2)),
     }
 
 

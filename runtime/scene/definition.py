@@ -310,22 +310,25 @@ def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path 
         path = (base / raw["table"]) if base is not None else Path(raw["table"])
         table = load_torque_table(path, columns=len(driven), field="torques.table",
                                   source=source)
-        texts = {"table": str(raw["table"])}
+        table_texts = {"table": str(raw["table"])}
         if hold:
-            texts["hold_ends"] = "true"
-        return tuple(table.column(i) for i in range(len(driven))), texts
+            table_texts["hold_ends"] = "true"
+        return tuple(table.column(i) for i in range(len(driven))), table_texts
     functions: list[TimeFunction] = []
     texts: dict[str, str] = {}
+    problems = Problems()
     for key in keys:
-        text = raw.get(key, "0")
-        if isinstance(text, (int, float)) and not isinstance(text, bool):
-            text = repr(float(text))
-        if not isinstance(text, str):
-            raise _error(f"torques.{key}", "must be an expression of t (a string) or a "
-                         "number", source)
-        functions.append(parse_expression(text, field=f"torques.{key}",
-                                          constants=constants, source=source))
-        texts[key] = text
+        with problems.check():
+            text = raw.get(key, "0")
+            if isinstance(text, (int, float)) and not isinstance(text, bool):
+                text = repr(float(text))
+            if not isinstance(text, str):
+                raise _error(f"torques.{key}", "must be an expression of t (a string) or a "
+                             "number", source)
+            functions.append(parse_expression(text, field=f"torques.{key}",
+                                              constants=constants, source=source))
+            texts[key] = text
+    problems.raise_any(source)
     return tuple(functions), texts
 
 
