@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections.abc import Iterator, Mapping, Sequence
-from contextlib import contextmanager
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 from jointplay.common.errors import DescriptionError, combined
 from jointplay.common.hints import did_you_mean
+from jointplay.common.limits import PHYSICAL_RANGES
 
 
 class Problems:
@@ -31,13 +31,20 @@ class Problems:
     def __init__(self) -> None:
         self.found: list[DescriptionError] = []
 
-    @contextmanager
-    def check(self) -> Iterator[None]:
-        """Run a check; a :class:`DescriptionError` it raises is kept, not raised."""
-        try:
-            yield
-        except DescriptionError as err:
+    def check(self) -> Problems:
+        """Run a check (``with problems.check(): ...``); a :class:`DescriptionError` it raises
+        is kept, not raised."""
+        return self
+
+    def __enter__(self) -> None:
+        return None
+
+    def __exit__(self, kind: type[BaseException] | None, err: BaseException | None,
+                 traceback: object) -> bool:
+        if isinstance(err, DescriptionError):
             self.found.extend(err.problems)
+            return True
+        return False
 
     def __bool__(self) -> bool:
         return bool(self.found)
@@ -63,8 +70,6 @@ def plausible(field_name: str, value: float, kind: str) -> None:
     """A finite number inside the documented range of its kind of quantity
     (:data:`jointplay.common.limits.PHYSICAL_RANGES`): no real robot has a link of 1e-300 m
     or a contact exponent of 1e300, and such numbers only overflow later, mid-run."""
-    from jointplay.common.limits import PHYSICAL_RANGES
-
     finite(field_name, value)
     low, high, unit, what = PHYSICAL_RANGES[kind]
     if not low <= value <= high:

@@ -23,6 +23,7 @@ file, the field and what is allowed.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
@@ -34,7 +35,7 @@ from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import Problems, check_keys, plausible, read_toml
 from jointplay.robot import Joint, JointKind, Robot, load_robot, robot_from_dict
-from jointplay.robot.structure import coordinate_layout
+from jointplay.robot.structure import Structure, coordinate_layout
 from jointplay.scene.expressions import FUNCTIONS, TimeFunction, parse_expression
 from jointplay.scene.tables import load_torque_table
 
@@ -344,7 +345,13 @@ def scene_inputs(scene: Scene) -> list[Path]:
 
 def coordinate_names(robot: Robot) -> list[str]:
     """Generalised coordinates in model order: moving angles, then (ex, ey) per clearance."""
-    return [c.name for c in coordinate_layout(robot.structure())]
+    return list(_coordinates_of(robot.structure()))
+
+
+@functools.lru_cache(maxsize=64)
+def _coordinates_of(structure: Structure) -> tuple[str, ...]:
+    # Every scene built checks its initial state against these: computed once per structure.
+    return tuple(c.name for c in coordinate_layout(structure))
 
 
 def _check_table_covers_run(scene: Scene) -> None:
