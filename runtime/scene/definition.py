@@ -158,14 +158,21 @@ class Scene:
         over the scene's constants; unnamed joints keep theirs) or ``table="torques.csv"``
         (relative to the scene file), which replaces every joint's torque."""
         raw = {**(values or {}), **more}
-        if "table" not in raw:
-            current = {k: v for k, v in self.torque_text.items()
-                       if k not in ("table", "hold_ends")}
-            if "table" in self.torque_text:  # expressions replace a table entirely
-                current = {}
-            raw = {**current, **raw}
         base = Path(self.source).parent if self.source else None
         torques, texts = _torques(raw, self.robot, self.constants, base, self.source)
+        if "table" not in raw:  # joints not named keep their torque
+            keys = [f"joint{j}" for j in self.robot.moving_joints] if self.robot.drive else []
+            kept = [key for key in keys if key not in raw]
+            if kept and "table" in self.torque_text:
+                raise _error("torques", f"the scene's torques come from a table; give "
+                             f"{', '.join(kept)} an expression too, or another table",
+                             self.source)
+            functions = list(torques)
+            for k, key in enumerate(keys):
+                if key in kept:
+                    functions[k] = self.torques[k]
+                    texts[key] = self.torque_text.get(key, "")
+            torques = tuple(functions)
         scene = replace(self, torques=torques, torque_text=texts)
         check_torques_finite(scene)
         return scene
