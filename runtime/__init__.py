@@ -8,6 +8,7 @@ from jointplay import _moved
 from jointplay.common.errors import (
     BuildError,
     DescriptionError,
+    DescriptionErrors,
     GeneratedCodeError,
     JointplayError,
     SimulationError,
@@ -53,6 +54,7 @@ __all__ = [
     "Coordinate",
     "DenseSolution",
     "DescriptionError",
+    "DescriptionErrors",
     "FastFunction",
     "Friction",
     "GeneratedCodeError",

@@ -202,7 +202,7 @@ def test_output_step_flag_and_run_settings_through_set(tmp_path: Path,
             (["--output-step=-1e-3"], "--output-step", "must be > 0"),
             (["--output-step", "1"], "--output-step", "must not exceed run.t_end"),
             (["--set", "run.output_step=3e-7"], "--set run.output_step", "must divide"),
-            (["--set", "run.integrator=1"], "--set run.integrator", "not a run setting"),
+            (["--set", "run.integrator=1"], "--set run.integrator", "must be one of bdf"),
             (["--set", "run.max_steps=2.5"], "--set run.max_steps", "whole number"),
             (["--animate", str(tmp_path / "arm.avi")], "--animate", ".gif or .mp4")):
         assert main(["simulate", "--t-end", "0.01", *flags, "--quiet"]) == 2, flags

@@ -21,7 +21,7 @@ from sim_fixtures import (
     robot_table,
 )
 
-from jointplay.common.errors import SimulationError
+from jointplay.common.errors import DescriptionError, SimulationError
 from jointplay.scene.definition import default_scene
 from jointplay.sim import Stepper, simulate
 
@@ -242,7 +242,7 @@ def test_parameters_change_without_recompiling() -> None:
     b = simulate(scene, parameters={"payload.mass": 4.0})
     assert b.parameters[b.parameter_names.index("payload.mass")] == 4.0
     assert not np.allclose(a.q, b.q)
-    with pytest.raises(KeyError, match=r"did you mean 'payload\.mass'"):
+    with pytest.raises(DescriptionError, match=r"did you mean 'payload\.mass'"):
         simulate(scene, parameters={"payload.mas": 4.0})
 
 

@@ -45,6 +45,7 @@ def make_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="jointplay",
         description="Dynamics of planar serial robots with revolute-joint clearance.")
+    parser.add_argument("--version", action="version", version=f"jointplay {_version()}")
     sub = parser.add_subparsers(dest="command", required=True)
     build.register(sub)
     derive.register(sub)
@@ -57,6 +58,12 @@ def make_parser() -> argparse.ArgumentParser:
     sweep.register(sub)
     bench.register(sub)
     return parser
+
+
+def _version() -> str:
+    from jointplay import __version__
+
+    return __version__
 
 
 def main(argv: list[str] | None = None) -> int:

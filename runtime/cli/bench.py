@@ -75,7 +75,7 @@ def _report(paths: Sequence[Path], markdown_path: Path, quiet: bool) -> None:
 
 def _repeats(args: argparse.Namespace) -> int:
     return positive_int(args.repeats if args.repeats is not None
-                        else (1 if args.quick else 3), "--repeats")
+                        else (1 if getattr(args, "quick", False) else 3), "--repeats")
 
 
 def _quick_scene(args: argparse.Namespace) -> Scene:
@@ -273,20 +273,20 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     return parser
 
 
-def _common(p: argparse.ArgumentParser, scene: bool = True) -> None:
+def _common(p: argparse.ArgumentParser, scene: bool = True, quick: bool = False) -> None:
     if scene:
         scene_argument(p)
     p.add_argument("--out", required=True, help="folder for the CSV, Markdown and PNG "
                                                 "(created if missing)")
-    p.add_argument("--repeats", type=int, help="timed runs per configuration "
-                                               "(default 3; 1 with --quick)")
+    p.add_argument("--repeats", type=int, help="timed runs per configuration (default 3"
+                                               + ("; 1 with --quick)" if quick else ")"))
     p.add_argument("--quiet", action="store_true", help="no progress bars, no table")
 
 
 def _register_work_precision(sub: Any) -> None:
     wp = sub.add_parser("work-precision", help="error against a reference vs CPU time, per "
                                                "integrator and tolerance or step")
-    _common(wp)
+    _common(wp, quick=True)
     wp.add_argument("--quick", action="store_true",
                     help=f"a tiny case: t_end {QUICK_T_END:g} s, two tolerances and two "
                          "steps, one repeat")

@@ -1,7 +1,7 @@
 """``jointplay control``: validate, compile, run every controller against the ideal robot's
 motion, report and plot (the loops themselves: :mod:`jointplay.neural.control`).
 
-Exit status 3 when an internal-model controller diverged."""
+Exit status 3 when any controller (PD and computed torque included) diverged."""
 
 from __future__ import annotations
 
@@ -54,7 +54,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
         description="Track the ideal-joint robot's motion with the clearance robot: open loop, "
                     "PD, computed torque (ideal model), internal-model control with the linear "
                     "ARX twin, and with the guarded NARX network (compiled), side by side. "
-                    "Exit status 3 when an internal-model controller diverged.")
+                    "Exit status 3 when any controller (PD and computed torque included) "
+                    "diverged.")
     neural_scene_argument(p)
     p.add_argument("--model", required=True, metavar="MODEL_DIR",
                    help="folder written by `jointplay identify`")
@@ -100,7 +101,7 @@ class ControlJob:
 def cmd_control(args: argparse.Namespace) -> int:
     """``jointplay control``: validate, compile, run every controller, report and plot.
 
-    Exit status 3 when an internal-model controller diverged."""
+    Exit status 3 when any controller (PD and computed torque included) diverged."""
     job = control_job(args)
     if not args.quiet:
         print(f"scene {job.scene.name}: reference = ideal-joint robot under the scene's "
@@ -118,6 +119,8 @@ def cmd_control(args: argparse.Namespace) -> int:
     if job.scene.name == "paper_4dof":
         lines += ["", "paper (its robot, with control): max |Δp| 2.4e-4 m, max |Δv| 7.7e-3 m/s, "
                       "acceleration error reduced tenfold"]
+    # Exit 3 for any controller the report calls DIVERGED (PD and computed torque included).
+    diverged = any_diverged(comparison)
     case_rows, cases_diverged = test_case_rows(args, job, comparison)
     lines += case_rows
     text = "\n".join(lines)
@@ -237,6 +240,12 @@ def ran_settings(settings: ControllerSettings, comparison: Comparison) -> Contro
     return replace(settings, horizon=tuning.horizon, measurement_noise=())
 
 
+def any_diverged(comparison: Comparison) -> bool:
+    """Whether any controller of the comparison was stopped as diverged (the report marks each
+    one DIVERGED): the exit status is 3 then, whichever controller it was."""
+    return any(bool(run.diverged) for run in comparison.runs.values())
+
+
 def stability_lines(comparison: Comparison, lines: list[str]) -> tuple[list[str], bool]:
     """Append each internal-model controller's verdict; return the warnings and whether one
     diverged."""
@@ -255,7 +264,7 @@ def stability_lines(comparison: Comparison, lines: list[str]) -> tuple[list[str]
 def test_case_rows(args: argparse.Namespace, job: ControlJob,
                    comparison: Comparison) -> tuple[list[str], bool]:
     """The table of the closed loops on the stored test excitations (none without
-    --test-cases), and whether an internal-model controller diverged on one."""
+    --test-cases), and whether any controller diverged on one."""
     rows, diverged = [], False
     for label, case_scene in job.cases:
         sub = compare(case_scene, job.narx, ran_settings(job.settings, comparison), arx=job.arx,
@@ -269,7 +278,7 @@ def test_case_rows(args: argparse.Namespace, job: ControlJob,
                       f"{mt['max_velocity_after']:.3g}" if mt else "-"]
         model_runs = [sub.runs[n] for n in MODEL_BASED if n in sub.runs]
         states = ["DIVERGED" if run.diverged else "bounded" for run in model_runs]
-        diverged |= any(run.diverged for run in model_runs)
+        diverged |= any_diverged(sub)
         rows.append(f"| {label} | " + " | ".join(cells) + f" | {', '.join(states)} |")
     if not rows:
         return [], diverged

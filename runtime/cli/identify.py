@@ -32,6 +32,7 @@ from jointplay.neural.identify import (
     default_limits,
     identify,
 )
+from jointplay.neural.identify_config import MAX_SEED
 
 if TYPE_CHECKING:
     from jointplay.common.files import OutputPlan
@@ -115,6 +116,9 @@ def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
 def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
     """The configuration the flags give, every flag checked and named when refused."""
     n = len(scene.robot.moving_joints)
+    if not 0 <= args.seed <= MAX_SEED:
+        raise DescriptionError("--seed", f"must be a whole number from 0 to {MAX_SEED} "
+                               f"(2**32 - 1), got {args.seed}")
     lags = int_list(args.lags, "--lags", 2, high=size_limits.MAX_LAGS)
     hidden = int_list(args.hidden, "--hidden", high=size_limits.MAX_HIDDEN_WIDTH)
     if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:

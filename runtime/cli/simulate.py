@@ -12,14 +12,15 @@ import numpy as np
 from jointplay.cli.args import check_writable_dir, run_flag, scene_argument, scene_from_args
 from jointplay.cli.summary import summary
 from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
 
 if TYPE_CHECKING:
     from jointplay.common.files import OutputPlan
     from jointplay.results.records import SimulationResult
     from jointplay.scene.definition import Scene
 
-# Run settings --set may change (numbers only; the integrator has its own flag).
-_RUN_NUMBERS = ("t_end", "output_step", "rtol", "atol", "step", "max_steps")
+# Run settings --set may change (also --integrator, --t-end, ... for the common ones).
+_RUN_NUMBERS = ("t_end", "output_step", "rtol", "atol", "step", "max_steps", "integrator")
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
@@ -31,7 +32,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p_sim.add_argument("--plot", help="write PNG figures into this folder")
     p_sim.add_argument("--compare-ideal", action="store_true",
                        help="also simulate the scene with ideal joints and report the errors")
-    p_sim.add_argument("--integrator", help="override run.integrator (cvodes, idas, rk4, radau)")
+    p_sim.add_argument("--integrator", help="override run.integrator (bdf, cvodes, idas, rk4, "
+                                            "radau)")
     p_sim.add_argument("--rtol", type=float, help="override run.rtol")
     p_sim.add_argument("--atol", type=float, help="override run.atol")
     p_sim.add_argument("--step", type=float, help="override run.step (fixed-step methods)")
@@ -95,11 +97,13 @@ def _scene(args: argparse.Namespace) -> tuple[Scene, OutputPlan]:
     plan = _check_outputs(args, scene)
     if overrides:
         from jointplay.robot import with_parameters
+        from jointplay.robot.description import parameter_name
 
         try:
             scene = scene.with_robot(with_parameters(scene.robot, overrides))
         except DescriptionError as err:
-            raise DescriptionError(f"--set {err.field}", err.message) from None
+            raise err.renamed(lambda f: f"--set {parameter_name(f)}").with_source(None) \
+                from None
     return scene, plan
 
 
@@ -136,6 +140,13 @@ def _check_outputs(args: argparse.Namespace, scene: Scene) -> OutputPlan:
         if output.kind == "file" and output.flag != "--animate":
             check_output_path(output.path, output.flag)
     if args.plot:
+        from jointplay.results.write import impacts_csv_path
+
+        derived = impacts_csv_path(args.csv) if args.csv else None
+        for flag, path in (("--out", args.out), ("--csv", args.csv), ("--csv", derived)):
+            if path and Path(path).resolve() == Path(args.plot).resolve():
+                raise DescriptionError("--plot", f"names the same path as {flag} ({path}); "
+                                       "--plot takes a folder for the figures")
         check_writable_dir(Path(args.plot), "--plot")
     if args.animate:
         from jointplay.results.animate import check_animation_path
@@ -178,13 +189,16 @@ def _write_each(result: SimulationResult, args: argparse.Namespace, quiet: bool)
     return written
 
 
-def _overrides(items: list[str]) -> dict[str, float]:
-    out: dict[str, float] = {}
+def _overrides(items: list[str]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
     for item in items:
         name, sep, value = item.partition("=")
         if not sep or not name.strip():
             raise DescriptionError("--set", f"expects NAME=VALUE (e.g. friction.mu=0.1), got "
                                    f"{item!r}")
+        if name.strip().startswith("run."):  # checked and converted by _run_overrides
+            out[name.strip()] = value.strip()
+            continue
         try:
             number = float(value)
         except ValueError:
@@ -196,20 +210,28 @@ def _overrides(items: list[str]) -> dict[str, float]:
     return out
 
 
-def _run_overrides(overrides: dict[str, float]) -> dict[str, Any]:
+def _run_overrides(overrides: dict[str, Any]) -> dict[str, Any]:
     """Take the ``run.NAME`` entries out of ``overrides`` (in place) as run-setting changes."""
     changes: dict[str, Any] = {}
     for name in [n for n in overrides if n.startswith("run.")]:
         value = overrides.pop(name)
         key = name.removeprefix("run.")
         if key not in _RUN_NUMBERS:
-            raise DescriptionError(f"--set {name}", "is not a run setting --set can change; "
-                                   f"these are run.{', run.'.join(_RUN_NUMBERS)} (the "
-                                   "integrator: --integrator)")
-        if key == "max_steps":
-            if not value.is_integer():
-                raise DescriptionError(f"--set {name}", f"must be a whole number, got {value}")
-            changes[key] = int(value)
-        else:
+            raise DescriptionError(f"--set {name}", "is not a run setting; these are "
+                                   f"run.{', run.'.join(_RUN_NUMBERS)}"
+                                   + did_you_mean(name, [f"run.{k}" for k in _RUN_NUMBERS]))
+        if key == "integrator":  # the one setting that is a name, not a number
             changes[key] = value
+            continue
+        try:
+            number = float(value)
+        except ValueError:
+            raise DescriptionError(f"--set {name}", f"must be a number, got {value!r}") \
+                from None
+        if key == "max_steps":
+            if not number.is_integer():
+                raise DescriptionError(f"--set {name}", f"must be a whole number, got {value}")
+            changes[key] = int(number)
+        else:
+            changes[key] = number
     return changes

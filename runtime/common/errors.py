@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
+
 
 class JointplayError(Exception):
     """Base class of every error jointplay raises on purpose."""
@@ -20,6 +22,63 @@ class DescriptionError(JointplayError, ValueError):
         self.source = source
         where = f"{source}: " if source else ""
         super().__init__(f"{where}{field}: {message}")
+
+    @property
+    def problems(self) -> list[DescriptionError]:
+        """Every invalid field this error reports (one here; several in a
+        :class:`DescriptionErrors`)."""
+        return [self]
+
+    def with_source(self, source: str | None) -> DescriptionError:
+        """The same error(s) attributed to ``source`` (a file, or ``"flags"``)."""
+        return DescriptionError(self.field, self.message, source)
+
+    def renamed(self, rename: Callable[[str], str]) -> DescriptionError:
+        """The same error(s) with each field renamed (an API name for a file's, say)."""
+        return DescriptionError(rename(self.field), self.message, self.source)
+
+
+class DescriptionErrors(DescriptionError):
+    """Several invalid fields, reported together so that one round of corrections fixes them all.
+
+    ``field`` and ``message`` are the first problem's (code that handles one error keeps
+    working); ``problems`` lists every one, and the text has one line per problem.
+    """
+
+    def __init__(self, problems: Sequence[DescriptionError]) -> None:
+        flat = [p for problem in problems for p in problem.problems]
+        if not flat:
+            raise ValueError("DescriptionErrors needs at least one problem")
+        self._problems = flat
+        first = flat[0]
+        self.field = first.field
+        self.message = first.message
+        self.source = first.source
+        lines = [str(p) for p in flat]
+        Exception.__init__(self, f"{len(flat)} problems:\n  " + "\n  ".join(lines)
+                           if len(flat) > 1 else lines[0])
+
+    @property
+    def problems(self) -> list[DescriptionError]:
+        return list(self._problems)
+
+    def with_source(self, source: str | None) -> DescriptionError:
+        return DescriptionErrors([p.with_source(source) for p in self._problems])
+
+    def renamed(self, rename: Callable[[str], str]) -> DescriptionError:
+        return DescriptionErrors([p.renamed(rename) for p in self._problems])
+
+
+def combined(problems: Sequence[DescriptionError]) -> DescriptionError:
+    """One error for several problems (the problem itself when there is one); a field is
+    named once, by its first problem (a value that is not a number, say, not again as NaN)."""
+    flat: list[DescriptionError] = []
+    seen: set[tuple[str | None, str]] = set()
+    for one in (p for problem in problems for p in problem.problems):
+        if (one.source, one.field) not in seen:
+            seen.add((one.source, one.field))
+            flat.append(one)
+    return flat[0] if len(flat) == 1 else DescriptionErrors(flat)
 
 
 class BuildError(JointplayError, RuntimeError):

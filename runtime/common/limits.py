@@ -27,6 +27,9 @@ MIN_ATOL = 1.0e-20
 # ---- files read ------------------------------------------------------------------------------
 MAX_TOML_BYTES = 1 << 20
 """A scene, robot or sweep file (1 MiB): these are hand-written descriptions."""
+MAX_TOML_NESTING = 64
+"""Nesting of arrays and inline tables in a scene, robot or sweep file (deeper would exhaust
+the parser's recursion; a description needs three)."""
 MAX_TABLE_BYTES = 256 << 20
 """A torque table (CSV, 256 MiB)."""
 
@@ -51,5 +54,48 @@ MAX_WINDOW = 1_000_000
 """identify --window, samples."""
 MAX_WORKERS = 1024
 """--workers of identify and sweep."""
+
+# ---- physical plausibility ------------------------------------------------------------------
+# Every physical number of a robot or scene, whichever door it comes through (a TOML file,
+# --set, a sweep, or the Python API's overrides), is checked against these ranges with the
+# rest of the input (exit 2). They are wide (orders of magnitude beyond any robot a clearance
+# study is about) and only refuse numbers no real robot has, which would otherwise overflow or
+# underflow mid-run (an exponent of 1e300, a hardness of 5e-324).
+PHYSICAL_RANGES: dict[str, tuple[float, float, str, str]] = {
+    # kind: (lowest, highest, unit, what it is)
+    "link.length": (1.0e-4, 100.0, "m", "link length"),
+    "link.mass": (1.0e-6, 1.0e6, "kg", "link mass"),
+    "link.inertia": (1.0e-15, 1.0e9, "kg m^2", "link inertia"),
+    "payload.mass": (0.0, 1.0e6, "kg", "payload mass"),
+    "joint.angle": (-1.0e3, 1.0e3, "rad", "locked joint angle"),
+    "joint.radius": (1.0e-5, 1.0, "m", "bearing or journal radius"),
+    "joint.E": (1.0e5, 1.0e13, "Pa", "Young's modulus"),
+    "joint.length": (1.0e-5, 10.0, "m", "joint axial length"),
+    "gravity": (-1.0e3, 1.0e3, "m/s^2", "gravity component"),
+    "contact.exponent": (0.5, 3.0, "", "contact force exponent"),
+    "contact.impact_speed_floor": (1.0e-9, 10.0, "m/s", "impact speed floor"),
+    "friction.mu": (0.0, 5.0, "", "friction coefficient"),
+    "friction.v0": (0.0, 10.0, "m/s", "friction ramp start speed"),
+    "friction.v1": (1.0e-9, 100.0, "m/s", "friction ramp end speed"),
+    "lubrication.viscosity": (1.0e-6, 1.0e3, "Pa s", "lubricant viscosity"),
+    "wear.coefficient": (1.0e-12, 1.0, "", "wear coefficient"),
+    "wear.hardness": (1.0e6, 1.0e12, "Pa", "surface hardness"),
+    "initial.angle": (-1.0e3, 1.0e3, "rad", "initial joint angle"),
+    "initial.speed": (-1.0e4, 1.0e4, "rad/s", "initial joint speed"),
+    "initial.eccentricity_rate": (-100.0, 100.0, "m/s", "initial journal speed"),
+}
+MIN_RADIAL_CLEARANCE = 1.0e-9
+"""m, bearing_radius - journal_radius of a joint with play (a nanometre)."""
+
+# ---- stops during a run (exit 1) ----------------------------------------------------------
+MAX_PENETRATION_FRACTION = 0.02
+"""Penetration of a journal into its bearing, as a fraction of the journal radius, beyond which
+the run stops: the contact laws describe small elastic deformations (micrometres in the
+built-in scenes, below 2e-4 of the radius); 2 % of the radius (0.2 mm for a 10 mm journal) is
+a state no metal joint survives, reached only from an impossible input."""
+MAX_ENERGY_RESIDUAL = 0.01
+"""The energy balance's residual (total energy change - drive work + dissipated energy), as a
+fraction of the largest energy of the run (kinetic, drive work or dissipated), beyond which
+the run stops: the built-in scenes close it to below 5e-4."""
 
 __all__ = [name for name in dir() if name.isupper()]

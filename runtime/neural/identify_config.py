@@ -4,6 +4,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from jointplay.common.errors import DescriptionError
+
+MAX_SEED = 2**32 - 1
+
 
 @dataclass(frozen=True)
 class IdentifyConfig:
@@ -29,6 +33,13 @@ class IdentifyConfig:
     window: int = 200  # samples per free-run training window
     patience: int = 8
     workers: int = 0  # 0: one per core, at most 4
+
+    def __post_init__(self) -> None:
+        # numpy and torch take seeds from 0 to 2**32 - 1; anything else failed deep inside.
+        if isinstance(self.seed, bool) or not isinstance(self.seed, int) \
+                or not 0 <= self.seed <= MAX_SEED:
+            raise DescriptionError("seed", f"must be a whole number from 0 to {MAX_SEED} "
+                                   f"(2**32 - 1), got {self.seed!r}")
 
 
 

@@ -13,11 +13,12 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
-from jointplay.common.errors import DescriptionError
+from jointplay.common.errors import DescriptionError, combined
 from jointplay.common.hints import did_you_mean
 from jointplay.robot.structure import (
     JointKind,
@@ -287,6 +288,32 @@ def _index(parameter: Parameter) -> int:
     return parameter.index
 
 
+def parameter_name(field_name: str) -> str:
+    """The parameter-vector name of a robot field: ``links[2].mass`` -> ``link2.mass``,
+    ``gravity.vector.y`` -> ``gravity.y`` (other names are the same in both)."""
+    m = re.fullmatch(r"(links|joints)\[(\d+)\]\.(\w+)", field_name)
+    if m:
+        return f"{m.group(1)[:-1]}{m.group(2)}.{m.group(3)}"
+    if field_name.startswith("gravity.vector."):
+        return f"gravity.{field_name.rsplit('.', 1)[1]}"
+    return field_name
+
+
+def unknown_parameter(name: str, robot: Robot) -> DescriptionError:
+    """The error for a name that is no parameter of ``robot``: the nearest parameter, or, for
+    an initial coordinate or speed (``q2``, ``dex3``), where those are set."""
+    from jointplay.robot.structure import coordinate_layout
+
+    coords = [c.name for c in coordinate_layout(robot.structure())]
+    if name in coords or (name.startswith("d") and name[1:] in coords):
+        return DescriptionError(name, "is an initial value, not a robot parameter: set it in "
+                                "the scene's [initial] table (in Python: "
+                                f"scene.with_initial({name}=...))")
+    known = [p.name for p in robot.parameters()]
+    return DescriptionError(name, "is not a parameter of this model"
+                            + did_you_mean(name, known))
+
+
 def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
     """A copy of ``robot`` with named parameters changed (structure unchanged)."""
     known = {p.name: p for p in robot.parameters()}
@@ -296,10 +323,10 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
                "lubrication": vars(robot.lubrication).copy(), "wear": vars(robot.wear).copy()}
     gravity = list(robot.gravity.vector)
     payload = robot.payload_mass
+    unknown = [unknown_parameter(name, robot) for name in values if name not in known]
     for name, value in values.items():
         if name not in known:
-            raise DescriptionError(name, "is not a parameter of this model"
-                                   + did_you_mean(name, sorted(known)))
+            continue
         prm = known[name]
         if prm.owner == "link":
             links[_index(prm) - 1][prm.attribute] = value
@@ -311,6 +338,17 @@ def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
             gravity["xy".index(prm.attribute)] = value
         else:
             effects[prm.owner][prm.attribute] = value
+    try:
+        changed = _rebuilt(robot, links, joints, effects, gravity, payload)
+    except DescriptionError as err:
+        raise combined([*unknown, err]) from None
+    if unknown:
+        raise combined(unknown)
+    return changed
+
+
+def _rebuilt(robot: Robot, links: list[dict[str, Any]], joints: list[dict[str, Any]],
+             effects: dict[str, dict[str, Any]], gravity: list[float], payload: float) -> Robot:
     return replace(
         robot,
         links=tuple(Link(**d) for d in links),

@@ -3,13 +3,14 @@ never executed), validated on construction."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
-from jointplay.common.validation import boolean, check_keys, number, read_toml
+from jointplay.common.validation import Problems, boolean, check_keys, number, read_toml
 from jointplay.robot.description import (
     MAX_LINKS,
     Contact,
@@ -23,6 +24,7 @@ from jointplay.robot.description import (
     uniform_chain,
 )
 from jointplay.robot.structure import JOINT_KINDS
+from jointplay.robot.validation import check_robot_name
 
 _TOP_KEYS = ("name", "links", "joints", "payload", "gravity", "contact", "friction", "drive",
              "lubrication", "wear")
@@ -35,10 +37,29 @@ _FLOAT_FIELDS = {"length", "mass", "inertia", "com", "angle", "bearing_radius", 
                  "coefficient", "hardness"}
 
 
-def _numbers(table: Mapping[str, Any], where: str) -> dict[str, Any]:
+def _known(table: Any, allowed: tuple[str, ...], where: str, values: Problems
+           ) -> Mapping[str, Any]:
+    """The table's known keys; unknown ones are reported (to ``values``) and left out, so that
+    the rest is still checked. A value that is not a table at all leaves nothing to check."""
+    if not isinstance(table, Mapping):
+        check_keys(table, allowed, where)  # raises: must be a table
+    with values.check():
+        check_keys(table, allowed, where)
+    return {k: v for k, v in table.items() if k in allowed}
+
+
+def _numbers(table: Mapping[str, Any], where: str, problems: Problems) -> dict[str, Any]:
+    """The table with its numbers as floats; a value that is not a number is reported (to
+    ``problems``) and read as NaN, so that the robot's own checks of every other field still
+    run and all problems are reported together, as for a robot built in Python."""
     out: dict[str, Any] = {}
     for key, value in table.items():
-        out[key] = number(value, f"{where}.{key}") if key in _FLOAT_FIELDS else value
+        if key in _FLOAT_FIELDS:
+            out[key] = math.nan
+            with problems.check():
+                out[key] = number(value, f"{where}.{key}")
+        else:
+            out[key] = value
     return out
 
 
@@ -47,86 +68,127 @@ def robot_from_dict(data: Mapping[str, Any], source: str | None = None) -> Robot
     try:
         return _robot_from_dict(data)
     except DescriptionError as err:
-        err.source = source
-        raise DescriptionError(err.field, err.message, source) from None
+        raise err.with_source(source) from None
 
 
 def _robot_from_dict(data: Mapping[str, Any]) -> Robot:
     if "robot" in data and isinstance(data["robot"], Mapping):
         data = data["robot"]
-    check_keys(data, _TOP_KEYS, "")
-    links = _links(data)
-    joints = _joints(data, len(links))
+    # Every part is read even after one fails, so that all problems are reported together:
+    # ``structure`` holds those that leave no robot to check (a missing link field, an unknown
+    # joint kind), ``values`` the numbers that are not numbers (read as NaN meanwhile).
+    structure, values = Problems(), Problems()
+    with structure.check():
+        data = _known(data, _TOP_KEYS, "", values)
+    links: tuple[Link, ...] = ()
+    with structure.check():
+        links = _links(data, values)
+    joints: tuple[Joint, ...] = ()
+    with structure.check():
+        joints = _joints(data, len(links) or 1, values)
     payload = data.get("payload", {})
-    check_keys(payload, ("mass",), "payload")
-    gravity = _gravity(data)
-    tables = _option_tables(data)
+    payload_mass = math.nan
+    with structure.check():
+        payload = _known(payload, ("mass",), "payload", values)
+    with values.check():
+        payload_mass = number(payload.get("mass", 0.0) if isinstance(payload, Mapping)
+                              else 0.0, "payload.mass")
+    gravity = Gravity()
+    with structure.check():
+        gravity = _gravity(data, values)
+    tables: dict[str, Mapping[str, Any]] = {}
+    with structure.check():
+        tables = _option_tables(data, values)
     name = data.get("name", "robot")
-    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum():
-        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
-    return Robot(
-        links=links,
-        joints=joints,
-        name=name,
-        payload_mass=number(payload.get("mass", 0.0), "payload.mass"),
-        gravity=gravity,
-        contact=Contact(**_numbers(tables["contact"], "contact")),
-        friction=Friction(**_numbers(tables["friction"], "friction")),
-        drive=boolean(tables["drive"].get("enabled", True), "drive.enabled"),
-        lubrication=Lubrication(**_numbers(tables["lubrication"], "lubrication")),
-        wear=Wear(**_numbers(tables["wear"], "wear")),
-    )
+    drive = True
+    with structure.check():
+        check_robot_name(name)
+        drive = boolean(tables["drive"].get("enabled", True), "drive.enabled") \
+            if tables else True
+    if structure:  # unknown keys first: a misspelt key is often why another one is missing
+        values.found.extend(structure.found)
+        values.raise_any()
+    with values.check():
+        robot = Robot(
+            links=links,
+            joints=joints,
+            name=name,
+            payload_mass=payload_mass,
+            gravity=gravity,
+            contact=Contact(**_numbers(tables["contact"], "contact", values)),
+            friction=Friction(**_numbers(tables["friction"], "friction", values)),
+            drive=drive,
+            lubrication=Lubrication(**_numbers(tables["lubrication"], "lubrication", values)),
+            wear=Wear(**_numbers(tables["wear"], "wear", values)),
+        )
+    values.raise_any()
+    return robot
 
 
-def _links(data: Mapping[str, Any]) -> tuple[Link, ...]:
+def _links(data: Mapping[str, Any], values: Problems) -> tuple[Link, ...]:
     """The [[links]] tables, each complete."""
     raw_links = data.get("links")
     if not isinstance(raw_links, list) or not raw_links:
         raise DescriptionError("links", "must be a non-empty array of [[links]] tables "
                                         f"(1 to {MAX_LINKS} links)")
     links = []
+    problems = Problems()
     for i, raw in enumerate(raw_links, start=1):
-        check_keys(raw, _LINK_KEYS, f"links[{i}]")
-        missing = [key for key in _LINK_KEYS if key not in raw]
-        if missing:
-            raise DescriptionError(f"links[{i}].{missing[0]}", "is required")
-        links.append(Link(**_numbers(raw, f"links[{i}]")))
+        with problems.check():
+            raw = _known(raw, _LINK_KEYS, f"links[{i}]", values)
+            missing = [key for key in _LINK_KEYS if key not in raw]
+            if missing:
+                raise DescriptionError(f"links[{i}].{missing[0]}", "is required")
+            links.append(Link(**_numbers(raw, f"links[{i}]", values)))
+    problems.raise_any()
     return tuple(links)
 
 
-def _joints(data: Mapping[str, Any], n_links: int) -> tuple[Joint, ...]:
+def _joints(data: Mapping[str, Any], n_links: int, values: Problems) -> tuple[Joint, ...]:
     """The [[joints]] tables (every joint ideal when there are none), each of one known kind."""
     raw_joints = data.get("joints", [{"kind": "ideal"}] * n_links)
     if not isinstance(raw_joints, list):
         raise DescriptionError("joints", "must be an array of [[joints]] tables")
     joints = []
+    problems = Problems()
     for i, raw in enumerate(raw_joints, start=1):
-        check_keys(raw, _JOINT_KEYS, f"joints[{i}]")
-        kind = raw.get("kind", "ideal")
-        if isinstance(kind, list):
-            raise DescriptionError(f"joints[{i}].kind",
-                                   f"a joint has one kind, got {kind}; a locked joint with play "
-                                   "is kind = \"locked_clearance\"")
-        if kind not in JOINT_KINDS:
-            hint = did_you_mean(str(kind), JOINT_KINDS)
-            raise DescriptionError(f"joints[{i}].kind",
-                                   f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
-        joints.append(Joint(**_numbers(raw, f"joints[{i}]")))
+        with problems.check():
+            joints.append(_joint(i, raw, values))
+    problems.raise_any()
     return tuple(joints)
 
 
-def _gravity(data: Mapping[str, Any]) -> Gravity:
+def _joint(i: int, raw: Any, values: Problems) -> Joint:
+    """One [[joints]] table: known keys, one known kind, numbers."""
+    raw = _known(raw, _JOINT_KEYS, f"joints[{i}]", values)
+    kind = raw.get("kind", "ideal")
+    if isinstance(kind, list):
+        raise DescriptionError(f"joints[{i}].kind",
+                               f"a joint has one kind, got {kind}; a locked joint with play "
+                               "is kind = \"locked_clearance\"")
+    if kind not in JOINT_KINDS:
+        hint = did_you_mean(str(kind), JOINT_KINDS)
+        raise DescriptionError(f"joints[{i}].kind",
+                               f"must be one of {', '.join(JOINT_KINDS)}, got {kind!r}{hint}")
+    return Joint(**_numbers(raw, f"joints[{i}]", values))
+
+
+def _gravity(data: Mapping[str, Any], values: Problems) -> Gravity:
     gravity_raw = data.get("gravity", {})
-    check_keys(gravity_raw, ("enabled", "vector"), "gravity")
+    gravity_raw = _known(gravity_raw, ("enabled", "vector"), "gravity", values)
     vector = gravity_raw.get("vector", Gravity().vector)
     if not isinstance(vector, list | tuple) or len(vector) != 2:
         raise DescriptionError("gravity.vector", f"must be [gx, gy] in m/s^2, got {vector!r}")
+    components = [math.nan, math.nan]
+    for k, axis in enumerate("xy"):
+        with values.check():
+            components[k] = number(vector[k], f"gravity.vector.{axis}")
     return Gravity(enabled=boolean(gravity_raw.get("enabled", True), "gravity.enabled"),
-                   vector=(number(vector[0], "gravity.vector"),
-                           number(vector[1], "gravity.vector")))
+                   vector=(components[0], components[1]))
 
 
-def _option_tables(data: Mapping[str, Any]) -> dict[str, Mapping[str, Any]]:
+def _option_tables(data: Mapping[str, Any], values: Problems
+                   ) -> dict[str, Mapping[str, Any]]:
     """The contact, friction, drive, lubrication and wear tables (empty where absent), their
     keys checked; their numbers are read when the robot is built."""
     allowed = {"contact": tuple(vars(Contact())), "friction": tuple(vars(Friction())),
@@ -135,7 +197,7 @@ def _option_tables(data: Mapping[str, Any]) -> dict[str, Mapping[str, Any]]:
     tables = {}
     for table, keys in allowed.items():
         tables[table] = data.get(table, {})
-        check_keys(tables[table], keys, table)
+        tables[table] = _known(tables[table], keys, table, values)
     return tables
 
 

@@ -1,12 +1,19 @@
-"""Validation of a robot description: every field checked, the first bad one named with what
-is allowed (a :class:`~jointplay.common.errors.DescriptionError`)."""
+"""Validation of a robot description: every field checked, each bad one named with what is
+allowed (a :class:`~jointplay.common.errors.DescriptionError`, or
+:class:`~jointplay.common.errors.DescriptionErrors` for several, all reported at once).
+
+Every number is also checked against the physical range of its kind
+(:data:`jointplay.common.limits.PHYSICAL_RANGES`). This runs when a :class:`Robot` is built,
+so a TOML file, ``--set``, a sweep case and the Python API's overrides are checked alike."""
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.validation import finite, positive
+from jointplay.common.limits import MIN_RADIAL_CLEARANCE
+from jointplay.common.validation import Problems, finite, plausible, positive
 from jointplay.robot.description import (
     CONTACT_LAWS,
     CONTACT_STIFFNESSES,
@@ -20,7 +27,7 @@ from jointplay.robot.description import (
 from jointplay.robot.structure import JOINT_KINDS
 
 if TYPE_CHECKING:
-    from jointplay.robot.description import Robot
+    from jointplay.robot.description import Joint, Robot
 
 
 def _validate_effects(robot: Robot) -> None:
@@ -30,6 +37,7 @@ def _validate_effects(robot: Robot) -> None:
         raise DescriptionError("lubrication.model",
                                f"must be one of {', '.join(LUBRICATION_MODELS)}, got {lub.model!r}")
     positive("lubrication.viscosity", lub.viscosity)
+    plausible("lubrication.viscosity", lub.viscosity, "lubrication.viscosity")
     finite("lubrication.transition", lub.transition)
     if not 0.0 < lub.transition < 1.0:
         raise DescriptionError("lubrication.transition",
@@ -37,22 +45,46 @@ def _validate_effects(robot: Robot) -> None:
     if wear.model not in WEAR_MODELS:
         raise DescriptionError("wear.model",
                                f"must be one of {', '.join(WEAR_MODELS)}, got {wear.model!r}")
-    positive("wear.coefficient", wear.coefficient)
-    positive("wear.hardness", wear.hardness)
+    problems = Problems()
+    for name in ("coefficient", "hardness"):
+        with problems.check():
+            positive(f"wear.{name}", getattr(wear, name))
+            plausible(f"wear.{name}", getattr(wear, name), f"wear.{name}")
+    problems.raise_any()
+
+
+def check_robot_name(name: object) -> None:
+    """A robot's name: it names generated folders and files, so letters, digits, '_', '-'."""
+    if not isinstance(name, str) or not name.replace("_", "").replace("-", "").isalnum() \
+            or not name.isascii():
+        raise DescriptionError("name", f"must be letters, digits, '_' or '-', got {name!r}")
 
 
 def validate(robot: Robot) -> None:
-    """Raise :class:`DescriptionError` naming the first invalid field."""
-    _validate_links(robot)
-    positive("payload.mass", robot.payload_mass, allow_zero=True)
-    _validate_joints(robot)
-    _validate_effects(robot)
-    if not robot.moving_joints and not robot.clearance_joints:
-        raise DescriptionError("joints", "at least one joint must move or have play (not every "
-                               "joint locked)")
-    _validate_gravity(robot)
-    _validate_contact(robot)
-    _validate_friction(robot)
+    """Raise :class:`DescriptionError` naming the invalid fields (all of them)."""
+    problems = Problems()
+    with problems.check():
+        check_robot_name(robot.name)
+    with problems.check():
+        _validate_links(robot)
+    with problems.check():
+        positive("payload.mass", robot.payload_mass, allow_zero=True)
+        plausible("payload.mass", robot.payload_mass, "payload.mass")
+    with problems.check():
+        _validate_joints(robot)
+    with problems.check():
+        _validate_effects(robot)
+    with problems.check():
+        if not robot.moving_joints and not robot.clearance_joints:
+            raise DescriptionError("joints", "at least one joint must move or have play (not "
+                                   "every joint locked)")
+    with problems.check():
+        _validate_gravity(robot)
+    with problems.check():
+        _validate_contact(robot)
+    with problems.check():
+        _validate_friction(robot)
+    problems.raise_any()
 
 
 def _validate_links(robot: Robot) -> None:
@@ -63,48 +95,78 @@ def _validate_links(robot: Robot) -> None:
     if len(robot.joints) != k:
         raise DescriptionError(
             "joints", f"needs one joint per link ({k}), got {len(robot.joints)}")
+    problems = Problems()
     for i, link in enumerate(robot.links, start=1):
-        positive(f"links[{i}].length", link.length)
-        positive(f"links[{i}].mass", link.mass)
-        positive(f"links[{i}].inertia", link.inertia)
-        finite(f"links[{i}].com", link.com)
-        if not 0.0 <= link.com <= link.length:
-            raise DescriptionError(
-                f"links[{i}].com",
-                f"must lie on the link, 0 <= com <= length ({link.length}), got {link.com}")
+        for name in ("length", "mass", "inertia"):
+            with problems.check():
+                positive(f"links[{i}].{name}", getattr(link, name))
+                plausible(f"links[{i}].{name}", getattr(link, name), f"link.{name}")
+        with problems.check():
+            finite(f"links[{i}].com", link.com)
+            # (a length that is not a number is reported by itself, not again here)
+            if isinstance(link.length, (int, float)) and math.isfinite(link.length) \
+                    and not 0.0 <= link.com <= link.length:
+                raise DescriptionError(
+                    f"links[{i}].com",
+                    f"must lie on the link, 0 <= com <= length ({link.length}), got {link.com}")
+    problems.raise_any()
 
 
 def _validate_joints(robot: Robot) -> None:
     """Each joint's kind and angle, and the radii and materials of a joint with play."""
+    problems = Problems()
     for i, joint in enumerate(robot.joints, start=1):
-        if joint.kind not in JOINT_KINDS:
-            raise DescriptionError(f"joints[{i}].kind",
-                                   f"must be one of {', '.join(JOINT_KINDS)}, got {joint.kind!r}")
-        finite(f"joints[{i}].angle", joint.angle)
-        if not joint.has_clearance:
-            continue
-        positive(f"joints[{i}].bearing_radius", joint.bearing_radius)
-        positive(f"joints[{i}].journal_radius", joint.journal_radius)
-        if joint.journal_radius >= joint.bearing_radius:
-            raise DescriptionError(
-                f"joints[{i}].journal_radius",
-                f"must be smaller than bearing_radius ({joint.bearing_radius}) to leave a "
-                f"clearance, got {joint.journal_radius}; use kind = \"ideal\" for no play")
+        with problems.check():
+            _validate_joint(i, joint)
+    problems.raise_any()
+
+
+def _validate_joint(i: int, joint: Joint) -> None:
+    if joint.kind not in JOINT_KINDS:
+        raise DescriptionError(f"joints[{i}].kind",
+                               f"must be one of {', '.join(JOINT_KINDS)}, got {joint.kind!r}")
+    problems = Problems()
+    with problems.check():
+        plausible(f"joints[{i}].angle", joint.angle, "joint.angle")
+    if joint.has_clearance:
+        with problems.check():
+            for part in ("bearing", "journal"):
+                positive(f"joints[{i}].{part}_radius", getattr(joint, f"{part}_radius"))
+                plausible(f"joints[{i}].{part}_radius", getattr(joint, f"{part}_radius"),
+                          "joint.radius")
+            if joint.journal_radius >= joint.bearing_radius:
+                raise DescriptionError(
+                    f"joints[{i}].journal_radius",
+                    f"must be smaller than bearing_radius ({joint.bearing_radius}) to leave a "
+                    f"clearance, got {joint.journal_radius}; use kind = \"ideal\" for no play")
+            if joint.bearing_radius - joint.journal_radius < MIN_RADIAL_CLEARANCE:
+                raise DescriptionError(
+                    f"joints[{i}].journal_radius",
+                    f"leaves a radial clearance of {joint.bearing_radius - joint.journal_radius:g}"
+                    f" m, below the {MIN_RADIAL_CLEARANCE:g} m a real joint with play has; use "
+                    "kind = \"ideal\" for no play")
         for part in ("bearing", "journal"):
-            positive(f"joints[{i}].{part}_E", getattr(joint, f"{part}_E"))
-            nu = getattr(joint, f"{part}_nu")
-            finite(f"joints[{i}].{part}_nu", nu)
-            if not 0.0 < nu < 0.5:
-                raise DescriptionError(f"joints[{i}].{part}_nu",
-                                       f"Poisson's ratio must be in (0, 0.5), got {nu}")
+            with problems.check():
+                positive(f"joints[{i}].{part}_E", getattr(joint, f"{part}_E"))
+                plausible(f"joints[{i}].{part}_E", getattr(joint, f"{part}_E"), "joint.E")
+            with problems.check():
+                nu = getattr(joint, f"{part}_nu")
+                finite(f"joints[{i}].{part}_nu", nu)
+                if not 0.0 < nu < 0.5:
+                    raise DescriptionError(f"joints[{i}].{part}_nu",
+                                           f"Poisson's ratio must be in (0, 0.5), got {nu}")
+    problems.raise_any()
 
 
 def _validate_gravity(robot: Robot) -> None:
     g = robot.gravity
     if len(g.vector) != 2:
         raise DescriptionError("gravity.vector", f"must have 2 components, got {len(g.vector)}")
+    problems = Problems()
     for axis, v in zip("xy", g.vector, strict=True):
-        finite(f"gravity.vector.{axis}", v)
+        with problems.check():
+            plausible(f"gravity.vector.{axis}", v, "gravity")
+    problems.raise_any()
 
 
 def _validate_contact(robot: Robot) -> None:
@@ -116,12 +178,22 @@ def _validate_contact(robot: Robot) -> None:
     if c.stiffness not in CONTACT_STIFFNESSES:
         raise DescriptionError("contact.stiffness", f"must be one of "
                                f"{', '.join(CONTACT_STIFFNESSES)}, got {c.stiffness!r}")
-    _validate_lengths(robot)
-    positive("contact.exponent", c.exponent)
-    finite("contact.restitution", c.restitution)
-    if not 0.0 < c.restitution <= 1.0:
-        raise DescriptionError("contact.restitution", f"must be in (0, 1], got {c.restitution}")
-    positive("contact.impact_speed_floor", c.impact_speed_floor)
+    problems = Problems()
+    with problems.check():
+        _validate_lengths(robot)
+    with problems.check():
+        positive("contact.exponent", c.exponent)
+        plausible("contact.exponent", c.exponent, "contact.exponent")
+    with problems.check():
+        finite("contact.restitution", c.restitution)
+        if not 0.0 < c.restitution <= 1.0:
+            raise DescriptionError("contact.restitution",
+                                   f"must be in (0, 1], got {c.restitution}")
+    with problems.check():
+        positive("contact.impact_speed_floor", c.impact_speed_floor)
+        plausible("contact.impact_speed_floor", c.impact_speed_floor,
+                  "contact.impact_speed_floor")
+    problems.raise_any()
 
 
 def _validate_friction(robot: Robot) -> None:
@@ -132,10 +204,18 @@ def _validate_friction(robot: Robot) -> None:
     if f.ramp not in FRICTION_RAMPS:
         raise DescriptionError("friction.ramp",
                                f"must be one of {', '.join(FRICTION_RAMPS)}, got {f.ramp!r}")
-    positive("friction.mu", f.mu, allow_zero=True)
+    problems = Problems()
+    with problems.check():
+        positive("friction.mu", f.mu, allow_zero=True)
+        plausible("friction.mu", f.mu, "friction.mu")
     # v0 = 0: the correction ramps from zero speed; the law's direction floor keeps it finite.
-    positive("friction.v0", f.v0, allow_zero=True)
-    positive("friction.v1", f.v1)
+    with problems.check():
+        positive("friction.v0", f.v0, allow_zero=True)
+        plausible("friction.v0", f.v0, "friction.v0")
+    with problems.check():
+        positive("friction.v1", f.v1)
+        plausible("friction.v1", f.v1, "friction.v1")
+    problems.raise_any()
     if f.v1 <= f.v0:
         raise DescriptionError("friction.v1", f"must exceed friction.v0 ({f.v0}), got {f.v1}")
 
@@ -149,6 +229,7 @@ def _validate_lengths(robot: Robot) -> None:
     for i, joint in enumerate(robot.joints, start=1):
         if joint.length is not None:
             positive(f"joints[{i}].length", joint.length)
+            plausible(f"joints[{i}].length", joint.length, "joint.length")
         if not joint.has_clearance or not users:
             continue
         if joint.length is None:

@@ -11,7 +11,8 @@ file, the field and what is allowed.
     [constants]              # named numbers usable in the expressions below
     A = 4.0
     [torques]                # per moving joint: an expression of t; absent joints get 0 N m
-    joint2 = "A*sin(2*pi*t)" # or: table = "torques.csv" (t, then one column per driven joint)
+    joint2 = "A*sin(2*pi*t)" # or: table = "torques.csv" (t, then one column per driven joint,
+                             # covering [0, t_end]; hold_ends = true holds its end rows)
     [initial]                # coordinates (q2, ex2, ...) and speeds (dq2, dex2, ...); default 0
     q2 = "-pi"
     [run]
@@ -22,6 +23,7 @@ file, the field and what is allowed.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
@@ -31,9 +33,9 @@ from typing import Any
 from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
-from jointplay.common.validation import check_keys, read_toml
+from jointplay.common.validation import Problems, check_keys, plausible, read_toml
 from jointplay.robot import Joint, JointKind, Robot, load_robot, robot_from_dict
-from jointplay.robot.structure import coordinate_layout
+from jointplay.robot.structure import Structure, coordinate_layout
 from jointplay.scene.expressions import FUNCTIONS, TimeFunction, parse_expression
 from jointplay.scene.tables import load_torque_table
 
@@ -63,6 +65,10 @@ class RunSettings:
     step: float = 1e-5
     max_steps: int = 200_000
 
+    def __post_init__(self) -> None:
+        # Built from a file, flags or the API alike, the settings are checked here, once.
+        _validate_run(self, None)
+
     @property
     def n_outputs(self) -> int:
         return round(self.t_end / self.output_step)
@@ -86,17 +92,90 @@ class Scene:
     source: str | None = None
     text: str = ""  # the scene file as read, kept with the results
 
+    def __post_init__(self) -> None:
+        # One validation for every front door: a scene read from TOML, built by the API or
+        # changed with dataclasses.replace is checked here, all problems reported together.
+        problems = Problems()
+        with problems.check():
+            check_scene_name(self.name)
+        with problems.check():
+            if not isinstance(self.robot, Robot):
+                raise _error("robot", f"must be a jointplay.Robot, got "
+                             f"{type(self.robot).__name__}", None)
+            driven = self.robot.moving_joints if self.robot.drive else ()
+            if len(self.torques) != len(driven):
+                raise _error("torques", f"needs one torque per driven joint "
+                             f"({len(driven)}), got {len(self.torques)}", None)
+        with problems.check():
+            if not isinstance(self.run, RunSettings):
+                raise _error("run", "must be a jointplay.RunSettings (use scene.with_run(...) "
+                             "to change run settings)", None)
+            _check_table_covers_run(self)
+        with problems.check():
+            if isinstance(self.robot, Robot):
+                object.__setattr__(self, "initial", validate_initial(self.initial, self.robot))
+        problems.raise_any(self.source)
+
     def with_run(self, **changes: Any) -> Scene:
         """The same scene with some run settings changed (validated)."""
-        run = replace(self.run, **changes)
-        _validate_run(run, self.source)
+        problems = Problems()
+        for key in changes:
+            if key not in _RUN_KEYS:
+                problems.found.append(_error(
+                    f"run.{key}", f"unknown run setting (allowed: {', '.join(_RUN_KEYS)})"
+                    f"{did_you_mean(key, _RUN_KEYS)}", self.source))
+        with problems.check():
+            run = replace(self.run, **{k: v for k, v in changes.items() if k in _RUN_KEYS})
+        problems.raise_any(self.source)
         scene = replace(self, run=run)
         if {"t_end", "output_step"} & set(changes):  # a new output grid
             check_torques_finite(scene)
         return scene
 
     def with_robot(self, robot: Robot) -> Scene:
-        return replace(self, robot=robot)
+        """The same scene with another robot (validated). The initial eccentricities of a
+        joint that has no play in ``robot`` (its ideal counterpart, say) are left out; every
+        other initial value must exist in ``robot``."""
+        coords = set(coordinate_names(robot))
+        initial = {k: v for k, v in self.initial.items()
+                   if k in coords or k.removeprefix("d") in coords
+                   or not k.removeprefix("d").startswith("e")}
+        return replace(self, robot=robot, initial=initial)
+
+    def with_initial(self, values: Mapping[str, float | str] | None = None,
+                     **more: float | str) -> Scene:
+        """The same scene with some initial coordinates or speeds changed, validated as the
+        scene file's ``[initial]`` is: ``scene.with_initial(q2=0.1, dq2=0.0)``. Values may be
+        numbers or constant expressions (``"-pi/2"``); unnamed ones keep their value."""
+        raw = {**(values or {}), **more}
+        initial = {**self.initial, **_initial_numbers(raw, self.constants, self.source)}
+        return replace(self, initial=initial)
+
+    def with_torques(self, values: Mapping[str, float | str] | None = None,
+                     **more: float | str) -> Scene:
+        """The same scene with other drive torques, validated as the scene file's
+        ``[torques]`` is: ``scene.with_torques(joint2="3*sin(2*pi*t)")`` (expressions of t
+        over the scene's constants; unnamed joints keep theirs) or ``table="torques.csv"``
+        (relative to the scene file), which replaces every joint's torque."""
+        raw = {**(values or {}), **more}
+        base = Path(self.source).parent if self.source else None
+        torques, texts = _torques(raw, self.robot, self.constants, base, self.source)
+        if "table" not in raw:  # joints not named keep their torque
+            keys = [f"joint{j}" for j in self.robot.moving_joints] if self.robot.drive else []
+            kept = [key for key in keys if key not in raw]
+            if kept and "table" in self.torque_text:
+                raise _error("torques", f"the scene's torques come from a table; give "
+                             f"{', '.join(kept)} an expression too, or another table",
+                             self.source)
+            functions = list(torques)
+            for k, key in enumerate(keys):
+                if key in kept:
+                    functions[k] = self.torques[k]
+                    texts[key] = self.torque_text.get(key, "")
+            torques = tuple(functions)
+        scene = replace(self, torques=torques, torque_text=texts)
+        check_torques_finite(scene)
+        return scene
 
 
 def ideal_counterpart(robot: Robot) -> Robot:
@@ -124,22 +203,33 @@ def _positive_number(value: Any, where: str, source: str | None) -> float:
 
 
 def _validate_run(run: RunSettings, source: str | None) -> None:
-    for name in ("t_end", "output_step", "rtol", "atol", "step"):
-        _positive_number(getattr(run, name), f"run.{name}", source)
-    if run.integrator not in INTEGRATORS:
-        hint = did_you_mean(str(run.integrator), INTEGRATORS)
-        raise _error("run.integrator", f"must be one of {', '.join(INTEGRATORS)}, got "
-                     f"{run.integrator!r}{hint}", source)
+    # Each setting by itself (all reported together), then how they fit one another.
+    problems = Problems()
     for name, low, high in (("t_end", 0.0, limits.MAX_T_END),
                             ("output_step", limits.MIN_OUTPUT_STEP, math.inf),
                             ("step", limits.MIN_STEP, math.inf),
                             ("rtol", limits.MIN_RTOL, math.inf),
                             ("atol", limits.MIN_ATOL, math.inf)):
-        value = getattr(run, name)
-        if value > high:
-            raise _error(f"run.{name}", f"must be at most {high:g}, got {value:g}", source)
-        if value < low:
-            raise _error(f"run.{name}", f"must be at least {low:g}, got {value:g}", source)
+        with problems.check():
+            value = _positive_number(getattr(run, name), f"run.{name}", source)
+            if value > high:
+                raise _error(f"run.{name}", f"must be at most {high:g}, got {value:g}", source)
+            if value < low:
+                raise _error(f"run.{name}", f"must be at least {low:g}, got {value:g}", source)
+    with problems.check():
+        if not isinstance(run.integrator, str) or run.integrator not in INTEGRATORS:
+            hint = did_you_mean(str(run.integrator), INTEGRATORS)
+            raise _error("run.integrator", f"must be one of {', '.join(INTEGRATORS)}, got "
+                         f"{run.integrator!r}{hint}", source)
+    with problems.check():
+        if isinstance(run.max_steps, bool) or not isinstance(run.max_steps, int) \
+                or not 1 <= run.max_steps <= limits.MAX_MAX_STEPS:
+            raise _error("run.max_steps", f"must be an integer from 1 to "
+                         f"{limits.MAX_MAX_STEPS}, got {run.max_steps!r}", source)
+    with problems.check():
+        if isinstance(run.rtol, (int, float)) and run.rtol >= 1:
+            raise _error("run.rtol", f"must be < 1, got {run.rtol}", source)
+    problems.raise_any()
     if run.t_end / run.output_step > limits.MAX_OUTPUTS + 0.5:
         raise _error("run.output_step", f"gives {run.t_end / run.output_step:.3g} output "
                      f"samples over run.t_end = {run.t_end:g} s; at most "
@@ -159,29 +249,20 @@ def _validate_run(run: RunSettings, source: str | None) -> None:
             run.steps_per_output * run.step - run.output_step) > 1e-9 * run.output_step):
         raise _error("run.step", f"the fixed step must divide run.output_step "
                      f"({run.output_step}), got {run.step}", source)
-    if run.rtol >= 1:
-        raise _error("run.rtol", f"must be < 1, got {run.rtol}", source)
-    if isinstance(run.max_steps, bool) or not isinstance(run.max_steps, int) \
-            or not 1 <= run.max_steps <= limits.MAX_MAX_STEPS:
-        raise _error("run.max_steps", f"must be an integer from 1 to {limits.MAX_MAX_STEPS}, "
-                     f"got {run.max_steps!r}", source)
 
 
 def _run_settings(raw: Any, source: str | None) -> RunSettings:
-    check_keys(raw, _RUN_KEYS, "run", source)
-    values: dict[str, Any] = {}
-    for key, value in raw.items():
-        if key == "integrator":
-            if not isinstance(value, str):
-                raise _error("run.integrator",
-                             f"must be one of {', '.join(INTEGRATORS)}, got {value!r}", source)
-            values[key] = value
-        elif key == "max_steps":
-            values[key] = value
-        else:
-            values[key] = _finite_number(value, f"run.{key}", source)
-    run = RunSettings(**values)
-    _validate_run(run, source)
+    # The same checks as run settings built in Python: RunSettings checks its own values.
+    problems = Problems()
+    if not isinstance(raw, Mapping):
+        check_keys(raw, _RUN_KEYS, "run", source)
+    with problems.check():
+        check_keys(raw, _RUN_KEYS, "run", source)
+    try:
+        run = RunSettings(**{k: v for k, v in raw.items() if k in _RUN_KEYS})
+    except DescriptionError as err:
+        problems.found.extend(err.problems)
+    problems.raise_any(source)
     return run
 
 
@@ -220,12 +301,16 @@ def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path 
              source: str | None) -> tuple[tuple[TimeFunction, ...], dict[str, str]]:
     driven = robot.moving_joints if robot.drive else ()
     keys = tuple(f"joint{j}" for j in driven)
-    check_keys(raw, (*keys, "table"), "torques", source)
+    check_keys(raw, (*keys, "table", "hold_ends"), "torques", source)
     if raw and not robot.drive:
         raise _error("torques", "the robot's drive is disabled (drive.enabled = false); "
                      "remove [torques] or enable the drive", source)
+    hold = raw.get("hold_ends", False)
+    if "hold_ends" in raw and ("table" not in raw or not isinstance(hold, bool)):
+        raise _error("torques.hold_ends", "is true or false, and only beside table = ...: it "
+                     "holds a table's first and last rows outside its time range", source)
     if "table" in raw:
-        if len(raw) > 1:
+        if len(raw) > 1 + ("hold_ends" in raw):
             raise _error("torques.table", "give either a table or expressions, not both",
                          source)
         if not isinstance(raw["table"], str):
@@ -233,20 +318,25 @@ def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path 
         path = (base / raw["table"]) if base is not None else Path(raw["table"])
         table = load_torque_table(path, columns=len(driven), field="torques.table",
                                   source=source)
-        return (tuple(table.column(i) for i in range(len(driven))),
-                {"table": str(raw["table"])})
+        table_texts = {"table": str(raw["table"])}
+        if hold:
+            table_texts["hold_ends"] = "true"
+        return tuple(table.column(i) for i in range(len(driven))), table_texts
     functions: list[TimeFunction] = []
     texts: dict[str, str] = {}
+    problems = Problems()
     for key in keys:
-        text = raw.get(key, "0")
-        if isinstance(text, (int, float)) and not isinstance(text, bool):
-            text = repr(float(text))
-        if not isinstance(text, str):
-            raise _error(f"torques.{key}", "must be an expression of t (a string) or a "
-                         "number", source)
-        functions.append(parse_expression(text, field=f"torques.{key}",
-                                          constants=constants, source=source))
-        texts[key] = text
+        with problems.check():
+            text = raw.get(key, "0")
+            if isinstance(text, (int, float)) and not isinstance(text, bool):
+                text = repr(float(text))
+            if not isinstance(text, str):
+                raise _error(f"torques.{key}", "must be an expression of t (a string) or a "
+                             "number", source)
+            functions.append(parse_expression(text, field=f"torques.{key}",
+                                              constants=constants, source=source))
+            texts[key] = text
+    problems.raise_any(source)
     return tuple(functions), texts
 
 
@@ -262,54 +352,156 @@ def scene_inputs(scene: Scene) -> list[Path]:
 
 def coordinate_names(robot: Robot) -> list[str]:
     """Generalised coordinates in model order: moving angles, then (ex, ey) per clearance."""
-    return [c.name for c in coordinate_layout(robot.structure())]
+    return list(_coordinates_of(robot.structure()))
 
 
-def _initial(raw: Any, robot: Robot, constants: Mapping[str, float],
-             source: str | None) -> dict[str, float]:
+@functools.lru_cache(maxsize=64)
+def _coordinates_of(structure: Structure) -> tuple[str, ...]:
+    # Every scene built checks its initial state against these: computed once per structure.
+    return tuple(c.name for c in coordinate_layout(structure))
+
+
+def _check_table_covers_run(scene: Scene) -> None:
+    """A torque table must cover [0, run.t_end], unless ``hold_ends = true`` asks for its first
+    and last rows to be held outside its range: a table that ends at 0.5 s for a 2 s run is
+    otherwise a mistake that would pass unseen."""
+    from jointplay.scene.tables import TableColumn
+
+    if scene.torque_text.get("hold_ends") == "true":
+        return
+    t_end = scene.run.t_end
+    for torque in scene.torques:
+        if isinstance(torque, TableColumn):
+            first, last = float(torque.times[0]), float(torque.times[-1])
+            if first > 0.0 or last < t_end * (1 - 1e-12):
+                raise _error("torques.table", f"covers t = {first:g} to {last:g} s, but the run "
+                             f"lasts from 0 to run.t_end = {t_end:g} s; extend the table, "
+                             "shorten the run, or add hold_ends = true to [torques] to hold "
+                             "its first and last rows", None)
+
+
+def _initial_numbers(raw: Any, constants: Mapping[str, float],
+                     source: str | None) -> dict[str, Any]:
+    """``[initial]`` as read: constant expressions (``"-pi/2"``) evaluated; the values are
+    checked by :func:`validate_initial`."""
+    if not isinstance(raw, Mapping):
+        raise _error("initial", f"must be a table, got {type(raw).__name__}", source)
+    problems = Problems()
+    out: dict[str, Any] = {}
+    for key, value in raw.items():
+        with problems.check():
+            if isinstance(value, str):
+                expr = parse_expression(value, field=f"initial.{key}", constants=constants,
+                                        source=source)
+                if not expr.is_constant:
+                    raise _error(f"initial.{key}", "must not depend on t", source)
+                value = float(expr.numpy(0.0))
+            out[key] = value
+    problems.raise_any(source)
+    return out
+
+
+def _initial_kind(key: str) -> str:
+    """The PHYSICAL_RANGES kind of an initial value (eccentricities: the clearance bound)."""
+    if key.startswith("dq"):
+        return "initial.speed"
+    if key.startswith("de"):
+        return "initial.eccentricity_rate"
+    return "initial.angle"
+
+
+def validate_initial(values: Any, robot: Robot) -> dict[str, float]:
+    """The initial state's values, every one checked: a known coordinate or speed of the robot
+    (did-you-mean otherwise), a finite number in its physical range, and each journal inside
+    its bearing. All problems are reported together."""
+    if not isinstance(values, Mapping):
+        raise _error("initial", f"must be a mapping of names to numbers, got "
+                     f"{type(values).__name__}", None)
     coords = coordinate_names(robot)
     allowed = (*coords, *[f"d{c}" for c in coords])
-    check_keys(raw, allowed, "initial", source)
+    problems = Problems()
     out: dict[str, float] = {}
-    for key, value in raw.items():
-        if isinstance(value, str):
-            expr = parse_expression(value, field=f"initial.{key}", constants=constants,
-                                    source=source)
-            if not expr.is_constant:
-                raise _error(f"initial.{key}", "must not depend on t", source)
-            value = float(expr.numpy(0.0))
-        out[key] = _finite_number(value, f"initial.{key}", source)
+    for key, value in values.items():
+        with problems.check():
+            if key not in allowed:
+                raise _error(f"initial.{key}", f"unknown key (allowed: {', '.join(allowed)})"
+                             f"{did_you_mean(str(key), allowed)}", None)
+            number = _finite_number(value, f"initial.{key}", None)
+            if not key.startswith("e"):  # eccentricities: the clearance bound below
+                plausible(f"initial.{key}", number, _initial_kind(key))
+            out[key] = number
     for j, joint in enumerate(robot.joints, start=1):
         if joint.has_clearance:
-            ex, ey = out.get(f"ex{j}", 0.0), out.get(f"ey{j}", 0.0)
-            if math.hypot(ex, ey) > 2 * (joint.bearing_radius - joint.journal_radius):
-                raise _error(f"initial.ex{j}", "the journal must start inside its bearing: "
-                             f"|e| <= 2 x the radial clearance "
-                             f"({joint.bearing_radius - joint.journal_radius:g} m)", source)
+            with problems.check():
+                ex, ey = out.get(f"ex{j}", 0.0), out.get(f"ey{j}", 0.0)
+                if math.hypot(ex, ey) > 2 * (joint.bearing_radius - joint.journal_radius):
+                    raise _error(f"initial.ex{j}", "the journal must start inside its bearing: "
+                                 f"|e| <= 2 x the radial clearance "
+                                 f"({joint.bearing_radius - joint.journal_radius:g} m)", None)
+    problems.raise_any()
     return out
+
+
+def check_scene_name(name: Any) -> None:
+    """A scene's name: printed, written into results and file attributes, so one line of
+    printable text (a NUL or a newline would break them, or fail only after the run)."""
+    if not isinstance(name, str) or not name.strip():
+        raise _error("name", f"must be a non-empty string, got {name!r}", None)
+    bad = [c for c in name if not c.isprintable()]
+    if bad:
+        raise _error("name", f"must be printable text on one line, got the control character "
+                     f"{bad[0]!r} in {name!r}", None)
+    if len(name) > 200:
+        raise _error("name", f"must be at most 200 characters, got {len(name)}", None)
 
 
 def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Scene:
     """Validate a parsed scene document; relative paths resolve against ``base``."""
-    check_keys(data, _TOP_KEYS, "", source)
-    if "robot" not in data:
-        raise _error("robot", "is required: a [robot] table or the path of a robot file",
-                     source)
-    robot = _robot(data["robot"], base, source)
-    name = data.get("name", robot.name)
-    if not isinstance(name, str) or not name:
-        raise _error("name", f"must be a non-empty string, got {name!r}", source)
-    if "description" in data and not isinstance(data["description"], str):
-        raise _error("description", "must be a string", source)
-    constants = _constants(data.get("constants", {}), source)
-    torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
-    initial = _initial(data.get("initial", {}), robot, constants, source)
-    run = _run_settings(data.get("run", {}), source)
-    scene = Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
-                  run=run, constants=constants, source=source, text=text)
-    check_torques_finite(scene)
-    return scene
+    problems = Problems()
+    with problems.check():
+        if not isinstance(data, Mapping):
+            raise _error("(top level)", "must be a table", source)
+        if ("scene" in data or "parameters" in data) and "robot" not in data:
+            raise _error("(file)", "is a sweep file (it has scene = ... or [parameters]), not "
+                         "a scene; run it with: jointplay sweep FILE --out DIR", source)
+        check_keys(data, _TOP_KEYS, "", source)
+    problems.raise_any(source)
+    robot: Robot | None = None
+    with problems.check():
+        if "robot" not in data:
+            raise _error("robot", "is required: a [robot] table or the path of a robot file",
+                         source)
+        robot = _robot(data["robot"], base, source)
+    name = data.get("name", robot.name if robot is not None else "scene")
+    with problems.check():
+        check_scene_name(name)
+    with problems.check():
+        if "description" in data and not isinstance(data["description"], str):
+            raise _error("description", "must be a string", source)
+    constants: dict[str, float] = {}
+    with problems.check():
+        constants = _constants(data.get("constants", {}), source)
+    torques: tuple[TimeFunction, ...] = ()
+    texts: dict[str, str] = {}
+    initial: dict[str, Any] = {}
+    with problems.check():
+        initial = _initial_numbers(data.get("initial", {}), constants, source)
+        if robot is not None:
+            initial = validate_initial(initial, robot)
+    if robot is not None:
+        with problems.check():
+            torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
+    run = RunSettings()
+    with problems.check():
+        run = _run_settings(data.get("run", {}), source)
+    if robot is not None and texts:
+        with problems.check():
+            _check_torques_finite(torques, texts, robot, run, source)
+    problems.raise_any(source)
+    assert robot is not None
+    return Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
+                 run=run, constants=constants, source=source, text=text)
 
 
 def check_torques_finite(scene: Scene) -> None:
@@ -319,23 +511,28 @@ def check_torques_finite(scene: Scene) -> None:
     (inside the integrator); a torque such as ``1/(t - 0.3)`` would put NaN or inf into the
     results, so it is refused before anything runs.
     """
+    _check_torques_finite(scene.torques, scene.torque_text, scene.robot, scene.run,
+                          scene.source)
+
+
+def _check_torques_finite(torques: tuple[TimeFunction, ...], torque_text: Mapping[str, str],
+                          robot: Robot, run: RunSettings, source: str | None) -> None:
     import numpy as np
 
-    run = scene.run
     t = np.arange(run.n_outputs + 1) * run.output_step
-    keys = [f"joint{j}" for j in scene.robot.moving_joints] if scene.robot.drive else []
-    for k, torque in enumerate(scene.torques):
+    keys = [f"joint{j}" for j in robot.moving_joints] if robot.drive else []
+    for k, torque in enumerate(torques):
         values = np.asarray(torque.numpy(t), dtype=np.float64)
         bad = ~np.isfinite(values)
         if bad.any():
             i = int(np.argmax(bad))
             key = keys[k] if k < len(keys) else f"[{k}]"
-            field_name = "torques.table" if "table" in scene.torque_text else f"torques.{key}"
-            text = scene.torque_text.get(key)
+            field_name = "torques.table" if "table" in torque_text else f"torques.{key}"
+            text = torque_text.get(key)
             shown = f" {text!r}" if text else ""
             raise _error(field_name, f"the torque{shown} is {values[i]} at t = {t[i]:.9g} s "
                          "(an output time); every torque must be finite over [0, run.t_end]",
-                         scene.source)
+                         source)
 
 
 def load_scene(path: str | Path) -> Scene:
@@ -365,4 +562,5 @@ __all__ = [
     "load_scene",
     "scene_from_dict",
     "scene_inputs",
+    "validate_initial",
 ]

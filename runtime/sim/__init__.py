@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from jointplay.common.errors import SimulationError
 from jointplay.results.records import Impacts, SimulationResult
 from jointplay.scene.definition import ADAPTIVE, Scene, ideal_counterpart
 from jointplay.sim.assemble import _assemble, _mapped
@@ -24,6 +25,7 @@ from jointplay.sim.casadi_methods import _AdaptiveIntegrator, _resolve_interval,
 from jointplay.sim.events import _EventState
 from jointplay.sim.fixed import _run_fixed
 from jointplay.sim.native import raise_for_status
+from jointplay.sim.plausibility import PenetrationWatch, check_result, singular_torque
 from jointplay.sim.problem import (
     _Accumulated,
     _initial_state,
@@ -87,12 +89,24 @@ def simulate(scene: Scene, *, model: Model | None = None,
     start = time.perf_counter()
     with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,
               desc=f"{scene.name} ({run.integrator})") as progress:
-        phases = METHODS[run.integrator](pr, x0, traj, stats, progress)
+        # The watch checks each batch of new samples for a journal driven through its bearing.
+        watch = PenetrationWatch(progress, pr, traj)
+        try:
+            phases = METHODS[run.integrator](pr, x0, traj, stats, watch)
+        except SimulationError as err:
+            # A torque singular between output times makes every integrator fail in its own
+            # way (a collapsed step, too much work, a non-finite state): name the torque.
+            cause = singular_torque(pr, err.time)
+            if cause is None:
+                raise
+            raise SimulationError(err.time, cause) from None
     wall = time.perf_counter() - start
     counts: dict[str, Any] = dict(stats.counts)
     from jointplay.sim.dense import attach
 
-    return attach(_assemble(pr, traj, t, counts, wall, ideal_result, phases), pr, traj, x0)
+    result = _assemble(pr, traj, t, counts, wall, ideal_result, phases)
+    check_result(result, pr)
+    return attach(result, pr, traj, x0)
 
 
 

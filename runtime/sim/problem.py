@@ -14,7 +14,8 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from jointplay.common.hints import did_you_mean
+from jointplay.common.errors import DescriptionError
+from jointplay.common.validation import Problems
 from jointplay.scene.definition import Scene, ideal_counterpart
 from jointplay.store.model import Model
 
@@ -150,19 +151,52 @@ def _initial_state(model: Model, scene: Scene) -> np.ndarray:
 
 def _parameter_vector(model: Model, scene: Scene,
                       parameters: Mapping[str, float] | Sequence[float] | None) -> np.ndarray:
+    """The run's parameter vector: the scene robot's numbers, with ``parameters`` (by name, or
+    a whole vector) checked exactly as the same numbers in a robot file would be (finite, in
+    their physical range, a clearance left, ...), all problems named at once."""
     defaults = np.asarray(scene.robot.parameter_values(), dtype=float)
     if parameters is None:
         return defaults
     if isinstance(parameters, Mapping):
+        problems = Problems()
         vec = defaults.copy()
+        values: dict[str, float] = {}
         for name, value in parameters.items():
-            if name not in model.parameters:
+            with problems.check():
+                if name not in model.parameters:
+                    from jointplay.robot.description import unknown_parameter
 
-                hint = did_you_mean(name, model.parameters)
-                raise KeyError(f"{name!r} is not a parameter of this model{hint}")
-            vec[model.parameters.index(name)] = float(value)
+                    raise unknown_parameter(str(name), scene.robot)
+                values[name] = vec[model.parameters.index(name)] = _as_number(value, name)
+        with problems.check():
+            check_parameters(scene, values)
+        problems.raise_any("parameters")
         return vec
-    return model.parameter_vector(parameters)
+    vec = model.parameter_vector(parameters)
+    check_parameters(scene, dict(zip(model.parameters, vec.tolist(), strict=True)))
+    return vec
+
+
+def _as_number(value: Any, name: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise DescriptionError(name, f"must be a number, got {value!r}")
+    return float(value)
+
+
+def check_parameters(scene: Scene, values: Mapping[str, float]) -> None:
+    """Refuse overrides the scene's robot would refuse in its file, naming each by its
+    parameter name (``link1.length``); the eccentricities of ``[initial]`` must still start
+    inside the bearing the new radii make."""
+    from jointplay.robot import with_parameters
+    from jointplay.robot.description import parameter_name
+
+    known = {p.name for p in scene.robot.parameters()}
+    robot_values = {k: float(v) for k, v in values.items() if k in known}
+    try:
+        robot = with_parameters(scene.robot, robot_values)
+        scene.with_robot(robot)  # the initial state, checked against the new radii
+    except DescriptionError as err:
+        raise err.renamed(parameter_name).with_source("parameters") from None
 
 
 def load_scene_model(scene: Scene, *, ideal: bool = False) -> Model:

@@ -182,7 +182,10 @@ class Model:
         vec = self.default_parameters.copy()
         for name, value in {**(values or {}), **overrides}.items():
             if name not in self.parameters:
-                raise KeyError(f"{name!r} is not a parameter of this model")
+                from jointplay.common.hints import did_you_mean
+
+                raise KeyError(f"{name!r} is not a parameter of this model"
+                               + did_you_mean(str(name), self.parameters))
             vec[self.parameters.index(name)] = float(value)
         return vec
 

@@ -16,8 +16,9 @@ from typing import Any
 from jointplay.common import limits
 from jointplay.common.errors import DescriptionError, JointplayError
 from jointplay.common.hints import did_you_mean
-from jointplay.common.validation import check_keys, read_toml
+from jointplay.common.validation import Problems, check_keys, read_toml
 from jointplay.robot import Robot, with_parameters
+from jointplay.robot.description import parameter_name
 from jointplay.scene.definition import (
     RunSettings,
     Scene,
@@ -109,12 +110,7 @@ def _run_overrides(raw: Any, scene: Scene, source: str | None) -> Scene:
 
 def _robot_field_to_name(field_name: str) -> str:
     """``joints[2].journal_radius`` -> ``joint2.journal_radius`` (names of the vector)."""
-    m = re.fullmatch(r"(links|joints)\[(\d+)\]\.(\w+)", field_name)
-    if m:
-        return f"{m.group(1)[:-1]}{m.group(2)}.{m.group(3)}"
-    if field_name.startswith("gravity.vector."):
-        return f"gravity.{field_name.rsplit('.', 1)[1]}"
-    return field_name
+    return parameter_name(field_name)
 
 
 def _case_robot(base: Robot, index: int, swept: Mapping[str, float], source: str | None
@@ -193,21 +189,38 @@ def case_key(scene: Scene, robot: Robot) -> str:
 def sweep_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Sweep:
     """Validate a parsed sweep document completely; relative paths resolve against ``base``."""
-    check_keys(data, TOP_KEYS, "", source)
-    scene = _run_overrides(data.get("run", {}), _base_scene(data, source, base), source)
-    name = data.get("name", f"{scene.name}_sweep")
-    if not isinstance(name, str) or not name:
-        raise _error("name", f"must be a non-empty string, got {name!r}", source)
-    if "description" in data and not isinstance(data["description"], str):
-        raise _error("description", "must be a string", source)
+    # The parts that do not depend on one another are all checked, then reported together.
+    problems = Problems()
+    with problems.check():
+        check_keys(data, TOP_KEYS, "", source)
+    problems.raise_any(source)
+    scene = None
+    with problems.check():
+        scene = _run_overrides(data.get("run", {}), _base_scene(data, source, base), source)
+    name = data.get("name", f"{scene.name}_sweep" if scene is not None else "sweep")
+    with problems.check():
+        if not isinstance(name, str) or not name:
+            raise _error("name", f"must be a non-empty string, got {name!r}", source)
+    with problems.check():
+        if "description" in data and not isinstance(data["description"], str):
+            raise _error("description", "must be a string", source)
     mode = data.get("mode", "product")
-    if mode not in MODES:
-        raise _error("mode", f"must be one of {', '.join(MODES)}, got {mode!r}"
-                     f"{did_you_mean(str(mode), MODES)}", source)
-    defaults: dict[str, Any] = {"seed": _integer(data.get("seed", 0), "seed", source, 0)}
-    if "count" in data:
-        defaults["count"] = _integer(data["count"], "count", source, 1, MAX_CASES)
-    axes = _axes(data.get("parameters"), scene.robot, defaults, source)
+    with problems.check():
+        if mode not in MODES:
+            raise _error("mode", f"must be one of {', '.join(MODES)}, got {mode!r}"
+                         f"{did_you_mean(str(mode), MODES)}", source)
+    defaults: dict[str, Any] = {"seed": 0}
+    with problems.check():
+        defaults["seed"] = _integer(data.get("seed", 0), "seed", source, 0)
+    with problems.check():
+        if "count" in data:
+            defaults["count"] = _integer(data["count"], "count", source, 1, MAX_CASES)
+    axes: tuple[Axis, ...] = ()
+    if scene is not None:
+        with problems.check():
+            axes = _axes(data.get("parameters"), scene.robot, defaults, source)
+    problems.raise_any(source)
+    assert scene is not None
     cases = _cases(scene, axes, mode, source)
     return Sweep(name=name, scene=scene, mode=mode, axes=axes, cases=tuple(cases),
                  source=source, text=text)
@@ -233,8 +246,11 @@ def _axes(raw: Any, robot: Robot, defaults: Mapping[str, Any], source: str | Non
     if not isinstance(raw, Mapping) or not raw:
         raise _error("parameters", "must be a non-empty table naming what to vary, e.g. "
                      "[parameters.\"friction.mu\"] values = [0.0, 0.1]", source)
+    problems = Problems()
     for key in raw:
-        check_name(key, robot, source)
+        with problems.check():
+            check_name(key, robot, source)
+    problems.raise_any(source)
     for key in raw:
         m = CLEARANCE_ALIAS.fullmatch(key)
         if m and f"joint{m.group(1)}.journal_radius" in raw:

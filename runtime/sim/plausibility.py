@@ -1,0 +1,185 @@
+"""Stops for states no real robot reaches, checked while a run goes on and before its results
+are used: a journal driven through its bearing, an energy balance that no longer closes, and
+any derived quantity that is not finite.
+
+Inputs that are each plausible can still combine into an impossible run (a fast initial spin
+into a tight bearing, say): the contact laws then leave the small-deformation domain they were
+derived for and the numbers mean nothing, although the integrator succeeds. Such a run stops
+with a :class:`~jointplay.common.errors.SimulationError` naming the joint, the time and the
+input most likely at fault (exit 1 on the command line); nothing is written.
+The bounds are :data:`jointplay.common.limits.MAX_PENETRATION_FRACTION` and
+:data:`jointplay.common.limits.MAX_ENERGY_RESIDUAL` (the README lists them).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from jointplay.common import limits
+from jointplay.common.errors import SimulationError
+
+if TYPE_CHECKING:
+    from jointplay.results.records import SimulationResult
+    from jointplay.sim.problem import _Problem, _Trajectory
+
+# Below this (J) an energy residual is rounding, whatever the run's energies: a robot at rest
+# has a balance of a few 1e-12 J on energies of 0.
+ENERGY_RESIDUAL_FLOOR = 1.0e-6
+
+
+def likely_input(pr: _Problem) -> str:
+    """The inputs most likely to have driven a run out of the physical domain."""
+    run = pr.scene.run
+    if run.integrator in ("bdf", "cvodes", "idas") and (run.rtol >= 1e-2 or run.atol >= 1.0):
+        return (f"the tolerances (run.rtol = {run.rtol:g}, run.atol = {run.atol:g}; the "
+                "defaults are 1e-6 and 1e-5)")
+    if run.integrator not in ("bdf", "cvodes", "idas"):
+        return (f"the fixed step first: reduce run.step (now {run.step:g} s) or use an "
+                "adaptive integrator; else the initial speeds or the drive torques")
+    speeds = {k: v for k, v in pr.scene.initial.items() if k.startswith("d") and v != 0.0}
+    if speeds:
+        name, value = max(speeds.items(), key=lambda kv: abs(kv[1]))
+        unit = "rad/s" if name.startswith("dq") else "m/s"
+        return (f"the initial speeds ([initial] {name} = {value:g} {unit}), or the drive "
+                "torques")
+    return "the drive torques ([torques]) or the contact parameters (E, exponent, masses)"
+
+
+class PenetrationWatch:
+    """Wraps a run's progress bar: each time the integration reports new output samples, their
+    penetrations are checked against the contact law's domain before the run goes on."""
+
+    def __init__(self, progress: Any, pr: _Problem, traj: _Trajectory) -> None:
+        self.progress = progress
+        self.pr = pr
+        self.traj = traj
+        self.checked = 0  # output samples 1..checked are checked
+        model = pr.model
+        self.columns = [(model.coordinates.index(f"ex{j}"), model.coordinates.index(f"ey{j}"))
+                        for j in model.clearance_joints]
+        self.clearance = np.array([pr.scale[ix] for ix, _ in self.columns])
+        slots = [model.layout.parameter_slot("joint", j, "journal_radius")
+                 for j in model.clearance_joints]
+        self.journal_radius = np.asarray(pr.p[slots], dtype=float)
+        self.limit = limits.MAX_PENETRATION_FRACTION * self.journal_radius
+
+    def update(self, n: int = 1) -> Any:
+        upto = min(self.checked + int(n), self.traj.x.shape[0] - 1)
+        if self.columns and upto > self.checked:
+            self.check(slice(self.checked + 1, upto + 1))
+        self.checked = upto
+        return self.progress.update(n)
+
+    def check(self, rows: slice) -> None:
+        x = self.traj.x[rows]
+        for k, (ix, iy) in enumerate(self.columns):
+            delta = np.hypot(x[:, ix], x[:, iy]) - self.clearance[k]
+            over = delta > self.limit[k]
+            if over.any():
+                i = int(np.argmax(over))
+                t = (rows.start + i) * self.pr.scene.run.output_step
+                joint = int(self.pr.model.clearance_joints[k])
+                radius = self.journal_radius[k]
+                raise SimulationError(
+                    t, f"the journal has penetrated its bearing by {delta[i] * 1e3:.3g} mm "
+                    f"({100 * delta[i] / radius:.3g} % of its {radius * 1e3:.3g} mm radius), "
+                    f"beyond the {100 * limits.MAX_PENETRATION_FRACTION:g} % the contact law "
+                    "describes: no real joint reaches this state; check "
+                    f"{likely_input(self.pr)}", joint)
+
+
+def check_result(result: SimulationResult, pr: _Problem) -> None:
+    """The energy balance closes and every per-sample quantity (and the wear) is finite."""
+    _check_finite(result)
+    _check_energy(result, pr)
+
+
+def _check_finite(result: SimulationResult) -> None:
+    arrays: dict[str, Any] = {
+        name: getattr(result, name) for name in (
+            "q", "u", "udot", "tau", "tip_position", "tip_velocity", "tip_acceleration",
+            "eccentricity", "penetration", "penetration_rate", "normal_force",
+            "friction_force", "contact_force", "sliding_speed")}
+    arrays.update({f"energy.{k}": v for k, v in result.energy.items()})
+    for name, values in arrays.items():
+        values = np.asarray(values, dtype=float)
+        bad = ~np.isfinite(values.reshape(values.shape[0], -1)) if values.size else None
+        if bad is not None and bad.any():
+            i = int(np.argmax(bad.any(axis=1)))
+            raise SimulationError(float(result.t[i]), f"{name} is not finite from here on; "
+                                  "the inputs drive the model outside the range of float64 "
+                                  "numbers (see the README's plausible ranges)")
+    wear = result.wear
+    if wear is not None:
+        for name in ("bearing_depth", "journal_depth", "volume"):
+            values = np.asarray(getattr(wear, name), dtype=float)
+            if not np.isfinite(values).all():
+                raise SimulationError(float(result.t[-1]), f"the wear {name.replace('_', ' ')}"
+                                      " is not finite: check wear.coefficient and "
+                                      "wear.hardness")
+
+
+def _check_energy(result: SimulationResult, pr: _Problem) -> None:
+    energy = result.energy
+    balance = np.abs(np.asarray(energy["balance"], dtype=float))
+    if balance.size == 0:
+        return
+    total = np.asarray(energy["total"], dtype=float)
+    scale = max(float(np.max(np.abs(energy["kinetic"]))),
+                float(np.max(np.abs(energy["drive_work"]))),
+                float(np.max(np.abs(energy["dissipated"]))),
+                float(np.max(np.abs(total - total[0]))))
+    bound = max(limits.MAX_ENERGY_RESIDUAL * scale, ENERGY_RESIDUAL_FLOOR)
+    over = balance > bound
+    if over.any():
+        i = int(np.argmax(over))
+        raise SimulationError(
+            float(result.t[i]), f"the energy balance no longer closes: its residual is "
+            f"{balance[i]:.3g} J, more than {100 * limits.MAX_ENERGY_RESIDUAL:g} % of the "
+            f"run's largest energy ({scale:.3g} J), so the integration has lost the "
+            f"physics; tighten run.rtol / run.atol (or a smaller run.step), or check "
+            f"{likely_input(pr)}")
+
+
+# Samples of the dense grid a failed run's torques are inspected on (about 8 MB per torque).
+_DENSE_SAMPLES = 1 << 20
+# A torque whose peak between output times exceeds its peak at them this many times over
+# is called singular there: a smooth torque, however fast, gives a ratio close to 1.
+_SPIKE_RATIO = 100.0
+
+
+def singular_torque(pr: _Problem, t_stop: float) -> str | None:
+    """After a failed integration: the cause, when a drive torque is not finite or has a
+    spike between the output times (``1/(t - 0.3005)`` with outputs every ms), which the
+    check at the output times could not see and the integrator cannot follow; else None."""
+    run = pr.scene.run
+    if not pr.torques:
+        return None
+    outputs = np.arange(run.n_outputs + 1) * run.output_step
+    near = t_stop + run.output_step * np.linspace(-1.0, 1.0, 20001)
+    dense = np.concatenate([np.linspace(0.0, run.t_end, _DENSE_SAMPLES),
+                            near[(near >= 0.0) & (near <= run.t_end)]])
+    keys = [f"joint{j}" for j in pr.scene.robot.moving_joints] if pr.scene.robot.drive else []
+    for k, torque in enumerate(pr.torques):
+        with np.errstate(all="ignore"):
+            values = np.abs(np.broadcast_to(np.asarray(torque.numpy(dense), dtype=float),
+                                            dense.shape))
+            at_outputs = np.abs(np.asarray(torque.numpy(outputs), dtype=float))
+        bad = ~np.isfinite(values)
+        peak = float(np.max(at_outputs)) if at_outputs.size else 0.0
+        spike = values > _SPIKE_RATIO * max(peak, 1e-300)
+        if not (bad.any() or spike.any()):
+            continue
+        i = int(np.argmax(bad)) if bad.any() else int(np.argmax(np.where(spike, values, 0.0)))
+        key = keys[k] if k < len(keys) else f"[{k}]"
+        text = pr.scene.torque_text.get(key)
+        shown = f" ({text!r})" if text else ""
+        what = (f"is {values[i]} at t = {dense[i]:.9g} s" if bad.any() else
+                f"reaches {values[i]:.3g} N m near t = {dense[i]:.9g} s (at most {peak:.3g} N m "
+                "at the output times)")
+        return (f"the drive torque torques.{key}{shown} {what}, between the output times: the "
+                "integrator cannot follow a torque that is singular there; make every torque "
+                "finite and bounded over [0, run.t_end]")
+    return None
