@@ -381,14 +381,15 @@ def test_simulate_writes_everything_or_nothing(tmp_path: Path,
 def test_figures_are_part_of_all_or_nothing(tmp_path: Path,
                                             capsys: pytest.CaptureFixture[str],
                                             monkeypatch: pytest.MonkeyPatch) -> None:
-    """With --plot: ten files; a full disk at the first figure, or at the last rename over
-    a previous set, leaves the folder as it was (the figure folder it created removed)."""
+    """With --plot: eleven files (results, CSV, impacts table, eight figures); a full disk at
+    the first figure, or at the last rename over a previous set, leaves the folder as it was
+    (the figure folder it created removed)."""
     complete = tmp_path / "complete"
     complete.mkdir()
     probe = Faults(monkeypatch, "none", 0)
     assert main(_simulate_argv(complete)) == 0
     n_files = len([p for p in complete.rglob("*") if p.is_file()])
-    assert probe.calls["fsync"] == probe.calls["replace"] == n_files == 10
+    assert probe.calls["fsync"] == probe.calls["replace"] == n_files == 11
     capsys.readouterr()
     fresh = tmp_path / "fresh"
     fresh.mkdir()

@@ -377,8 +377,12 @@ class OutputPlan:
                     raise DescriptionError(a.flag, f"{a.describe()} lies inside the input "
                                            f"{inp.flag} {inp.path}; write elsewhere")
             for f in folders:
-                if _same(a.path, f.path) or (_inside(a.path, f.path)
-                                             and _matches(a.path.name, f.pattern)):
+                if _same(a.path, f.path):
+                    # The folder flag was given a file's name: that flag is the mistake.
+                    raise DescriptionError(f.flag, f"names the same path as {a.flag} "
+                                           f"({a.path}); {f.flag} takes a folder for "
+                                           f"{f.derived or 'its files'}")
+                if _inside(a.path, f.path) and _matches(a.path.name, f.pattern):
                     raise DescriptionError(a.flag, f"{a.describe()} lies in {f.describe()}, "
                                            "which that output fills; write elsewhere")
         for i, f in enumerate(folders):
