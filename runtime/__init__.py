@@ -12,6 +12,7 @@ from jointplay.common.errors import (
     JointplayError,
     SimulationError,
 )
+from jointplay.results.accuracy import Accuracy
 from jointplay.results.records import Impacts, SimulationResult
 from jointplay.robot import (
     Contact,
@@ -46,6 +47,7 @@ __version__ = "0.1.0"
 _moved.install()
 
 __all__ = [
+    "Accuracy",
     "BuildError",
     "Contact",
     "Coordinate",

@@ -56,6 +56,8 @@ def summary(result: Any) -> str:
         f"(drive work {result.energy['drive_work'][-1]:.4g} J, dissipated "
         f"{result.energy['dissipated'][-1]:.4g} J)",
     ]
+    if result.accuracy is not None:
+        lines += result.accuracy.lines()
     lines += contact_lines(result)
     for k, j in enumerate(result.wear.joints if result.wear is not None else ()):
         wear = result.wear

@@ -18,6 +18,10 @@ HDF5 layout (format "jointplay-result", version 1); every array carries attrs "u
   solver statistics as the JSON text dataset ``/metadata/stats``.
 * ``/wear``: Archard wear (angle, bearing_depth, journal_depth, volume), when the robot asks
   for it (see :mod:`jointplay.results.wear`); CSV: ``RUN.wear.csv`` beside the samples.
+* ``/accuracy``: the run's accuracy statement, when it was checked (``verify``): attributes
+  ``tip_error_estimate`` (m), ``agreement_horizon`` (s), ``energy_residual`` (J) and the rest
+  of :meth:`~jointplay.results.accuracy.Accuracy.attributes`, the per-joint impact counts of
+  both runs, and the dataset ``tolerance_sensitive`` (one flag per row of ``/impacts``).
 * ``/ideal``: the ideal-joint result, same layout (without format attrs), when present.
 """
 
@@ -35,6 +39,7 @@ import numpy as np
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import atomic_path
 from jointplay.results import wear as wear_files
+from jointplay.results.accuracy import Accuracy
 from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult
 
 FORMAT = "jointplay-result"
@@ -223,6 +228,8 @@ def _write_group(group: Any, r: SimulationResult, compress: bool) -> None:
 
     if r.wear is not None:
         wear_files.write_group(group, r.wear)
+    if r.accuracy is not None:
+        write_accuracy_group(group, r.accuracy)
     meta = group.create_group("metadata", track_order=True)
     as_json = meta.create_group("json", track_order=True)
     for key, value in r.metadata.items():
@@ -267,8 +274,45 @@ def _read_group(group: Any, ideal: SimulationResult | None = None) -> Simulation
         metadata=metadata,
         ideal=ideal,
         wear=wear_files.read_group(group["wear"]) if "wear" in group else None,
+        accuracy=read_accuracy_group(group["accuracy"]) if "accuracy" in group else None,
         **arrays,
     )
+
+
+# ----------------------------------------------------------------------------------- accuracy
+
+def write_accuracy_group(parent: Any, accuracy: Accuracy) -> None:
+    """``/accuracy``: the accuracy statement's numbers as attributes (SI units), the per-joint
+    impact counts of the run and its check, and one tolerance-sensitive flag per impact."""
+    group = parent.create_group("accuracy", track_order=True)
+    group.attrs["doc"] = ("the run checked against the same run at tolerances 10x tighter: "
+                          "estimated errors, energy residuals, agreement horizon")
+    for key, value in accuracy.attributes().items():
+        group.attrs[key] = value
+    joints = sorted(accuracy.impacts_per_joint)
+    group.attrs["count_joints"] = np.asarray(joints, dtype=np.int64)
+    group.attrs["count_run"] = np.asarray([accuracy.impacts_per_joint[j][0] for j in joints],
+                                          dtype=np.int64)
+    group.attrs["count_check"] = np.asarray([accuracy.impacts_per_joint[j][1] for j in joints],
+                                            dtype=np.int64)
+    _dataset(group, "tolerance_sensitive", accuracy.tolerance_sensitive.astype(bool), "1",
+             "per row of /impacts: at or after the agreement horizon (changes with tolerance)")
+
+
+def read_accuracy_group(group: Any) -> Accuracy:
+    a = dict(group.attrs)
+    joints = [int(j) for j in a["count_joints"]]
+    counts = {j: (int(r), int(c)) for j, r, c in zip(joints, a["count_run"], a["count_check"],
+                                                      strict=True)}
+    fields = {name: a[name] for name in ("rtol", "atol", "check_rtol", "check_atol",
+                                         "tip_error_estimate", "tip_velocity_error_estimate",
+                                         "energy_residual", "check_energy_residual",
+                                         "dissipated", "agreement_horizon", "t_end",
+                                         "check_wall_s")}
+    return Accuracy(**{k: float(v) for k, v in fields.items()},
+                    agreed_impacts=int(a["agreed_impacts"]), impacts=int(a["impacts"]),
+                    check_impacts=int(a["check_impacts"]), impacts_per_joint=counts,
+                    tolerance_sensitive=np.asarray(group["tolerance_sensitive"][()], dtype=bool))
 
 
 # ---------------------------------------------------------------------------------------- CSV
