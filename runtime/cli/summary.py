@@ -42,6 +42,30 @@ def contact_lines(result: Any) -> list[str]:
     return lines
 
 
+def film_lines(result: Any) -> list[str]:
+    """Per lubricated joint: the largest eccentricity ratio, and whether the film went above
+    its transition (where it is regularised, so that value depends on the transition)."""
+    names = list(result.parameter_names)
+    if "lubrication.transition" not in names or not len(result.clearance_joints):
+        return []
+    transition = float(result.parameters[names.index("lubrication.transition")])
+    ratio = np.linalg.norm(result.eccentricity, axis=2) / result.radial_clearance
+    lines = []
+    for k, joint in enumerate(result.clearance_joints):
+        largest = float(ratio[:, k].max())
+        if largest <= transition:
+            lines.append(f"  joint {joint} film: largest eccentricity ratio {largest:.4g} "
+                         f"(sampled {_output_step_text(result)}), below the film's transition "
+                         f"{transition:g}")
+            continue
+        first = float(result.t[np.argmax(ratio[:, k] > transition)])
+        lines.append(f"  joint {joint} film: eccentricity ratio above the film's transition "
+                     f"{transition:g} from t = {first:.4g} s (largest {largest:.4g}): the film "
+                     "is regularised there, so how far it closes depends on "
+                     "lubrication.transition, not on the film")
+    return lines
+
+
 def summary(result: Any) -> str:
     """A few lines a person reads after a run."""
     st = result.stats
@@ -59,6 +83,7 @@ def summary(result: Any) -> str:
     if result.accuracy is not None:
         lines += result.accuracy.lines()
     lines += contact_lines(result)
+    lines += film_lines(result)
     for k, j in enumerate(result.wear.joints if result.wear is not None else ()):
         wear = result.wear
         lines.append(f"  joint {j} wear: volume {wear.volume[k]:.4g} m^3, deepest "
