@@ -4,7 +4,7 @@ Hertz's pin-in-hole law K d^1.5 (see :mod:`jointplay.derive.laws`) is strictly t
 sphere in a spherical seat: it ignores the axial length of a pin in a hole. The laws here are
 the ones the clearance-joint literature uses for that conformal line contact. Which is the
 stiffer depends on the length: on the default joint (10 mm steel bearing, 0.03 mm clearance)
-with a 20 mm journal, Hertz's force is 4 % of Johnson's at d = 10 nm, 21 % at 1 um and 28 % at
+with a 20 mm journal, Hertz's force is 4 % of Johnson's at d = 10 nm, 21 % at 1 um and 27 % at
 3 um (Liu's 7 %, 35 %, 44 %): Hertz is the softest law there, not the stiffest (measured with
 ``tests/test_cylindrical.py``'s reference formulas; README, "Contact laws for a pin in a
 hole"). With the radial clearance c = Rb - Rj,

@@ -334,3 +334,23 @@ def test_elastic_runs_conserve_energy(kind: str) -> None:
     assert_finite(result)
     assert len(result.impacts) >= 4
     assert relative_balance(result) < 1e-6
+
+
+def test_the_stated_ratios_to_johnson_on_the_default_joint() -> None:
+    """The README's and derive/cylindrical.py's statements, recomputed from the independent
+    formulas: on the default joint (c = 30 um, 20 mm journal) Hertz's force is 4 %, 21 % and
+    27 % of Johnson's at 10 nm, 1 um and 3 um (Liu's 7 %, 35 %, 44 %), and Pereira's 0.59,
+    0.85 and 1.08-1.10 of it at 10 nm, 100 nm and 1-3 um."""
+    c, rb = 30e-6, 10e-3
+    hertz = 4 / 3 * E_STAR * math.sqrt(rb * (rb - c) / c)
+
+    def ratio(law: Callable[[float, float, float, float], float], d: float) -> float:
+        return law(d, c, LENGTH, E_STAR) / johnson_force(d, c, LENGTH, E_STAR)
+
+    assert LENGTH == 0.02
+    for d, h, lu in ((1e-8, 0.04, 0.07), (1e-6, 0.21, 0.35), (3e-6, 0.27, 0.44)):
+        assert hertz * d**1.5 / johnson_force(d, c, LENGTH, E_STAR) == pytest.approx(h, abs=0.005)
+        assert ratio(liu_force, d) == pytest.approx(lu, abs=0.005)
+    assert ratio(pereira_force, 1e-8) == pytest.approx(0.59, abs=0.005)
+    assert ratio(pereira_force, 1e-7) == pytest.approx(0.85, abs=0.005)
+    assert all(1.075 <= ratio(pereira_force, d) <= 1.105 for d in np.linspace(1e-6, 3e-6, 9))
