@@ -137,6 +137,7 @@ def test_cli_states_accuracy_by_default_and_skips_on_request(
     assert "impact sequence agrees with the check up to t = " in out
     assert "tolerance-sensitive" in out
     assert "counts that differ" in out or "impacts agree" in out
+    assert "tolerance-sensitive)," in out  # per joint, beside its impact count
     assert main(["simulate", "--t-end", "0.03", "--no-verify"]) == 0
     assert "accuracy" not in capsys.readouterr().out
 

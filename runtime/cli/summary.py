@@ -15,6 +15,17 @@ def _output_step_text(result: Any) -> str:
     return f"every {step * 1e3:.4g} ms" if step >= 1e-4 else f"every {step * 1e6:.4g} us"
 
 
+def _sensitive_note(result: Any, joint: int) -> str:
+    """' (N tolerance-sensitive)' for a joint's impacts after the agreement horizon of the
+    run's accuracy check, '' without a check or without such impacts."""
+    accuracy = getattr(result, "accuracy", None)
+    if accuracy is None:
+        return ""
+    sensitive = int(np.count_nonzero(accuracy.tolerance_sensitive
+                                     & (np.asarray(result.impacts.joint) == joint)))
+    return f" ({sensitive} tolerance-sensitive)" if sensitive else ""
+
+
 def contact_lines(result: Any) -> list[str]:
     """Per clearance joint: impacts, largest approach speed, and the located peak force and
     penetration with their times (from the impact table); a sampled value says it is one."""
@@ -26,6 +37,7 @@ def contact_lines(result: Any) -> list[str]:
             lines.append(f"  joint {c.joint}: no impacts, no contact")
             continue
         head = f"  joint {c.joint}: {c.impacts} impacts"
+        head += _sensitive_note(result, c.joint)
         if c.impacts:
             head += (f", largest approach speed {c.max_approach_speed:.4g} m/s (onset at "
                      f"{c.max_approach_speed_time:.7g} s)")
