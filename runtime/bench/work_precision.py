@@ -158,7 +158,8 @@ def cheapest_meeting_working_accuracy(rows: Sequence[dict[str, Any]],
     """The row of least ``cost`` (median CPU time, or a count such as
     ``rhs_evaluations``, which other work on the machine does not change) that meets the
     working accuracy (None if none)."""
-    meeting = [r for r in rows if r.get("working_accuracy") == "yes"]
+    meeting = [r for r in rows if r.get("working_accuracy") == "yes"
+               and r.get("config") in ("sweep", "scene settings")]  # the scene's own model
     return min(meeting, key=lambda r: r[cost]) if meeting else None
 
 
