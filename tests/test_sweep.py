@@ -391,13 +391,13 @@ def test_sweep_cases_can_state_their_accuracy(tmp_path: Path) -> None:
 
     (tmp_path / "tiny.toml").write_text(TINY.format(friction="coulomb"), encoding="utf-8")
     path = tmp_path / "sweep.toml"
-    path.write_text('scene = "tiny.toml"\n[parameters."friction.mu"]\nvalues = [0.0, 0.1]\n',
+    path.write_text('scene = "tiny.toml"\n[parameters."friction.mu"]\nvalues = [0.1]\n',
                     encoding="utf-8")
     sweep = load_sweep(path)
     plain = _columns(run_sweep(sweep, tmp_path / "out", workers=0, plots=False).table)
     assert "tip_error_estimate" not in plain
     checked = run_sweep(sweep, tmp_path / "out", workers=0, plots=False, verify=True)
-    assert checked.ran == 2
+    assert checked.ran == 1
     table = _columns(checked.table)
     for k, case in enumerate(sweep.cases):
         alone = simulate(case.scene, verify=True).accuracy
