@@ -152,3 +152,21 @@ def test_cli_skips_an_expensive_check_unless_asked(capsys: pytest.CaptureFixture
     assert "accuracy not checked" in out and "--verify" in out
     assert main(["simulate", "--t-end", "0.01", "--verify"]) == 0
     assert "tip position error about" in capsys.readouterr().out
+
+
+def test_cli_keeps_the_run_when_the_check_stops(capsys: pytest.CaptureFixture[str],
+                                                monkeypatch: pytest.MonkeyPatch,
+                                                tmp_path: Path) -> None:
+    """A check that cannot finish leaves the run's own results, and says what is unknown."""
+    import jointplay.sim
+    from jointplay.common.errors import SimulationError
+
+    def stopped(*_args: object, **_kwargs: object) -> None:
+        raise SimulationError(0.001, "step size too small", 2)
+
+    monkeypatch.setattr(jointplay.sim, "with_accuracy", stopped)
+    out = tmp_path / "run.h5"
+    assert main(["simulate", "--t-end", "0.01", "--out", str(out)]) == 0
+    captured = capsys.readouterr()
+    assert "accuracy not checked" in captured.err and "step size too small" in captured.err
+    assert read_hdf5(out).accuracy is None
