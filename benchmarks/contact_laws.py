@@ -153,7 +153,8 @@ def main() -> int:
           "Command: `python benchmarks/contact_laws.py --out " + str(args.out) + "`", "",
           f"- paper scene, 2 s; cylindrical laws with L = {DEFAULT_LENGTH * 1e3:g} mm journals; "
           f"errors and forces from bdf at rtol = atol = {TIGHT:g}; CPU median of {REPEATS} "
-          "runs at the scene's settings (bdf, rtol 1e-6, atol 1e-5)",
+          f"runs at the scene's settings (bdf, rtol {default_scene().run.rtol:g}, atol "
+          f"{default_scene().run.atol:g})",
           *(f"- {k}: {v}" for k, v in machine_facts().items()), "",
           markdown_table(rows, COLUMNS), ""]
     atomic_write_text(out / "contact_laws.md", "\n".join(md))

@@ -26,13 +26,15 @@ from jointplay.sim import load_scene_model, simulate
 
 SCENES = Path(__file__).resolve().parent.parent / "scenes"
 # (name, scene file, parameters changed): the lubricated arm also with the film frozen from
-# other eccentricity ratios, to show how much the transition decides.
+# other eccentricity ratios: 0.95 (the former default, which the arm exceeds, so what it
+# reports there is the regularisation's) and 0.999 (above the scene's 0.99: no change where
+# the film is never frozen).
 CASES = (("dry", "paper_4dof.toml", {}),
          ("lubricated", "paper_4dof_lubricated.toml", {}),
-         ("lubricated, transition 0.9", "paper_4dof_lubricated.toml",
-          {"lubrication.transition": 0.9}),
-         ("lubricated, transition 0.99", "paper_4dof_lubricated.toml",
-          {"lubrication.transition": 0.99}))
+         ("lubricated, transition 0.95", "paper_4dof_lubricated.toml",
+          {"lubrication.transition": 0.95}),
+         ("lubricated, transition 0.999", "paper_4dof_lubricated.toml",
+          {"lubrication.transition": 0.999}))
 REPEATS = 3
 
 

@@ -2,7 +2,8 @@
 
 Normal force, continuous dissipative Hertz family (Lankarani & Nikravesh 1990, J. Mech. Des.
 112:369; Hunt & Crossley 1975, J. Appl. Mech. 42:440; Gonthier et al. 2004, Multibody Syst.
-Dyn. 11:209; Flores et al. 2011, Mech. Mach. Theory 46:1564):
+Dyn. 11:209; Flores, Machado, Silva & Martins 2011, "On the continuous contact force models
+for soft materials in multibody dynamics", Multibody Syst. Dyn. 25:357-375):
 
     F_n = max(0, K d+^n (1 + x(ce) d'/v-)),   d+ = max(0, |e| - c),
 

@@ -13,6 +13,7 @@ from jointplay.common.errors import (
     JointplayError,
     SimulationError,
 )
+from jointplay.results.accuracy import Accuracy
 from jointplay.results.records import Impacts, SimulationResult
 from jointplay.results.solution import DenseSolution
 from jointplay.results.write import read
@@ -49,6 +50,7 @@ __version__ = "0.1.0"
 _moved.install()
 
 __all__ = [
+    "Accuracy",
     "BuildError",
     "Contact",
     "Coordinate",

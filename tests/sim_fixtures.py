@@ -83,3 +83,23 @@ def assert_finite(result: SimulationResult) -> None:
         assert np.all(np.isfinite(value)), f"{name} is not finite"
     for name, value in result.energy.items():
         assert np.all(np.isfinite(value)), f"energy {name} is not finite"
+
+
+def restitution_closed_form(x: float) -> float:
+    """The exact restitution of one impact under F = F_e(d) (1 + x d'/v-), any elastic law.
+
+    With U the elastic potential (dU = F_e dd) and s = d'/v-, one impact obeys
+    m v-^2 s ds/dU = -(1 + x s); U returns to 0 when s has gone from 1 to -e, so
+    int_1^-e s / (1 + x s) ds = 0, i.e. x (1 + e) = ln((1 + x) / (1 - x e)) (x e < 1 keeps
+    the force non-negative, so the clipping at 0 never acts). Solved for e by bracketing.
+    """
+    from scipy import optimize
+
+    if x == 0:
+        return 1.0
+
+    def residual(e: float) -> float:
+        return x * (1 + e) - math.log((1 + x) / (1 - x * e))
+
+    upper = min(1.0, 1 / x) * (1 - 1e-15)
+    return float(optimize.brentq(residual, 0.0, upper, xtol=1e-17, rtol=1e-15))

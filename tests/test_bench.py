@@ -286,3 +286,25 @@ def test_error_measures() -> None:
     assert errors["err_final_state"] == pytest.approx(0.5)
     with pytest.raises(ValueError, match="output times"):
         bench.tip_errors(cast(Any, SimpleNamespace(**{**vars(ref), "t": t[:3]})), cast(Any, ref))
+
+
+def test_atols_pair_with_every_rtol_and_the_cheapest_working_setting_is_named() -> None:
+    from jointplay.bench.work_precision import cheapest_meeting_working_accuracy
+
+    scene = default_scene()
+    configs = bench.sweep_configurations(scene, ["bdf", "rk4"], [1e-5, 1e-6], [1e-5],
+                                   atols=[1e-6, 1e-7])
+    assert [(c.run.integrator, c.run.rtol, c.run.atol) for c in configs[:4]] == [
+        ("bdf", 1e-5, 1e-6), ("bdf", 1e-5, 1e-7), ("bdf", 1e-6, 1e-6), ("bdf", 1e-6, 1e-7)]
+    assert configs[4].run.integrator == "rk4" and len(configs) == 5
+    rows = [{"working_accuracy": "yes", "cpu_median_s": 0.05, "name": "slow", "config": "sweep"},
+            {"working_accuracy": "no", "cpu_median_s": 0.01, "name": "inaccurate",
+             "config": "sweep"},
+            {"working_accuracy": "yes", "cpu_median_s": 0.03, "name": "cheapest",
+             "config": "scene settings"},
+            {"working_accuracy": "yes", "cpu_median_s": 0.001, "name": "another model",
+             "config": "lubrication: sweep"}]
+    best = cheapest_meeting_working_accuracy(rows)
+    assert best is not None and best["name"] == "cheapest"
+    assert cheapest_meeting_working_accuracy(rows[1:2]) is None
+    assert cheapest_meeting_working_accuracy(rows[3:]) is None  # an effect's rows: not the scene

@@ -53,17 +53,8 @@ def pereira_force(d: float, c: float, length: float, e_star: float) -> float:
     return (0.965 * c_mm + 0.0965) / c_mm * l_mm * e_mpa * d_mm**n
 
 
-def johnson_force_fast(d: float, c: float, length: float, e_star: float) -> float:
-    """Johnson's law through scipy's Lambert W (double precision): for ODE right-hand sides."""
-    from scipy.special import lambertw
-
-    w = -lambertw(-math.exp(-(math.log(4 * c / d) - 1)), -1).real
-    return math.pi * length * e_star * d / w
-
-
 REFERENCE: dict[str, Callable[[float, float, float, float], float]] = {
     "johnson": johnson_force, "liu": liu_force, "pereira": pereira_force}
-FAST = REFERENCE | {"johnson": johnson_force_fast}
 
 
 # ---- the generated expressions, as CasADi functions of (d, c, L, E*) ----------------------
@@ -248,6 +239,22 @@ def test_pereira_refuses_clearances_outside_its_fitted_range() -> None:
                                     if j.has_clearance else j for j in robot.joints))
 
 
+def test_pereira_range_is_checked_on_parameters_given_at_run_time() -> None:
+    """A clearance set through simulate(scene, parameters=...) (or a whole vector, or a
+    Stepper) is held to the same range as one read from the scene: a 1 um clearance used to
+    run into NaN states with a message about rtol."""
+    from jointplay.scene.definition import default_scene
+    from jointplay.sim import Stepper, simulate
+
+    scene = default_scene().with_robot(_paper_robot("pereira")).with_run(t_end=0.002)
+    for radius in (10.0e-3 - 1e-6, 10.0e-3 - 20e-3 + 1e-9):
+        with pytest.raises(DescriptionError, match=r"joint2.*Pereira contact law.*5e-06 m"):
+            simulate(scene, parameters={"joint2.journal_radius": radius})
+    with pytest.raises(DescriptionError, match=r"joint3.*Pereira"):
+        Stepper(scene, parameters={"joint3.bearing_radius": 9.971e-3})
+    simulate(scene, parameters={"joint2.journal_radius": 10.0e-3 - 6e-6})  # inside: runs
+
+
 # ---- single impacts -------------------------------------------------------------------------
 
 MASS, SPEED = 2.0, 0.2
@@ -287,37 +294,20 @@ def test_undamped_impact_matches_the_energy_closed_form(kind: str) -> None:
     assert bool(phase.separated[0])
 
 
-def _reference_restitution(kind: str, x: float) -> float:
-    """One impact of m d'' = -F_e(d) (1 + x d'/v-), clipped at 0, integrated by scipy's
-    DOP853 at rtol 1e-12 until d returns to 0: exit over entry speed."""
-    force = FAST[kind]
-
-    def rhs(_t: float, y: np.ndarray) -> list[float]:
-        d, v = y
-        f = force(d, CLEARANCE, LENGTH, E_STAR) * (1 + x * v / SPEED) if d > 0 else 0.0
-        return [v, -max(f, 0.0) / MASS]
-
-    def out(_t: float, y: np.ndarray) -> float:
-        return float(y[0])
-
-    out.terminal, out.direction = True, -1  # type: ignore[attr-defined]
-    sol = integrate.solve_ivp(rhs, (0, 1e-3), [1e-300, SPEED], method="DOP853", rtol=1e-12,
-                              atol=1e-22, events=out, first_step=1e-10)
-    return float(-sol.y_events[0][0][1] / SPEED)
-
-
 @pytest.mark.parametrize("kind", LAWS)
 def test_restitution_of_a_damped_impact(kind: str) -> None:
-    """Flores' damping at ce = 0.5: the simulated restitution equals a DOP853 run of the
-    single-degree-of-freedom impact at rtol 1e-12 (to 1e-7; measured <= 6e-9), and, as the
-    damping form chi = x F_e / v- makes it independent of the elastic law, the restitution
-    of the same impact under Hertz's law (to 1e-7; measured <= 3e-9)."""
+    """Flores' damping at ce = 0.5: as the damping form chi = x F_e / v- makes the rebound
+    independent of the elastic law, the simulated restitution is the exact closed form
+    x (1 + e) = ln((1 + x) / (1 - x e)) (sim_fixtures.restitution_closed_form; to 1e-7,
+    measured <= 6e-9), and equal to that of the same impact under Hertz's law."""
+    from sim_fixtures import restitution_closed_form
+
     from jointplay.derive.laws import damping_factor
 
     x = float(damping_factor("flores", sp.Float(0.5)))
     got = _single_impact(kind, "flores", 0.5).impacts.restitution[0]
     hertz = _single_impact("hertz", "flores", 0.5).impacts.restitution[0]
-    assert got == pytest.approx(_reference_restitution(kind, x), rel=1e-7)
+    assert got == pytest.approx(restitution_closed_form(x), rel=1e-7)
     assert got == pytest.approx(hertz, rel=1e-7)
 
 
@@ -344,3 +334,23 @@ def test_elastic_runs_conserve_energy(kind: str) -> None:
     assert_finite(result)
     assert len(result.impacts) >= 4
     assert relative_balance(result) < 1e-6
+
+
+def test_the_stated_ratios_to_johnson_on_the_default_joint() -> None:
+    """The README's and derive/cylindrical.py's statements, recomputed from the independent
+    formulas: on the default joint (c = 30 um, 20 mm journal) Hertz's force is 4 %, 21 % and
+    27 % of Johnson's at 10 nm, 1 um and 3 um (Liu's 7 %, 35 %, 44 %), and Pereira's 0.59,
+    0.85 and 1.08-1.10 of it at 10 nm, 100 nm and 1-3 um."""
+    c, rb = 30e-6, 10e-3
+    hertz = 4 / 3 * E_STAR * math.sqrt(rb * (rb - c) / c)
+
+    def ratio(law: Callable[[float, float, float, float], float], d: float) -> float:
+        return law(d, c, LENGTH, E_STAR) / johnson_force(d, c, LENGTH, E_STAR)
+
+    assert LENGTH == 0.02
+    for d, h, lu in ((1e-8, 0.04, 0.07), (1e-6, 0.21, 0.35), (3e-6, 0.27, 0.44)):
+        assert hertz * d**1.5 / johnson_force(d, c, LENGTH, E_STAR) == pytest.approx(h, abs=0.005)
+        assert ratio(liu_force, d) == pytest.approx(lu, abs=0.005)
+    assert ratio(pereira_force, 1e-8) == pytest.approx(0.59, abs=0.005)
+    assert ratio(pereira_force, 1e-7) == pytest.approx(0.85, abs=0.005)
+    assert all(1.075 <= ratio(pereira_force, d) <= 1.105 for d in np.linspace(1e-6, 3e-6, 9))

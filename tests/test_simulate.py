@@ -82,6 +82,27 @@ def test_every_damping_law_over_the_restitution_range(law: str, ce: float) -> No
     assert relative_balance(result) < HARD_BALANCE
 
 
+@pytest.mark.parametrize("law", LAWS)
+def test_restitution_is_the_closed_form_for_every_exponent(law: str) -> None:
+    """One impact of a free journal at 0.2 m/s, no friction: for F = K d^n (1 + x d'/v-) the
+    rebound integrates exactly, x (1 + e) = ln((1 + x) / (1 - x e)), whatever n
+    (sim_fixtures.restitution_closed_form). Every damping law at a low and a high ce, with
+    n = 1, 1.5 and 2 as run-time parameters; rtol = atol = 1e-10 (measured deviation <= 1.2e-8)."""
+    from sim_fixtures import restitution_closed_form
+
+    from jointplay.derive.laws import damping_factor
+
+    scene = make_scene(pin_in_bearing(law=law, restitution=0.5), initial={"dex1": 0.2},
+                       t_end=2e-3, output_step=1e-4, rtol=1e-10, atol=1e-10)
+    for ce in (0.3, 0.95):
+        want = restitution_closed_form(float(damping_factor(law, ce)))
+        for n in (1.0, 1.5, 2.0):
+            result = simulate(scene, parameters={"contact.restitution": ce,
+                                                 "contact.exponent": n})
+            assert result.impacts.speed[0] == pytest.approx(0.2, rel=1e-9)
+            assert result.impacts.restitution[0] == pytest.approx(want, rel=5e-8), (ce, n)
+
+
 @pytest.mark.parametrize("mu", [0.0, 0.1, 0.3])
 def test_friction_including_sticking(mu: float) -> None:
     """Hanging at rest under gravity, then a slow drive: the journal sits on the bearing with

@@ -382,3 +382,26 @@ def test_contact_metrics_from_the_table() -> None:
     assert m["impacts"] == 6 and m["max_approach_speed"] == imp.speed.max()
     assert "joint 2: not located" in m["peak_note"] and "radau" in m["peak_note"]
     json.dumps(m, allow_nan=False)  # the case file stays plain JSON
+
+
+def test_sweep_cases_can_state_their_accuracy(tmp_path: Path) -> None:
+    """With verify, each case carries its own accuracy statement (the same numbers as the
+    case simulated alone with verify=True); a sweep finished without it runs again."""
+    from jointplay.sim import simulate
+
+    (tmp_path / "tiny.toml").write_text(TINY.format(friction="coulomb"), encoding="utf-8")
+    path = tmp_path / "sweep.toml"
+    path.write_text('scene = "tiny.toml"\n[parameters."friction.mu"]\nvalues = [0.1]\n',
+                    encoding="utf-8")
+    sweep = load_sweep(path)
+    plain = _columns(run_sweep(sweep, tmp_path / "out", workers=0, plots=False).table)
+    assert "tip_error_estimate" not in plain
+    checked = run_sweep(sweep, tmp_path / "out", workers=0, plots=False, verify=True)
+    assert checked.ran == 1
+    table = _columns(checked.table)
+    for k, case in enumerate(sweep.cases):
+        alone = simulate(case.scene, verify=True).accuracy
+        assert alone is not None
+        assert table["tip_error_estimate"][k] == alone.tip_error_estimate
+        assert table["agreement_horizon"][k] == alone.agreement_horizon
+        assert table["accuracy_energy_residual"][k] == alone.energy_residual

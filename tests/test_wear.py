@@ -4,7 +4,9 @@ The closed-form case: one link whose centre of mass sits on its joint, resting o
 of its bearing under gravity (at the static penetration, so the normal force is m g from the
 start) and spinning freely at a constant speed (no friction, no drive): the sliding speed is
 w Rj, so V = k m g w Rj T / H; on the bearing the depth is Hertz's ellipse at the bottom, on
-the journal it is uniform over whole turns.
+the journal it is uniform over whole turns. The damped case: impacts and rubbing on a bearing
+that turns, against the integral of the run's own normal force and sliding speed, and the
+wear's position in each surface's frame.
 """
 
 from __future__ import annotations
@@ -23,10 +25,14 @@ K_WEAR, HARDNESS, E, NU, G = 3.0e-4, 1.5e9, 207e9, 0.3, 9.81
 TURNS = 3
 
 
-def _static_penetration() -> float:
+def _stiffness() -> float:
+    """Hertz's pin-in-hole K of the joint (clearance-physics reference form)."""
     sigma = 2 * (1 - NU**2) / E
-    stiffness = 4 / (3 * sigma) * math.sqrt(RB * RJ / (RB - RJ))
-    return (MASS * G / stiffness) ** (1 / 1.5)
+    return 4 / (3 * sigma) * math.sqrt(RB * RJ / (RB - RJ))
+
+
+def _static_penetration() -> float:
+    return (MASS * G / _stiffness()) ** (1 / 1.5)
 
 
 def _scene(**run: float) -> object:
@@ -69,11 +75,63 @@ def test_volume_is_archard_closed_form(spinning) -> None:  # type: ignore[no-unt
     assert np.allclose(spinning.sliding_speed[:, 0], SPIN * RJ, rtol=1e-7)
 
 
-def test_volume_is_the_integral_of_the_depth(spinning) -> None:  # type: ignore[no-untyped-def]
-    wear = spinning.wear
-    for surface, radius in (("bearing", RB), ("journal", RJ)):
-        assert wear.integrated_volume(surface, [radius], [LENGTH])[0] == pytest.approx(
-            wear.volume[0], rel=1e-12)
+def _turning_scene() -> object:
+    """A turning bearing: link 1 spins at 20 rad/s about an ideal joint 1 and carries the
+    bearing of joint 2; link 2 (the journal) turns the other way relative to it. No gravity,
+    no drive; damped impacts (ce = 0.5) with friction (mu = 0.1) that decelerates sliding."""
+    return scene_from_dict({
+        "name": "turning_bearing",
+        "robot": {
+            "name": "turning_bearing",
+            "links": [{"length": 0.2, "mass": 1.0, "inertia": 0.01, "com": 0.0},
+                      {"length": 0.2, "mass": 1.0, "inertia": 0.004, "com": 0.1}],
+            "joints": [{"kind": "ideal"},
+                       {"kind": "clearance", "bearing_radius": RB, "journal_radius": RJ,
+                        "bearing_E": E, "journal_E": E, "bearing_nu": NU, "journal_nu": NU,
+                        "length": LENGTH}],
+            "gravity": {"enabled": False},
+            "contact": {"law": "lankarani-nikravesh", "restitution": 0.5, "exponent": 1.5},
+            "friction": {"law": "coulomb", "mu": 0.1, "v0": 1e-4, "v1": 1e-2},
+            "drive": {"enabled": False},
+            "wear": {"model": "archard", "coefficient": K_WEAR, "hardness": HARDNESS},
+        },
+        "initial": {"q1": 0.0, "dq1": 20.0, "q2": 0.0, "dq2": -15.0},
+        "run": {"t_end": 0.02, "output_step": 1e-6, "rtol": 1e-10, "atol": 1e-10},
+    })
+
+
+def test_damped_impacts_on_a_turning_bearing_wear_by_the_normal_force() -> None:
+    """Damped, rubbing impacts on a bearing that turns: the worn volume is k/H times the
+    integral of the normal force (damping included) times the sliding speed, taken here by
+    the trapezoidal rule from the run's own samples every 1 us (to 1e-5; measured 1.1e-7);
+    the elastic force K d^1.5 alone would give 0.75 % less (checked, so the test can tell).
+    Each surface's wear sits where the contact was in that surface's own frame: the centroid
+    of the bearing's depth is the F_n |v_t|-weighted mean contact angle in link 1's frame, the
+    journal's in link 2's (to 1e-3 rad, measured 5e-5; in the ground's frame it would be
+    0.18 rad off)."""
+    from scipy.integrate import trapezoid
+
+    result = simulate(_turning_scene())
+    wear = result.wear
+    assert wear is not None and len(result.impacts) >= 3
+    assert not np.all(result.impacts.separated)  # impacts, then sustained rubbing contact
+    rate = np.abs(result.sliding_speed[:, 0])
+    normal = result.normal_force[:, 0]
+    elastic = _stiffness() * np.maximum(result.penetration[:, 0], 0.0) ** 1.5
+    want = K_WEAR / HARDNESS * trapezoid(normal * rate, result.t)
+    elastic_only = K_WEAR / HARDNESS * trapezoid(elastic * rate, result.t)
+    assert wear.volume[0] == pytest.approx(want, rel=1e-5)
+    assert abs(elastic_only - want) > 100 * 1e-5 * want
+    angle = np.arctan2(result.eccentricity[:, 0, 1], result.eccentricity[:, 0, 0])
+    bins = (np.arange(WEAR_BINS) + 0.5) * 2 * math.pi / WEAR_BINS
+    frames = {"bearing": result.q[:, 0], "journal": result.q[:, 0] + result.q[:, 1]}
+    for surface, frame in frames.items():
+        expected = np.angle(trapezoid(normal * rate * np.exp(1j * (angle - frame)), result.t))
+        centroid = np.angle(np.sum(wear.depth(surface)[0] * np.exp(1j * bins)))
+        assert abs(np.angle(np.exp(1j * (centroid - expected)))) < 1e-3, surface
+    ground = np.angle(trapezoid(normal * rate * np.exp(1j * angle), result.t))
+    bearing = np.angle(np.sum(wear.depth("bearing")[0] * np.exp(1j * bins)))
+    assert abs(np.angle(np.exp(1j * (bearing - ground)))) > 0.1
 
 
 def test_bearing_depth_is_hertz_ellipse_at_the_bottom(spinning) -> None:  # type: ignore[no-untyped-def]

@@ -2,8 +2,8 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+ab8fac0d3209, casadi 3.8.2, sympy 1.14.0
- * input hash: 940d059182f088e2c3b5895ad381ebaeffb06485d41f1bd8cc4ca804b3572b3d
+ * generator: jointplay.derive 0.1.0+264b877a7099, casadi 3.8.2, sympy 1.14.0
+ * input hash: a7fcedf7abba3d05c149bc7f61d0ca2818ec66c6c211e0fe00f465c45ffe95cc
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

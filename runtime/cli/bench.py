@@ -183,8 +183,10 @@ def _work_precision_one(scene: Scene, args: argparse.Namespace, out: Path,
               file=sys.stderr)
     reference = reference_solution(scene, model, rtol=args.reference_rtol, check=args.check,
                                    check_step=args.check_step)
+    atols = positive_floats(args.atols, "--atols") if getattr(args, "atols", None) else []
     reference, rows = work_precision(scene, model, methods=methods, rtols=rtols, steps=steps,
-                                     repeats=repeats, reference=reference, quiet=args.quiet)
+                                     repeats=repeats, reference=reference, quiet=args.quiet,
+                                     atols=atols)
     if args.effects:
         from jointplay.bench.effects import work_precision_rows
 
@@ -295,6 +297,9 @@ def _register_work_precision(sub: Any) -> None:
                     help="comma list of bdf, cvodes, idas, rk4, radau (default all)")
     wp.add_argument("--rtols", help="adaptive tolerances, atol = rtol (default "
                                     f"{','.join(f'{r:g}' for r in DEFAULT_RTOLS)})")
+    wp.add_argument("--atols", help="pair every adaptive rtol with each of these atols "
+                                    "(default atol = rtol): the search for the cheapest "
+                                    "setting that meets the working accuracy")
     wp.add_argument("--steps", help="fixed steps in s, each dividing the output step (default "
                                     f"{','.join(f'{h:g}' for h in DEFAULT_STEPS)})")
     wp.add_argument("--reference-rtol", type=float, default=REFERENCE_RTOL,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -11,13 +12,19 @@ import numpy as np
 
 from jointplay.cli.args import check_writable_dir, run_flag, scene_argument, scene_from_args
 from jointplay.cli.summary import summary
-from jointplay.common.errors import DescriptionError
+from jointplay.common.errors import DescriptionError, SimulationError
 from jointplay.common.hints import did_you_mean
 
 if TYPE_CHECKING:
     from jointplay.common.files import OutputPlan
     from jointplay.results.records import SimulationResult
     from jointplay.scene.definition import Scene
+
+# The accuracy check runs by default when it should take at most this long (wall s); it is
+# estimated as CHECK_COST_RATIO times the run's own integration (10x tighter tolerances cost
+# 1.3-2x on the default scene: 23 -> 40 ms at 1e-6 / 1e-5, 95 -> 123 ms at 1e-9).
+VERIFY_BUDGET_S = 5.0
+CHECK_COST_RATIO = 3.0
 
 # Run settings --set may change (also --integrator, --t-end, ... for the common ones).
 _RUN_NUMBERS = ("t_end", "output_step", "rtol", "atol", "step", "max_steps", "integrator")
@@ -48,6 +55,13 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                        help="override a robot parameter, e.g. --set friction.mu=0.1 "
                             "(repeatable; never recompiles), or a run setting, e.g. --set "
                             "run.output_step=1e-6")
+    verify = p_sim.add_mutually_exclusive_group()
+    verify.add_argument("--verify", dest="verify", action="store_true", default=None,
+                        help="check the run against the same run at tolerances 10x tighter "
+                             "and state its accuracy, however long the check takes (default: "
+                             f"checked when it should take under {VERIFY_BUDGET_S:g} s)")
+    verify.add_argument("--no-verify", dest="verify", action="store_false",
+                        help="skip the accuracy check")
     p_sim.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p_sim.set_defaults(func=cmd_simulate)
     return p_sim
@@ -65,12 +79,39 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         print(f"scene {scene.name}: model {model.name} ready in "
               f"{time.perf_counter() - t0:.2f} s ({', '.join(model.coordinates)})")
     result = simulate(scene, model=model, compare_ideal=args.compare_ideal, quiet=quiet)
+    result = _checked(result, scene, model, args.verify, quiet)
     written = _write(result, args, plan, quiet)
     if not quiet:
         print(summary(result))
         for path in written:
             print(f"wrote {path}")
     return 0
+
+
+def _checked(result: SimulationResult, scene: Scene, model: Any, verify: bool | None,
+             quiet: bool) -> SimulationResult:
+    """The result with its accuracy statement, unless skipped (``--no-verify``) or, without
+    ``--verify``, too expensive: then the reason is printed."""
+    from jointplay.sim import with_accuracy
+
+    if verify is False:
+        return result
+    estimate = CHECK_COST_RATIO * float(result.stats["wall_time_s"])
+    if verify is None and estimate > VERIFY_BUDGET_S:
+        if not quiet:
+            print(f"accuracy not checked: the check (the same run at tolerances 10x tighter) "
+                  f"would take about {estimate:.0f} s; ask for it with --verify, or skip this "
+                  "note with --no-verify")
+        return result
+    if not quiet:
+        print(f"checking accuracy: the same run at tolerances 10x tighter (about "
+              f"{estimate:.1f} s; --no-verify skips it)")
+    try:
+        return with_accuracy(result, scene, model=model, quiet=quiet)
+    except SimulationError as err:  # the run itself is fine: keep it, say what is not known
+        print(f"accuracy not checked: the check (the same run at tolerances 10x tighter) "
+              f"stopped: {err}", file=sys.stderr)
+        return result
 
 
 def _scene(args: argparse.Namespace) -> tuple[Scene, OutputPlan]:

@@ -15,6 +15,17 @@ def _output_step_text(result: Any) -> str:
     return f"every {step * 1e3:.4g} ms" if step >= 1e-4 else f"every {step * 1e6:.4g} us"
 
 
+def _sensitive_note(result: Any, joint: int) -> str:
+    """' (N tolerance-sensitive)' for a joint's impacts after the agreement horizon of the
+    run's accuracy check, '' without a check or without such impacts."""
+    accuracy = getattr(result, "accuracy", None)
+    if accuracy is None:
+        return ""
+    sensitive = int(np.count_nonzero(accuracy.tolerance_sensitive
+                                     & (np.asarray(result.impacts.joint) == joint)))
+    return f" ({sensitive} tolerance-sensitive)" if sensitive else ""
+
+
 def contact_lines(result: Any) -> list[str]:
     """Per clearance joint: impacts, largest approach speed, and the located peak force and
     penetration with their times (from the impact table); a sampled value says it is one."""
@@ -26,6 +37,7 @@ def contact_lines(result: Any) -> list[str]:
             lines.append(f"  joint {c.joint}: no impacts, no contact")
             continue
         head = f"  joint {c.joint}: {c.impacts} impacts"
+        head += _sensitive_note(result, c.joint)
         if c.impacts:
             head += (f", largest approach speed {c.max_approach_speed:.4g} m/s (onset at "
                      f"{c.max_approach_speed_time:.7g} s)")
@@ -39,6 +51,30 @@ def contact_lines(result: Any) -> list[str]:
             lines.append(f"    sampled {_output_step_text(result)} (not the peak): normal "
                          f"force up to {c.sampled_peak_force:.4g} N, penetration up to "
                          f"{c.sampled_max_penetration * 1e6:.4g} um")
+    return lines
+
+
+def film_lines(result: Any) -> list[str]:
+    """Per lubricated joint: the largest eccentricity ratio, and whether the film went above
+    its transition (where it is regularised, so that value depends on the transition)."""
+    names = list(result.parameter_names)
+    if "lubrication.transition" not in names or not len(result.clearance_joints):
+        return []
+    transition = float(result.parameters[names.index("lubrication.transition")])
+    ratio = np.linalg.norm(result.eccentricity, axis=2) / result.radial_clearance
+    lines = []
+    for k, joint in enumerate(result.clearance_joints):
+        largest = float(ratio[:, k].max())
+        if largest <= transition:
+            lines.append(f"  joint {joint} film: largest eccentricity ratio {largest:.4g} "
+                         f"(sampled {_output_step_text(result)}), below the film's transition "
+                         f"{transition:g}")
+            continue
+        first = float(result.t[np.argmax(ratio[:, k] > transition)])
+        lines.append(f"  joint {joint} film: eccentricity ratio above the film's transition "
+                     f"{transition:g} from t = {first:.4g} s (largest {largest:.4g}): the film "
+                     "is regularised there, so how far it closes depends on "
+                     "lubrication.transition, not on the film")
     return lines
 
 
@@ -56,7 +92,10 @@ def summary(result: Any) -> str:
         f"(drive work {result.energy['drive_work'][-1]:.4g} J, dissipated "
         f"{result.energy['dissipated'][-1]:.4g} J)",
     ]
+    if result.accuracy is not None:
+        lines += result.accuracy.lines()
     lines += contact_lines(result)
+    lines += film_lines(result)
     for k, j in enumerate(result.wear.joints if result.wear is not None else ()):
         wear = result.wear
         lines.append(f"  joint {j} wear: volume {wear.volume[k]:.4g} m^3, deepest "

@@ -49,7 +49,8 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         print(f"sweep {sweep.name}: {len(sweep.cases)} case(s) of scene {sweep.scene.name} "
               f"({sweep.mode} of {', '.join(sweep.swept_names)}) on {where}")
     result = run_sweep(sweep, args.out, workers=args.workers, scheduler=args.scheduler,
-                       series=args.series, retry_failed=args.retry_failed, quiet=quiet)
+                       series=args.series, retry_failed=args.retry_failed, quiet=quiet,
+                       verify=args.verify)
     if not quiet:
         print(f"{result.cases} case(s): {result.ran} run, {result.reused} reused from "
               f"{Path(args.out) / CASES_DIR}, {result.failed} failed; "
@@ -80,6 +81,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         help="also write every case's full time series (OUT/series/KEY.h5)")
     parser.add_argument("--retry-failed", action="store_true",
                         help="run cases that failed before again (they are kept otherwise)")
+    parser.add_argument("--verify", action="store_true",
+                        help="check every case against the same case at tolerances 10x "
+                             "tighter (about twice the cost): adds the columns "
+                             "tip_error_estimate, agreement_horizon, accuracy_energy_residual")
     parser.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     parser.set_defaults(func=cmd_sweep)
     return parser

@@ -19,7 +19,7 @@ Layout (``format = "jointplay-result"``, ``format_version = 2``):
   ``scene_name``, ``integrator``, every string metadata item under its own name, the rest as
   JSON in ``metadata_json``, the solver statistics as JSON in ``solver_stats``);
 * the ideal-joint counterpart in the group ``/ideal`` (same layout), and the optional groups of
-  :data:`OPTIONAL_GROUPS` (``/wear`` today) when the result holds them.
+  :data:`OPTIONAL_GROUPS` (``/wear``, ``/accuracy``) when the result holds them.
 
 Adding an optional part of a result to the file is one entry in :data:`OPTIONAL_GROUPS`: the
 result's attribute name, a function writing the value into a new group and one reading it back
@@ -132,7 +132,51 @@ def _read_wear(group: Any) -> Any:
                        volume=group.variables["volume"][...])
 
 
-OPTIONAL_GROUPS: dict[str, OptionalGroup] = {"wear": OptionalGroup(_write_wear, _read_wear)}
+def _write_accuracy(group: Any, accuracy: Any) -> None:
+    """``/accuracy``: the statement's numbers as attributes (SI units: ``tip_error_estimate``
+    in m, ``agreement_horizon`` in s, ``energy_residual`` in J, ...), the per-joint impact
+    counts of the run and of its check, and one tolerance-sensitive flag per impact."""
+    group.attrs["comment"] = ("the run checked against the same run at tolerances 10x "
+                              "tighter: estimated errors, energy residuals, agreement horizon")
+    for key, value in accuracy.attributes().items():
+        group.attrs[key] = value
+    joints = sorted(accuracy.impacts_per_joint)
+    flags = np.asarray(accuracy.tolerance_sensitive, dtype=bool)
+    group.dimensions = {"joint": len(joints), "impact": flags.size}
+    _variable(group, "joint", ("joint",), np.asarray(joints, dtype=np.int64), "1",
+              "1-based number of the clearance joint")
+    _variable(group, "impact", ("impact",), np.arange(flags.size, dtype=np.int64), "1",
+              "index of the contact phase (the row of the impacts table)")
+    for name, column, what in (("count_run", 0, "this run"), ("count_check", 1, "the check")):
+        _variable(group, name, ("joint",),
+                  np.asarray([accuracy.impacts_per_joint[j][column] for j in joints],
+                             dtype=np.int64), "1", f"impacts of {what} at each joint")
+    _variable(group, "tolerance_sensitive", ("impact",), flags.astype(np.int8), "1",
+              "1: the impact is at or after the agreement horizon (changes with tolerance)")
+
+
+def _read_accuracy(group: Any) -> Any:
+    from jointplay.results.accuracy import Accuracy
+
+    a = dict(group.attrs)
+    joints = [int(j) for j in group.variables["joint"][...]]
+    counts = {j: (int(r), int(c)) for j, r, c in zip(
+        joints, group.variables["count_run"][...], group.variables["count_check"][...],
+        strict=True)}
+    fields = ("rtol", "atol", "check_rtol", "check_atol", "tip_error_estimate",
+              "tip_velocity_error_estimate", "energy_residual", "check_energy_residual",
+              "dissipated", "agreement_horizon", "t_end", "check_wall_s")
+    return Accuracy(**{k: float(a[k]) for k in fields},
+                    agreed_impacts=int(a["agreed_impacts"]), impacts=int(a["impacts"]),
+                    check_impacts=int(a["check_impacts"]), impacts_per_joint=counts,
+                    tolerance_sensitive=np.asarray(group.variables["tolerance_sensitive"][...],
+                                                   dtype=bool))
+
+
+OPTIONAL_GROUPS: dict[str, OptionalGroup] = {
+    "wear": OptionalGroup(_write_wear, _read_wear),
+    "accuracy": OptionalGroup(_write_accuracy, _read_accuracy),
+}
 """Result attribute -> how its value is stored in the group of that name (None: no group)."""
 
 

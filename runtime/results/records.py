@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 if TYPE_CHECKING:
+    from jointplay.results.accuracy import Accuracy
     from jointplay.results.solution import DenseSolution
     from jointplay.results.wear import WearProfile
 
@@ -147,6 +148,7 @@ class SimulationResult:
     metadata: dict[str, Any] = field(default_factory=dict)  # scene text, versions, model hash
     ideal: SimulationResult | None = None  # the same scene with ideal joints (--compare-ideal)
     wear: WearProfile | None = None  # Archard wear of the clearance joints, when compiled
+    accuracy: Accuracy | None = None  # the run checked at 10x tighter tolerances (verify=True)
 
     @property
     def n_samples(self) -> int:

@@ -10,6 +10,7 @@ closed loops.
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
@@ -37,7 +38,8 @@ from jointplay.sim.problem import (
 )
 from jointplay.store.model import Model
 
-__all__ = ["METHODS", "Stepper", "load_scene_model", "simulate"]
+__all__ = ["METHODS", "Stepper", "load_scene_model", "simulate", "tighter_settings",
+           "with_accuracy"]
 
 # One interface for every integration method: (problem, x0, trajectory to fill, statistics,
 # progress bar) -> the contact-phase table, or None where the method records onsets only
@@ -49,12 +51,17 @@ METHODS: dict[str, Method] = {"bdf": run_bdf, "cvodes": _run_adaptive, "idas": _
 
 def simulate(scene: Scene, *, model: Model | None = None,
              parameters: Mapping[str, float] | Sequence[float] | None = None,
-             compare_ideal: bool = False, quiet: bool = True) -> SimulationResult:
+             compare_ideal: bool = False, quiet: bool = True,
+             verify: bool = False) -> SimulationResult:
     """Simulate ``scene`` and return every output as numpy arrays.
 
     ``parameters`` overrides numbers of the scene's robot by name (``{"friction.mu": 0.1}``)
     or replaces the whole vector; this never recompiles. ``compare_ideal`` also simulates the
-    same scene with ideal joints (``result.ideal``). Raises :class:`SimulationError` with the
+    same scene with ideal joints (``result.ideal``). ``verify`` also runs the scene at
+    tolerances 10x tighter (fixed-step methods: a 10x smaller step) and states the first
+    run's accuracy in ``result.accuracy`` (:class:`jointplay.Accuracy`: estimated tip error,
+    energy residuals, the agreement horizon of the impact sequence and which impacts are
+    tolerance-sensitive); it costs that second run. Raises :class:`SimulationError` with the
     time, the joint and the cause when the integration cannot go on.
     """
     from tqdm import tqdm
@@ -102,11 +109,48 @@ def simulate(scene: Scene, *, model: Model | None = None,
             raise SimulationError(err.time, cause) from None
     wall = time.perf_counter() - start
     counts: dict[str, Any] = dict(stats.counts)
-    from jointplay.sim.dense import attach
-
     result = _assemble(pr, traj, t, counts, wall, ideal_result, phases)
     check_result(result, pr)
+    if verify:
+        result = with_accuracy(result, scene, model=model, parameters=parameters, quiet=quiet)
+    # Last: the dense output is attached to this very object (a dataclass replace drops it).
+    from jointplay.sim.dense import attach
+
     return attach(result, pr, traj, x0)
+
+
+def tighter_settings(scene: Scene) -> dict[str, float]:
+    """The run settings of the accuracy check: tolerances (or the fixed step) 10x tighter."""
+    from jointplay.results.accuracy import TIGHTER
+
+    run = scene.run
+    if run.integrator in ADAPTIVE:
+        return {"rtol": run.rtol / TIGHTER, "atol": run.atol / TIGHTER}
+    return {"step": run.step / TIGHTER}
+
+
+def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None = None,
+                  parameters: Mapping[str, float] | Sequence[float] | None = None,
+                  quiet: bool = True) -> SimulationResult:
+    """``result`` (a run of ``scene`` with ``parameters``) with its accuracy statement, from
+    a second run at tolerances 10x tighter: what ``simulate(..., verify=True)`` does, for a
+    run already made (the CLI decides after the first run whether the check is affordable)."""
+    from dataclasses import replace
+
+    from jointplay.results.accuracy import compare_runs
+
+    tighter = tighter_settings(scene)
+    model = model or load_scene_model(scene)
+    check = simulate(scene.with_run(**tighter), model=model, parameters=parameters,
+                     quiet=quiet)
+    run = scene.run
+    adaptive = run.integrator in ADAPTIVE
+    accuracy = compare_runs(result, check,
+                            rtol=run.rtol if adaptive else math.nan,
+                            atol=run.atol if adaptive else math.nan,
+                            check_rtol=tighter.get("rtol", math.nan),
+                            check_atol=tighter.get("atol", math.nan))
+    return replace(result, accuracy=accuracy)
 
 
 

@@ -171,9 +171,11 @@ def _parameter_vector(model: Model, scene: Scene,
         with problems.check():
             check_parameters(scene, values)
         problems.raise_any("parameters")
+        check_law_ranges(model, vec)
         return vec
     vec = model.parameter_vector(parameters)
     check_parameters(scene, dict(zip(model.parameters, vec.tolist(), strict=True)))
+    check_law_ranges(model, vec)
     return vec
 
 
@@ -197,6 +199,30 @@ def check_parameters(scene: Scene, values: Mapping[str, float]) -> None:
         scene.with_robot(robot)  # the initial state, checked against the new radii
     except DescriptionError as err:
         raise err.renamed(parameter_name).with_source("parameters") from None
+
+
+def check_law_ranges(model: Model, p: np.ndarray) -> None:
+    """Parameters given at run time (``simulate(scene, parameters=...)``, sweeps, a whole
+    vector) must stay inside the range of the compiled contact law, as the scene's own are
+    when it is read: Pereira's law was fitted for PEREIRA_CLEARANCE_RANGE only (below it its
+    stiffness runs away, and a 1 um clearance gave NaN states)."""
+    from jointplay.common.errors import DescriptionError
+    from jointplay.robot.description import PEREIRA_CLEARANCE_RANGE
+
+    if model.structure.contact_stiffness != "pereira":
+        return
+    low, high = PEREIRA_CLEARANCE_RANGE
+    layout = model.layout
+    for j in model.clearance_joints:
+        rb = float(p[layout.parameter_slot("joint", j, "bearing_radius")])
+        rj = float(p[layout.parameter_slot("joint", j, "journal_radius")])
+        c = rb - rj
+        if not low <= c < high:
+            raise DescriptionError(
+                f"parameters: joint{j}.bearing_radius - joint{j}.journal_radius",
+                f"gives a radial clearance of {c:.6g} m, outside the range the Pereira "
+                f"contact law was fitted for ({low:g} m <= c < {high:g} m); choose radii in "
+                "that range or another contact.stiffness (johnson, liu)")
 
 
 def load_scene_model(scene: Scene, *, ideal: bool = False) -> Model:

@@ -97,8 +97,9 @@ def _blank_row(case: Case) -> dict[str, Any]:
 
 
 def run_case(case: Case, *, series: bool = False,
-             hook: Callable[[Case], None] | None = None) -> CaseOutcome:
+             hook: Callable[[Case], None] | None = None, verify: bool = False) -> CaseOutcome:
     """Simulate one case and summarise it; a simulation that fails gives a ``failed`` row.
+    ``verify`` adds the case's accuracy statement (``simulate(..., verify=True)``).
 
     Runs on a worker (or in this process): the model is loaded from the compile cache once
     per worker thread. ``hook(case)`` is called first (instrumentation and fault injection).
@@ -117,7 +118,7 @@ def run_case(case: Case, *, series: bool = False,
         ideal, reused = _ideal_result(case, ideal_model)
         row["ideal_reused"] = reused
         stage = "robot"
-        result = simulate(case.scene, model=model, quiet=True)
+        result = simulate(case.scene, model=model, quiet=True, verify=verify)
     except Exception as err:
         # An interrupt that compiled code turned into an error is no outcome: the case is
         # simply not done, and the next run picks it up.

@@ -18,6 +18,23 @@ CONTACT_METRICS: tuple[tuple[str, str], ...] = (
     ("max_approach_speed", "float"))
 
 
+# Columns of a case checked at 10x tighter tolerances (sweeps run with verify): the accuracy
+# statement's estimated tip error (m), agreement horizon (s) and energy residual (J).
+ACCURACY_METRICS: tuple[tuple[str, str], ...] = (
+    ("tip_error_estimate", "float"), ("agreement_horizon", "float"),
+    ("accuracy_energy_residual", "float"))
+
+
+def accuracy_metrics(result: SimulationResult) -> dict[str, Any]:
+    """The accuracy columns of a verified case (empty without a statement)."""
+    acc = result.accuracy
+    if acc is None:
+        return {}
+    return {"tip_error_estimate": acc.tip_error_estimate,
+            "agreement_horizon": acc.agreement_horizon,
+            "accuracy_energy_residual": acc.energy_residual}
+
+
 def metric_columns(clearance_joints: Sequence[int], wear: bool = False
                    ) -> list[tuple[str, str]]:
     """(column, type) of the summary metrics, type one of float, int, str (with ``wear``,
@@ -54,6 +71,7 @@ def case_metrics(result: SimulationResult, ideal: SimulationResult) -> dict[str,
         "simulation_time_s": float(result.stats["wall_time_s"]),
     }
     out.update(contact_metrics(result))
+    out.update(accuracy_metrics(result))
     if result.wear is not None:
         from jointplay.results.wear import wear_metrics
 

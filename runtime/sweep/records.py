@@ -76,10 +76,12 @@ def _valid_row(row: Any, key: str) -> bool:
 
 
 def is_finished(row: dict[str, Any] | None, out: Path, *, series: bool,
-                 retry_failed: bool) -> bool:
+                 retry_failed: bool, verify: bool = False) -> bool:
     if row is None:
         return False
     if row.get("status") == "ok":
+        if verify and row.get("tip_error_estimate") is None:  # finished without the check
+            return False
         return not series or (row.get("series") is not None
                               and (out / row["series"]).is_file())
     return row.get("error_stage") == STAGE_SIMULATION and not retry_failed

@@ -139,14 +139,15 @@ def _local_cluster(workers: int) -> Iterator[Any]:
 
 
 def _run_dask(client: Any, pending: Sequence[Case], out: Path, *, series: bool,
-              hook: Callable[[Case], None] | None, progress: Any) -> None:
+              hook: Callable[[Case], None] | None, progress: Any,
+              verify: bool = False) -> None:
     """Submit every pending case; record each as it completes, in completion order."""
     from distributed import as_completed
 
     token = uuid.uuid4().hex[:8]
     by_key = {f"jointplay-case-{c.key}-{token}": c for c in pending}
     futures = client.map(run_case, list(pending), key=list(by_key), series=series, hook=hook,
-                         retries=RETRIES, pure=False)
+                         verify=verify, retries=RETRIES, pure=False)
     try:
         for future in as_completed(futures):
             case = by_key.pop(future.key)
@@ -192,7 +193,8 @@ def check_options(client: Any, workers: int | None, scheduler: str | None) -> No
 def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
               workers: int | None = None, scheduler: str | None = None, series: bool = False,
               retry_failed: bool = False, plots: bool = True, quiet: bool = True,
-              hook: Callable[[Case], None] | None = None) -> SweepResult:
+              hook: Callable[[Case], None] | None = None, verify: bool = False
+              ) -> SweepResult:
     """Run every case of ``sweep`` not already finished in ``out``; write the table and plots.
 
     Cases run on ``client`` (a ``distributed.Client``) if given, else on the cluster at
@@ -200,7 +202,10 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     :func:`default_workers`); ``workers=0`` runs them one by one in this process, without
     Dask. ``series`` also keeps each case's full time series (``out/series/<key>.h5``).
     Failed simulations are kept as ``failed`` rows; ``retry_failed`` runs them again.
-    ``hook(case)`` runs before each case, where the case runs.
+    ``hook(case)`` runs before each case, where the case runs. ``verify`` checks every case
+    against the same case at tolerances 10x tighter (about doubling its cost) and adds the
+    accuracy columns (:data:`jointplay.sweep.metrics.ACCURACY_METRICS`); a case finished
+    without them runs again.
     """
     from tqdm import tqdm
 
@@ -217,7 +222,7 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     load_scene_model(sweep.scene, ideal=True)
     pending = [c for c in sweep.cases
                if not is_finished(read_row(out, c.key), out, series=series,
-                                   retry_failed=retry_failed)]
+                                   retry_failed=retry_failed, verify=verify)]
     reused = len(sweep.cases) - len(pending)
     serial = workers == 0 and client is None and not scheduler
     with contextlib.ExitStack() as stack:
@@ -234,10 +239,11 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
                                             disable=quiet, unit="case", desc=sweep.name,
                                             dynamic_ncols=True))
         if cluster is not None:
-            _run_dask(cluster, pending, out, series=series, hook=hook, progress=progress)
+            _run_dask(cluster, pending, out, series=series, hook=hook, progress=progress,
+                      verify=verify)
         else:
             for case in pending:
-                record(out, run_case(case, series=series, hook=hook))
+                record(out, run_case(case, series=series, hook=hook, verify=verify))
                 progress.update(1)
     # The table and the figures are one output: both appear, or (a full disk) neither.
     final = OutputPlan()

@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 from typing import Any
 
-from jointplay.sweep.metrics import metric_columns
+from jointplay.sweep.metrics import ACCURACY_METRICS, metric_columns
 from jointplay.sweep.records import CASES_DIR, TABLE_NAME, read_row
 from jointplay.sweep.spec import Sweep, SweepError
 
@@ -42,6 +42,9 @@ def build_table(sweep: Sweep, out: str | Path) -> Any:
     types = {"float": pa.float64(), "int": pa.int64(), "str": pa.string()}
     for name, kind in metric_columns(clearance, sweep.scene.robot.structure().wear is not None):
         columns[name] = pa.array([r.get(name) for _, r in rows], types[kind])
+    if any(r.get("tip_error_estimate") is not None for _, r in rows):  # run with verify
+        for name, kind in ACCURACY_METRICS:
+            columns[name] = pa.array([r.get(name) for _, r in rows], types[kind])
     for name, kind in (("ideal_reused", pa.bool_()), ("error", pa.string()),
                        ("error_type", pa.string()), ("error_stage", pa.string()),
                        ("error_time", pa.float64()), ("error_joint", pa.int64()),
