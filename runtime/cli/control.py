@@ -22,7 +22,6 @@ from jointplay.cli.neural_args import (
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import atomic_write_text
 from jointplay.neural.control import (
-    DEFAULT_TRANSIENT,
     DIVERGENCE_FACTOR,
     EXIT_DIVERGED,
     LINEAR,
@@ -38,6 +37,7 @@ from jointplay.neural.control import (
 )
 from jointplay.neural.imc import ControllerSettings
 from jointplay.neural.loop import NO_CONDITIONS, LoopConditions
+from jointplay.neural.metrics import WORSE_MARGIN, worse_lines
 from jointplay.neural.narx import MODEL_FILE, Narx, check_robot, load_narx
 from jointplay.neural.noise_tuning import noise_vector
 
@@ -68,9 +68,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="computed-torque baseline bandwidth, rad/s (default %(default)s)")
     p.add_argument("--ct-zeta", type=float, default=0.2,
                    help="computed-torque baseline damping ratio (default %(default)s)")
-    p.add_argument("--transient", type=float, default=DEFAULT_TRANSIENT,
-                   help="seconds at the start reported separately (journals settling; "
-                        "default %(default)s)")
+    p.add_argument("--transient", type=float, default=None,
+                   help="seconds at the start left out of the 'after' metrics (default: from "
+                        "the run: the later of the outer loop's engagement plus its setpoint "
+                        "filter's decay and the end of the open loop's release impacts)")
     p.add_argument("--divergence-factor", type=float, default=DIVERGENCE_FACTOR,
                    help="a run whose tip error exceeds this x the open loop's largest is "
                         "stopped as diverged (default %(default)s)")
@@ -112,6 +113,12 @@ def cmd_control(args: argparse.Namespace) -> int:
                          conditions=sensor_noise(job))
     lines = report_lines(args, job, comparison)
     warnings, diverged = stability_lines(comparison, lines)
+    worse = worse_lines(comparison.metrics)
+    lines += ["", "Against the baselines (every reported metric; ties within "
+                  f"{WORSE_MARGIN:g} not counted):", *([f"- {w}" for w in worse] or [
+                      "- no controller is worse than the open loop, and no model-based one "
+                      "worse than PD, on any reported metric"])]
+    warnings += worse
     if comparison.noise_tuning is not None and not comparison.noise_tuning.met:
         warnings.append(comparison.noise_tuning.describe())
     if job.scene.name == "paper_4dof":
@@ -160,7 +167,8 @@ def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
                         ("--divergence-factor", args.divergence_factor)):
         if not (math.isfinite(value) and value > 0):
             raise DescriptionError(flag, f"must be a positive number, got {value}")
-    if not (math.isfinite(args.transient) and 0 <= args.transient < scene.run.t_end):
+    if args.transient is not None and not (math.isfinite(args.transient)
+                                           and 0 <= args.transient < scene.run.t_end):
         raise DescriptionError("--transient", f"must be in [0, run.t_end), got {args.transient}")
 
 
@@ -187,7 +195,9 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         f"End-effector errors vs the ideal-joint robot ({scene.name}, {scene.run.t_end:g} s; "
         "norms over x, y):",
         "",
-        metrics_table(comparison.metrics, args.transient),
+        metrics_table(comparison.metrics, settled_time(comparison)),
+        "",
+        (comparison.settling.describe() if comparison.settling else "") + ".",
         "",
         f"internal-model controllers: horizon {settings.horizon}, lambda "
         f"{settings.regularisation:g}, setpoint filter {settings.setpoint_filter:g}, mismatch "
@@ -206,6 +216,11 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         "",
         "Stability:",
     ]
+
+
+def settled_time(comparison: Comparison) -> float:
+    """Seconds left out of the "after" metrics."""
+    return comparison.settling.time if comparison.settling else 0.0
 
 
 def sensor_noise(job: ControlJob) -> LoopConditions:

@@ -124,6 +124,7 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
         ]
         if not res["usable"]:
             lines += ["**REJECTED**: " + "; ".join(res["problems"]) + ".", ""]
+    lines += _baseline_lines(metrics)
     lines += _repair_lines(metrics)
     warnings = metrics.get("warnings") or []
     if warnings:
@@ -140,6 +141,24 @@ def _no_residual_reason(res: dict[str, Any]) -> str:
                 "the linear model: the saved network is the ARX model.")
     return ("The residual does not improve on the linear model on validation (network "
             f"{net:.4g}, linear {arx:.4g}): the saved network is the ARX model.")
+
+
+def _baseline_lines(metrics: dict[str, Any]) -> list[str]:
+    """The saved model against both linear models in free run (validation and test)."""
+    losses = metrics.get("free_run_loss")
+    if not losses:
+        return []
+    lines = [f"Free-run loss over {losses['window']}-sample windows (mean squared error / output "
+             "scale; lower is better) of the saved model, its ARX twin and an LPV-ARX model "
+             f"(coefficients affine in {losses['scheduling']}; least squares):", "",
+             "| runs | saved model | ARX | LPV-ARX | best |", "|---|---|---|---|---|"]
+    for part in ("validation", "test"):
+        row = losses[part]
+        best = min(row, key=lambda k: row[k])
+        names = {"model": "saved model", "arx": "ARX", "lpv_arx": "LPV-ARX"}
+        lines.append(f"| {part} | {row['model']:.4g} | {row['arx']:.4g} | "
+                     f"{row['lpv_arx']:.4g} | {names[best]} |")
+    return [*lines, ""]
 
 
 def _repair_lines(metrics: dict[str, Any]) -> list[str]:

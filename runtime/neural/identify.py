@@ -161,8 +161,10 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     seg_val = _segments(split["validation"], skip)
     model, selection = select_residual(trained, arx, seg_val, config.window)
     verdict = judge(model, arx, selection, seg_val, config.window)
+    baselines = linear_baselines(model, arx, split, skip, config, inner)
     metrics: dict[str, Any] = {
         **_errors(model, arx, split, skip),
+        "free_run_loss": baselines,
         "residual": describe(selection, verdict),
         "outputs": list(names["output_names"]),
         "training_history": history,
@@ -230,6 +232,31 @@ def data_warnings(train: list[Trajectory], validation: list[Trajectory], skip: i
             "trained and judged on shorter horizons than it meets. Use --duration of at "
             f"least {config.window * dt + skip * dt:g} s (or a shorter --window)")
     return warnings
+
+
+def linear_baselines(model: Narx, arx: Narx, split: dict[str, list[Trajectory]], skip: int,
+                     config: IdentifyConfig, inner: InnerLoop) -> dict[str, Any]:
+    """Free-run window losses (the selection's loss) of the saved model, its ARX twin and the
+    LPV-ARX baseline on the validation and test runs: "better than linear" means better than
+    the better of the two linear models."""
+    from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
+    from jointplay.neural.lpv import window_loss as lpv_loss
+    from jointplay.neural.twin import window_loss, windows
+
+    nj = len(inner.joints)
+    lpv = fit_lpv_arx(scheduled_segments(split["train"], skip, nj), config.output_lags,
+                      config.input_lags, model.increment)
+    out: dict[str, Any] = {"window": config.window,
+                           "scheduling": "cos, sin of the ideal joint angles, ideal joint "
+                                         "speeds, drive torques of the motion"}
+    for part in ("validation", "test"):
+        segs = _segments(split[part], skip)
+        d, u = windows(segs, config.window, model.history)
+        out[part] = {"model": window_loss(model, d, u, model.output_scale),
+                     "arx": window_loss(arx, d, u, model.output_scale),
+                     "lpv_arx": lpv_loss(lpv, scheduled_segments(split[part], skip, nj),
+                                         config.window, model.output_scale)}
+    return out
 
 
 def _signal_names(joints: tuple[int, ...]) -> dict[str, Any]:

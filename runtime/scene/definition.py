@@ -14,6 +14,7 @@ file, the field and what is allowed.
     joint2 = "A*sin(2*pi*t)" # or: table = "torques.csv" (t, then one column per driven joint)
     [initial]                # coordinates (q2, ex2, ...) and speeds (dq2, dex2, ...); default 0
     q2 = "-pi"
+    journals = "resting"     # or "centred" (default): each journal at rest in its bearing
     [run]
     t_end = 2.0
     output_step = 1e-3
@@ -85,6 +86,10 @@ class Scene:
     constants: dict[str, float] = field(default_factory=dict)
     source: str | None = None
     text: str = ""  # the scene file as read, kept with the results
+    # "centred": the journals start at the eccentricities [initial] gives (default 0, the
+    # bearing centres); "resting": at rest, each journal in static equilibrium in its bearing
+    # under gravity (solved by the runtime: jointplay.sim.equilibrium)
+    journals: str = "centred"
 
     def with_run(self, **changes: Any) -> Scene:
         """The same scene with some run settings changed (validated)."""
@@ -97,6 +102,11 @@ class Scene:
 
     def with_robot(self, robot: Robot) -> Scene:
         return replace(self, robot=robot)
+
+    def with_journals(self, journals: str) -> Scene:
+        """The same scene starting with the journals ``"centred"`` or ``"resting"``."""
+        _check_journals(journals, self.initial, self.source)
+        return replace(self, journals=journals)
 
 
 def ideal_counterpart(robot: Robot) -> Robot:
@@ -289,6 +299,22 @@ def _initial(raw: Any, robot: Robot, constants: Mapping[str, float],
     return out
 
 
+JOURNAL_STARTS = ("centred", "resting")
+
+
+def _check_journals(journals: Any, initial: Mapping[str, float], source: str | None) -> None:
+    if journals not in JOURNAL_STARTS:
+        raise _error("initial.journals", f"must be one of {', '.join(JOURNAL_STARTS)}, got "
+                     f"{journals!r}", source)
+    if journals == "resting":
+        given = sorted(k for k, v in initial.items()
+                       if (k.startswith("d") or k.startswith(("ex", "ey"))) and v != 0)
+        if given:
+            raise _error("initial.journals", "\"resting\" starts at rest with the journals "
+                         "where they rest: leave out the speeds and eccentricities "
+                         f"({', '.join(given)})", source)
+
+
 def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Scene:
     """Validate a parsed scene document; relative paths resolve against ``base``."""
@@ -304,10 +330,16 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
         raise _error("description", "must be a string", source)
     constants = _constants(data.get("constants", {}), source)
     torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
-    initial = _initial(data.get("initial", {}), robot, constants, source)
+    raw_initial = data.get("initial", {})
+    journals = "centred"
+    if isinstance(raw_initial, Mapping) and "journals" in raw_initial:
+        raw_initial = dict(raw_initial)
+        journals = raw_initial.pop("journals")
+    initial = _initial(raw_initial, robot, constants, source)
+    _check_journals(journals, initial, source)
     run = _run_settings(data.get("run", {}), source)
     scene = Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
-                  run=run, constants=constants, source=source, text=text)
+                  run=run, constants=constants, source=source, text=text, journals=journals)
     check_torques_finite(scene)
     return scene
 
