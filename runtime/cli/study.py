@@ -66,6 +66,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     neural_scene_argument(p)
     p.add_argument("--out", required=True, metavar="DIR",
                    help="folder for models/, study.md, study.csv, study.json and the plots")
+    p.add_argument("--first-seed", type=int, default=0,
+                   help="the seeds are FIRST_SEED, FIRST_SEED + 1, ... (default 0; a study of "
+                        "seeds not used for tuning starts past them)")
     p.add_argument("--seeds", type=int, default=3,
                    help="training seeds at the scene's clearance (default %(default)s)")
     p.add_argument("--cases", default=",".join(CASES),
@@ -223,6 +226,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                                "runs one model under noise of your choice")
     if args.seeds < 1:
         raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
+    if args.first_seed < 0:
+        raise DescriptionError("--first-seed", f"must be 0 or more, got {args.first_seed}")
     names = tuple(c.strip() for c in args.cases.split(",") if c.strip())
     unknown = [c for c in names if c not in CASES]
     if unknown or not names:
@@ -248,7 +253,7 @@ def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, li
             args.seeds, args.clearance_seeds)
         robot_scene = plan.scenes[next(k.name for k in plan.cases if k.clearance == size)]
         models[size] = ensure_models(robot_scene, plan.out / "models" / f"{size * 1e6:g}um", n,
-                                     plan.identify_args, args.quiet)
+                                     plan.identify_args, args.quiet, first=args.first_seed)
     if not models[plan.nominal]:
         raise DescriptionError("--seeds", "no seed gave a usable model; see the reports in "
                                f"{plan.out / 'models'}")

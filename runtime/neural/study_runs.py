@@ -109,13 +109,13 @@ def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[
 
 
 def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str, Any],
-                  quiet: bool) -> list[Path]:
+                  quiet: bool, first: int = 0) -> list[Path]:
     """One identified model per seed (reused when its folder already holds one for this
     robot); rejected models are left out, and said so."""
     from jointplay.neural.identify import IdentifyConfig, ModelRejected, identify
 
     out = []
-    for seed in range(seeds):
+    for seed in range(first, first + seeds):
         path = folder / f"seed{seed}"
         ok = (path / MODEL_FILE).is_file() and load_narx(path).context.get("robot", {}).get(
             "robot_hash") == robot_identity(scene.robot)["robot_hash"]
