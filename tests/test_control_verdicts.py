@@ -3,6 +3,8 @@ controller that ends worse than the open loop or PD named (pure functions, fast)
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
@@ -62,3 +64,14 @@ def test_every_controller_worse_than_a_baseline_is_named() -> None:
     assert lines == ["PD is worse than no control (open loop) on RMS |Δa| after the transient "
                      "1.6x", "neural IMC is worse than no control (open loop) on RMS |Δa| "
                      "after the transient 1.2x"]
+
+
+def test_control_repeats_what_identify_warned_about(tmp_path: Path) -> None:
+    from jointplay.cli.control import identification_warnings
+
+    assert identification_warnings(tmp_path) == []  # no metrics.json: nothing to repeat
+    (tmp_path / "metrics.json").write_text(json.dumps(
+        {"warnings": ["the excitation is too small to identify the input's effect"]}))
+    assert identification_warnings(tmp_path) == [
+        "the model was identified with a warning: the excitation is too small to identify the "
+        "input's effect"]

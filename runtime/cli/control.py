@@ -113,6 +113,7 @@ def cmd_control(args: argparse.Namespace) -> int:
                          conditions=sensor_noise(job))
     lines = report_lines(args, job, comparison)
     warnings, diverged = stability_lines(comparison, lines)
+    warnings = [*identification_warnings(job.model_dir), *warnings]
     lines += retune_lines(args, job, comparison)
     worse = worse_lines(comparison.metrics)
     lines += ["", "Against the baselines (every reported metric; ties within "
@@ -274,6 +275,19 @@ def retune_lines(args: argparse.Namespace, job: ControlJob,
             lines.append(f"- {name} ends worse than no control after settling, and so does it "
                          f"at horizons {tried}: {fallback}")
     return ["", "Retuning:", *lines] if lines else []
+
+
+def identification_warnings(model_dir: Path) -> list[str]:
+    """What identify warned about when it made this model (too little excitation, runs too
+    short): repeated, since the controller inherits it."""
+    import json
+
+    try:
+        metrics = json.loads((model_dir / "metrics.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return []
+    return [f"the model was identified with a warning: {w}"
+            for w in metrics.get("warnings", []) if isinstance(w, str)]
 
 
 def settled_time(comparison: Comparison) -> float:
