@@ -131,7 +131,8 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
     return Run(name, t[keep], y[keep], tau[keep], np.zeros_like(tau[keep]),
                len(stepper.impacts), time.perf_counter() - start, diverged,
                dense_t=dense_t, dense_acceleration=dense_a,
-               impact_times=np.array([float(i[0]) for i in stepper.impacts]))
+               # A journal starting in contact is recorded at t = 0 at zero speed: not a strike.
+               impact_times=np.array([float(i[0]) for i in stepper.impacts if i[2] > 0]))
 
 
 def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
