@@ -172,12 +172,14 @@ def plot_winners(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Cas
             grid[i, j] = names.index(order[0])
             ratio = values[order[1]] / values[order[0]] if len(order) > 1 and values[
                 order[0]] > 0 else float("nan")
-            ax.text(j, i, f"{order[0]}\n{ratio:.2g}x", ha="center", va="center", fontsize=7)
+            tie = " (tie)" if ratio < 1 + WORSE_MARGIN else ""
+            ax.text(j, i, f"{order[0]}\nrunner-up {order[1]}: {ratio:.4g}x{tie}", ha="center",
+                    va="center", fontsize=7)
     cmap = ListedColormap([COLORS.get(n, "C5") for n in names])
     ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(names) - 0.5, aspect="auto", alpha=0.45)
     ax.set_xticks(range(len(cases)), [c.name for c in cases], rotation=20)
     ax.set_yticks(range(len(GOAL_METRICS)), [label for _, label in GOAL_METRICS])
-    ax.set_title("Lowest median per case and metric (and how much lower than the runner-up)")
+    ax.set_title("Lowest median over seeds, per case and metric", fontsize=10)
     return save(fig, folder / "study_winners.png")
 
 
