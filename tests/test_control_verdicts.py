@@ -75,3 +75,46 @@ def test_control_repeats_what_identify_warned_about(tmp_path: Path) -> None:
     assert identification_warnings(tmp_path) == [
         "the model was identified with a warning: the excitation is too small to identify the "
         "input's effect"]
+
+
+def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    import jointplay.cli.control as control_cli
+    from jointplay.neural.comparison import Settling
+    from jointplay.neural.imc import ControllerSettings
+
+    after = {"max_velocity_after": 1.0, "max_acceleration_after": 1.0,
+             "rms_acceleration_after": 1.0}
+    comparison = SimpleNamespace(
+        metrics={"open loop": after, "PD": {**after, "rms_acceleration_after": 0.5},
+                 "ARX-IMC": {**after, "max_acceleration_after": 1.3}},
+        runs={}, settling=Settling(0.144, 0.1, 0.144, 0.03), limit=1.0, noise_tuning=None)
+    job = SimpleNamespace(scene=None, narx=None, arx=None, settings=ControllerSettings(),
+                          model_dir=Path("."))
+    args = SimpleNamespace(ct_omega=15.0, ct_zeta=0.2)
+    horizons = []
+
+    def fake_compare(scene: object, narx: object, settings: ControllerSettings,
+                     **kwargs: object) -> SimpleNamespace:
+        horizons.append(settings.horizon)
+        assert kwargs["transient"] == 0.144 and kwargs["limit"] == 1.0  # the same window
+        good = settings.horizon == 20
+        metrics = {**after, "max_acceleration_after": 0.9 if good else 1.2}
+        return SimpleNamespace(runs={"ARX-IMC": SimpleNamespace(diverged="")},
+                               metrics={"ARX-IMC": metrics})
+
+    monkeypatch.setattr(control_cli, "compare", fake_compare)
+    monkeypatch.setattr(control_cli, "sensor_noise", lambda job: None)
+    lines = control_cli.retune_lines(args, job, comparison)
+    assert horizons == [10, 20]
+    assert "retuned to horizon 20 it does not" in lines[-1]
+    assert "ARX-IMC retuned (horizon 20)" in comparison.metrics
+
+    # No retune helps: PD is not worse than no control, so the line says to use it.
+    horizons.clear()
+    comparison.metrics = {k: v for k, v in comparison.metrics.items() if "retuned" not in k}
+    monkeypatch.setattr(control_cli, "compare", lambda *a, **k: SimpleNamespace(
+        runs={"ARX-IMC": SimpleNamespace(diverged="")},
+        metrics={"ARX-IMC": {**after, "rms_acceleration_after": 2.0}}))
+    lines = control_cli.retune_lines(args, job, comparison)
+    assert "at horizons 10, 20: use PD" in lines[-1]
