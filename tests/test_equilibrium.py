@@ -64,3 +64,13 @@ def test_resting_refuses_given_eccentricities_and_unknown_starts() -> None:
     with pytest.raises(DescriptionError, match=r"leave out .*dq3, ex2"):
         moved.with_journals("resting")
     assert scene.journals == "centred"  # the paper scene keeps its documented start
+
+
+def test_a_sweep_tells_the_resting_start_from_the_centred() -> None:
+    from jointplay.sweep.spec import _scene_fingerprint
+
+    scene = default_scene()
+    centred = _scene_fingerprint(scene)
+    assert "journals" not in centred  # keys of centred starts stay as before
+    assert _scene_fingerprint(scene.with_journals("resting")) == {**centred,
+                                                                  "journals": "resting"}
