@@ -44,6 +44,8 @@ def test_settling_is_the_later_of_engagement_and_release() -> None:
     long = settling({"open loop": bouncing}, {"ARX-IMC": ctrl}, dt)
     assert long.time == pytest.approx(0.2 + RELEASE_GAP)
     # Baselines run alone share the window of the controllers run elsewhere.
+    resting = settling({"open loop": _run([])}, {"ARX-IMC": ctrl}, dt)
+    assert resting.release_end == 0 and "no release impacts" in resting.describe()
     alone = settling({"open loop": _run([2e-3])}, {}, dt, settle_after=0.144)
     assert alone.time == pytest.approx(0.144) and "settled by 144 ms" in alone.describe()
 

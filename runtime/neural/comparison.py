@@ -73,7 +73,9 @@ class Settling:
         if self.given:
             return f"the first {ms} are excluded from the \"after\" columns (--transient)"
         parts = [f"the open loop's release impacts (the journals falling from the bearing "
-                 f"centres) end by {self.release_end * 1e3:.0f} ms"]
+                 f"centres) end by {self.release_end * 1e3:.0f} ms" if self.release_end > 0
+                 else "the open loop has no release impacts (no impact in its first "
+                      f"{RELEASE_GAP * 1e3:g} ms)"]
         if self.engage is None and self.filter_decayed is not None:
             parts.insert(0, f"the internal-model controllers' engagement has settled by "
                             f"{self.filter_decayed * 1e3:.0f} ms")
