@@ -81,7 +81,7 @@ def worse_than_baselines(metrics: dict[str, dict[str, float]]
                          ) -> list[tuple[str, str, str, float]]:
     """Every (controller, metric, baseline, ratio) where a controller ends worse than the open
     loop, or (a controller other than PD) than PD, on a reported metric."""
-    out = []
+    out: list[tuple[str, str, str, float]] = []
     for name, mt in metrics.items():
         for base in ("open loop", "PD"):
             if name in (base, "open loop") or base not in metrics:

@@ -280,10 +280,17 @@ def _one_step_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConf
 # the best state so far, with a smaller L-BFGS step, windows lengthened from short to the full
 # length (a short free run cannot run away before the gradient sees it), and then a penalty
 # on the hidden layers' weights (a smaller residual is a smoother, more stable one).
+@dataclass(frozen=True)
+class _Attempt:
+    lr: float  # L-BFGS step
+    windows: tuple[float, ...]  # window lengths in turn, x the configured window
+    penalty: float  # on the hidden layers' squared weights
+
+
 FREE_RUN_ATTEMPTS = (
-    {"lr": 1.0, "windows": (1.0,), "penalty": 0.0},
-    {"lr": 0.1, "windows": (0.125, 0.5, 1.0), "penalty": 0.0},
-    {"lr": 0.02, "windows": (0.125, 0.5, 1.0), "penalty": 1e-3},
+    _Attempt(1.0, (1.0,), 0.0),
+    _Attempt(0.1, (0.125, 0.5, 1.0), 0.0),
+    _Attempt(0.02, (0.125, 0.5, 1.0), 1e-3),
 )
 # Shrink factors tried on the residual before the free-run phase when the one-step network
 # runs away in free run (1: as trained; 0: the least-squares linear start).
@@ -308,10 +315,10 @@ def _free_run_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConf
     _stabilise_start(torch, net, validate, repairs)
     for number, attempt in enumerate(FREE_RUN_ATTEMPTS, start=1):
         outcome = "iterations"
-        for fraction in attempt["windows"]:
+        for fraction in attempt.windows:
             length = max(5, round(config.window * fraction))
             outcome = _free_run_attempt(torch, net, data, config, history, bar, length,
-                                        attempt["lr"], attempt["penalty"], validate)
+                                        attempt.lr, attempt.penalty, validate)
             if outcome == "nonfinite":
                 break
         if outcome != "nonfinite":
@@ -321,14 +328,14 @@ def _free_run_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConf
         following = FREE_RUN_ATTEMPTS[number] if number < len(FREE_RUN_ATTEMPTS) else None
         repairs.append({
             "phase": "free-run", "problem": f"training loss not finite (attempt {number}, "
-                                            f"L-BFGS step {attempt['lr']:g})",
+                                            f"L-BFGS step {attempt.lr:g})",
             "action": ("restored the best state and retried with L-BFGS step "
-                       f"{following['lr']:g}, windows of "
+                       f"{following.lr:g}, windows of "
                        + ", ".join(f"{max(5, round(config.window * f))}"
-                                   for f in following["windows"])
+                                   for f in following.windows)
                        + " samples in turn"
-                       + (f", hidden-weight penalty {following['penalty']:g}"
-                          if following["penalty"] else "")
+                       + (f", hidden-weight penalty {following.penalty:g}"
+                          if following.penalty else "")
                        if following else "restored the best state; free-run training "
                                          "stopped there"),
             "cured": False})
