@@ -18,9 +18,12 @@ training (a swept sine).
 
 Training (:mod:`jointplay.neural.training`, PyTorch, float64, CPU): one-step-ahead least
 squares, then simulation-error training on windows, each phase stopped early on the
-validation loss; the linear ARX twin beside it. Judging (:mod:`jointplay.neural.twin`,
-:mod:`jointplay.neural.evaluation`): the network's residual weight chosen on validation, the
-model refused when worse than persistence or ARX, errors reported on the test runs.
+validation loss, a runaway or NaN free run repaired and recorded; the linear ARX twin beside
+it, and an LPV-ARX model as the stronger linear baseline (:mod:`jointplay.neural.lpv`).
+Judging (:mod:`jointplay.neural.twin`, :mod:`jointplay.neural.evaluation`): the network's
+residual weight chosen on validation, the model refused when worse than persistence or ARX,
+errors reported on the test runs; data that cannot identify the model (an input too small,
+runs shorter than a free-run window) warned about.
 
 This module runs the whole identification into a model folder, and keeps every name of the
 identification importable from one place.
