@@ -2,7 +2,9 @@
 
 PyTorch, float64, CPU: one-step-ahead least squares (L-BFGS, full batch), then simulation
 error on windows of the training trajectories (the controller runs the model in free run),
-each phase stopped early on the validation loss. torch is imported inside the training
+each phase stopped early on the validation loss. A free run that runs away is repaired before
+the second phase and a phase whose loss goes NaN retried (FREE_RUN_ATTEMPTS), each repair
+recorded in the history. torch is imported inside the training
 function only, so importing jointplay does not import it. The exported weights are checked to
 reproduce torch's predictions through CasADi."""
 
