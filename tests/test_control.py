@@ -320,6 +320,7 @@ def _parser() -> argparse.ArgumentParser:
     (["identify", "--out", "/tmp/x", "--duration", "-1"], "--duration"),
     (["identify", "--out", "/tmp/x", "--iterations", "1"], "--iterations"),
     (["control-study", "--out", "/tmp/x", "--seeds", "0"], "--seeds"),
+    (["control-study", "--out", "/tmp/x", "--first-seed", "-1"], "--first-seed"),
     (["control-study", "--out", "/tmp/x", "--cases", "scene,foo"], "--cases"),
     (["control-study", "--out", "/tmp/x", "--train", "0"], "--train/--validation/--test"),
     (["control-study", "--out", "/tmp/x", "--identify-iterations", "1"],

@@ -201,7 +201,7 @@ def test_study_sets_the_predicted_ratio_beside_the_measured_one() -> None:
               for s, a, h, p in ((0, 0.55, 20, 1.07), (1, 0.54, 22, 1.06)))]
     text = " ".join(noise_note(rows, undeclared=False))
     assert "chose horizon 20, 22" in text
-    assert "neural IMC: RMS |Δa| after 50 ms predicted 1.060-1.070x" in text
+    assert "neural IMC: RMS |Δa| after settling predicted 1.060-1.070x" in text
     assert "measured 1.080-1.100x PD's" in text
     assert noise_note(rows, undeclared=True)[0].startswith("Noise case: the controllers were not")
 

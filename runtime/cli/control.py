@@ -23,7 +23,6 @@ from jointplay.cli.neural_args import (
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
 from jointplay.neural.control import (
-    DEFAULT_TRANSIENT,
     DIVERGENCE_FACTOR,
     EXIT_DIVERGED,
     LINEAR,
@@ -39,6 +38,7 @@ from jointplay.neural.control import (
 )
 from jointplay.neural.imc import ControllerSettings
 from jointplay.neural.loop import NO_CONDITIONS, LoopConditions
+from jointplay.neural.metrics import WORSE_MARGIN, worse_lines
 from jointplay.neural.narx import MODEL_FILE, Narx, check_robot, load_narx
 from jointplay.neural.noise_tuning import noise_vector
 
@@ -70,9 +70,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="computed-torque baseline bandwidth, rad/s (default %(default)s)")
     p.add_argument("--ct-zeta", type=float, default=0.2,
                    help="computed-torque baseline damping ratio (default %(default)s)")
-    p.add_argument("--transient", type=float, default=DEFAULT_TRANSIENT,
-                   help="seconds at the start reported separately (journals settling; "
-                        "default %(default)s)")
+    p.add_argument("--transient", type=float, default=None,
+                   help="seconds at the start left out of the 'after' metrics (default: from "
+                        "the run: the later of the outer loop's engagement plus its setpoint "
+                        "filter's decay and the end of the open loop's release impacts)")
     p.add_argument("--divergence-factor", type=float, default=DIVERGENCE_FACTOR,
                    help="a run whose tip error exceeds this x the open loop's largest is "
                         "stopped as diverged (default %(default)s)")
@@ -114,6 +115,14 @@ def cmd_control(args: argparse.Namespace) -> int:
                          conditions=sensor_noise(job))
     lines = report_lines(args, job, comparison)
     warnings, diverged = stability_lines(comparison, lines)
+    warnings = [*identification_warnings(job.model_dir), *warnings]
+    lines += retune_lines(args, job, comparison)
+    worse = worse_lines(comparison.metrics)
+    lines += ["", "Against the baselines (every reported metric; ties within "
+                  f"{WORSE_MARGIN:g} not counted):", *([f"- {w}" for w in worse] or [
+                      "- no controller is worse than the open loop, and no model-based one "
+                      "worse than PD, on any reported metric"])]
+    warnings += worse
     if comparison.noise_tuning is not None and not comparison.noise_tuning.met:
         warnings.append(comparison.noise_tuning.describe())
     if job.scene.name == "paper_4dof":
@@ -162,7 +171,8 @@ def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
                         ("--divergence-factor", args.divergence_factor)):
         if not (math.isfinite(value) and value > 0):
             raise DescriptionError(flag, f"must be a positive number, got {value}")
-    if not (math.isfinite(args.transient) and 0 <= args.transient < scene.run.t_end):
+    if args.transient is not None and not (math.isfinite(args.transient)
+                                           and 0 <= args.transient < scene.run.t_end):
         raise DescriptionError("--transient", f"must be in [0, run.t_end), got {args.transient}")
 
 
@@ -202,7 +212,9 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         f"End-effector errors vs the ideal-joint robot ({scene.name}, {scene.run.t_end:g} s; "
         "norms over x, y):",
         "",
-        metrics_table(comparison.metrics, args.transient),
+        metrics_table(comparison.metrics, settled_time(comparison)),
+        "",
+        (comparison.settling.describe() if comparison.settling else "") + ".",
         "",
         f"internal-model controllers: horizon {settings.horizon}, lambda "
         f"{settings.regularisation:g}, setpoint filter {settings.setpoint_filter:g}, mismatch "
@@ -211,7 +223,10 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         + f"; inner PD kp {inner['kp']}, kd {inner['kd']}; PD baseline kp "
         f"{list(job.pd_kp) or inner['kp']}, kd {list(job.pd_kd) or inner['kd']}; computed "
         f"torque omega {args.ct_omega:g} rad/s, zeta {args.ct_zeta:g}; network residual "
-        f"weight {alpha if alpha is not None else 'not recorded'}",
+        f"weight {alpha if alpha is not None else 'not recorded'}"
+        + ("; the network's residual weight is 0: the neural IMC's model IS its ARX twin, "
+           "its row is the ARX-IMC's with the guard, and the network does no work"
+           if alpha == 0 else ""),
         *([comparison.noise_tuning.describe() + "; every controller measured through that "
            "noise (seed 1)"] if comparison.noise_tuning else []),
         "compiled step: " + ", ".join(
@@ -221,6 +236,78 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         "",
         "Stability:",
     ]
+
+
+AFTER_METRICS = ("max_velocity_after", "max_acceleration_after", "rms_acceleration_after")
+RETUNE_HORIZONS = (2, 4)  # x the asked horizon: a longer horizon asks less of each step
+
+
+def worse_after(mine: dict[str, float], base: dict[str, float]) -> list[str]:
+    """The after-settling metrics on which ``mine`` is worse than ``base``."""
+    return [k for k in AFTER_METRICS
+            if base.get(k, 0.0) > 0 and mine.get(k, 0.0) > base[k] * (1 + WORSE_MARGIN)]
+
+
+def retune_lines(args: argparse.Namespace, job: ControlJob,
+                 comparison: Comparison) -> list[str]:
+    """An internal-model controller that ends worse than no control after settling is run
+    again with a longer horizon (2x, then 4x); the first retune that is not worse is added to
+    the table as its own row. Without one, the line says it falls back to PD (v = 0)."""
+    base = comparison.metrics.get("open loop")
+    if base is None or comparison.settling is None:
+        return []
+    lines = []
+    for name in MODEL_BASED:
+        mine = comparison.metrics.get(name)
+        if mine is None or not worse_after(mine, base):
+            continue
+        settings = ran_settings(job.settings, comparison)
+        found = None
+        for factor in RETUNE_HORIZONS:
+            tuned = replace(settings, horizon=settings.horizon * factor)
+            sub = compare(job.scene, job.narx, tuned, arx=job.arx, controllers=(name,),
+                          limit=comparison.limit, transient=comparison.settling.time,
+                          quiet=True, analyse=False, conditions=sensor_noise(job),
+                          ct_omega=args.ct_omega, ct_zeta=args.ct_zeta)
+            if not sub.runs[name].diverged and not worse_after(sub.metrics[name], base):
+                found = (tuned.horizon, sub)
+                break
+        if found is not None:
+            horizon, sub = found
+            label = f"{name} retuned (horizon {horizon})"
+            comparison.metrics[label] = sub.metrics[name]
+            comparison.runs[label] = sub.runs[name]
+            lines.append(f"- {name} ends worse than no control after settling; retuned to "
+                         f"horizon {horizon} it does not (row \"{label}\"): run it with "
+                         f"--horizon {horizon}")
+        else:
+            tried = ", ".join(str(settings.horizon * f) for f in RETUNE_HORIZONS)
+            pd = comparison.metrics.get("PD")
+            fallback = ("use PD (its inner loop alone) instead on this scene"
+                        if pd is not None and not worse_after(pd, base) else
+                        "PD is worse than no control here too: on this scene no feedback "
+                        "tried beats leaving the robot alone on these metrics")
+            lines.append(f"- {name} ends worse than no control after settling, and so does it "
+                         f"at horizons {tried}: {fallback}")
+    return ["", "Retuning:", *lines] if lines else []
+
+
+def identification_warnings(model_dir: Path) -> list[str]:
+    """What identify warned about when it made this model (too little excitation, runs too
+    short): repeated, since the controller inherits it."""
+    import json
+
+    try:
+        metrics = json.loads((model_dir / "metrics.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return []
+    return [f"the model was identified with a warning: {w}"
+            for w in metrics.get("warnings", []) if isinstance(w, str)]
+
+
+def settled_time(comparison: Comparison) -> float:
+    """Seconds left out of the "after" metrics."""
+    return comparison.settling.time if comparison.settling else 0.0
 
 
 def sensor_noise(job: ControlJob) -> LoopConditions:

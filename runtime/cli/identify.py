@@ -4,6 +4,7 @@ network and write the model folder (the work itself: :mod:`jointplay.neural.iden
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -85,7 +86,7 @@ def cmd_identify(args: argparse.Namespace) -> int:
     check_scene_for(config, scene)
     started = time.perf_counter()
     try:
-        identify(scene, out, config, quiet=args.quiet)
+        metrics = identify(scene, out, config, quiet=args.quiet)
     except ModelRejected:
         if not args.quiet:
             print((out / REPORT_FILE).read_text(encoding="utf-8"))
@@ -94,6 +95,8 @@ def cmd_identify(args: argparse.Namespace) -> int:
         print((out / REPORT_FILE).read_text(encoding="utf-8"))
         print(f"wrote {out}/narx.json, datasets.h5, metrics.json, report.md in "
               f"{time.perf_counter() - started:.1f} s")
+    for warning in metrics.get("warnings", []):
+        print(f"jointplay: warning: {warning}", file=sys.stderr)
     return 0
 
 

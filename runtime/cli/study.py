@@ -31,6 +31,7 @@ from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
 from jointplay.neural.control import MODEL_BASED, load_twin
 from jointplay.neural.imc import ControllerSettings
+from jointplay.neural.metrics import WORSE_MARGIN
 from jointplay.neural.narx import load_narx
 from jointplay.neural.study import (
     CASES,
@@ -46,7 +47,8 @@ from jointplay.neural.study import (
     summarise,
     summary_table,
 )
-from jointplay.neural.study_runs import STUDY_JOBS, pool_map
+from jointplay.neural.study_report import ratio_goals, worse_lines
+from jointplay.neural.study_runs import JUDGED, STUDY_JOBS, pool_map
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -64,6 +66,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     neural_scene_argument(p)
     p.add_argument("--out", required=True, metavar="DIR",
                    help="folder for models/, study.md, study.csv, study.json and the plots")
+    p.add_argument("--first-seed", type=int, default=0,
+                   help="the seeds are FIRST_SEED, FIRST_SEED + 1, ... (default 0; a study of "
+                        "seeds not used for tuning starts past them)")
     p.add_argument("--seeds", type=int, default=3,
                    help="training seeds at the scene's clearance (default %(default)s)")
     p.add_argument("--cases", default=",".join(CASES),
@@ -127,6 +132,18 @@ def cmd_study(args: argparse.Namespace) -> int:
         "Goals:",
         "",
         *goal_checks(summary, plan.cases),
+        *ratio_goals(rows, plan.cases),
+        "",
+        "Against the baselines (" + ", ".join(JUDGED) + "; ties within "
+        f"{WORSE_MARGIN:g} not counted):",
+        "",
+        *worse_lines(rows, plan.cases),
+        "",
+        *identification_lines(models),
+        "The \"after settling\" window of each case starts at "
+        + ", ".join(sorted({f"{r['settle_s'] * 1e3:.0f} ms" for r in rows}))
+        + " (the later of the internal-model controllers' engagement plus their setpoint "
+        "filter's decay and the end of the open loop's release impacts).",
         "",
         f"Wall time {time.perf_counter() - started:.0f} s.",
     ])
@@ -137,6 +154,33 @@ def cmd_study(args: argparse.Namespace) -> int:
             print(f"wrote {path}")
     diverged = any(r["diverged"] > 0 for r in rows if r["controller"] in MODEL_BASED)
     return 3 if diverged else 0
+
+
+def identification_lines(models: dict[float, list[Path]]) -> list[str]:
+    """Free-run loss on each model's test runs: the saved network, its ARX twin and the
+    LPV-ARX baseline (median and worst over seeds), from each model's metrics.json."""
+    lines = ["Identification, free-run loss on the test runs (from each model's metrics.json; "
+             "median / worst seed):", "",
+             "| clearance | models | saved network | ARX | LPV-ARX | network residual weight "
+             "> 0 |", "|---|---|---|---|---|---|"]
+    for size, paths in models.items():
+        losses: dict[str, list[float]] = {"model": [], "arx": [], "lpv_arx": []}
+        alphas = []
+        for path in paths:
+            metrics = json.loads((path / "metrics.json").read_text(encoding="utf-8"))
+            test = metrics.get("free_run_loss", {}).get("test")
+            if test:
+                for k in losses:
+                    losses[k].append(float(test[k]))
+            alphas.append(float(metrics.get("residual", {}).get("alpha", 0.0)))
+        if not losses["model"]:
+            continue
+        import numpy as np
+
+        cells = " | ".join(f"{np.median(v):.3g} / {np.max(v):.3g}" for v in losses.values())
+        lines.append(f"| {size * 1e6:g} µm | {len(losses['model'])} | {cells} | "
+                     f"{sum(a > 0 for a in alphas)} of {len(alphas)} |")
+    return [*lines, ""]
 
 
 def noise_note(rows: list[dict[str, Any]], undeclared: bool) -> list[str]:
@@ -157,7 +201,7 @@ def noise_note(rows: list[dict[str, Any]], undeclared: bool) -> list[str]:
             mine = [r for r in noisy if r["controller"] == name]
             predicted = [r["predicted_noise_ratio"] for r in mine]
             measured = [r["rms_acceleration_after"] / base for r in mine]
-            lines.append(f"{name}: RMS |Δa| after 50 ms predicted {_span(predicted)}x the "
+            lines.append(f"{name}: RMS |Δa| after settling predicted {_span(predicted)}x the "
                          f"inner loop's alone, measured {_span(measured)}x PD's (over the "
                          "seeds; the prediction is the linear twin's, the measurement the "
                          "clearance robot's).")
@@ -183,6 +227,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                                "runs one model under noise of your choice")
     if args.seeds < 1:
         raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
+    if args.first_seed < 0:
+        raise DescriptionError("--first-seed", f"must be 0 or more, got {args.first_seed}")
     names = tuple(c.strip() for c in args.cases.split(",") if c.strip())
     unknown = [c for c in names if c not in CASES]
     if unknown or not names:
@@ -223,7 +269,7 @@ def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, li
             args.seeds, args.clearance_seeds)
         robot_scene = plan.scenes[next(k.name for k in plan.cases if k.clearance == size)]
         models[size] = ensure_models(robot_scene, plan.out / "models" / f"{size * 1e6:g}um", n,
-                                     plan.identify_args, args.quiet)
+                                     plan.identify_args, args.quiet, first=args.first_seed)
     if not models[plan.nominal]:
         raise DescriptionError("--seeds", "no seed gave a usable model; see the reports in "
                                f"{plan.out / 'models'}")
@@ -246,13 +292,14 @@ def compile_all(models: dict[float, list[Path]], settings: ControllerSettings) -
 def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, list[Path]],
               settings: ControllerSettings) -> list[dict[str, Any]]:
     """The baselines once per case, then both internal-model controllers per case and seed
-    (bounded by the baselines' divergence limit); one row per run."""
+    (bounded by the baselines' divergence limit, measured after the baselines' settling
+    window); one row per run."""
     STUDY_JOBS.clear()
     for c in plan.cases:
         STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None))
     base_rows = pool_map(list(range(len(STUDY_JOBS))), args.workers, args.quiet, "baselines")
     rows = [r for rs in base_rows for r in rs]
-    limits = {r["case"]: r["limit"] for r in rows if "limit" in r}
+    limits = {r["case"]: (r["limit"], r["settle_s"]) for r in rows if "limit" in r}
     start = len(STUDY_JOBS)
     for c in plan.cases:
         told = settings if args.undeclared_noise else declared(settings, plan.scene, c)

@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -41,11 +41,88 @@ from jointplay.neural.metrics import run_metrics, tip_errors
 from jointplay.neural.narx import Narx
 from jointplay.neural.noise_tuning import NoiseTuning, tune_to_noise
 
-DEFAULT_TRANSIENT = 0.05  # s: journals settling from e = 0, reported separately
+DEFAULT_TRANSIENT = 0.05  # s: what identification leaves out of each run (journals settling)
+# Impacts closer than this to the previous one belong to the release sequence that starts at
+# t = 0 (the journals falling from the bearing centres and bouncing): measured on the paper
+# scene's open loop, that sequence ends at 19.9 ms (30 µm) and 36.5 ms (0.1 mm), its gaps at
+# most 8.4 ms, and no impact follows in the next 0.36 s.
+RELEASE_GAP = 0.01  # s
+# The setpoint filter has let go of the deviation measured at engagement once a^n falls below
+# this (a = 0.9: 44 samples).
+SETPOINT_DECAY = 0.01
 NEURAL, LINEAR = "neural IMC", "ARX-IMC"
 CONTROLLERS = ("open loop", "PD", "computed torque", LINEAR, NEURAL)
 MODEL_BASED = (LINEAR, NEURAL)
 DIVERGENCE_FACTOR = 2.0  # x the open loop's largest tip error
+
+
+@dataclass(frozen=True)
+class Settling:
+    """Where the settling transient ends, and why: the later of the outer loop's engagement
+    (plus its setpoint filter's decay) and the end of the open loop's release impacts."""
+
+    time: float  # s: the metrics "after" start here
+    engage: float | None  # s: the outer loop engages (None: no internal-model controller)
+    filter_decayed: float | None  # s: its setpoint filter has decayed by SETPOINT_DECAY
+    release_end: float  # s: the open loop's release impacts have ended (+ RELEASE_GAP)
+    given: bool = False  # the window was given (--transient), not taken from the run
+
+    def describe(self) -> str:
+        ms = f"{self.time * 1e3:.0f} ms"
+        if self.given:
+            return f"the first {ms} are excluded from the \"after\" columns (--transient)"
+        parts = [f"the open loop's release impacts (the journals falling from the bearing "
+                 f"centres) end by {self.release_end * 1e3:.0f} ms" if self.release_end > 0
+                 else "the open loop has no release impacts (no impact in its first "
+                      f"{RELEASE_GAP * 1e3:g} ms)"]
+        if self.engage is None and self.filter_decayed is not None:
+            parts.insert(0, f"the internal-model controllers' engagement has settled by "
+                            f"{self.filter_decayed * 1e3:.0f} ms")
+        if self.engage is not None and self.filter_decayed is not None:
+            parts.insert(0, f"the outer loop engages at {self.engage * 1e3:.0f} ms and its "
+                            f"setpoint filter decays to {SETPOINT_DECAY:g} by "
+                            f"{self.filter_decayed * 1e3:.0f} ms")
+        return (f"the first {ms} are excluded from the \"after\" columns, taken from the "
+                "run: " + "; ".join(parts))
+
+
+def release_end(run: Run) -> float:
+    """The end of the impact sequence that starts at t = 0 (gaps below RELEASE_GAP), plus one
+    gap; 0 when the run has no impact."""
+    times = np.sort(np.asarray(run.impact_times, dtype=float))
+    if times.size == 0 or times[0] > RELEASE_GAP:
+        return 0.0
+    end = times[0]
+    for t in times[1:]:
+        if t - end > RELEASE_GAP:
+            break
+        end = t
+    return float(end + RELEASE_GAP)
+
+
+def engagement_end(engage: float, setpoint_filter: float, dt: float) -> float:
+    """When an internal-model controller engaging at ``engage`` s has let its setpoint filter
+    decay to SETPOINT_DECAY."""
+    a = setpoint_filter
+    samples = math.ceil(math.log(SETPOINT_DECAY) / math.log(a)) if 0 < a < 1 else 0
+    return engage + samples * dt
+
+
+def settling(runs: dict[str, Run], ctrls: dict[str, Controller], dt: float,
+             settle_after: float = 0.0) -> Settling:
+    """The settling transient of this comparison, from its runs (see :class:`Settling`)."""
+    engage = max((c.settings.engage or 0.0 for c in ctrls.values()), default=None)
+    decayed = None
+    if engage is not None:
+        decayed = max(engagement_end(c.settings.engage or 0.0, c.settings.setpoint_filter, dt)
+                      for c in ctrls.values())
+    elif settle_after > 0:
+        decayed = settle_after
+    base = runs.get("open loop")
+    release = release_end(base) if base is not None else max(
+        (release_end(r) for r in runs.values()), default=0.0)
+    time = max(release, decayed if decayed is not None else 0.0, settle_after)
+    return Settling(round(time / dt) * dt, engage, decayed, release)
 
 
 @dataclass
@@ -63,6 +140,7 @@ class Comparison:
     # the reference's end-effector acceleration every T / SUBSTEPS from t = 0
     dense_reference: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
     noise_tuning: NoiseTuning | None = None  # the horizon chosen for declared sensor noise
+    settling: Settling | None = None  # where the "after" metrics start, and why
 
     @property
     def controller(self) -> Controller:
@@ -71,16 +149,19 @@ class Comparison:
 
 
 def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx | None = None,
-            transient: float = DEFAULT_TRANSIENT, ct_omega: float = 15.0,
+            transient: float | None = None, ct_omega: float = 15.0,
             ct_zeta: float = 0.2, pd_kp: Sequence[float] = (), pd_kd: Sequence[float] = (),
             controllers: Sequence[str] = CONTROLLERS, quiet: bool = True,
             analyse: bool = True, conditions: LoopConditions = NO_CONDITIONS,
             limit: float | None = None, divergence_factor: float = DIVERGENCE_FACTOR,
             compiled: dict[str, Controller] | None = None,
-            plant_tolerance: float | None = None) -> Comparison:
+            plant_tolerance: float | None = None, settle_after: float = 0.0) -> Comparison:
     """Run the scene with every controller against the ideal robot's motion.
 
-    Without ``limit`` the open loop runs first and sets the divergence bound
+    ``transient``: seconds left out of the "after" metrics; None takes them from the run
+    (:func:`settling`), no earlier than ``settle_after`` (the engagement of controllers run
+    elsewhere, so that their rows share one window). Without ``limit`` the open loop runs
+    first and sets the divergence bound
     (``divergence_factor`` x its largest tip error). ``arx`` is the linear twin: the
     ARX-IMC's model and the neural controller's fallback (without it there is no ARX-IMC and
     the neural controller falls back to the inner loop alone). ``analyse`` also measures each
@@ -125,13 +206,17 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
             print(f"  {name}: {run.seconds:.1f} s, {run.impacts} impacts{note}", flush=True)
     if limit is None:
         limit = open_loop_bound(runs["open loop"], reference, nj, divergence_factor)
-    k0 = max(0, round(transient / scene.run.output_step))
+    dt = scene.run.output_step
+    settled = (settling(runs, ctrls, dt, settle_after) if transient is None else
+               Settling(transient, None, None, 0.0, given=True))
+    k0 = max(0, round(settled.time / dt))
     dense_reference = ideal_reference(scene.with_run(
         output_step=scene.run.output_step / SUBSTEPS)).tip_acceleration
     metrics = {name: run_metrics(run, reference, nj, k0, dense_reference)
                for name, run in runs.items()}
     result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau,
-                        dense_reference=dense_reference, noise_tuning=tuning)
+                        dense_reference=dense_reference, noise_tuning=tuning,
+                        settling=settled)
     if analyse:
         _analyse(result)
     return result
@@ -199,14 +284,34 @@ def _analyse(result: Comparison) -> None:
         states = result.runs[name].states
         picks = states[np.linspace(0, len(states) - 1, min(8, len(states))).astype(int)] \
             if len(states) else states
+        picks = picks[_trusted(result.runs[name], picks, states)] if len(states) else picks
         nominal, local = stability_radii(ctrl, picks)
         result.nominal_radius[name] = nominal
         result.local_radius[name] = local
 
 
+def _trusted(run: Run, picks: np.ndarray, states: np.ndarray) -> np.ndarray:
+    """Which picked states were visited with the model in charge (guard not acting): the
+    linearisation there is the law that ran."""
+    index = np.linspace(0, len(states) - 1, min(8, len(states))).astype(int)
+    if run.flags.size == 0:
+        return np.ones(len(picks), dtype=bool)
+    flags = run.flags[np.minimum(index, run.flags.shape[0] - 1)]
+    return np.asarray(flags[:, 0] < 0.5)
+
+
 def stability_radii(ctrl: Controller, states: np.ndarray) -> tuple[float, np.ndarray]:
-    """Nominal spectral radius and the radii at the given visited controller states."""
-    return nominal_spectral_radius(ctrl), local_spectral_radii(ctrl, states)
+    """Nominal spectral radius and the radii at the given visited controller states.
+
+    The nominal radius is that of the law with its model in charge: the same model compiled
+    without the guard, so that a guard switching the model off while the loop settles cannot
+    put its fallback's (or the mismatch filter's) poles in the model's place, and one model
+    gives one verdict whichever controller it sits in."""
+    primary = ctrl
+    if ctrl.settings.guard:
+        primary = compile_controller(ctrl.model, replace(ctrl.settings, guard=False),
+                                     compiled=False)
+    return nominal_spectral_radius(primary), local_spectral_radii(ctrl, states)
 
 
 MARGINAL = 1e-3  # a radius this close to 1 is an integrator the verdict cannot decide on
@@ -243,16 +348,20 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
     local = comparison.local_radius.get(name)
     if nominal is not None:
         if nominal < 1 - MARGINAL:
-            lin = f"nominal linearisation stable (spectral radius {nominal:.4f})"
+            lin = (f"nominal linearisation (its model in charge) stable (spectral radius "
+                   f"{nominal:.4f})")
         elif nominal <= 1 + MARGINAL:
-            lin = (f"nominal linearisation marginal (spectral radius {nominal:.4f}, within "
+            lin = (f"nominal linearisation (its model in charge) marginal (spectral radius "
+                   f"{nominal:.4f}, within "
                    f"{MARGINAL:g} of 1: an integrating mode the tracked outputs do not see; "
                    "undecided)")
         else:
-            lin = f"nominal linearisation unstable (spectral radius {nominal:.4f})"
+            warn = True
+            lin = (f"nominal linearisation (its model in charge) unstable (spectral radius "
+                   f"{nominal:.4f})")
         if local is not None and local.size:
-            lin += (f"; at {local.size} states along the run {np.min(local):.4f} to "
-                    f"{np.max(local):.4f}")
+            lin += (f"; at {local.size} states along the run with the model trusted "
+                    f"{np.min(local):.4f} to {np.max(local):.4f}")
             if np.max(local) > 1 + MARGINAL:
                 lin += " (above 1 at some: stability beyond this run is not established)"
         parts.append(lin)
@@ -343,5 +452,7 @@ def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any],
 
 
 __all__ = ["CONTROLLERS", "DEFAULT_TRANSIENT", "DIVERGENCE_FACTOR", "LINEAR", "MARGINAL",
-           "MODEL_BASED", "NEURAL", "Comparison", "compare", "open_loop_bound", "stability_radii",
+           "MODEL_BASED", "NEURAL", "RELEASE_GAP", "SETPOINT_DECAY", "Comparison", "Settling",
+           "compare", "engagement_end", "open_loop_bound", "release_end", "settling",
+           "stability_radii",
            "verdict", "write_runs"]

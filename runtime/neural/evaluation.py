@@ -116,8 +116,7 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
             f"{res['free_run_loss_persistence']:.4g}). "
             + ("The residual improves on the linear model on validation."
                if res["alpha"] > 0 and res["free_run_loss"] < res["free_run_loss_arx"]
-               else "The residual does not improve on the linear model on validation: the "
-                    "saved network is the ARX model."),
+               else _no_residual_reason(res)),
             f"Validation, mean one-step NRMSE: model {res['one_step_nrmse']:.4g}, ARX "
             f"{res['one_step_nrmse_arx']:.4g}, persistence "
             f"{res['one_step_nrmse_persistence']:.4g}.",
@@ -125,7 +124,53 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
         ]
         if not res["usable"]:
             lines += ["**REJECTED**: " + "; ".join(res["problems"]) + ".", ""]
+    lines += _baseline_lines(metrics)
+    lines += _repair_lines(metrics)
+    warnings = metrics.get("warnings") or []
+    if warnings:
+        lines += ["## Warnings", "", *[f"- **warning**: {w}" for w in warnings], ""]
     return "\n".join(lines)
+
+
+def _no_residual_reason(res: dict[str, Any]) -> str:
+    """Why the residual weight is 0, from the losses (an unstable free run is said as such)."""
+    net, arx = res["network_free_run_loss"], res["free_run_loss_arx"]
+    if not math.isfinite(net) or net > 10 * arx:
+        return (f"The trained network's free run is unstable on validation (loss {net:.4g} "
+                f"against the linear model's {arx:.4g}), and no residual weight improves on "
+                "the linear model: the saved network is the ARX model.")
+    return ("The residual does not improve on the linear model on validation (network "
+            f"{net:.4g}, linear {arx:.4g}): the saved network is the ARX model.")
+
+
+def _baseline_lines(metrics: dict[str, Any]) -> list[str]:
+    """The saved model against both linear models in free run (validation and test)."""
+    losses = metrics.get("free_run_loss")
+    if not losses:
+        return []
+    lines = [f"Free-run loss over {losses['window']}-sample windows (mean squared error / output "
+             "scale; lower is better) of the saved model, its ARX twin and an LPV-ARX model "
+             f"(coefficients affine in {losses['scheduling']}; least squares):", "",
+             "| runs | saved model | ARX | LPV-ARX | best |", "|---|---|---|---|---|"]
+    for part in ("validation", "test"):
+        row = losses[part]
+        best = min(row, key=lambda k: row[k])
+        names = {"model": "saved model", "arx": "ARX", "lpv_arx": "LPV-ARX"}
+        lines.append(f"| {part} | {row['model']:.4g} | {row['arx']:.4g} | "
+                     f"{row['lpv_arx']:.4g} | {names[best]} |")
+    return [*lines, ""]
+
+
+def _repair_lines(metrics: dict[str, Any]) -> list[str]:
+    """What training did when a loss went non-finite (nothing is left silent)."""
+    repairs = metrics.get("training_history", {}).get("repairs") or []
+    if not repairs:
+        return ["Training: no loss went non-finite; no repair was needed.", ""]
+    lines = ["## Training repairs", ""]
+    for r in repairs:
+        lines.append(f"- {r['phase']}: {r['problem']}; {r['action']} "
+                     f"({'cured' if r.get('cured') else 'NOT cured'})")
+    return [*lines, ""]
 
 
 __all__ = ["evaluate", "identify_report", "metrics_table"]

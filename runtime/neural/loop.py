@@ -42,6 +42,7 @@ class Run:
     # (t_k, t_k+1]): times and (x, y) rows; empty when the plant gives no dense output.
     dense_t: np.ndarray = field(default_factory=lambda: np.zeros(0))
     dense_acceleration: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    impact_times: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s
 
     @property
     def guard_counts(self) -> dict[str, int]:
@@ -129,7 +130,9 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
     dense_t, dense_a = stepper.dense_tip_acceleration()
     return Run(name, t[keep], y[keep], tau[keep], np.zeros_like(tau[keep]),
                len(stepper.impacts), time.perf_counter() - start, diverged,
-               dense_t=dense_t, dense_acceleration=dense_a)
+               dense_t=dense_t, dense_acceleration=dense_a,
+               # A journal starting in contact is recorded at t = 0 at zero speed: not a strike.
+               impact_times=np.array([float(i[0]) for i in stepper.impacts if i[2] > 0]))
 
 
 def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,

@@ -66,6 +66,42 @@ def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int,
     return out
 
 
+# The metrics the table reports, each judged against the open loop and PD.
+REPORTED = {"max_position": "max |Δp|", "max_velocity": "max |Δv|",
+            "max_acceleration": "max |Δa|", "rms_acceleration": "RMS |Δa|",
+            "max_velocity_after": "max |Δv| after the transient",
+            "max_acceleration_after": "max |Δa| after the transient",
+            "rms_acceleration_after": "RMS |Δa| after the transient"}
+# A ratio within this of 1 is a tie (the whole-run maxima of every controller are the open
+# loop's, set by the journals' fall before any controller acts).
+WORSE_MARGIN = 1e-3
+
+
+def worse_than_baselines(metrics: dict[str, dict[str, float]]
+                         ) -> list[tuple[str, str, str, float]]:
+    """Every (controller, metric, baseline, ratio) where a controller ends worse than the open
+    loop, or (a controller other than PD) than PD, on a reported metric."""
+    out: list[tuple[str, str, str, float]] = []
+    for name, mt in metrics.items():
+        for base in ("open loop", "PD"):
+            if name in (base, "open loop") or base not in metrics:
+                continue
+            for key in REPORTED:
+                ref = metrics[base].get(key, 0.0)
+                if ref > 0 and mt.get(key, 0.0) > ref * (1 + WORSE_MARGIN):
+                    out.append((name, key, base, mt[key] / ref))
+    return out
+
+
+def worse_lines(metrics: dict[str, dict[str, float]]) -> list[str]:
+    """One sentence per controller and baseline it ends worse than."""
+    grouped: dict[tuple[str, str], list[str]] = {}
+    for name, key, base, ratio in worse_than_baselines(metrics):
+        grouped.setdefault((name, base), []).append(f"{REPORTED[key]} {ratio:.4g}x")
+    return [f"{name} is worse than {'no control (open loop)' if base == 'open loop' else base}"
+            f" on " + ", ".join(items) for (name, base), items in grouped.items()]
+
+
 def metrics_table(metrics: dict[str, dict[str, float]], transient_s: float) -> str:
     """Markdown table: every controller side by side, and the open-loop / controller ratio."""
     cols = [("max_position", "max \\|Δp\\| [m]"), ("max_velocity", "max \\|Δv\\| [m/s]"),
@@ -93,5 +129,5 @@ def metrics_table(metrics: dict[str, dict[str, float]], transient_s: float) -> s
     return "\n".join(lines)
 
 
-__all__ = ["GUARD_METRICS", "METRICS", "dense_acceleration_error", "metrics_table",
-           "run_metrics", "tip_errors"]
+__all__ = ["GUARD_METRICS", "METRICS", "REPORTED", "WORSE_MARGIN", "dense_acceleration_error",
+           "metrics_table", "run_metrics", "tip_errors", "worse_lines", "worse_than_baselines"]

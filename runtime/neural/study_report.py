@@ -9,8 +9,9 @@ from typing import Any
 import numpy as np
 
 from jointplay.neural.comparison import LINEAR, MODEL_BASED, NEURAL
+from jointplay.neural.metrics import WORSE_MARGIN
 from jointplay.neural.study_cases import Case
-from jointplay.neural.study_runs import BASELINES, GOAL_METRICS, REPORTED
+from jointplay.neural.study_runs import BASELINES, GOAL_METRICS, JUDGED, REPORTED
 
 PAPER = {"max_position": 2.4e-4, "max_velocity": 7.7e-3}
 
@@ -60,9 +61,9 @@ def goal_checks(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case
                 s["median_rms_acceleration_after"]
             lines.append(f"- {first}: paper figures: median max |Δp| "
                          f"{s['median_max_position']:.3g} m (paper 2.4e-4), median max |Δv| "
-                         f"after 50 ms {s['median_max_velocity_after']:.3g} m/s (paper 7.7e-3;"
+                         f"after settling {s['median_max_velocity_after']:.3g} m/s (paper 7.7e-3;"
                          f" over the whole run {s['median_max_velocity']:.3g}, the journals' "
-                         f"fall), RMS |Δa| after 50 ms reduced {ratio:.3g}x from the open loop "
+                         f"fall), RMS |Δa| after settling reduced {ratio:.3g}x from the open loop "
                          "(paper: tenfold)")
     for c in cases[1:]:
         worse = []
@@ -75,6 +76,58 @@ def goal_checks(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case
         lines.append(f"- {c.name}: neural IMC worst seed "
                      + ("within 10 % of PD or better on every metric" if not worse
                         else "worse than PD by more than 10 %: " + "; ".join(worse)))
+    return lines
+
+
+def worse_counts(rows: list[dict[str, Any]]) -> dict[tuple[str, str, str], int]:
+    """(case, controller, baseline) -> runs (seeds) that end worse than that baseline on some
+    judged metric (ties within WORSE_MARGIN not counted)."""
+    base = {(r["case"], r["controller"]): r for r in rows if r["seed"] == -1}
+    out: dict[tuple[str, str, str], int] = {}
+    for r in rows:
+        for baseline in ("open loop", "PD"):
+            ref = base.get((r["case"], baseline))
+            if ref is None or r["controller"] in (baseline, "open loop"):
+                continue
+            worse = any(ref[k] > 0 and r[k] > ref[k] * (1 + WORSE_MARGIN) for k in JUDGED)
+            key = (r["case"], r["controller"], baseline)
+            out[key] = out.get(key, 0) + int(worse)
+    return out
+
+
+def worse_lines(rows: list[dict[str, Any]], cases: list[Case]) -> list[str]:
+    counts = worse_counts(rows)
+    runs: dict[tuple[str, str], int] = {}
+    for r in rows:
+        runs[(r["case"], r["controller"])] = runs.get((r["case"], r["controller"]), 0) + 1
+    lines = []
+    for c in cases:
+        for name in ("PD", "computed torque", LINEAR, NEURAL):
+            for baseline in ("open loop", "PD"):
+                n = counts.get((c.name, name, baseline), 0)
+                if n:
+                    lines.append(f"- {c.name}: {name} ends worse than "
+                                 f"{'no control (open loop)' if baseline == 'open loop' else 'PD'}"
+                                 f" on some judged metric in {n} of "
+                                 f"{runs[(c.name, name)]} run(s)")
+    return lines or ["- no controller ends worse than the open loop or PD on any judged metric"]
+
+
+def ratio_goals(rows: list[dict[str, Any]], cases: list[Case]) -> list[str]:
+    """Neural IMC / ARX-IMC RMS |Δa| after settling, per seed: median and worst (goal 0.75)."""
+    key = "rms_acceleration_after"
+    lines = []
+    for c in cases:
+        mine = {r["seed"]: r[key] for r in rows if r["case"] == c.name
+                and r["controller"] == NEURAL}
+        twin = {r["seed"]: r[key] for r in rows if r["case"] == c.name
+                and r["controller"] == LINEAR}
+        ratios = [mine[s] / twin[s] for s in mine if s in twin and twin[s] > 0]
+        if ratios:
+            med, worst = float(np.median(ratios)), float(np.max(ratios))
+            lines.append(f"- {c.name}: neural IMC / ARX-IMC RMS |Δa| after settling: median "
+                         f"{med:.3f}, worst seed {worst:.3f} (goal <= 0.75: "
+                         f"{'met' if worst <= 0.75 else 'NOT met'})")
     return lines
 
 
@@ -94,6 +147,40 @@ def summary_table(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Ca
                          f"{s['median_guard_episodes']:g}, "
                          f"{s['worst_guard_episodes']:g} |")
     return "\n".join(lines)
+
+
+def plot_winners(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case],
+                 folder: Path) -> Path:
+    """Which controller has the lowest median of each goal metric in each case (the regimes
+    where each wins), with its ratio to the runner-up."""
+    from matplotlib.colors import ListedColormap
+
+    from jointplay.common.figures import figure, save
+    from jointplay.neural.control_plots import COLORS
+
+    names = (*BASELINES, LINEAR, NEURAL)
+    grid = np.full((len(GOAL_METRICS), len(cases)), np.nan)
+    fig, axes = figure(1, 1, max(8, 1.4 * len(cases)), 4)
+    ax = axes[0, 0]
+    for i, (key, _) in enumerate(GOAL_METRICS):
+        for j, c in enumerate(cases):
+            values = {n: summary[(c.name, n)][f"median_{key}"] for n in names
+                      if (c.name, n) in summary}
+            if not values:
+                continue
+            order = sorted(values, key=lambda n: values[n])
+            grid[i, j] = names.index(order[0])
+            ratio = values[order[1]] / values[order[0]] if len(order) > 1 and values[
+                order[0]] > 0 else float("nan")
+            tie = " (tie)" if ratio < 1 + WORSE_MARGIN else ""
+            ax.text(j, i, f"{order[0]}\nrunner-up {order[1]}: {ratio:.4g}x{tie}", ha="center",
+                    va="center", fontsize=7)
+    cmap = ListedColormap([COLORS.get(n, "C5") for n in names])
+    ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(names) - 0.5, aspect="auto", alpha=0.45)
+    ax.set_xticks(range(len(cases)), [c.name for c in cases], rotation=20)
+    ax.set_yticks(range(len(GOAL_METRICS)), [label for _, label in GOAL_METRICS])
+    ax.set_title("Lowest median over seeds, per case and metric", fontsize=10)
+    return save(fig, folder / "study_winners.png")
 
 
 def plot_study(rows: list[dict[str, Any]], cases: list[Case], folder: Path) -> list[Path]:
@@ -125,7 +212,9 @@ def plot_study(rows: list[dict[str, Any]], cases: list[Case], folder: Path) -> l
     fig.suptitle("Controllers over training seeds, trajectories and clearances (dots: seeds; "
                  "bars: medians; baselines do not depend on the seed)")
     fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=5)
-    return [save(fig, folder / "study_errors.png")]
+    return [save(fig, folder / "study_errors.png"),
+            plot_winners(summarise(rows), cases, folder)]
 
 
-__all__ = ["PAPER", "goal_checks", "plot_study", "summarise", "summary_table"]
+__all__ = ["PAPER", "goal_checks", "plot_study", "plot_winners", "ratio_goals", "summarise",
+           "summary_table", "worse_counts", "worse_lines"]

@@ -13,13 +13,25 @@ from jointplay.neural.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_id
 
 BASELINES = ("open loop", "PD", "computed torque")
 GOAL_METRICS = (("max_position", "max |Δp| [m]"),
-                ("max_velocity_after", "max |Δv| after 50 ms [m/s]"),
-                ("rms_acceleration_after", "RMS |Δa| after 50 ms [m/s²]"))
-REPORTED = (*(k for k, _ in GOAL_METRICS), "max_velocity", "max_acceleration_after",
-            "diverged", "guard_episodes", "fallback_samples", "input_bound_samples")
+                ("max_velocity_after", "max |Δv| after settling [m/s]"),
+                ("rms_acceleration_after", "RMS |Δa| after settling [m/s²]"))
+# The metrics judged against the open loop and PD ("worse than no control" is counted).
+JUDGED = (*(k for k, _ in GOAL_METRICS), "max_velocity", "max_acceleration_after")
+REPORTED = (*JUDGED, "diverged", "guard_episodes", "fallback_samples", "input_bound_samples",
+            "settle_s")
 
 
 STUDY_JOBS: list[Any] = []  # filled before the pool forks: workers read their job by index
+
+
+def study_engagement(settings: Any, dt: float) -> float:
+    """When the study's internal-model controllers have engaged and their setpoint filter
+    has decayed (the engagement default: twice identify's left-out start)."""
+    from jointplay.neural.comparison import engagement_end
+    from jointplay.neural.identify_config import IdentifyConfig
+
+    engage = settings.engage if settings.engage is not None else 2.0 * IdentifyConfig.transient
+    return engagement_end(engage, settings.setpoint_filter, dt)
 
 
 def _run_unit(index: int) -> list[dict[str, Any]]:
@@ -27,19 +39,26 @@ def _run_unit(index: int) -> list[dict[str, Any]]:
     rows = []
     if model_dir is None:
         narx = None
+        # The baselines' window: the later of the case's release impacts and the engagement
+        # of the internal-model controllers run after them (one window for every row).
         result = compare(scene, _dummy_model(scene), settings, controllers=BASELINES,
-                         analyse=False, conditions=case.conditions)
+                         analyse=False, conditions=case.conditions,
+                         settle_after=study_engagement(settings, scene.run.output_step))
         seed = -1
     else:
         narx = load_narx(model_dir)
         arx = load_twin(model_dir, narx)
+        limit, settle = limit
         result = compare(scene, narx, settings, arx=arx, controllers=MODEL_BASED,
-                         analyse=False, conditions=case.conditions, limit=limit)
+                         analyse=False, conditions=case.conditions, limit=limit,
+                         transient=settle)
         seed = int(narx.context["training"]["seed"])
+    settle_s = result.settling.time if result.settling else 0.0
     nj = len(scene.robot.moving_joints)
     for name, mt in result.metrics.items():
         row = {"case": case.name, "clearance_um": case.clearance * 1e6, "controller": name,
-               "seed": seed, **{k: mt.get(k, math.nan) for k in REPORTED}}
+               "seed": seed, **{k: mt.get(k, math.nan) for k in REPORTED},
+               "settle_s": settle_s}
         if name == "open loop":
             row["limit"] = open_loop_bound(result.runs[name], result.reference, nj,
                                            DIVERGENCE_FACTOR)
@@ -90,13 +109,13 @@ def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[
 
 
 def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str, Any],
-                  quiet: bool) -> list[Path]:
+                  quiet: bool, first: int = 0) -> list[Path]:
     """One identified model per seed (reused when its folder already holds one for this
     robot); rejected models are left out, and said so."""
     from jointplay.neural.identify import IdentifyConfig, ModelRejected, identify
 
     out = []
-    for seed in range(seeds):
+    for seed in range(first, first + seeds):
         path = folder / f"seed{seed}"
         ok = (path / MODEL_FILE).is_file() and load_narx(path).context.get("robot", {}).get(
             "robot_hash") == robot_identity(scene.robot)["robot_hash"]
@@ -115,4 +134,5 @@ def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str,
     return out
 
 
-__all__ = ["BASELINES", "GOAL_METRICS", "REPORTED", "ensure_models"]
+__all__ = ["BASELINES", "GOAL_METRICS", "JUDGED", "REPORTED", "ensure_models",
+           "study_engagement"]

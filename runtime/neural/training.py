@@ -2,7 +2,9 @@
 
 PyTorch, float64, CPU: one-step-ahead least squares (L-BFGS, full batch), then simulation
 error on windows of the training trajectories (the controller runs the model in free run),
-each phase stopped early on the validation loss. torch is imported inside the training
+each phase stopped early on the validation loss. A free run that runs away is repaired before
+the second phase and a phase whose loss goes NaN retried (FREE_RUN_ATTEMPTS), each repair
+recorded in the history. torch is imported inside the training
 function only, so importing jointplay does not import it. The exported weights are checked to
 reproduce torch's predictions through CasADi."""
 
@@ -122,6 +124,7 @@ class _Network:
         layers.append(torch.nn.Linear(width, self.ny, dtype=self.dtype))
         self.net = torch.nn.Sequential(*layers)
         self.direct = torch.nn.Linear(data.x.shape[1], self.ny, bias=False, dtype=self.dtype)
+        self.linear_start: tuple[Any, Any] | None = None  # (weight, bias) of the linear fit
         self.params = list(self.net.parameters())
         if self.linear_path:
             self._start_linear(data)
@@ -135,6 +138,7 @@ class _Network:
         zero: training then only has to add what is nonlinear."""
         theta = _least_squares((data.x - data.mu) / data.sigma, (data.t - data.tm) / data.ts,
                                1e-9)
+        self.linear_start = (self.tensor(theta[:-1].T), self.tensor(theta[-1]))
         with self.torch.no_grad():
             self.direct.weight.copy_(self.tensor(theta[:-1].T))
             self.net[-1].bias.copy_(self.tensor(theta[-1]))
@@ -233,7 +237,7 @@ def _train(torch: Any, train: Sequence[Trajectory], validation: Sequence[Traject
 
     data = _training_data(train, validation, config, names, dt)
     net = _Network(torch, config, data)
-    history: dict[str, list[float | None]] = {"one_step_train": [], "one_step_validation": [],
+    history: dict[str, list[Any]] = {"one_step_train": [], "one_step_validation": [],
                                               "free_run_train": [], "free_run_validation": []}
     total = config.one_step_iterations + config.multi_step_iterations
     start = time.perf_counter()
@@ -251,7 +255,7 @@ def _train(torch: Any, train: Sequence[Trajectory], validation: Sequence[Traject
 
 
 def _one_step_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConfig,
-                    history: dict[str, list[float | None]], bar: Any) -> None:
+                    history: dict[str, list[Any]], bar: Any) -> None:
     """Phase 1: one step ahead, full batch."""
     zx, zt = net.tensor((data.x - data.mu) / data.sigma), net.tensor((data.t - data.tm) / data.ts)
     zxv = net.tensor((data.xv - data.mu) / data.sigma)
@@ -274,39 +278,148 @@ def _one_step_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConf
                    stop_on_nonfinite=False)
 
 
-def _free_run_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConfig,
-                    history: dict[str, list[float | None]], bar: Any) -> None:
-    """Phase 2: simulation error on windows (what the controller relies on)."""
-    dw, uw = net.windows(data.segments, config.window)
-    dvw, uvw = net.windows(data.validation_segments, config.window)
-    opt = torch.optim.LBFGS(net.params, lr=1.0, max_iter=10, history_size=50,
-                            line_search_fn="strong_wolfe")
+# How the free-run phase is retried when its loss goes non-finite: each attempt starts from
+# the best state so far, with a smaller L-BFGS step, windows lengthened from short to the full
+# length (a short free run cannot run away before the gradient sees it), and then a penalty
+# on the hidden layers' weights (a smaller residual is a smoother, more stable one).
+@dataclass(frozen=True)
+class _Attempt:
+    lr: float  # L-BFGS step
+    windows: tuple[float, ...]  # window lengths in turn, x the configured window
+    penalty: float  # on the hidden layers' squared weights
 
-    def closure() -> Any:
-        opt.zero_grad()
-        loss = net.sim_loss(dw, uw)
-        loss.backward()
-        return loss
+
+FREE_RUN_ATTEMPTS = (
+    _Attempt(1.0, (1.0,), 0.0),
+    _Attempt(0.1, (0.125, 0.5, 1.0), 0.0),
+    _Attempt(0.02, (0.125, 0.5, 1.0), 1e-3),
+)
+# Shrink factors tried on the residual before the free-run phase when the one-step network
+# runs away in free run (1: as trained; 0: the least-squares linear start).
+RESIDUAL_SHRINK = (1.0, 0.5, 0.25, 0.1, 0.0)
+RUNAWAY = 10.0
+
+
+def _free_run_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConfig,
+                    history: dict[str, list[Any]], bar: Any) -> None:
+    """Phase 2: simulation error on windows (what the controller relies on).
+
+    A free run that is not finite is never left to stand: the residual is first shrunk
+    until the one-step network runs stably in free run, and a phase whose loss goes NaN is
+    retried (:data:`FREE_RUN_ATTEMPTS`); every repair is recorded in ``history["repairs"]``."""
+    repairs: list[dict[str, Any]] = history.setdefault("repairs", [])
+    dvw, uvw = net.windows(data.validation_segments, config.window)
 
     def validate() -> float:
         with torch.no_grad():
             return float(net.sim_loss(dvw, uvw))
 
+    _stabilise_start(torch, net, validate, repairs)
+    for number, attempt in enumerate(FREE_RUN_ATTEMPTS, start=1):
+        outcome = "iterations"
+        for fraction in attempt.windows:
+            length = max(5, round(config.window * fraction))
+            outcome = _free_run_attempt(torch, net, data, config, history, bar, length,
+                                        attempt.lr, attempt.penalty, validate)
+            if outcome == "nonfinite":
+                break
+        if outcome != "nonfinite":
+            if number > 1:
+                repairs[-1]["cured"] = True
+            return
+        following = FREE_RUN_ATTEMPTS[number] if number < len(FREE_RUN_ATTEMPTS) else None
+        repairs.append({
+            "phase": "free-run", "problem": f"training loss not finite (attempt {number}, "
+                                            f"L-BFGS step {attempt.lr:g})",
+            "action": ("restored the best state and retried with L-BFGS step "
+                       f"{following.lr:g}, windows of "
+                       + ", ".join(f"{max(5, round(config.window * f))}"
+                                   for f in following.windows)
+                       + " samples in turn"
+                       + (f", hidden-weight penalty {following.penalty:g}"
+                          if following.penalty else "")
+                       if following else "restored the best state; free-run training "
+                                         "stopped there"),
+            "cured": False})
+
+
+def _stabilise_start(torch: Any, net: _Network, validate: Callable[[], float],
+                     repairs: list[dict[str, Any]]) -> None:
+    """Shrink the hidden layers' output until the one-step network's free run is finite and
+    no worse than the least-squares linear start (shrink 0), so the free-run phase starts
+    from a stable model instead of one whose gradient is NaN."""
+    last = net.net[-1]
+    with torch.no_grad():
+        weight, bias = last.weight.detach().clone(), last.bias.detach().clone()
+        direct = net.direct.weight.detach().clone()
+    linear = net.linear_start
+
+    def set_shrink(c: float) -> None:
+        with torch.no_grad():
+            last.weight.copy_(c * weight)
+            if linear is not None:  # blend the direct path and the bias back to the linear fit
+                last.bias.copy_(c * bias + (1 - c) * linear[1])
+                net.direct.weight.copy_(c * direct + (1 - c) * linear[0])
+
+    losses: dict[float, float] = {}
+    for c in (1.0, 0.0):
+        set_shrink(c)
+        val = validate()
+        losses[c] = val if math.isfinite(val) else math.inf
+    # Runaway: not finite, or RUNAWAY x the linear start's loss (a free run that grows by
+    # orders of magnitude is unstable, not merely inaccurate).
+    if losses[1.0] <= RUNAWAY * losses[0.0]:
+        set_shrink(1.0)
+        return
+    for c in RESIDUAL_SHRINK[1:-1]:
+        set_shrink(c)
+        val = validate()
+        losses[c] = val if math.isfinite(val) else math.inf
+    best = min(losses, key=lambda c: (losses[c], -c))
+    set_shrink(best)
+    repairs.append({"phase": "free-run start",
+                    "problem": f"the one-step network's free run on validation runs away (loss "
+                               f"{losses[1.0]:.4g} against {losses[0.0]:.4g} for the linear "
+                               "start)",
+                    "action": f"residual shrunk to {best:g} x (loss by shrink: "
+                              + ", ".join(f"{c:g}: {v:.4g}" for c, v in losses.items()) + ")",
+                    "cured": math.isfinite(losses[best])})
+
+
+def _free_run_attempt(torch: Any, net: _Network, data: _Data, config: IdentifyConfig,
+                      history: dict[str, list[Any]], bar: Any, length: int, lr: float,
+                      penalty: float, validate: Callable[[], float]) -> str:
+    """One early-stopped L-BFGS run on windows of ``length`` samples; how it ended."""
+    dw, uw = net.windows(data.segments, length)
+    hidden = [p for layer in net.net if isinstance(layer, torch.nn.Linear)
+              for p in (layer.weight,)]
+    opt = torch.optim.LBFGS(net.params, lr=lr, max_iter=10, history_size=50,
+                            line_search_fn="strong_wolfe")
+
+    def closure() -> Any:
+        opt.zero_grad()
+        loss = net.sim_loss(dw, uw)
+        if penalty:
+            loss = loss + penalty * sum((w ** 2).mean() for w in hidden)
+        loss.backward()
+        return loss
+
     # A diverged L-BFGS step gives NaN: recorded as null (the run stops there and keeps its
     # best state); metrics.json holds no NaN.
-    _early_stopped(opt, closure, validate, net, config.multi_step_iterations, config.patience,
-                   best=validate(), phase="free-run", history=history, bar=bar,
-                   stop_on_nonfinite=True)
+    return _early_stopped(opt, closure, validate, net, config.multi_step_iterations,
+                          config.patience, best=validate(), phase="free-run", history=history,
+                          bar=bar, stop_on_nonfinite=True)
 
 
 def _early_stopped(opt: Any, closure: Callable[[], Any], validate: Callable[[], float],
                    net: _Network, iterations: int, patience: int, *, best: float, phase: str,
-                   history: dict[str, list[float | None]], bar: Any,
-                   stop_on_nonfinite: bool) -> None:
+                   history: dict[str, list[Any]], bar: Any,
+                   stop_on_nonfinite: bool) -> str:
     """Optimiser steps until ``iterations``, or ``patience`` steps without a better validation
-    loss than ``best``; the network is left at its best state."""
+    loss than ``best``; the network is left at its best state. Returns how it ended:
+    "iterations", "patience" or "nonfinite"."""
     key = phase.replace("-", "_")
-    best_state, stale = net.state(), 0
+    best_state, stale, outcome = net.state(), 0, "iterations"
     for _ in range(iterations):
         loss = float(opt.step(closure).detach())
         val = validate()
@@ -315,14 +428,17 @@ def _early_stopped(opt: Any, closure: Callable[[], Any], validate: Callable[[], 
         bar.update(1)
         bar.set_postfix(phase=phase, train=f"{loss:.3g}", val=f"{val:.3g}")
         if stop_on_nonfinite and not math.isfinite(loss):
+            outcome = "nonfinite"
             break
         if val < best * (1 - 1e-4):
             best, best_state, stale = val, net.state(), 0
         else:
             stale += 1
             if stale >= patience:
+                outcome = "patience"
                 break
     net.restore(best_state)
+    return outcome
 
 
 def _export_error(torch: Any, net: _Network, model: Narx, data: _Data) -> float:

@@ -15,6 +15,7 @@ file, the field and what is allowed.
                              # covering [0, t_end]; hold_ends = true holds its end rows)
     [initial]                # coordinates (q2, ex2, ...) and speeds (dq2, dex2, ...); default 0
     q2 = "-pi"
+    journals = "resting"     # or "centred" (default): each journal at rest in its bearing
     [run]
     t_end = 2.0
     output_step = 1e-3
@@ -94,6 +95,10 @@ class Scene:
     constants: dict[str, float] = field(default_factory=dict)
     source: str | None = None
     text: str = ""  # the scene file as read, kept with the results
+    # "centred": the journals start at the eccentricities [initial] gives (default 0, the
+    # bearing centres); "resting": at rest, each journal in static equilibrium in its bearing
+    # under gravity (solved by the runtime: jointplay.sim.equilibrium)
+    journals: str = "centred"
 
     def __post_init__(self) -> None:
         # One validation for every front door: a scene read from TOML, built by the API or
@@ -117,6 +122,8 @@ class Scene:
         with problems.check():
             if isinstance(self.robot, Robot):
                 object.__setattr__(self, "initial", validate_initial(self.initial, self.robot))
+        with problems.check():
+            _check_journals(self.journals, self.initial, None)
         problems.raise_any(self.source)
 
     def with_run(self, **changes: Any) -> Scene:
@@ -179,6 +186,11 @@ class Scene:
         scene = replace(self, torques=torques, torque_text=texts)
         check_torques_finite(scene)
         return scene
+
+    def with_journals(self, journals: str) -> Scene:
+        """The same scene starting with the journals ``"centred"`` or ``"resting"``."""
+        _check_journals(journals, self.initial, self.source)
+        return replace(self, journals=journals)
 
 
 def ideal_counterpart(robot: Robot) -> Robot:
@@ -458,6 +470,22 @@ def check_scene_name(name: Any) -> None:
         raise _error("name", f"must be at most 200 characters, got {len(name)}", None)
 
 
+JOURNAL_STARTS = ("centred", "resting")
+
+
+def _check_journals(journals: Any, initial: Mapping[str, float], source: str | None) -> None:
+    if journals not in JOURNAL_STARTS:
+        raise _error("initial.journals", f"must be one of {', '.join(JOURNAL_STARTS)}, got "
+                     f"{journals!r}", source)
+    if journals == "resting":
+        given = sorted(k for k, v in initial.items()
+                       if (k.startswith("d") or k.startswith(("ex", "ey"))) and v != 0)
+        if given:
+            raise _error("initial.journals", "\"resting\" starts at rest with the journals "
+                         "where they rest: leave out the speeds and eccentricities "
+                         f"({', '.join(given)})", source)
+
+
 def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Scene:
     """Validate a parsed scene document; relative paths resolve against ``base``."""
@@ -488,10 +516,17 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
     torques: tuple[TimeFunction, ...] = ()
     texts: dict[str, str] = {}
     initial: dict[str, Any] = {}
+    raw_initial = data.get("initial", {})
+    journals: Any = "centred"
+    if isinstance(raw_initial, Mapping) and "journals" in raw_initial:
+        raw_initial = dict(raw_initial)
+        journals = raw_initial.pop("journals")
     with problems.check():
-        initial = _initial_numbers(data.get("initial", {}), constants, source)
+        initial = _initial_numbers(raw_initial, constants, source)
         if robot is not None:
             initial = validate_initial(initial, robot)
+    with problems.check():
+        _check_journals(journals, initial, source)
     if robot is not None:
         with problems.check():
             torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
@@ -504,7 +539,8 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
     problems.raise_any(source)
     assert robot is not None
     return Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
-                 run=run, constants=constants, source=source, text=text)
+                 run=run, constants=constants, source=source, text=text,
+                 journals=journals)
 
 
 def check_torques_finite(scene: Scene) -> None:

@@ -91,7 +91,7 @@ def simulate(scene: Scene, *, model: Model | None = None,
     traj = _Trajectory(x=np.zeros((n_out + 1, model.n_state)),
                        v_imp=np.zeros((n_out + 1, pr.nc)),
                        work=np.zeros(n_out + 1), dissipated=np.zeros(n_out + 1))
-    x0 = _initial_state(model, scene)
+    x0 = _initial_state(model, scene, p)
     stats = _Accumulated()
     start = time.perf_counter()
     with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,
@@ -200,7 +200,7 @@ class Stepper:
         """Back to t = 0 at ``x0`` (default: the scene's initial state)."""
         self.t = 0.0
         self.x = (np.asarray(x0, dtype=float).copy() if x0 is not None
-                  else _initial_state(self.model, self.scene))
+                  else _initial_state(self.model, self.scene, self._pr.p))
         self.impacts: list[tuple[float, int, float, float, float]] = []
         self._dense: list[tuple[np.ndarray, ...]] = []  # (t, x, v_imp, tau) per sample
         self.work = 0.0

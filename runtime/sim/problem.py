@@ -137,7 +137,7 @@ class _Trajectory:
     wear: Any = None  # jointplay.results.wear.WearProfile, from a method that integrates it
 
 
-def _initial_state(model: Model, scene: Scene) -> np.ndarray:
+def _initial_state(model: Model, scene: Scene, p: np.ndarray | None = None) -> np.ndarray:
     x0 = np.zeros(model.n_state)
     n = model.n_coordinates
     for key, value in scene.initial.items():
@@ -145,6 +145,15 @@ def _initial_state(model: Model, scene: Scene) -> np.ndarray:
             x0[n + model.coordinates.index(key[1:])] = value
         elif key in model.coordinates:
             x0[model.coordinates.index(key)] = value
+    if getattr(scene, "journals", "centred") == "resting" and model.clearance_joints:
+        from jointplay.sim.equilibrium import static_equilibrium
+
+        params = p if p is not None else _parameter_vector(model, scene, None)
+        slot = model.layout.parameter_slot
+        clearances = {j: float(params[slot("joint", j, "bearing_radius")]
+                               - params[slot("joint", j, "journal_radius")])
+                      for j in model.clearance_joints}
+        x0, _ = static_equilibrium(model, params, x0, clearances)
     return x0
 
 

@@ -165,12 +165,15 @@ def _scene_fingerprint(scene: Scene) -> dict[str, Any]:
         except OSError:
             torques["table_sha256"] = None
     run = scene.run
-    return {
+    out = {
         "torques": torques,
         "initial": {k: _hex(v) for k, v in sorted(scene.initial.items())},
         "run": {f.name: (_hex(getattr(run, f.name)) if isinstance(getattr(run, f.name), float)
                          else getattr(run, f.name)) for f in fields(run)},
     }
+    if scene.journals != "centred":  # the resting start (centred keys stay as they were)
+        out["journals"] = scene.journals
+    return out
 
 
 def case_key(scene: Scene, robot: Robot) -> str:

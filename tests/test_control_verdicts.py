@@ -1,0 +1,122 @@
+"""What `control` says about its runs: the settling window taken from the run, and every
+controller that ends worse than the open loop or PD named (pure functions, fast)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from jointplay.neural.comparison import RELEASE_GAP, engagement_end, release_end, settling
+from jointplay.neural.loop import Run
+from jointplay.neural.metrics import WORSE_MARGIN, worse_lines, worse_than_baselines
+
+
+def _run(impacts: list[float]) -> Run:
+    return Run("open loop", np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.zeros((1, 1)),
+               len(impacts), 0.0, impact_times=np.array(impacts))
+
+
+def test_release_ends_at_the_first_gap_in_the_opening_impacts() -> None:
+    # The paper scene's open loop at 0.1 mm (its impact times, ms): the release sequence ends
+    # at 36.47 ms; two later impacts (made up) are past a gap and not part of it.
+    times = [1e-3 * t for t in (4.51, 5.79, 6.34, 6.88, 7.71, 16.07, 16.2, 17.72, 17.96, 21.4,
+                                22.87, 23.95, 23.96, 24.29, 24.68, 28.0, 28.4, 28.61, 30.08,
+                                30.84, 31.17, 31.29, 31.73, 32.99, 33.18, 34.26, 34.72, 36.12,
+                                36.47, 300.0, 310.0)]
+    assert release_end(_run(times)) == pytest.approx(36.47e-3 + RELEASE_GAP)
+    assert release_end(_run([])) == 0.0
+    assert release_end(_run([0.5])) == 0.0  # no impact near the start: nothing released
+
+
+def test_settling_is_the_later_of_engagement_and_release() -> None:
+    dt = 1e-3
+    ctrl = SimpleNamespace(settings=SimpleNamespace(engage=0.1, setpoint_filter=0.9))
+    # 0.9^44 < 0.01 <= 0.9^43: the filter has let go 44 samples after engaging.
+    assert engagement_end(0.1, 0.9, dt) == pytest.approx(0.144)
+    short = settling({"open loop": _run([2e-3, 5e-3])}, {"ARX-IMC": ctrl}, dt)
+    assert short.time == pytest.approx(0.144) and short.release_end == pytest.approx(0.015)
+    assert "engages at 100 ms" in short.describe() and "144 ms" in short.describe()
+    bouncing = _run([0.008 * k for k in range(1, 26)])  # impacts every 8 ms up to 0.2 s
+    long = settling({"open loop": bouncing}, {"ARX-IMC": ctrl}, dt)
+    assert long.time == pytest.approx(0.2 + RELEASE_GAP)
+    # Baselines run alone share the window of the controllers run elsewhere.
+    resting = settling({"open loop": _run([])}, {"ARX-IMC": ctrl}, dt)
+    assert resting.release_end == 0 and "no release impacts" in resting.describe()
+    alone = settling({"open loop": _run([2e-3])}, {}, dt, settle_after=0.144)
+    assert alone.time == pytest.approx(0.144) and "settled by 144 ms" in alone.describe()
+
+
+def test_every_controller_worse_than_a_baseline_is_named() -> None:
+    base = {"max_position": 1.0, "max_velocity": 1.0, "max_acceleration": 1.0,
+            "rms_acceleration": 1.0, "max_velocity_after": 1.0, "max_acceleration_after": 1.0,
+            "rms_acceleration_after": 1.0}
+    metrics = {"open loop": base,
+               "PD": {**base, "rms_acceleration_after": 1.6},
+               "ARX-IMC": {**base, "rms_acceleration_after": 0.5,
+                           "max_position": 1 + WORSE_MARGIN / 2},  # a tie: not counted
+               "neural IMC": {**base, "rms_acceleration_after": 1.2}}
+    found = {(c, k, b) for c, k, b, _ in worse_than_baselines(metrics)}
+    assert found == {("PD", "rms_acceleration_after", "open loop"),
+                     ("neural IMC", "rms_acceleration_after", "open loop")}
+    lines = worse_lines(metrics)
+    assert lines == ["PD is worse than no control (open loop) on RMS |Δa| after the transient "
+                     "1.6x", "neural IMC is worse than no control (open loop) on RMS |Δa| "
+                     "after the transient 1.2x"]
+
+
+def test_control_repeats_what_identify_warned_about(tmp_path: Path) -> None:
+    from jointplay.cli.control import identification_warnings
+
+    assert identification_warnings(tmp_path) == []  # no metrics.json: nothing to repeat
+    (tmp_path / "metrics.json").write_text(json.dumps(
+        {"warnings": ["the excitation is too small to identify the input's effect"]}))
+    assert identification_warnings(tmp_path) == [
+        "the model was identified with a warning: the excitation is too small to identify the "
+        "input's effect"]
+
+
+def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    import jointplay.cli.control as control_cli
+    from jointplay.neural.comparison import Settling
+    from jointplay.neural.imc import ControllerSettings
+
+    after = {"max_velocity_after": 1.0, "max_acceleration_after": 1.0,
+             "rms_acceleration_after": 1.0}
+    comparison = SimpleNamespace(
+        metrics={"open loop": after, "PD": {**after, "rms_acceleration_after": 0.5},
+                 "ARX-IMC": {**after, "max_acceleration_after": 1.3}},
+        runs={}, settling=Settling(0.144, 0.1, 0.144, 0.03), limit=1.0, noise_tuning=None)
+    job = SimpleNamespace(scene=None, narx=None, arx=None, settings=ControllerSettings(),
+                          model_dir=Path("."))
+    args = SimpleNamespace(ct_omega=15.0, ct_zeta=0.2)
+    horizons = []
+
+    def fake_compare(scene: object, narx: object, settings: ControllerSettings,
+                     **kwargs: object) -> SimpleNamespace:
+        horizons.append(settings.horizon)
+        assert kwargs["transient"] == 0.144 and kwargs["limit"] == 1.0  # the same window
+        good = settings.horizon == 20
+        metrics = {**after, "max_acceleration_after": 0.9 if good else 1.2}
+        return SimpleNamespace(runs={"ARX-IMC": SimpleNamespace(diverged="")},
+                               metrics={"ARX-IMC": metrics})
+
+    monkeypatch.setattr(control_cli, "compare", fake_compare)
+    monkeypatch.setattr(control_cli, "sensor_noise", lambda job: None)
+    lines = control_cli.retune_lines(args, job, comparison)
+    assert horizons == [10, 20]
+    assert "retuned to horizon 20 it does not" in lines[-1]
+    assert "ARX-IMC retuned (horizon 20)" in comparison.metrics
+
+    # No retune helps: PD is not worse than no control, so the line says to use it.
+    horizons.clear()
+    comparison.metrics = {k: v for k, v in comparison.metrics.items() if "retuned" not in k}
+    monkeypatch.setattr(control_cli, "compare", lambda *a, **k: SimpleNamespace(
+        runs={"ARX-IMC": SimpleNamespace(diverged="")},
+        metrics={"ARX-IMC": {**after, "rms_acceleration_after": 2.0}}))
+    lines = control_cli.retune_lines(args, job, comparison)
+    assert "at horizons 10, 20: use PD" in lines[-1]
