@@ -175,7 +175,8 @@ def test_simulate_command_writes_results_and_plots(tmp_path: Path,
         assert len(phases) - 1 == f["impact_time"].shape[0]
     assert sorted(p.name for p in plots.iterdir()) == [
         "contact_force.png", "contact_timeline_joint2.png", "contact_timeline_joint3.png",
-        "end_effector.png", "energy.png", "orbit_joint2.png", "orbit_joint3.png"]
+        "eccentricity_ratio.png", "end_effector.png", "energy.png", "orbit_joint2.png",
+        "orbit_joint3.png"]
     # Per joint: impacts and approach speed from the table; a peak that is not located says
     # so, and a sampled maximum is labelled as sampled.
     for line in text.splitlines():
