@@ -322,7 +322,8 @@ class Faults:
 
 def _simulate_argv(folder: Path, plot: bool = True) -> list[str]:
     return ["simulate", "--out", str(folder / "run.h5"), "--csv", str(folder / "run.csv"),
-            *(["--plot", str(folder / "plots")] if plot else []), "--quiet"]
+            *(["--plot", str(folder / "plots")] if plot else []), "--quiet",
+            "--no-verify"]  # the writes are under test here, not the accuracy check
 
 
 @pytest.fixture
