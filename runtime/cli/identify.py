@@ -75,6 +75,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def cmd_identify(args: argparse.Namespace) -> int:
     """``jointplay identify``: validate everything, then simulate, train and write."""
+    from jointplay.common.extras import require
+
+    require("control", "jointplay identify")  # before any work
     scene = load_control_scene(args.scene, args.quiet)
     out = Path(args.out)
     check_writable_dir(out, "--out")

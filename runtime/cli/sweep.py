@@ -13,6 +13,9 @@ from jointplay.sweep.run import check_options
 
 def cmd_sweep(args: argparse.Namespace) -> int:
     """``jointplay sweep``: validate, run what is not done yet, write the table and plots."""
+    from jointplay.common.extras import require
+
+    require("sweep", "jointplay sweep")  # before any work
     sweep = load_sweep(args.sweep)
     check_options(None, args.workers, args.scheduler)
     quiet = bool(args.quiet)

@@ -14,6 +14,7 @@ import numpy as np
 from jointplay.common.errors import GeneratedCodeError, SimulationError
 from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
+    FIXED_BLOCK_STEPS,
     RADAU_NEWTON_TOLERANCE,
     _Accumulated,
     _nearest_contact_joint,
@@ -113,7 +114,7 @@ class _FixedSteps:
         self.pr, self.events, self.stats = pr, events, stats
         self.method, self.h = run.integrator, run.step
         self._step = pr.model.casadi_function(f"{self.method}_step")
-        m = run.steps_per_output
+        m = min(run.steps_per_output, FIXED_BLOCK_STEPS)
         batch = _steps_function(self._step, pr, self.method, m)
         single = _steps_function(self._step, pr, self.method, 1)
         self._batches = {m: batch, 1: single}
@@ -183,7 +184,10 @@ def _run_fixed(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumula
                          start.get("delta_dot", np.zeros(0)))
     for k in range(run.n_outputs):
         t_start = k * run.output_step + run.step * np.arange(run.steps_per_output)
-        _advance(steps, accepted, t_start)
+        # An output interval of many steps is taken in blocks: a call into C is never long
+        # enough to hold off Ctrl-C, and the unrolled graph of one block stays small.
+        for first in range(0, t_start.size, FIXED_BLOCK_STEPS):
+            _advance(steps, accepted, t_start[first:first + FIXED_BLOCK_STEPS])
         traj.x[k + 1] = accepted.x
         traj.work[k + 1] = accepted.work
         traj.dissipated[k + 1] = accepted.dissipated
