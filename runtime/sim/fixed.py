@@ -11,6 +11,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
+from jointplay.common import interrupts
 from jointplay.common.errors import GeneratedCodeError, SimulationError
 from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
@@ -36,6 +37,9 @@ def _steps_function(step: ca.Function, pr: _Problem, method: str, steps: int) ->
     x = x0
     states, deltas, rates, powers, newton = [], [], [], [], []
     for i in range(steps):
+        # CasADi can swallow the KeyboardInterrupt raised inside one of its calls; the
+        # interrupt is still recorded, and this loop can run for seconds.
+        interrupts.raise_if_interrupted()
         out = step(x, tau[:, 3 * i:3 * i + 3], h, p, v)
         if method == "radau":
             x = out[0]
@@ -128,6 +132,7 @@ class _FixedSteps:
     def block(self, state: np.ndarray, t_start: np.ndarray) -> _Block:
         """The steps starting at the times ``t_start``, the first from ``state``."""
         fn = self._batch_of(t_start.size)
+        interrupts.raise_if_interrupted()
         out = [np.asarray(o) for o in fn(state, self._stage_torques(t_start), self.h,
                                          self.pr.p, self.events.v_imp)]
         counts = self.stats.counts

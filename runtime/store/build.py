@@ -151,6 +151,11 @@ def compile_source(
     if _entry_is_complete(entry):
         _note_use(entry)
         return library, 0.0
+    if (entry / MARKER_NAME).exists():  # was complete once: say why it is built again
+        from jointplay.store.model import note
+
+        note(f"the compiled model {library} is damaged (its size, checksum or ELF headers "
+             "do not match); compiling it again")
     try:
         return _build(source, cflags, cc, entry)
     except (OSError, FileError) as err:

@@ -8,6 +8,8 @@ nowhere (or a damaged cached one) is derived, and that is the one place the runt
 
 from __future__ import annotations
 
+import contextlib
+import os
 from pathlib import Path
 
 import numpy as np
@@ -34,6 +36,8 @@ def generated_folder(robot: Robot) -> Path:
         return folder
     folder = cache_root() / "models" / prov["input_hash"]
     if _damage(folder) is None:
+        with contextlib.suppress(OSError):  # last used now (`jointplay cache prune`)
+            os.utime(folder)
         return folder
     _regenerate(robot, folder)
     return folder
