@@ -38,10 +38,11 @@ def _on_sigint(signum: int, frame: FrameType | None) -> None:
 def interrupt() -> NoReturn:
     """Record an interrupt and raise KeyboardInterrupt (also for compiled loops that saw the
     signal themselves). Within :func:`installed`, later Ctrl-C presses are only recorded."""
-    first = not _state["interrupted"]
-    _state["interrupted"] = 1
-    if first and _state["installed"] and threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGINT, _record_only)
+    if _state["installed"]:  # a library caller's process remembers nothing
+        _state["interrupted"] = 1
+        if threading.current_thread() is threading.main_thread() \
+                and signal.getsignal(signal.SIGINT) is _on_sigint:
+            signal.signal(signal.SIGINT, _record_only)
     raise KeyboardInterrupt
 
 
@@ -143,7 +144,7 @@ def deferred() -> Iterator[None]:
     if _state["interrupted"] and not before:
         if not _state["installed"]:  # a library caller: raise it once, remember nothing
             _state["interrupted"] = 0
-        raise KeyboardInterrupt
+        interrupt()
 
 
 @contextlib.contextmanager
