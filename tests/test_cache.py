@@ -290,3 +290,17 @@ def test_running_tests_creates_nothing_in_the_users_cache(tmp_path: Path) -> Non
     assert "1 passed" in proc.stdout
     assert not (home / ".cache" / "jointplay").exists(), _files(home)
     assert list(scratch.glob("jointplay-test-cache-*")) == []
+
+
+def test_marker_without_a_size_still_counts(tmp_path: Path,
+                                            capsys: pytest.CaptureFixture[str]) -> None:
+    """Entries built before markers recorded the size are reused (checksum and ELF checks
+    still hold), not reported damaged."""
+    library, _ = compile_source(TINY, cache=tmp_path)
+    marker_path = library.parent / MARKER_NAME
+    marker = json.loads(marker_path.read_text())
+    del marker["size"]
+    marker_path.write_text(json.dumps(marker))
+    again, seconds = compile_source(TINY, cache=tmp_path)
+    assert again == library and seconds == 0.0
+    assert capsys.readouterr().err == ""

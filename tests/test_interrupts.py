@@ -149,3 +149,22 @@ def test_interrupt_while_importing(tmp_path: Path) -> None:
     assert proc.returncode == 130, text
     only_line(text)
     assert not out.exists()
+
+
+def test_fixed_step_blocks_change_nothing(monkeypatch: pytest.MonkeyPatch) -> None:
+    """An output interval taken in blocks (so that Ctrl-C is seen) gives the very same run as
+    taken whole: 200 rk4 steps per output, in blocks of 50 and in one."""
+    import numpy as np
+
+    import jointplay
+    import jointplay.sim.fixed as fixed
+
+    scene = jointplay.default_scene().with_run(integrator="rk4", t_end=0.01,
+                                               output_step=0.002, step=1e-5)
+    whole = jointplay.simulate(scene)
+    monkeypatch.setattr(fixed, "FIXED_BLOCK_STEPS", 50)
+    blocks = jointplay.simulate(scene)
+    np.testing.assert_array_equal(blocks.q, whole.q)
+    np.testing.assert_array_equal(blocks.u, whole.u)
+    np.testing.assert_array_equal(blocks.impacts.time, whole.impacts.time)
+    assert whole.impacts.time.size > 0  # the blocks met contact onsets

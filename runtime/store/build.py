@@ -124,7 +124,8 @@ def _entry_is_complete(entry: Path) -> bool:
     library = entry / LIBRARY_NAME
     try:
         marker = json.loads((entry / MARKER_NAME).read_text())
-        if library.stat().st_size != int(marker["size"]):
+        # Markers written before sizes were recorded have none: checksum and ELF still hold.
+        if "size" in marker and library.stat().st_size != int(marker["size"]):
             return False
         return bool(elf_is_whole(library) and marker["sha256"] == _sha256_file(library))
     except (OSError, ValueError, KeyError, TypeError):
