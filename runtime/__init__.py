@@ -5,6 +5,10 @@ never imports sympy. Deriving new models lives in :mod:`jointplay.derive`.
 """
 
 from jointplay import _moved
+
+# Imported first (after _moved, which imports nothing heavy): in the `jointplay` program,
+# Ctrl-C while the rest imports is one line and exit 130 (see interrupts.guard_imports).
+from jointplay.common import interrupts as _interrupts  # noqa: F401
 from jointplay.common.errors import (
     BuildError,
     DescriptionError,

@@ -1,11 +1,46 @@
-"""Shared fixtures and options for the jointplay test suite."""
+"""Shared fixtures and options for the jointplay test suite.
+
+The suite builds into a temporary model cache, never the user's: ``JOINTPLAY_CACHE`` is set
+before any test module is imported (subprocesses inherit it) and the folder is removed at the
+end. ``JOINTPLAY_TEST_CACHE=DIR`` keeps the builds in DIR instead, to reuse them between runs.
+"""
 
 from __future__ import annotations
 
+import os
+import shutil
+import tempfile
 from pathlib import Path
 from typing import Any
 
 import pytest
+
+_CACHE: dict[str, Any] = {}
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    kept = os.environ.get("JOINTPLAY_TEST_CACHE")
+    root = Path(kept) if kept else Path(tempfile.mkdtemp(prefix="jointplay-test-cache-"))
+    _CACHE.update(root=root, temporary=not kept, previous=os.environ.get("JOINTPLAY_CACHE"))
+    os.environ["JOINTPLAY_CACHE"] = str(root)
+
+
+def pytest_unconfigure(config: pytest.Config) -> None:
+    if not _CACHE:
+        return
+    if _CACHE["previous"] is None:
+        os.environ.pop("JOINTPLAY_CACHE", None)
+    else:
+        os.environ["JOINTPLAY_CACHE"] = _CACHE["previous"]
+    if _CACHE["temporary"]:
+        shutil.rmtree(_CACHE["root"], ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def model_cache() -> Path:
+    """The model cache of this test session (``$JOINTPLAY_CACHE`` for it and its
+    subprocesses)."""
+    return Path(_CACHE["root"])
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:

@@ -6,6 +6,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 REPO = Path(__file__).resolve().parents[1]
 
 CHECK = """
@@ -83,3 +85,86 @@ def test_regular_install_layout(tmp_path: Path) -> None:
     assert info["scene"]
     assert info["models"] == ["paper_4dof"]
     assert (target / "jointplay" / "generated" / "paper_4dof" / "model.c").is_file()
+
+
+OPTIONAL = ("torch", "dask", "distributed", "pyarrow", "pandas", "xarray")
+
+
+def test_simulate_imports_no_optional_dependency(tmp_path: Path) -> None:
+    """The core path (import, compile, simulate, write the results) needs none of the extras:
+    in a fresh interpreter, none of their packages is imported."""
+    out_file = str(tmp_path / "r.h5")
+    code = ("import sys\n"
+            "from jointplay.cli import main\n"
+            f"code = main(['simulate', '--t-end', '0.02', '--quiet', '--out', {out_file!r}])\n"
+            "assert code == 0, code\n"
+            f"print(sorted(m for m in {OPTIONAL!r} if m in sys.modules))\n")
+    out = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True,
+                         text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip().splitlines()[-1] == "[]"
+    assert (tmp_path / "r.h5").is_file()
+
+
+@pytest.mark.parametrize(("argv", "extra", "module"), [
+    (["identify", "--out", "m"], "control", "torch"),
+    (["control", "--model", "m"], "control", "torch"),
+    (["control-study", "--out", "s"], "control", "torch"),
+    (["sweep", "sweep.toml", "--out", "s"], "sweep", "pyarrow"),
+])
+def test_a_missing_extra_is_named(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                  capsys: pytest.CaptureFixture[str], argv: list[str],
+                                  extra: str, module: str) -> None:
+    """Without the extra's packages, the command stops before any work with one line naming
+    the pip install that adds them."""
+    from jointplay.cli import main
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setitem(sys.modules, module, None)  # what find_spec sees when it is absent
+    assert main(argv) == 1
+    err = capsys.readouterr().err.strip()
+    assert err == (f"jointplay: error: jointplay {argv[0]} needs {module}, not installed; "
+                   f"install it with pip install 'jointplay[{extra}]'")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_missing_extra_is_named_by_the_api(monkeypatch: pytest.MonkeyPatch) -> None:
+    from jointplay.common.extras import MissingExtra
+    from jointplay.scene.definition import default_scene
+
+    monkeypatch.setitem(sys.modules, "xarray", None)
+    result = jointplay_simulate_short()
+    with pytest.raises(MissingExtra, match=r"pip install 'jointplay\[xarray\]'"):
+        result.to_xarray()
+    monkeypatch.setitem(sys.modules, "torch", None)
+    from jointplay.neural.identify import IdentifyConfig, identify
+
+    with pytest.raises(MissingExtra, match=r"pip install 'jointplay\[control\]'"):
+        identify(default_scene(), Path("never-written"), IdentifyConfig())
+    assert not Path("never-written").exists()
+
+
+def jointplay_simulate_short():  # type: ignore[no-untyped-def]
+    import jointplay
+
+    return jointplay.simulate(jointplay.default_scene().with_run(t_end=0.01))
+
+
+def test_extras_match_pyproject() -> None:
+    """Each extra of jointplay.common.extras is declared in pyproject.toml with a package
+    for every module it names, and [all] holds them all."""
+    import tomllib
+
+    from jointplay.common.extras import EXTRAS
+
+    declared = tomllib.loads((REPO / "pyproject.toml").read_text())["project"][
+        "optional-dependencies"]
+    dists = {"dask": "dask[distributed]", "distributed": "dask[distributed]", "pyarrow": "pyarrow",
+             "pandas": "pandas", "torch": "torch", "xarray": "xarray"}
+    for extra, modules in EXTRAS.items():
+        names = [d.split(">")[0].split("=")[0].split("<")[0] for d in declared[extra]]
+        for module in modules:
+            assert dists[module] in names, (extra, module)
+    assert declared["all"] == [f"jointplay[{','.join(EXTRAS)}]"]
+    assert "jointplay[all]" in declared["test"]
+    assert "torch==2.13.0" in declared["control"]

@@ -10,6 +10,7 @@
   jointplay identify | control | control-study ...       identification, the neural controller
   jointplay sweep SWEEP.toml --out DIR                   parameter sweeps on Dask
   jointplay bench work-precision | fidelity | scaling    what accuracy costs, measured
+  jointplay cache list | clear | prune [--older-than AGE] [--max-size SIZE]
 
 With neither a file nor flags, the robot is the built-in default (the paper's 4-link arm).
 Bad input exits with status 2 and a message naming the field and what is allowed; nothing is
@@ -27,6 +28,7 @@ import sys
 from jointplay.cli import (
     bench,
     build,
+    cache,
     control,
     derive,
     identify,
@@ -57,6 +59,7 @@ def make_parser() -> argparse.ArgumentParser:
     study.register(sub)
     sweep.register(sub)
     bench.register(sub)
+    cache.register(sub)
     return parser
 
 

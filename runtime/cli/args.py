@@ -22,6 +22,10 @@ if TYPE_CHECKING:
     from jointplay.common.files import OutputPlan
     from jointplay.scene.definition import Scene
 
+# Exit statuses (README, "Limits, interrupts and errors"; tests/test_docs_tables.py checks the
+# table there against these, jointplay.common.interrupts's and jointplay.neural.control's).
+EXIT_OK = 0
+EXIT_FAILURE = 1
 EXIT_BAD_INPUT = 2
 
 
@@ -231,7 +235,7 @@ def report_error(err: Exception, args: argparse.Namespace) -> int:
     print(f"jointplay: error: {lines[0]}{hint}", file=sys.stderr)
     if len(lines) > 1:  # a compiler's output, say: the detail, after the one line
         print("\n".join(lines[1:]), file=sys.stderr)
-    return 1
+    return EXIT_FAILURE
 
 
 def plan_scene_inputs(plan: OutputPlan, scene: Scene) -> None:

@@ -103,6 +103,9 @@ def cmd_control(args: argparse.Namespace) -> int:
     """``jointplay control``: validate, compile, run every controller, report and plot.
 
     Exit status 3 when any controller (PD and computed torque included) diverged."""
+    from jointplay.common.extras import require
+
+    require("control", "jointplay control")  # before any work
     job = control_job(args)
     if not args.quiet:
         print(f"scene {job.scene.name}: reference = ideal-joint robot under the scene's "

@@ -78,6 +78,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def cmd_identify(args: argparse.Namespace) -> int:
     """``jointplay identify``: validate everything, then simulate, train and write."""
+    from jointplay.common.extras import require
+
+    require("control", "jointplay identify")  # before any work
     scene = load_control_scene(args.scene, args.quiet)
     out = Path(args.out)
     output_plan(args, scene)
@@ -132,7 +135,8 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
     if sum(counts) > size_limits.MAX_TRAJECTORIES:
         raise DescriptionError("--train/--validation/--test", f"{sum(counts)} trajectories in "
                                f"all; at most {size_limits.MAX_TRAJECTORIES} are allowed")
-    for flag, value, low, high in (("--window", args.window, 2, size_limits.MAX_WINDOW),
+    for flag, value, low, high in (("--window", args.window, size_limits.MIN_WINDOW,
+                                       size_limits.MAX_WINDOW),
                                    ("--workers", args.workers, 0, size_limits.MAX_WORKERS)):
         if not low <= value <= high:
             raise DescriptionError(flag, f"must be an integer from {low} to {high}, got {value}")

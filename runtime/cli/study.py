@@ -105,6 +105,9 @@ class StudyPlan:
 
 def cmd_study(args: argparse.Namespace) -> int:
     """``jointplay control-study``: identify, run every case, summarise, check and plot."""
+    from jointplay.common.extras import require
+
+    require("control", "jointplay control-study")  # before any work
     plan = study_plan(args)
     plan.out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()

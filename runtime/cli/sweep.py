@@ -38,6 +38,9 @@ def output_plan(args: argparse.Namespace, scene: Any) -> OutputPlan:
 
 def cmd_sweep(args: argparse.Namespace) -> int:
     """``jointplay sweep``: validate, run what is not done yet, write the table and plots."""
+    from jointplay.common.extras import require
+
+    require("sweep", "jointplay sweep")  # before any work
     sweep = load_sweep(args.sweep)
     check_options(None, args.workers, args.scheduler)
     output_plan(args, sweep.scene)

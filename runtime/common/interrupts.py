@@ -5,15 +5,25 @@ Python's handler into an error of its own, or drop it. The command line installs
 :func:`installed`, whose handler records the interrupt before raising; any layer that catches
 an error can then ask :func:`interrupted` and re-raise it as the interrupt it was
 (:func:`raise_if_interrupted`). Library callers that never enter it see Python's default.
+
+Ctrl-C is honoured once: after the first, further presses are only recorded, so that the
+cleanup it started (temporary files removed, workers stopped) runs to its end and the command
+still ends with one line, exit 130. Before the command line takes over, while the packages
+import, :func:`guard_imports` (run first thing by ``import jointplay`` in the ``jointplay``
+program only) turns Ctrl-C into that same line and exit status at once: nothing has been
+written yet.
 """
 
 from __future__ import annotations
 
 import contextlib
+import os
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from types import FrameType
+from typing import NoReturn
 
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
 EXIT_TERMINATED = 143  # 128 + SIGTERM
@@ -22,7 +32,17 @@ _state: dict[str, int] = {"interrupted": 0, "status": EXIT_INTERRUPTED, "install
 
 
 def _on_sigint(signum: int, frame: FrameType | None) -> None:
-    _state["interrupted"] = 1
+    interrupt()
+
+
+def interrupt() -> NoReturn:
+    """Record an interrupt and raise KeyboardInterrupt (also for compiled loops that saw the
+    signal themselves). Within :func:`installed`, later Ctrl-C presses are only recorded."""
+    if _state["installed"]:  # a library caller's process remembers nothing
+        _state["interrupted"] = 1
+        if threading.current_thread() is threading.main_thread() \
+                and signal.getsignal(signal.SIGINT) is _on_sigint:
+            signal.signal(signal.SIGINT, _record_only)
     raise KeyboardInterrupt
 
 
@@ -49,7 +69,13 @@ def installed() -> Iterator[None]:
         yield
     finally:
         _state["installed"] = 0
-        signal.signal(signal.SIGINT, previous[0])
+        if _state["interrupted"] and _is_program():
+            # The command is over and cleaned up: a press while the interpreter shuts down
+            # must not end it otherwise (Python resets its own handlers to the default then,
+            # which would report death by SIGINT; "ignore" it keeps).
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
+        else:
+            signal.signal(signal.SIGINT, previous[0])
         signal.signal(signal.SIGTERM, previous[1])
 
 
@@ -73,6 +99,34 @@ def _record_only(signum: int, frame: FrameType | None) -> None:
     _state["interrupted"] = 1
 
 
+def _is_program() -> bool:
+    """Whether this process is the ``jointplay`` command (its script, or ``python -m
+    jointplay.cli``), not a program that imports jointplay."""
+    if os.path.basename(sys.argv[0]) == "jointplay":
+        return True
+    argv = list(getattr(sys, "orig_argv", ()))
+    return "-m" in argv[:-1] and argv[argv.index("-m") + 1] in ("jointplay.cli", "jointplay")
+
+
+def _exit_at_once(signum: int, frame: FrameType | None) -> None:
+    if not _state["interrupted"]:
+        _state["interrupted"] = 1
+        os.write(2, b"jointplay: interrupted\n")
+    os._exit(EXIT_INTERRUPTED)
+
+
+def guard_imports() -> None:
+    """In the ``jointplay`` program only, and only where Ctrl-C still has Python's default
+    handler: Ctrl-C before the command line installs its own handlers (while the packages
+    import) prints one line and exits 130 at once, instead of a traceback. Nothing is written
+    before then, so there is nothing to clean up. The command line restores this handler when
+    it returns, which covers the interpreter's shutdown too."""
+    if threading.current_thread() is not threading.main_thread() or not _is_program():
+        return
+    if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+        signal.signal(signal.SIGINT, _exit_at_once)
+
+
 @contextlib.contextmanager
 def deferred() -> Iterator[None]:
     """Within: a SIGINT is recorded but raised only on the way out, so that work which must
@@ -90,7 +144,7 @@ def deferred() -> Iterator[None]:
     if _state["interrupted"] and not before:
         if not _state["installed"]:  # a library caller: raise it once, remember nothing
             _state["interrupted"] = 0
-        raise KeyboardInterrupt
+        interrupt()
 
 
 @contextlib.contextmanager
@@ -114,5 +168,8 @@ def ignore_in_child() -> None:
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
-__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "ignore_in_child",
-           "ignoring", "installed", "interrupted", "raise_if_interrupted"]
+guard_imports()  # on the first import, which `import jointplay` makes before any other
+
+__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "guard_imports",
+           "ignore_in_child", "ignoring", "installed", "interrupt", "interrupted",
+           "raise_if_interrupted"]

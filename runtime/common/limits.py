@@ -50,6 +50,8 @@ MAX_HIDDEN_LAYERS = 16
 """identify --hidden, number of layers."""
 MAX_ITERATIONS = 100_000
 """identify --iterations, each phase."""
+MIN_WINDOW = 2
+"""identify --window, the fewest samples."""
 MAX_WINDOW = 1_000_000
 """identify --window, samples."""
 MAX_WORKERS = 1024

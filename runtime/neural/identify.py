@@ -102,7 +102,10 @@ class ModelRejected(JointplayError):
 def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False) -> dict[str,
                                                                                         Any]:
     """Collect the data, train, evaluate and write the model folder; return the metrics."""
+    from jointplay.common.extras import require
     from jointplay.neural.plant import control_plant
+
+    require("control", "identify()")  # training needs torch: say so before any work
 
     scene = control_plant(scene)  # the plant the controllers are judged on
     inner = inner_loop_for(scene, config.kp, config.kd)

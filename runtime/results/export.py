@@ -40,6 +40,9 @@ def result_dataset(result: SimulationResult) -> Any:
     its end-effector arrays are ``ideal_tip_*`` (the same output times). The contact-phase
     table is not per sample: it is ``result.impacts.to_pandas()``.
     """
+    from jointplay.common.extras import require
+
+    require("xarray", "to_xarray()")
     import xarray as xr
 
     units = {name: unit for name, unit, _ in _ARRAYS}
@@ -89,6 +92,9 @@ def impacts_frame(impacts: Impacts) -> Any:
     ``joint`` is int64 and ``separated`` bool; every other column float64 (NaN where the run
     did not locate the value). ``frame.attrs["units"]`` maps each column to its unit.
     """
+    from jointplay.common.extras import require
+
+    require("xarray", "to_pandas()")
     import pandas as pd
 
     columns: dict[str, np.ndarray] = {}

@@ -12,11 +12,16 @@ within the integrator's last internal step and failed at stiff contact onsets.
 
 from __future__ import annotations
 
+import contextlib
+import io
+import sys
+from collections.abc import Iterator
 from typing import Any
 
 import casadi as ca
 import numpy as np
 
+from jointplay.common import interrupts
 from jointplay.common.errors import SimulationError
 from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
@@ -90,8 +95,11 @@ class _AdaptiveIntegrator:
         fast.inputs[integ.index_in("p")][:] = np.concatenate(
             [pr.p, v_imp, flags, [t0, span], pr.u_hold])
         try:
-            fast.trigger()
+            with _solver_messages():
+                fast.trigger()
         except RuntimeError as err:
+            if "KeyboardInterrupt" in str(err):  # CasADi's word for Ctrl-C in a callback
+                raise KeyboardInterrupt from None
             raise _integration_failure(self.plugin, t0, span, str(err), pr, x0, v_imp) \
                 from None
         finally:
@@ -115,6 +123,23 @@ class _AdaptiveIntegrator:
                                   _nearest_contact_joint(pr, x0, v_imp))
         return xs, qs
 
+
+
+@contextlib.contextmanager
+def _solver_messages() -> Iterator[None]:
+    """SUNDIALS's messages, printed through CasADi to ``sys.stderr``, held during a call and
+    passed on after it, except after Ctrl-C: then they only repeat the interrupt ("rhsQ
+    failed: KeyboardInterrupt", "the quadrature right-hand side routine failed"), and an
+    interrupted command prints one line."""
+    held, real = io.StringIO(), sys.stderr
+    sys.stderr = held
+    try:
+        yield
+    finally:
+        sys.stderr = real
+        text = held.getvalue()
+        if text and not interrupts.interrupted() and "KeyboardInterrupt" not in text:
+            real.write(text)
 
 
 def _integration_failure(plugin: str, t0: float, span: float, message: str, pr: _Problem,

@@ -11,9 +11,11 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
+from jointplay.common import interrupts
 from jointplay.common.errors import GeneratedCodeError, SimulationError
 from jointplay.sim.events import _EventState
 from jointplay.sim.problem import (
+    FIXED_BLOCK_STEPS,
     RADAU_NEWTON_TOLERANCE,
     _Accumulated,
     _nearest_contact_joint,
@@ -35,6 +37,9 @@ def _steps_function(step: ca.Function, pr: _Problem, method: str, steps: int) ->
     x = x0
     states, deltas, rates, powers, newton = [], [], [], [], []
     for i in range(steps):
+        # CasADi can swallow the KeyboardInterrupt raised inside one of its calls; the
+        # interrupt is still recorded, and this loop can run for seconds.
+        interrupts.raise_if_interrupted()
         out = step(x, tau[:, 3 * i:3 * i + 3], h, p, v)
         if method == "radau":
             x = out[0]
@@ -113,7 +118,7 @@ class _FixedSteps:
         self.pr, self.events, self.stats = pr, events, stats
         self.method, self.h = run.integrator, run.step
         self._step = pr.model.casadi_function(f"{self.method}_step")
-        m = run.steps_per_output
+        m = min(run.steps_per_output, FIXED_BLOCK_STEPS)
         batch = _steps_function(self._step, pr, self.method, m)
         single = _steps_function(self._step, pr, self.method, 1)
         self._batches = {m: batch, 1: single}
@@ -127,6 +132,7 @@ class _FixedSteps:
     def block(self, state: np.ndarray, t_start: np.ndarray) -> _Block:
         """The steps starting at the times ``t_start``, the first from ``state``."""
         fn = self._batch_of(t_start.size)
+        interrupts.raise_if_interrupted()
         out = [np.asarray(o) for o in fn(state, self._stage_torques(t_start), self.h,
                                          self.pr.p, self.events.v_imp)]
         counts = self.stats.counts
@@ -183,7 +189,10 @@ def _run_fixed(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumula
                          start.get("delta_dot", np.zeros(0)))
     for k in range(run.n_outputs):
         t_start = k * run.output_step + run.step * np.arange(run.steps_per_output)
-        _advance(steps, accepted, t_start)
+        # An output interval of many steps is taken in blocks: a call into C is never long
+        # enough to hold off Ctrl-C, and the unrolled graph of one block stays small.
+        for first in range(0, t_start.size, FIXED_BLOCK_STEPS):
+            _advance(steps, accepted, t_start[first:first + FIXED_BLOCK_STEPS])
         traj.x[k + 1] = accepted.x
         traj.work[k + 1] = accepted.work
         traj.dissipated[k + 1] = accepted.dissipated

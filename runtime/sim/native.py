@@ -274,7 +274,9 @@ def raise_for_status(status: int, integ: NativeIntegrator, torque_fields: list[s
         return
     t, h, index = integ.failure()
     if status == INTERRUPTED:
-        raise KeyboardInterrupt
+        from jointplay.common.interrupts import interrupt
+
+        interrupt()  # recorded as the command line's own handler would have
     if status == BAD_TORQUE:
         raise SimulationError(t, f"the drive torque {torque_fields[index]} is not finite at "
                               f"t = {t:.9g} s; fix the expression or the table there")

@@ -30,6 +30,9 @@ EVENT_GAP_FRACTION = 1
 # the integrator, and what follows an event in a call is integrated again, so calls start at
 # one interval after an event and double while none occurs.
 CHUNK_OUTPUTS = 512
+# Fixed steps (rk4, radau) evaluated per call into C, at most: Python's Ctrl-C handler runs
+# between calls, so this bounds how long an interrupt waits.
+FIXED_BLOCK_STEPS = 1000
 # More transitions than this inside one output interval means contact chatter.
 MAX_EVENTS_PER_OUTPUT = 2000
 # Eccentricity rates are scaled by clearance / this time (s).

@@ -2,22 +2,34 @@
 
 The key covers the C text, the compiler flags and the compiler's version, so a build is
 reused only when all three match. A cache entry is complete only once its marker file,
-written last and holding the library's checksum, agrees with the library on disk: a corrupt
-or half-written entry is rebuilt, never loaded. A file lock per entry stops two processes
-that build the same model at once from stepping on each other; the library is compiled to a
-temporary name and renamed into place.
+written last and holding the library's size and checksum, agrees with the library on disk,
+and the library is a whole ELF file (every segment the loader maps lies inside it: a
+truncated library, even beside a forged marker, would crash the process with SIGBUS when
+loaded). A corrupt or half-written entry is rebuilt, never loaded. A file lock per entry stops
+two processes that build the same model at once from stepping on each other; the library is
+compiled to a temporary name and renamed into place. Whoever holds an entry's lock is its only
+builder, so every temporary file found there is left over from a killed build and is removed;
+the compiler dies with the process that started it, so a killed build leaves no compiler
+writing behind it. A build that fails (a full disk, say) removes what it wrote.
 """
 
 from __future__ import annotations
 
+import contextlib
+import ctypes
+import errno
 import fcntl
 import functools
 import hashlib
 import json
 import os
 import shutil
+import signal
+import struct
 import subprocess
+import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 from jointplay.common.errors import BuildError, FileError
@@ -65,12 +77,65 @@ def _sha256_file(path: Path) -> str:
     return h.hexdigest()
 
 
+def elf_is_whole(path: Path) -> bool:
+    """Whether ``path`` is an ELF file that holds every byte its headers point at: the
+    program headers, each loadable segment's file part, and the section headers. ``dlopen``
+    maps the segments; a page of one beyond the end of the file raises SIGBUS when touched."""
+    try:
+        with open(path, "rb") as fh:
+            size = os.fstat(fh.fileno()).st_size
+            ident = fh.read(64)
+            if len(ident) < 52 or ident[:4] != b"\x7fELF" or ident[4] not in (1, 2) \
+                    or ident[5] not in (1, 2):
+                return False
+            wide, order = ident[4] == 2, "<" if ident[5] == 1 else ">"
+            if wide:
+                phoff, shoff = struct.unpack_from(order + "QQ", ident, 32)
+                phentsize, phnum, shentsize, shnum = struct.unpack_from(order + "HHHH",
+                                                                        ident, 54)
+            else:
+                phoff, shoff = struct.unpack_from(order + "II", ident, 28)
+                phentsize, phnum, shentsize, shnum = struct.unpack_from(order + "HHHH",
+                                                                        ident, 42)
+            if phnum == 0 or phoff + phentsize * phnum > size \
+                    or shoff + shentsize * shnum > size:
+                return False
+            fh.seek(phoff)
+            table = fh.read(phentsize * phnum)
+            for i in range(phnum):
+                base = i * phentsize
+                if wide:
+                    kind, = struct.unpack_from(order + "I", table, base)
+                    offset, = struct.unpack_from(order + "Q", table, base + 8)
+                    filesz, = struct.unpack_from(order + "Q", table, base + 32)
+                else:
+                    kind, offset = struct.unpack_from(order + "II", table, base)
+                    filesz, = struct.unpack_from(order + "I", table, base + 16)
+                if kind == 1 and offset + filesz > size:  # PT_LOAD past the end
+                    return False
+            return True
+    except (OSError, struct.error):
+        return False
+
+
 def _entry_is_complete(entry: Path) -> bool:
+    """The marker names the library's size and checksum, the library on disk has both, and
+    it is a whole ELF file: only then may it be loaded."""
+    library = entry / LIBRARY_NAME
     try:
         marker = json.loads((entry / MARKER_NAME).read_text())
-        return bool(marker["sha256"] == _sha256_file(entry / LIBRARY_NAME))
+        # Markers written before sizes were recorded have none: checksum and ELF still hold.
+        if "size" in marker and library.stat().st_size != int(marker["size"]):
+            return False
+        return bool(elf_is_whole(library) and marker["sha256"] == _sha256_file(library))
     except (OSError, ValueError, KeyError, TypeError):
         return False
+
+
+def _note_use(entry: Path) -> None:
+    """Mark the entry used now: `jointplay cache prune` removes the least recently used."""
+    with contextlib.suppress(OSError):
+        os.utime(entry / MARKER_NAME)
 
 
 def compile_source(
@@ -85,7 +150,13 @@ def compile_source(
     entry = (cache or cache_root()) / "build" / key
     library = entry / LIBRARY_NAME
     if _entry_is_complete(entry):
+        _note_use(entry)
         return library, 0.0
+    if (entry / MARKER_NAME).exists():  # was complete once: say why it is built again
+        from jointplay.store.model import note
+
+        note(f"the compiled model {library} is damaged (its size, checksum or ELF headers "
+             "do not match); compiling it again")
     try:
         return _build(source, cflags, cc, entry)
     except (OSError, FileError) as err:
@@ -107,37 +178,110 @@ def discard_entry(entry: Path) -> None:
     (entry / MARKER_NAME).unlink(missing_ok=True)
 
 
+@contextlib.contextmanager
+def entry_lock(entry: Path, blocking: bool = True) -> Iterator[bool]:
+    """Hold ``entry``'s lock within (yields False, not waiting, if ``blocking`` is False and
+    another process holds it). A lock file removed by a failed build while this process
+    waited for it is taken again from the new file."""
+    while True:
+        with open(entry / ".lock", "a") as lock:
+            try:
+                fcntl.flock(lock, fcntl.LOCK_EX | (0 if blocking else fcntl.LOCK_NB))
+            except BlockingIOError:
+                yield False
+                return
+            try:
+                current = os.stat(entry / ".lock").st_ino
+            except FileNotFoundError:
+                current = -1
+            if current == os.fstat(lock.fileno()).st_ino:
+                yield True
+                return
+        entry.mkdir(parents=True, exist_ok=True)
+
+
+def remove_temporaries(folder: Path) -> int:
+    """Remove every temporary file (``.*.part``) in ``folder``: call it holding the folder's
+    lock, which makes them all leftovers of builds that were killed. Returns how many."""
+    removed = 0
+    for path in folder.glob(".*.part"):
+        with contextlib.suppress(OSError):
+            path.unlink()
+            removed += 1
+    return removed
+
+
+def _die_with_parent() -> None:
+    """In the compiler's process: die if the process that started it dies (Linux), so that a
+    killed build leaves no compiler writing into the cache behind it."""
+    with contextlib.suppress(OSError, AttributeError):
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+
+
+_OUT_OF_SPACE = ("No space left on device", "Disk quota exceeded", "File too large",
+                 "Read-only file system")
+
+
+def _compile(cc: str, cflags: tuple[str, ...], c_file: Path, output: Path) -> None:
+    preexec = _die_with_parent if sys.platform.startswith("linux") else None
+    proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(output), "-lm"],
+                          capture_output=True, text=True, preexec_fn=preexec)
+    if proc.returncode == 0:
+        return
+    for cause in _OUT_OF_SPACE:  # the compiler could not write: an I/O error, one line
+        if cause in proc.stderr:
+            number = {"No space left on device": errno.ENOSPC, "File too large": errno.EFBIG,
+                      "Disk quota exceeded": errno.EDQUOT}.get(cause, errno.EROFS)
+            raise OSError(number, os.strerror(number), str(output))
+    raise BuildError(f"{cc} failed on {c_file}:\n{proc.stderr[-4000:]}")
+
+
 def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path) -> tuple[Path, float]:
-    from jointplay.common.files import sweep_stale, temp_tag
+    from jointplay.common.files import temp_tag
 
     library = entry / LIBRARY_NAME
+    fresh = not entry.exists()
     entry.mkdir(parents=True, exist_ok=True)
-    with open(entry / ".lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        if _entry_is_complete(entry):  # another process finished it while we waited
-            return library, 0.0
-        sweep_stale(entry)  # temporaries of builds that were killed
-        for stale in (entry / MARKER_NAME, library):
-            stale.unlink(missing_ok=True)
-        c_file = entry / "model.c"
-        atomic_write_text(c_file, source)
-        tmp_lib = entry / f".{LIBRARY_NAME}.{temp_tag()}.x.part"
-        t0 = time.perf_counter()
-        try:
-            proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(tmp_lib), "-lm"],
-                                  capture_output=True, text=True)
-        except BaseException:  # interrupted: no half-written library left behind
-            tmp_lib.unlink(missing_ok=True)
-            raise
-        elapsed = time.perf_counter() - t0
-        if proc.returncode != 0:
-            tmp_lib.unlink(missing_ok=True)
-            raise BuildError(f"{cc} failed on {c_file}:\n{proc.stderr[-4000:]}")
-        os.replace(tmp_lib, library)
-        atomic_write_text(entry / MARKER_NAME, json.dumps({
-            "sha256": _sha256_file(library), "cflags": list(cflags), "cc": cc,
-            "compiler": compiler_version(cc), "seconds": round(elapsed, 3)}))
+    try:
+        with entry_lock(entry):
+            if _entry_is_complete(entry):  # another process finished it while we waited
+                return library, 0.0
+            remove_temporaries(entry)  # no other build of this entry runs: all left over
+            for stale in (entry / MARKER_NAME, library):
+                stale.unlink(missing_ok=True)
+            c_file = entry / "model.c"
+            atomic_write_text(c_file, source)
+            tmp_lib = entry / f".{LIBRARY_NAME}.{temp_tag()}.x.part"
+            t0 = time.perf_counter()
+            try:
+                _compile(cc, cflags, c_file, tmp_lib)
+            except BaseException:  # failed or interrupted: no half-written library left
+                tmp_lib.unlink(missing_ok=True)
+                raise
+            elapsed = time.perf_counter() - t0
+            os.replace(tmp_lib, library)
+            atomic_write_text(entry / MARKER_NAME, json.dumps({
+                "sha256": _sha256_file(library), "size": library.stat().st_size,
+                "cflags": list(cflags), "cc": cc, "compiler": compiler_version(cc),
+                "seconds": round(elapsed, 3)}))
+    except BaseException:
+        _discard_failed(entry, fresh)
+        raise
     return library, elapsed
+
+
+def _discard_failed(entry: Path, fresh: bool) -> None:
+    """A build that failed leaves nothing behind: what it wrote, and the entry's folder if it
+    made it (unless another process completed the entry meanwhile)."""
+    with contextlib.suppress(OSError), entry_lock(entry, blocking=False) as held:
+        if not held or _entry_is_complete(entry):
+            return
+        remove_temporaries(entry)
+        for name in (MARKER_NAME, LIBRARY_NAME, "model.c"):
+            (entry / name).unlink(missing_ok=True)
+        if fresh:
+            (entry / ".lock").unlink(missing_ok=True)
+            entry.rmdir()
 
 
 def clear_cache(cache: Path | None = None) -> None:

@@ -8,16 +8,16 @@ nowhere (or a damaged cached one) is derived, and that is the one place the runt
 
 from __future__ import annotations
 
-import fcntl
+import contextlib
+import os
 from pathlib import Path
 
 import numpy as np
 
 from jointplay import generated
 from jointplay.common.errors import FileError, GeneratedCodeError
-from jointplay.common.files import sweep_stale
 from jointplay.robot import Robot
-from jointplay.store.build import cache_error, cache_root
+from jointplay.store.build import cache_error, cache_root, entry_lock, remove_temporaries
 from jointplay.store.model import Model, check_generated, load_model, note
 from jointplay.store.stamp import provenance
 
@@ -36,6 +36,8 @@ def generated_folder(robot: Robot) -> Path:
         return folder
     folder = cache_root() / "models" / prov["input_hash"]
     if _damage(folder) is None:
+        with contextlib.suppress(OSError):  # last used now (`jointplay cache prune`)
+            os.utime(folder)
         return folder
     _regenerate(robot, folder)
     return folder
@@ -63,14 +65,14 @@ def _damage(folder: Path) -> str | None:
 
 
 def _regenerate(robot: Robot, folder: Path) -> None:
+    fresh = not folder.exists()
     try:
         folder.mkdir(parents=True, exist_ok=True)
-        with open(folder / ".lock", "w") as lock:
-            fcntl.flock(lock, fcntl.LOCK_EX)
+        with entry_lock(folder):
             damage = _damage(folder)  # another process may have repaired it meanwhile
             if damage is None:
                 return
-            sweep_stale(folder)
+            remove_temporaries(folder)  # under the lock: left by killed runs
             if not (folder / "layout.json").exists() and not (folder / "model.c").exists():
                 damage = "absent"
             if damage != "absent":
@@ -81,5 +83,19 @@ def _regenerate(robot: Robot, folder: Path) -> None:
             from jointplay.derive.codegen import write_generated
 
             write_generated(robot, folder)
-    except (OSError, FileError) as err:
-        raise cache_error(folder, err) from None
+    except BaseException as err:
+        _discard_failed(folder, fresh)
+        if isinstance(err, OSError | FileError):
+            raise cache_error(folder, err) from None
+        raise
+
+
+def _discard_failed(folder: Path, fresh: bool) -> None:
+    """A derivation that failed (a full disk, Ctrl-C) leaves no half-written model: the
+    folder is removed if this run made it and no other run has completed it meanwhile."""
+    import contextlib
+    import shutil
+
+    with contextlib.suppress(OSError), entry_lock(folder, blocking=False) as held:
+        if held and fresh and _damage(folder) is not None:
+            shutil.rmtree(folder)

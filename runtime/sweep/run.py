@@ -209,9 +209,11 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     """
     from tqdm import tqdm
 
+    from jointplay.common.extras import require
     from jointplay.common.files import OutputPlan, all_or_nothing, make_folder, sweep_stale
     from jointplay.sim import load_scene_model
 
+    require("sweep", "run_sweep()")  # Dask runs the cases, pyarrow writes the table
     started = time.perf_counter()
     if not isinstance(sweep, Sweep):
         sweep = load_sweep(sweep)

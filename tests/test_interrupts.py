@@ -1,0 +1,170 @@
+"""Ctrl-C everywhere: a real SIGINT sent to the ``jointplay`` command while it imports, while
+each integrator runs (one long output interval included: the compiled loops must look), while
+it writes, and several times in a row. Each ends with exit 130, one line, no traceback and no
+file that looks complete."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from test_probes import check_contract, interrupt_when
+
+# A long run whose output interval (30 s) holds millions of fixed steps or one long adaptive
+# integration: between two outputs the command line never runs.
+LONG_INTERVAL = ["--t-end", "3000", "--output-step", "30"]
+
+
+def only_line(err: str) -> None:
+    """Exactly one line on stderr (a progress bar's redraws aside): the interrupt's."""
+    lines = [line for line in err.replace("\r", "\n").splitlines()
+             if line.strip() and "it/s]" not in line and "s/it]" not in line
+             and "%|" not in line]
+    assert lines == ["jointplay: interrupted"], err
+
+
+@pytest.mark.parametrize("integrator", ["bdf", "cvodes", "idas", "rk4", "radau"])
+def test_interrupt_inside_a_long_output_interval(tmp_path: Path, integrator: str) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    step = ["--step", "1e-5"] if integrator in ("rk4", "radau") else []
+    code, err = interrupt_when(["simulate", "--integrator", integrator, *LONG_INTERVAL, *step,
+                                "--out", str(out / "r.h5"), "--csv", str(out / "r.csv")],
+                               "ready in", 0.5, timeout=60)
+    check_contract(code, err)
+    assert code == 130, err
+    only_line(err)
+    assert list(out.iterdir()) == []
+
+
+def test_interrupt_pressed_again_and_again(tmp_path: Path) -> None:
+    """Five presses 50 ms apart while it integrates: still one line and exit 130."""
+    command = [sys.executable, "-m", "jointplay.cli", "simulate", "--integrator", "rk4",
+               *LONG_INTERVAL, "--step", "1e-5", "--out", str(tmp_path / "r.h5")]
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            env={**os.environ, "PYTHONUNBUFFERED": "1"})
+    assert proc.stdout is not None
+    seen = b""
+    try:
+        while b"ready in" not in seen:
+            chunk = os.read(proc.stdout.fileno(), 4096)
+            assert chunk, "the command ended before it was ready"
+            seen += chunk
+        time.sleep(0.3)
+        for _ in range(5):
+            if proc.poll() is not None:
+                break
+            proc.send_signal(signal.SIGINT)
+            time.sleep(0.05)
+        _, err = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    text = err.decode(errors="replace")
+    check_contract(proc.returncode, text)
+    assert proc.returncode == 130, text
+    only_line(text)
+    assert list(tmp_path.iterdir()) == []
+
+
+# Ctrl-C as the results file starts to be written, and again while its temporary file is
+# being removed (the cleanup the first one started).
+_TWICE_WHILE_WRITING = """
+import contextlib, os, signal, sys
+from pathlib import Path
+import jointplay.common.files as files
+real_atomic, real_unlink = files.atomic_path, Path.unlink
+@contextlib.contextmanager
+def atomic_path(path, *args, **kwargs):
+    with real_atomic(path, *args, **kwargs) as tmp:
+        tmp.write_bytes(b"half a file")
+        os.kill(os.getpid(), signal.SIGINT)
+        yield tmp
+def unlink(self, *args, **kwargs):
+    if self.name.endswith(".part"):
+        os.kill(os.getpid(), signal.SIGINT)
+    return real_unlink(self, *args, **kwargs)
+files.atomic_path = atomic_path
+Path.unlink = unlink
+import jointplay.results.write as write
+if hasattr(write, "atomic_path"):
+    write.atomic_path = atomic_path
+print("ready", flush=True)
+from jointplay.cli import main
+sys.exit(main(["simulate", "--t-end", "0.05", "--quiet", "--out", {out!r}]))
+"""
+
+
+def test_interrupt_twice_while_writing(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    code, err = interrupt_when([], "ready", 0.0, sig=0, timeout=120,
+                               code=_TWICE_WHILE_WRITING.format(out=str(out / "r.h5")))
+    check_contract(code, err)
+    assert code == 130, err
+    only_line(err)
+    assert list(out.iterdir()) == []
+
+
+def test_interrupt_while_importing(tmp_path: Path) -> None:
+    """The command line's modules import slowly here (a hook sleeps in the import of
+    jointplay.cli, after jointplay itself): Ctrl-C then is one line and exit 130."""
+    hook = tmp_path / "hook"
+    hook.mkdir()
+    (hook / "sitecustomize.py").write_text(
+        "import importlib.abc, sys, time\n"
+        "class Slow(importlib.abc.MetaPathFinder):\n"
+        "    def find_spec(self, name, path=None, target=None):\n"
+        "        if name == 'jointplay.cli.simulate':\n"
+        "            print('importing', flush=True)\n"
+        "            time.sleep(30)\n"
+        "        return None\n"
+        "sys.meta_path.insert(0, Slow())\n", encoding="utf-8")
+    out = tmp_path / "r.h5"
+    command = [sys.executable, "-m", "jointplay.cli", "simulate", "--out", str(out)]
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        [str(hook), *filter(None, [os.environ.get("PYTHONPATH")])])}
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    assert proc.stdout is not None
+    try:
+        seen = b""
+        while b"importing" not in seen:
+            chunk = os.read(proc.stdout.fileno(), 4096)
+            assert chunk, "the command ended before it imported"
+            seen += chunk
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=20)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    text = err.decode(errors="replace")
+    check_contract(proc.returncode, text)
+    assert proc.returncode == 130, text
+    only_line(text)
+    assert not out.exists()
+
+
+def test_fixed_step_blocks_change_nothing(monkeypatch: pytest.MonkeyPatch) -> None:
+    """An output interval taken in blocks (so that Ctrl-C is seen) gives the very same run as
+    taken whole: 200 rk4 steps per output, in blocks of 50 and in one."""
+    import numpy as np
+
+    import jointplay
+    import jointplay.sim.fixed as fixed
+
+    scene = jointplay.default_scene().with_run(integrator="rk4", t_end=0.01,
+                                               output_step=0.002, step=1e-5)
+    whole = jointplay.simulate(scene)
+    monkeypatch.setattr(fixed, "FIXED_BLOCK_STEPS", 50)
+    blocks = jointplay.simulate(scene)
+    np.testing.assert_array_equal(blocks.q, whole.q)
+    np.testing.assert_array_equal(blocks.u, whole.u)
+    np.testing.assert_array_equal(blocks.impacts.time, whole.impacts.time)
+    assert whole.impacts.time.size > 0  # the blocks met contact onsets
