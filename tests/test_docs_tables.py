@@ -55,6 +55,9 @@ def test_limits_table_matches_the_code(row: list[str]) -> None:
     if "from 1 to" in limit:  # run.max_steps: the lower bound is the integer 1, not a limit
         documented = documented[1:]
     values = [getattr(limits, name) for name in constants(names)]
+    if all(isinstance(v, dict) for v in values):  # a table of its own, checked row by row
+        assert not documented, (what, limit)  # in tests/test_front_doors.py
+        return
     assert documented == values, (what, limit, names)
 
 
