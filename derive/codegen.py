@@ -66,8 +66,16 @@ class _Inputs:
     v_imp: Any
 
 
-def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, Any]]:
+# Where the dynamics come from: "closed", Kane's mass matrix and forcing, solved by LDL^T.
+FORMULATIONS = ("closed",)
+
+
+def build_functions(model: SymbolicModel, formulation: str = "closed"
+                    ) -> tuple[list[ca.Function], dict[str, Any]]:
     """CasADi functions for a symbolic model, and the description of their slots."""
+    if formulation not in FORMULATIONS:
+        raise ValueError(f"formulation must be one of {', '.join(FORMULATIONS)}, "
+                         f"got {formulation!r}")
     inputs = _symbolic_inputs(model)
     convert = _converter(model, inputs)
     per_joint, potential = _contact_outputs(model, convert, inputs.v_imp)

@@ -129,8 +129,11 @@ class _Link:
     omega_bearing: sp.Expr
 
 
-def derive(structure: Structure) -> SymbolicModel:
-    """Derive the equations of motion for a robot structure (see ``Robot.structure()``)."""
+def derive(structure: Structure, formulation: str = "closed") -> SymbolicModel:
+    """Derive the equations of motion for a robot structure (see ``Robot.structure()``).
+
+    ``formulation`` is where the emitted dynamics come from (see
+    :data:`jointplay.derive.codegen.FORMULATIONS`)."""
     t0 = time.perf_counter()
     params = parameter_layout(structure)
     psym = {p.name: sp.Symbol(p.symbol, real=True) for p in params}
