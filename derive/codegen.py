@@ -66,27 +66,40 @@ class _Inputs:
     v_imp: Any
 
 
-# Where the dynamics come from: "closed", Kane's mass matrix and forcing, solved by LDL^T.
-FORMULATIONS = ("closed",)
+# Where the dynamics come from: "closed", Kane's mass matrix and forcing, solved by LDL^T;
+# "recursive", the recursion over the chain (see jointplay.derive.recursive).
+FORMULATIONS = ("closed", "recursive")
 
 
-def build_functions(model: SymbolicModel, formulation: str = "closed"
+def build_functions(model: SymbolicModel, formulation: str | None = None
                     ) -> tuple[list[ca.Function], dict[str, Any]]:
-    """CasADi functions for a symbolic model, and the description of their slots."""
+    """CasADi functions for a symbolic model, and the description of their slots.
+
+    ``formulation`` defaults to the one the model was derived for; a model derived for the
+    recursion has no closed form to emit."""
+    formulation = formulation or model.formulation
     if formulation not in FORMULATIONS:
         raise ValueError(f"formulation must be one of {', '.join(FORMULATIONS)}, "
                          f"got {formulation!r}")
+    if formulation == "closed" and model.mass_matrix is None:
+        raise ValueError("this model was derived for the recursive formulation; derive it "
+                         "with formulation='closed' to emit the closed form")
     inputs = _symbolic_inputs(model)
     convert = _converter(model, inputs)
-    per_joint, potential = _contact_outputs(model, convert, inputs.v_imp)
-    # Converted after the contact laws, which bind the placeholder forces the equations use.
-    mass = convert(model.mass_matrix)
-    forcing = convert(model.forcing)
-    kinetic = convert(model.kinetic_energy)
-    gravity_pot = convert(model.gravity_potential)
-    tip = convert(model.tip_position)
-
-    fn_mass, fn_forcing, fn_fd, fn_jac = _dynamics_functions(model, inputs, mass, forcing)
+    if formulation == "recursive":
+        per_joint, potential, kinetic, gravity_pot, tip, dynamics = _recursive(
+            model, inputs, convert)
+        fn_mass, fn_forcing, fn_fd, fn_jac = dynamics
+    else:
+        per_joint, potential = _contact_outputs(model, convert, inputs.v_imp)
+        # Converted after the contact laws, which bind the placeholder forces the equations
+        # use.
+        mass = convert(model.mass_matrix)
+        forcing = convert(model.forcing)
+        kinetic = convert(model.kinetic_energy)
+        gravity_pot = convert(model.gravity_potential)
+        tip = convert(model.tip_position)
+        fn_mass, fn_forcing, fn_fd, fn_jac = _dynamics_functions(model, inputs, mass, forcing)
     fn_contact, fn_energy = _contact_and_energy_functions(inputs, per_joint, kinetic,
                                                           gravity_pot, potential)
     fn_tip = _end_effector_function(model, inputs, tip)
@@ -156,6 +169,62 @@ def _contact_outputs(model: SymbolicModel, convert: SympyToCasadi, v_imp: Any
         convert._cache[terms.force_t] = values["f_t"]
         potential = potential + convert(law.potential)
     return per_joint, potential
+
+
+def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
+               ) -> tuple[dict[str, list[Any]], Any, Any, Any, Any,
+                          tuple[ca.Function, ca.Function, ca.Function, ca.Function]]:
+    """The contact outputs, energies, tip and the four dynamics functions from the recursion
+    over the chain (see :mod:`jointplay.derive.recursive`)."""
+    from jointplay.derive import recursive
+
+    n = model.n_coordinates
+    q, u, x, p, tau, v_imp = inputs.q, inputs.u, inputs.x, inputs.p, inputs.tau, inputs.v_imp
+    slots = {(c.joint, c.kind): i for i, c in enumerate(model.coordinates)}
+    by_name = {prm.name: i for i, prm in enumerate(model.parameters)}
+
+    def parameter(name: str) -> Any:
+        return p[by_name[name]]
+
+    structure = model.structure
+    thetas, omegas = recursive.kinematics(structure, q, u, slots, parameter)
+    for terms in model.clearance:  # the laws' placeholders for the links' angles and rates
+        i = terms.index
+        for symbol, value in zip((*terms.angles, *terms.speeds),
+                                 (thetas[i - 2] if i > 1 else 0, thetas[i - 1],
+                                  omegas[i - 2] if i > 1 else 0, omegas[i - 1]), strict=True):
+            if isinstance(symbol, sp.Symbol):
+                convert._cache[symbol] = value
+    per_joint, potential = _contact_outputs(model, convert, v_imp)
+    contact = {terms.index: (per_joint["f_x"][j], per_joint["f_y"][j], per_joint["f_t"][j])
+               for j, terms in enumerate(model.clearance)}
+    torque_slots = {joint: i for i, joint in enumerate(model.torque_joints)}
+    chain = recursive.chain(structure, q, u, tau, slots, torque_slots, parameter, contact,
+                            thetas, omegas)
+    mass = recursive.mass_matrix(chain)
+    forcing = -recursive.inverse_dynamics(chain, ca.SX.zeros(n, 1))
+    acc = recursive.forward_dynamics(chain)
+    names = ["x", "tau", "p", "v_imp"]
+    fn_mass = ca.Function("mass_matrix", [q, p], [mass], ["q", "p"], ["M"])
+    fn_forcing = ca.Function("forcing", [x, tau, p, v_imp], [forcing], names, ["f"])
+    fn_fd = ca.Function("forward_dynamics", [x, tau, p, v_imp], [ca.vertcat(u, acc)], names,
+                        ["xdot"])
+    # da/dy = -M^-1 dID/dy at the computed a (Carpentier and Mansard), M^-1 by the ABA.
+    acc_sym = ca.SX.sym("a", n)
+    residual = recursive.inverse_dynamics(chain, acc_sym)
+    blocks = []
+    for arg in (x, tau, p, v_imp):
+        d_residual = ca.substitute(ca.jacobian(residual, arg), acc_sym, acc)
+        columns = [-recursive.forward_dynamics(chain, d_residual[:, c])
+                   for c in range(arg.numel())]
+        d_acc = ca.horzcat(*columns) if columns else ca.SX(n, 0)
+        blocks.append(ca.vertcat(ca.jacobian(u, arg), d_acc))
+    out_nominal = ca.SX.sym("out_xdot", ca.Sparsity(2 * n, 1))
+    fn_jac = ca.Function(
+        "jac_forward_dynamics", [x, tau, p, v_imp, out_nominal], blocks,
+        [*names, "out_xdot"], ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
+    return (per_joint, potential, chain.kinetic, chain.gravity_potential, chain.tip,
+            (fn_mass, fn_forcing, fn_fd, fn_jac))
 
 
 def _dynamics_functions(model: SymbolicModel, inputs: _Inputs, mass: Any, forcing: Any

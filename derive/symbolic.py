@@ -67,12 +67,15 @@ class SymbolicModel:
     torques: list[sp.Symbol]  # one per moving joint, empty if the drive is off
     torque_joints: list[int]
     clearance: list[ClearanceJointTerms]
-    mass_matrix: sp.Matrix
-    forcing: sp.Matrix  # M du/dt = forcing; contact enters via the placeholder symbols
-    kinetic_energy: sp.Expr
-    gravity_potential: sp.Expr
-    tip_position: sp.Matrix  # 2 x 1, end of the last link (where the payload sits)
+    # Kane's closed form; None for the recursive formulation, which builds these from the
+    # chain itself (see jointplay.derive.recursive).
+    mass_matrix: sp.Matrix | None
+    forcing: sp.Matrix | None  # M du/dt = forcing; contact enters via the placeholder symbols
+    kinetic_energy: sp.Expr | None
+    gravity_potential: sp.Expr | None
+    tip_position: sp.Matrix | None  # 2 x 1, end of the last link (where the payload sits)
     timings: dict[str, float] = field(default_factory=dict)
+    formulation: str = "closed"
 
     @property
     def n_coordinates(self) -> int:
@@ -142,6 +145,8 @@ def derive(structure: Structure, formulation: str = "closed") -> SymbolicModel:
         return psym[name]
 
     coordinates = _coordinates(list(structure.joints))
+    if formulation == "recursive":
+        return _joint_laws_only(structure, coordinates, params, psym, t0)
     chain = _walk_chain(structure, coordinates, P)
     t1 = time.perf_counter()
 
@@ -173,7 +178,41 @@ def derive(structure: Structure, formulation: str = "closed") -> SymbolicModel:
         gravity_potential=chain.gravity_potential,
         tip_position=tip_position,
         timings={"kinematics": t1 - t0, "kane": t2 - t1, "energy": t3 - t2},
+        formulation="closed",
     )
+
+
+def _joint_laws_only(structure: Structure, coordinates: _Coordinates, params: list[Parameter],
+                     psym: dict[str, sp.Symbol], t0: float) -> SymbolicModel:
+    """What the recursive formulation takes from the derivation: every clearance joint's laws,
+    written with its links' absolute angles and rates as placeholder symbols (the recursion
+    binds them), so that a law's size does not grow with the joint's place in the chain."""
+    clearance = []
+    for i in coordinates.eccentricity:
+        ex, ey, vx, vy = coordinates.eccentricity[i]
+        if i > 1:
+            angles: tuple[sp.Expr, sp.Expr] = (sp.Symbol(f"theta_{i - 1}", real=True),
+                                               sp.Symbol(f"theta_{i}", real=True))
+            speeds: tuple[sp.Expr, sp.Expr] = (sp.Symbol(f"omega_{i - 1}", real=True),
+                                               sp.Symbol(f"omega_{i}", real=True))
+        else:  # the bearing of the first joint is the ground
+            angles = (sp.Integer(0), sp.Symbol("theta_1", real=True))
+            speeds = (sp.Integer(0), sp.Symbol("omega_1", real=True))
+        fx, fy, ft = sp.symbols(f"F_x{i} F_y{i} F_t{i}", real=True)
+        impact = sp.Symbol(f"v_imp{i}", real=True)
+        law = laws.contact_terms(structure, i, ex, ey, vx, vy, speeds[0], speeds[1], impact,
+                                 psym.__getitem__)
+        clearance.append(ClearanceJointTerms(i, fx, fy, ft, impact, law, angles, speeds))
+    torque_joints = ([i for i, kind in enumerate(structure.joints, start=1) if kind in _MOVING]
+                     if structure.drive else [])
+    return SymbolicModel(
+        structure=structure, coordinates=coordinate_layout(structure), q=coordinates.q,
+        u=coordinates.u, parameters=params, parameter_symbols=[psym[p.name] for p in params],
+        torques=[sp.Symbol(f"tau_{i}", real=True) for i in torque_joints],
+        torque_joints=torque_joints, clearance=clearance, mass_matrix=None, forcing=None,
+        kinetic_energy=None, gravity_potential=None, tip_position=None,
+        timings={"kinematics": time.perf_counter() - t0, "kane": 0.0, "energy": 0.0},
+        formulation="recursive")
 
 
 def _coordinates(kinds: list[str]) -> _Coordinates:

@@ -30,7 +30,7 @@ from jointplay.robot.structure import JOINT_KINDS
 
 TOLERANCE = 1e-12
 STATES_PER_CASE = 4
-FORMULATIONS = ("closed",)  # each checked against "closed"
+FORMULATIONS = ("recursive",)  # each checked against "closed"
 
 
 @dataclass(frozen=True)
