@@ -87,7 +87,7 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
     inputs = _symbolic_inputs(model)
     convert = _converter(model, inputs)
     if formulation == "recursive":
-        per_joint, potential, kinetic, gravity_pot, tip, dynamics = _recursive(
+        per_joint, potential, kinetic, gravity_pot, tip, dynamics, converters = _recursive(
             model, inputs, convert)
         fn_mass, fn_forcing, fn_fd, fn_jac = dynamics
     else:
@@ -115,7 +115,8 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
         "functions": functions,
     }
     extra = wear_function(model, convert, inputs.x, inputs.p, inputs.v_imp, slots.x, slots.p,
-                          slots.v_imp, slots.joints, functions)
+                          slots.v_imp, slots.joints, functions,
+                          converters if formulation == "recursive" else None)
     fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac)
     add_step_slots(functions, fn_rk4.name(), fn_radau.name(), RADAU_NEWTON_ITERATIONS, model,
                    slots)
@@ -188,14 +189,14 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
 
     structure = model.structure
     thetas, omegas = recursive.kinematics(structure, q, u, slots, parameter)
-    for terms in model.clearance:  # the laws' placeholders for the links' angles and rates
-        i = terms.index
-        for symbol, value in zip((*terms.angles, *terms.speeds),
-                                 (thetas[i - 2] if i > 1 else 0, thetas[i - 1],
-                                  omegas[i - 2] if i > 1 else 0, omegas[i - 1]), strict=True):
-            if isinstance(symbol, sp.Symbol):
-                convert._cache[symbol] = value
-    per_joint, potential = _contact_outputs(model, convert, v_imp)
+    converters = _joint_converters(model, inputs, slots, parameter, thetas, omegas)
+    per_joint: dict[str, list[Any]] = {key: [] for key in PER_JOINT_DOC}
+    potential = ca.SX(0)
+    for joint_convert in converters:
+        law = model.clearance[0].law  # every joint's law is the template's, rebound
+        for key, value in zip(PER_JOINT_DOC, _law_values(law), strict=True):
+            per_joint[key].append(joint_convert(value))
+        potential = potential + joint_convert(law.potential)
     contact = {terms.index: (per_joint["f_x"][j], per_joint["f_y"][j], per_joint["f_t"][j])
                for j, terms in enumerate(model.clearance)}
     torque_slots = {joint: i for i, joint in enumerate(model.torque_joints)}
@@ -224,7 +225,40 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
         "jac_forward_dynamics", [x, tau, p, v_imp, out_nominal], blocks,
         [*names, "out_xdot"], ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
     return (per_joint, potential, chain.kinetic, chain.gravity_potential, chain.tip,
-            (fn_mass, fn_forcing, fn_fd, fn_jac))
+            (fn_mass, fn_forcing, fn_fd, fn_jac), converters)
+
+
+def _law_values(law: Any) -> list[Any]:
+    """A law's expressions in the order of the ``contact`` outputs (PER_JOINT_DOC)."""
+    return [law.penetration, law.penetration_rate, law.sliding_speed, law.normal_force,
+            law.friction_force, law.force_x, law.force_y, law.dissipation]
+
+
+def _joint_converters(model: SymbolicModel, inputs: _Inputs, slots: dict[tuple[int, str], int],
+                      parameter: Any, thetas: list[Any], omegas: list[Any]
+                      ) -> list[SympyToCasadi]:
+    """For each clearance joint, a converter that binds the template law's generic symbols to
+    that joint's coordinates, links' angles and rates, impact speed and parameters."""
+    template = model.template
+    if template is None:
+        return []
+    shared = {symbol: inputs.p[i] for i, symbol in enumerate(model.parameter_symbols)}
+    converters = []
+    for j, terms in enumerate(model.clearance):
+        i = terms.index
+        ex, ey, vx, vy = template.eccentricity
+        a, b = slots[(i, "ex")], slots[(i, "ey")]
+        leaves: dict[sp.Basic, Any] = {
+            **shared, ex: inputs.q[a], ey: inputs.q[b], vx: inputs.u[a], vy: inputs.u[b],
+            template.angles[0]: thetas[i - 2] if i > 1 else ca.SX(0),
+            template.angles[1]: thetas[i - 1],
+            template.speeds[0]: omegas[i - 2] if i > 1 else ca.SX(0),
+            template.speeds[1]: omegas[i - 1],
+            template.impact_speed: inputs.v_imp[j]}
+        leaves.update({symbol: parameter(f"joint{i}.{attribute}")
+                       for attribute, symbol in template.joint_parameters.items()})
+        converters.append(SympyToCasadi(leaves))
+    return converters
 
 
 def _dynamics_functions(model: SymbolicModel, inputs: _Inputs, mass: Any, forcing: Any
@@ -303,18 +337,27 @@ def _end_effector_function(model: SymbolicModel, inputs: _Inputs, tip: Any) -> c
 
 def wear_function(model: SymbolicModel, convert: SympyToCasadi, x: Any, p: Any, v_imp: Any,
                   x_slot: dict[str, Any], p_slot: dict[str, Any], v_slot: dict[str, Any],
-                  joints: list[str], functions: dict[str, Any]) -> list[ca.Function]:
+                  joints: list[str], functions: dict[str, Any],
+                  joint_converters: list[SympyToCasadi] | None = None) -> list[ca.Function]:
     """``wear(x, p, v_imp)``, the Archard integrands per joint (see :mod:`.wear`), emitted only
-    for a structure that asks for wear."""
+    for a structure that asks for wear. With ``joint_converters`` (the recursive
+    formulation), the integrands are the template joint's, bound joint by joint."""
     if not model.structure.wear:
         return []
     from jointplay.derive.wear import OUTPUTS, wear_terms
 
+    columns: list[list[Any]] = [[] for _ in OUTPUTS]
+    if joint_converters is not None and model.template is not None:
+        t = model.template
+        generic = wear_terms(t.law, 0, *t.eccentricity, t.angles, t.speeds,
+                             t.parameter).values()
+        for joint_convert in joint_converters:
+            for column, value in zip(columns, generic, strict=True):
+                column.append(joint_convert(value))
     psym = dict(zip([prm.name for prm in model.parameters], model.parameter_symbols,
                     strict=True))
     names = [c.name for c in model.coordinates]
-    columns: list[list[Any]] = [[] for _ in OUTPUTS]
-    for terms in model.clearance:
+    for terms in model.clearance if joint_converters is None else []:
         j = terms.index
         ex, ey = (model.q[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))
         vx, vy = (model.u[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))

@@ -76,6 +76,7 @@ class SymbolicModel:
     tip_position: sp.Matrix | None  # 2 x 1, end of the last link (where the payload sits)
     timings: dict[str, float] = field(default_factory=dict)
     formulation: str = "closed"
+    template: JointTemplate | None = None  # the recursive formulation's generic joint laws
 
     @property
     def n_coordinates(self) -> int:
@@ -182,27 +183,57 @@ def derive(structure: Structure, formulation: str = "closed") -> SymbolicModel:
     )
 
 
+@dataclass(frozen=True)
+class JointTemplate:
+    """One clearance joint's laws, derived once with generic symbols for the recursive
+    formulation: its eccentricity and rates, its links' absolute angles and rates (bearing's,
+    journal's), the captured impact speed, and its own parameters (``joint_parameters``, by
+    attribute). ``parameter`` maps a parameter name to its symbol, ``joint0.<attribute>``
+    standing for the joint's own. The emitter binds these per joint."""
+
+    law: laws.ContactTerms
+    eccentricity: tuple[sp.Symbol, sp.Symbol, sp.Symbol, sp.Symbol]  # ex, ey, vx, vy
+    angles: tuple[sp.Symbol, sp.Symbol]
+    speeds: tuple[sp.Symbol, sp.Symbol]
+    impact_speed: sp.Symbol
+    joint_parameters: dict[str, sp.Symbol]
+    parameter: Callable[[str], sp.Symbol]
+
+
+def _joint_template(structure: Structure, psym: dict[str, sp.Symbol]) -> JointTemplate:
+    """The laws of a generic clearance joint (every joint's are this one's, rebound): sympy's
+    Max/Min canonicalisation costs about a second per law, so a law is built once, not once
+    per joint."""
+    own: dict[str, sp.Symbol] = {}
+
+    def parameter(name: str) -> sp.Symbol:
+        if name.startswith("joint0."):
+            attribute = name.split(".", 1)[1]
+            return own.setdefault(attribute, sp.Symbol(f"{attribute}_j", real=True))
+        return psym[name]
+
+    ex, ey, vx, vy = sp.symbols("e_x e_y v_x v_y", real=True)
+    angles = sp.symbols("theta_b theta_j", real=True)
+    speeds = sp.symbols("omega_b omega_j", real=True)
+    impact = sp.Symbol("v_imp", real=True)
+    law = laws.contact_terms(structure, 0, ex, ey, vx, vy, speeds[0], speeds[1], impact,
+                             parameter)
+    return JointTemplate(law, (ex, ey, vx, vy), angles, speeds, impact, own, parameter)
+
+
 def _joint_laws_only(structure: Structure, coordinates: _Coordinates, params: list[Parameter],
                      psym: dict[str, sp.Symbol], t0: float) -> SymbolicModel:
-    """What the recursive formulation takes from the derivation: every clearance joint's laws,
-    written with its links' absolute angles and rates as placeholder symbols (the recursion
-    binds them), so that a law's size does not grow with the joint's place in the chain."""
+    """What the recursive formulation takes from the derivation: the laws of a clearance
+    joint, written with its links' absolute angles and rates as symbols (the recursion binds
+    them, joint by joint), so that a law's size does not grow with the joint's place in the
+    chain nor the derivation's time with the number of joints."""
+    template = _joint_template(structure, psym) if coordinates.eccentricity else None
     clearance = []
     for i in coordinates.eccentricity:
-        ex, ey, vx, vy = coordinates.eccentricity[i]
-        if i > 1:
-            angles: tuple[sp.Expr, sp.Expr] = (sp.Symbol(f"theta_{i - 1}", real=True),
-                                               sp.Symbol(f"theta_{i}", real=True))
-            speeds: tuple[sp.Expr, sp.Expr] = (sp.Symbol(f"omega_{i - 1}", real=True),
-                                               sp.Symbol(f"omega_{i}", real=True))
-        else:  # the bearing of the first joint is the ground
-            angles = (sp.Integer(0), sp.Symbol("theta_1", real=True))
-            speeds = (sp.Integer(0), sp.Symbol("omega_1", real=True))
+        assert template is not None
         fx, fy, ft = sp.symbols(f"F_x{i} F_y{i} F_t{i}", real=True)
-        impact = sp.Symbol(f"v_imp{i}", real=True)
-        law = laws.contact_terms(structure, i, ex, ey, vx, vy, speeds[0], speeds[1], impact,
-                                 psym.__getitem__)
-        clearance.append(ClearanceJointTerms(i, fx, fy, ft, impact, law, angles, speeds))
+        clearance.append(ClearanceJointTerms(i, fx, fy, ft, template.impact_speed,
+                                             template.law, template.angles, template.speeds))
     torque_joints = ([i for i, kind in enumerate(structure.joints, start=1) if kind in _MOVING]
                      if structure.drive else [])
     return SymbolicModel(
@@ -212,7 +243,7 @@ def _joint_laws_only(structure: Structure, coordinates: _Coordinates, params: li
         torque_joints=torque_joints, clearance=clearance, mass_matrix=None, forcing=None,
         kinetic_energy=None, gravity_potential=None, tip_position=None,
         timings={"kinematics": time.perf_counter() - t0, "kane": 0.0, "energy": 0.0},
-        formulation="recursive")
+        formulation="recursive", template=template)
 
 
 def _coordinates(kinds: list[str]) -> _Coordinates:
