@@ -89,7 +89,7 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
     if formulation == "recursive":
         per_joint, potential, kinetic, gravity_pot, tip, dynamics, converters = _recursive(
             model, inputs, convert)
-        fn_mass, fn_forcing, fn_fd, fn_jac = dynamics
+        fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state = dynamics
     else:
         per_joint, potential = _contact_outputs(model, convert, inputs.v_imp)
         # Converted after the contact laws, which bind the placeholder forces the equations
@@ -99,7 +99,8 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
         kinetic = convert(model.kinetic_energy)
         gravity_pot = convert(model.gravity_potential)
         tip = convert(model.tip_position)
-        fn_mass, fn_forcing, fn_fd, fn_jac = _dynamics_functions(model, inputs, mass, forcing)
+        fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state = _dynamics_functions(
+            model, inputs, mass, forcing)
     fn_contact, fn_energy = _contact_and_energy_functions(inputs, per_joint, kinetic,
                                                           gravity_pot, potential)
     fn_tip = _end_effector_function(model, inputs, tip)
@@ -117,11 +118,11 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
     extra = wear_function(model, convert, inputs.x, inputs.p, inputs.v_imp, slots.x, slots.p,
                           slots.v_imp, slots.joints, functions,
                           converters if formulation == "recursive" else None)
-    fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac)
+    fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac_state)
     add_step_slots(functions, fn_rk4.name(), fn_radau.name(), RADAU_NEWTON_ITERATIONS, model,
                    slots)
-    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip, fn_rk4,
-            fn_radau, *extra], layout
+    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state, fn_contact, fn_energy, fn_tip,
+            fn_rk4, fn_radau, *extra], layout
 
 
 def _symbolic_inputs(model: SymbolicModel) -> _Inputs:
@@ -174,7 +175,7 @@ def _contact_outputs(model: SymbolicModel, convert: SympyToCasadi, v_imp: Any
 
 def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
                ) -> tuple[dict[str, list[Any]], Any, Any, Any, Any,
-                          tuple[ca.Function, ca.Function, ca.Function, ca.Function]]:
+                          tuple[ca.Function, ...], list[SympyToCasadi]]:
     """The contact outputs, energies, tip and the four dynamics functions from the recursion
     over the chain (see :mod:`jointplay.derive.recursive`)."""
     from jointplay.derive import recursive
@@ -213,19 +214,38 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
     # da/dy = -M^-1 dID/dy at the computed a (Carpentier and Mansard), M^-1 by the ABA.
     acc_sym = ca.SX.sym("a", n)
     residual = recursive.inverse_dynamics(chain, acc_sym)
-    blocks = []
-    for arg in (x, tau, p, v_imp):
-        d_residual = ca.substitute(ca.jacobian(residual, arg), acc_sym, acc)
-        columns = [-recursive.forward_dynamics(chain, d_residual[:, c])
-                   for c in range(arg.numel())]
-        d_acc = ca.horzcat(*columns) if columns else ca.SX(n, 0)
-        blocks.append(ca.vertcat(ca.jacobian(u, arg), d_acc))
-    out_nominal = ca.SX.sym("out_xdot", ca.Sparsity(2 * n, 1))
+    # The state block, which the BDF's Newton iteration needs, as straight-line code.
+    d_residual = ca.substitute(ca.jacobian(residual, x), acc_sym, acc)
+    d_acc = ca.horzcat(*[-recursive.forward_dynamics(chain, d_residual[:, c])
+                         for c in range(2 * n)])
+    jac_x = ca.densify(ca.vertcat(ca.jacobian(u, x), d_acc))
+    fn_jac_state = ca.Function("jac_state", [x, tau, p, v_imp], [jac_x], names,
+                               ["jac_xdot_x"])
+    # The other blocks (torques, parameters, impact speeds) are not needed while integrating:
+    # one column at a time, by a directional derivative and an ABA solve, looped over columns
+    # in the C, so their code stays the size of one column's.
+    blocks: list[Any] = []
+    xm, taum, pm, vm = (ca.MX.sym(name, arg.numel()) for name, arg in
+                        zip(names, (x, tau, p, v_imp), strict=True))
+    acc_m = fn_fd(xm, taum, pm, vm)[n:]
+    for name, arg in zip(names[1:], (tau, p, v_imp), strict=True):
+        size = arg.numel()
+        if size == 0:
+            blocks.append(ca.MX(2 * n, 0))
+            continue
+        seed = ca.SX.sym("seed", size)
+        column = -recursive.forward_dynamics(chain, ca.jtimes(residual, arg, seed))
+        fn_column = ca.Function(f"jac_column_{name}", [x, acc_sym, tau, p, v_imp, seed],
+                                [column])
+        columns = fn_column.map(size, "serial")(xm, acc_m, taum, pm, vm, ca.MX.eye(size))
+        blocks.append(ca.vertcat(ca.MX(n, size), columns))
+    out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
     fn_jac = ca.Function(
-        "jac_forward_dynamics", [x, tau, p, v_imp, out_nominal], blocks,
-        [*names, "out_xdot"], ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
+        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal],
+        [fn_jac_state(xm, taum, pm, vm), *blocks], [*names, "out_xdot"],
+        ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
     return (per_joint, potential, chain.kinetic, chain.gravity_potential, chain.tip,
-            (fn_mass, fn_forcing, fn_fd, fn_jac), converters)
+            (fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state), converters)
 
 
 def _law_values(law: Any) -> list[Any]:
@@ -262,8 +282,9 @@ def _joint_converters(model: SymbolicModel, inputs: _Inputs, slots: dict[tuple[i
 
 
 def _dynamics_functions(model: SymbolicModel, inputs: _Inputs, mass: Any, forcing: Any
-                        ) -> tuple[ca.Function, ca.Function, ca.Function, ca.Function]:
-    """``mass_matrix``, ``forcing``, ``forward_dynamics`` and ``jac_forward_dynamics``."""
+                        ) -> tuple[ca.Function, ...]:
+    """``mass_matrix``, ``forcing``, ``forward_dynamics``, ``jac_forward_dynamics`` and
+    ``jac_state`` from the closed form."""
     n = model.n_coordinates
     q, x, p, tau, v_imp = inputs.q, inputs.x, inputs.p, inputs.tau, inputs.v_imp
     fn_mass = ca.Function("mass_matrix", [q, p], [mass], ["q", "p"], ["M"])
@@ -271,16 +292,21 @@ def _dynamics_functions(model: SymbolicModel, inputs: _Inputs, mass: Any, forcin
                              ["x", "tau", "p", "v_imp"], ["f"])
     acc_sym = ca.SX.sym("a", n)
     residual = ca.mtimes(mass, acc_sym) - forcing
-    fn_residual_jac = ca.Function(
-        "residual_jacobian", [x, acc_sym, tau, p, v_imp],
-        [ca.jacobian(residual, arg) for arg in [x, tau, p, v_imp]])
-    fn_fd, fn_jac = _forward_dynamics(model, fn_mass, fn_forcing, fn_residual_jac)
-    return fn_mass, fn_forcing, fn_fd, fn_jac
+    fn_residual_jac_x = ca.Function("residual_jacobian", [x, acc_sym, tau, p, v_imp],
+                                    [ca.jacobian(residual, x)])
+    fn_residual_jac_rest = ca.Function(
+        "residual_jacobian_inputs", [x, acc_sym, tau, p, v_imp],
+        [ca.jacobian(residual, arg) for arg in [tau, p, v_imp]])
+    return (fn_mass, fn_forcing,
+            *_forward_dynamics(model, fn_mass, fn_forcing, fn_residual_jac_x,
+                               fn_residual_jac_rest))
 
 
 def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca.Function,
-                      fn_residual_jac: ca.Function) -> tuple[ca.Function, ca.Function]:
-    """Forward dynamics and its Jacobian as MX graphs around a sparse LDL^T solve."""
+                      fn_residual_jac_x: ca.Function, fn_residual_jac_rest: ca.Function
+                      ) -> tuple[ca.Function, ca.Function, ca.Function]:
+    """Forward dynamics, its Jacobian and the Jacobian's state block alone, as MX graphs
+    around a sparse LDL^T solve."""
     n = model.n_coordinates
     xm = ca.MX.sym("x", 2 * n)
     taum = ca.MX.sym("tau", len(model.torques))
@@ -290,20 +316,23 @@ def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca
     mass_m = fn_mass(xm[:n], pm)
     acc = ca.solve(mass_m, fn_forcing(xm, taum, pm, vm), "ldl")
     xdot = ca.vertcat(um, acc)
-    fn_fd = ca.Function("forward_dynamics", [xm, taum, pm, vm], [xdot],
-                        ["x", "tau", "p", "v_imp"], ["xdot"])
-    dres = fn_residual_jac(xm, acc, taum, pm, vm)
+    names = ["x", "tau", "p", "v_imp"]
+    fn_fd = ca.Function("forward_dynamics", [xm, taum, pm, vm], [xdot], names, ["xdot"])
+    dres = [fn_residual_jac_x(xm, acc, taum, pm, vm),
+            *fn_residual_jac_rest(xm, acc, taum, pm, vm)]
     blocks = []
     for arg, dr in zip([xm, taum, pm, vm], dres, strict=True):
         d_acc = -ca.solve(mass_m, dr, "ldl")
         d_vel = ca.jacobian(um, arg)  # [0 I] for x, zero for the rest
         blocks.append(ca.vertcat(d_vel, d_acc))
+    fn_jac_state = ca.Function("jac_state", [xm, taum, pm, vm], [ca.densify(blocks[0])], names,
+                               ["jac_xdot_x"])
     out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
     fn_jac = ca.Function(
-        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal], blocks,
-        ["x", "tau", "p", "v_imp", "out_xdot"],
+        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal],
+        [fn_jac_state(xm, taum, pm, vm), *blocks[1:]], [*names, "out_xdot"],
         ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
-    return fn_fd, fn_jac
+    return fn_fd, fn_jac, fn_jac_state
 
 
 def _contact_and_energy_functions(inputs: _Inputs, per_joint: dict[str, list[Any]],
@@ -384,7 +413,7 @@ RADAU_A = (((88 - 7 * _S6) / 360, (296 - 169 * _S6) / 1800, (-2 + 3 * _S6) / 225
 RADAU_NEWTON_ITERATIONS = 8
 
 
-def fixed_step_functions(fn_fd: ca.Function, fn_jac: ca.Function
+def fixed_step_functions(fn_fd: ca.Function, fn_jac_state: ca.Function
                          ) -> tuple[ca.Function, ca.Function]:
     """One step of explicit RK4 and of implicit Radau IIA, as C with no solver library.
 
@@ -413,7 +442,7 @@ def fixed_step_functions(fn_fd: ca.Function, fn_jac: ca.Function
                       names, ["x_next"])
 
     a = ca.DM(RADAU_A)
-    jac_x = fn_jac(x, tau[:, 0], p, v, ca.MX(ca.Sparsity(nx, 1)))[0]
+    jac_x = fn_jac_state(x, tau[:, 0], p, v)
     newton_inv = ca.solve(ca.MX.eye(3 * nx) - h * ca.kron(ca.MX(a), jac_x),
                           ca.MX.eye(3 * nx), "qr")
     z = ca.MX.zeros(nx, 3)  # stage increments x_i - x, one column per stage

@@ -166,8 +166,8 @@ def _assert_close(actual: np.ndarray, expected: np.ndarray, what: str) -> None:
         f"{what}: max error {error:.3e} exceeds {TOLERANCE:.0e} x max|expected| {scale:.3e}")
 
 
-COMPARED = ("mass_matrix", "forcing", "forward_dynamics", "jac_forward_dynamics", "contact",
-            "energy", "end_effector", "wear")
+COMPARED = ("mass_matrix", "forcing", "forward_dynamics", "jac_forward_dynamics", "jac_state",
+            "contact", "energy", "end_effector", "wear")
 
 
 def _check(kinds: tuple[str, ...], effects: Effects, formulation: str) -> None:
