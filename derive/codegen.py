@@ -41,6 +41,7 @@ from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.robot import Robot
 from jointplay.robot.robotio import robot_to_toml
+from jointplay.store.formulation import formulation_for
 from jointplay.store.layout import Layout
 from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.store.stamp import provenance
@@ -214,13 +215,8 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
     # da/dy = -M^-1 dID/dy at the computed a (Carpentier and Mansard), M^-1 by the ABA.
     acc_sym = ca.SX.sym("a", n)
     residual = recursive.inverse_dynamics(chain, acc_sym)
-    # The state block, which the BDF's Newton iteration needs, as straight-line code.
-    d_residual = ca.substitute(ca.jacobian(residual, x), acc_sym, acc)
-    d_acc = ca.horzcat(*[-recursive.forward_dynamics(chain, d_residual[:, c])
-                         for c in range(2 * n)])
-    jac_x = ca.densify(ca.vertcat(ca.jacobian(u, x), d_acc))
-    fn_jac_state = ca.Function("jac_state", [x, tau, p, v_imp], [jac_x], names,
-                               ["jac_xdot_x"])
+    fn_jac_state = _recursive_state_jacobian(model, inputs, chain, contact, acc, acc_sym,
+                                             slots, torque_slots, parameter, thetas, omegas)
     # The other blocks (torques, parameters, impact speeds) are not needed while integrating:
     # one column at a time, by a directional derivative and an ABA solve, looped over columns
     # in the C, so their code stays the size of one column's.
@@ -246,6 +242,49 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
         ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
     return (per_joint, potential, chain.kinetic, chain.gravity_potential, chain.tip,
             (fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state), converters)
+
+
+def _recursive_state_jacobian(model: SymbolicModel, inputs: _Inputs, chain: Any,
+                              contact: dict[int, tuple[Any, Any, Any]], acc: Any, acc_sym: Any,
+                              slots: dict[tuple[int, str], int], torque_slots: dict[int, int],
+                              parameter: Any, thetas: list[Any], omegas: list[Any]
+                              ) -> ca.Function:
+    """``jac_state``: d xdot / dx = [0 I; -M^-1 dID/dx] at the computed accelerations.
+
+    dID/dx is differentiated with the contact forces held as symbols, then chained with
+    each law's own Jacobian (a law is local to its joint, so it is differentiated once, not
+    once per output). M^-1 is applied column by column through the articulated factors,
+    computed once; the columns are a loop in the C, so its size grows with the chain, not
+    with the chain squared."""
+    from jointplay.derive import recursive
+
+    n = model.n_coordinates
+    q, u, x, p, tau, v_imp = inputs.q, inputs.u, inputs.x, inputs.p, inputs.tau, inputs.v_imp
+    names = ["x", "tau", "p", "v_imp"]
+    held = {i: tuple(ca.SX.sym(f"F{axis}{i}") for axis in ("x", "y", "t")) for i in contact}
+    forces = ca.vertcat(*[f for i in contact for f in contact[i]]) if contact else ca.SX(0, 1)
+    held_vec = ca.vertcat(*[f for i in held for f in held[i]]) if held else ca.SX(0, 1)
+    rigid = recursive.chain(model.structure, q, u, tau, slots, torque_slots, parameter, held,
+                            thetas, omegas)
+    residual = recursive.inverse_dynamics(rigid, acc_sym)
+    d_residual = ca.jacobian(residual, x)
+    if held:
+        d_residual = d_residual + ca.mtimes(ca.jacobian(residual, held_vec),
+                                            ca.jacobian(forces, x))
+    d_residual = ca.substitute(ca.substitute(d_residual, held_vec, forces), acc_sym, acc)
+    factors = recursive.factor_vector(chain)
+    fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp], [d_residual, factors])
+    factor_sym = ca.SX.sym("factors", factors.numel())
+    column_sym = ca.SX.sym("column", n)
+    solved = recursive.forward_dynamics(recursive.with_factors(chain, factor_sym), column_sym)
+    fn_solve = ca.Function("mass_matrix_solve", [q, p, factor_sym, column_sym], [solved])
+    xm, taum, pm, vm = (ca.MX.sym(name, arg.numel())
+                        for name, arg in zip(names, (x, tau, p, v_imp), strict=True))
+    d_res_m, factors_m = fn_parts(xm, taum, pm, vm)
+    columns = fn_solve.map(2 * n, "serial")(xm[:n], pm, factors_m, d_res_m)
+    jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
+    return ca.Function("jac_state", [xm, taum, pm, vm], [ca.densify(jac_x)], names,
+                       ["jac_xdot_x"])
 
 
 def _law_values(law: Any) -> list[Any]:
@@ -483,6 +522,7 @@ def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any]) -> str
         f" * model: {robot_name}\n"
         f" * generator: jointplay.derive {prov['generator']}, casadi {prov['casadi']}, "
         f"sympy {prov['sympy']}\n"
+        f" * formulation: {prov.get('formulation', 'closed')}\n"
         f" * input hash: {prov['input_hash']}\n"
         " * Every input and output slot is described, with names and units, in layout.json.\n"
         + _slot_summary(layout)
@@ -490,18 +530,22 @@ def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any]) -> str
     )
 
 
-def emit(robot: Robot) -> Emitted:
-    """Derive and emit the C source and layout for a robot's structure."""
+def emit(robot: Robot, formulation: str | None = None) -> Emitted:
+    """Derive and emit the C source and layout for a robot's structure.
+
+    ``formulation``: "closed", "recursive" or "auto"; None takes ``$JOINTPLAY_FORMULATION``,
+    else "auto" (see :mod:`jointplay.store.formulation`)."""
     structure = robot.structure()
+    formulation = formulation_for(structure, formulation)
     t0 = time.perf_counter()
-    model = derive(structure)
+    model = derive(structure, formulation)
     t1 = time.perf_counter()
-    functions, layout = build_functions(model)
+    functions, layout = build_functions(model, formulation)
     gen = ca.CodeGenerator(SOURCE_NAME, {"with_header": False, "verbose": False})
     for fn in functions:
         gen.add(fn)
     body = gen.dump()
-    prov = {**provenance(structure.as_dict()),
+    prov = {**provenance(structure.as_dict(), formulation),
             "code_sha256": hashlib.sha256(body.encode()).hexdigest()}
     # Through the runtime's own type: what is written is what the loader reads back.
     layout = Layout.from_dict({"name": robot.name, "provenance": prov, **layout}).as_dict()
@@ -511,9 +555,10 @@ def emit(robot: Robot) -> Emitted:
                    timings={"derive": t1 - t0, "emit": t2 - t1, **model.timings})
 
 
-def write_generated(robot: Robot, folder: str | Path) -> Emitted:
+def write_generated(robot: Robot, folder: str | Path, formulation: str | None = None
+                    ) -> Emitted:
     """Write model.c, layout.json and the robot description into ``folder`` atomically."""
-    emitted = emit(robot)
+    emitted = emit(robot, formulation)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     atomic_write_text(folder / SOURCE_NAME, emitted.source)

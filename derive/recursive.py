@@ -319,11 +319,17 @@ def forward_dynamics(chain_: Chain, generalised: Any | None = None) -> Any:
                        else joint.generalised)
             u_prime = applied - ca.mtimes(joint.S.T, pA)
             stored[index] = u_prime
-            pa = pA + ca.mtimes(U, ca.mtimes(Dinv, u_prime))
+            if len(joint.slots) == 3:
+                # S is invertible, U D^-1 = S^-T and I^a = 0: p^a = S^-T applied, exactly.
+                pa = _inverse_transpose_times(joint.S, applied)
+            else:
+                pa = pA + ca.mtimes(U, ca.mtimes(Dinv, u_prime))
+                if not solve_only:
+                    pa = pa + ca.mtimes(Ia, joint.bias)
         else:
             pa = pA
-        if not solve_only:
-            pa = pa + ca.mtimes(Ia, joint.bias)
+            if not solve_only:
+                pa = pa + ca.mtimes(Ia, joint.bias)
         if index > 0:
             bias_forces[index - 1] = bias_forces[index - 1] + ca.mtimes(joint.X.T, pa)
     out = ca.SX.zeros(chain_.n, 1)
@@ -333,10 +339,61 @@ def forward_dynamics(chain_: Chain, generalised: Any | None = None) -> Any:
         a = ca.mtimes(joint.X, previous)
         if not solve_only:
             a = a + joint.bias
-        if joint.slots:
+        if len(joint.slots) == 3:  # D^-1 U^T = S^-1
+            acc = ca.mtimes(Dinv, stored[index]) - _inverse_times(joint.S, a)
+            for row, s in enumerate(joint.slots):
+                out[s] = acc[row]
+            a = a + ca.mtimes(joint.S, acc)
+        elif joint.slots:
             acc = ca.mtimes(Dinv, stored[index] - ca.mtimes(U.T, a))
             for row, s in enumerate(joint.slots):
                 out[s] = acc[row]
             a = a + ca.mtimes(joint.S, acc)
         previous = a
     return out
+
+
+def _inverse_times(S: Any, v: Vec) -> Vec:
+    """S^-1 v for a three-column S = [[1, 0, 0], [s1, 1, 0], [s2, 0, 1]]."""
+    return _vec(v[0], v[1] - S[1, 0] * v[0], v[2] - S[2, 0] * v[0])
+
+
+def _inverse_transpose_times(S: Any, w: Vec) -> Vec:
+    """S^-T w for a three-column S = [[1, 0, 0], [s1, 1, 0], [s2, 0, 1]]."""
+    return _vec(w[0] - S[1, 0] * w[1] - S[2, 0] * w[2], w[1], w[2])
+
+
+def factor_vector(chain_: Chain) -> Any:
+    """The articulated factors every M^-1 solve reuses (U and D^-1 per joint; D^-1 alone for a
+    three-coordinate joint), as one vector."""
+    if not chain_.articulated:
+        articulate(chain_)
+    parts = []
+    for joint, (U, Dinv, _) in zip(chain_.joints, chain_.articulated, strict=True):
+        if joint.slots and len(joint.slots) < 3:
+            parts.append(ca.vec(U))
+        if joint.slots:
+            parts.append(ca.vec(Dinv))
+    return ca.vertcat(*parts) if parts else ca.SX(0, 1)
+
+
+def with_factors(chain_: Chain, factors: Any) -> Chain:
+    """The chain with its articulated factors read from ``factors`` (as laid out by
+    :func:`factor_vector`), so that a solve can take them as an input."""
+    offset = 0
+    articulated = []
+    for joint in chain_.joints:
+        size = len(joint.slots)
+        U: Any = ca.SX(3, 0)
+        Dinv: Any = ca.SX(0, 0)
+        if size and size < 3:
+            U = ca.reshape(factors[offset:offset + 3 * size], 3, size)
+            offset += 3 * size
+        if size:
+            Dinv = ca.reshape(factors[offset:offset + size * size], size, size)
+            offset += size * size
+        articulated.append((U, Dinv, ca.SX.zeros(3, 3)))
+    view = Chain(chain_.joints, chain_.n, chain_.thetas, chain_.omegas, chain_.kinetic,
+                 chain_.gravity_potential, chain_.tip)
+    view.articulated = articulated
+    return view
