@@ -244,6 +244,12 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
             (fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state), converters)
 
 
+# From this many coordinates on, the recursion's state Jacobian differentiates the inverse
+# dynamics column by column in a loop (C the size of one recursion, compile time linear in the
+# chain) instead of as straight-line code (faster per call, C quadratic in the chain).
+LOOPED_STATE_JACOBIAN_FROM = 48
+
+
 def _recursive_state_jacobian(model: SymbolicModel, inputs: _Inputs, chain: Any,
                               contact: dict[int, tuple[Any, Any, Any]], acc: Any, acc_sym: Any,
                               slots: dict[tuple[int, str], int], torque_slots: dict[int, int],
@@ -267,21 +273,40 @@ def _recursive_state_jacobian(model: SymbolicModel, inputs: _Inputs, chain: Any,
     rigid = recursive.chain(model.structure, q, u, tau, slots, torque_slots, parameter, held,
                             thetas, omegas)
     residual = recursive.inverse_dynamics(rigid, acc_sym)
-    d_residual = ca.jacobian(residual, x)
-    if held:
-        d_residual = d_residual + ca.mtimes(ca.jacobian(residual, held_vec),
-                                            ca.jacobian(forces, x))
-    d_residual = ca.substitute(ca.substitute(d_residual, held_vec, forces), acc_sym, acc)
     factors = recursive.factor_vector(chain)
-    fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp], [d_residual, factors])
     factor_sym = ca.SX.sym("factors", factors.numel())
     column_sym = ca.SX.sym("column", n)
     solved = recursive.forward_dynamics(recursive.with_factors(chain, factor_sym), column_sym)
-    fn_solve = ca.Function("mass_matrix_solve", [q, p, factor_sym, column_sym], [solved])
     xm, taum, pm, vm = (ca.MX.sym(name, arg.numel())
                         for name, arg in zip(names, (x, tau, p, v_imp), strict=True))
-    d_res_m, factors_m = fn_parts(xm, taum, pm, vm)
-    columns = fn_solve.map(2 * n, "serial")(xm[:n], pm, factors_m, d_res_m)
+    if n < LOOPED_STATE_JACOBIAN_FROM:
+        # dID/dx as straight-line code: AD skips what a column's seed does not reach.
+        d_residual = ca.jacobian(residual, x)
+        if held:
+            d_residual = d_residual + ca.mtimes(ca.jacobian(residual, held_vec),
+                                                ca.jacobian(forces, x))
+        d_residual = ca.substitute(ca.substitute(d_residual, held_vec, forces), acc_sym, acc)
+        fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp], [d_residual, factors])
+        fn_solve = ca.Function("mass_matrix_solve", [q, p, factor_sym, column_sym], [solved])
+        d_res_m, factors_m = fn_parts(xm, taum, pm, vm)
+        columns = fn_solve.map(2 * n, "serial")(xm[:n], pm, factors_m, d_res_m)
+    else:
+        # Each column's directional derivative of the rigid recursion, then its solve, in a
+        # loop: code the size of one recursion, however long the chain.
+        d_forces = ca.jacobian(forces, x) if held else ca.SX(0, 2 * n)
+        fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp],
+                               [acc, forces, ca.densify(d_forces), factors])
+        seed = ca.SX.sym("seed", 2 * n)
+        force_seed = ca.SX.sym("force_seed", held_vec.numel())
+        directional = ca.jtimes(residual, ca.vertcat(x, held_vec),
+                                ca.vertcat(seed, force_seed))
+        solved_column = ca.substitute(solved, column_sym, directional)
+        fn_column = ca.Function("jac_state_column",
+                                [x, tau, p, acc_sym, held_vec, factor_sym, force_seed, seed],
+                                [solved_column])
+        acc_m, forces_m, d_forces_m, factors_m = fn_parts(xm, taum, pm, vm)
+        columns = fn_column.map(2 * n, "serial")(xm, taum, pm, acc_m, forces_m, factors_m,
+                                                 d_forces_m, ca.MX.eye(2 * n))
     jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
     return ca.Function("jac_state", [xm, taum, pm, vm], [ca.densify(jac_x)], names,
                        ["jac_xdot_x"])

@@ -215,3 +215,25 @@ def test_every_kind_and_effect_is_covered() -> None:
         used = {getattr(e, field) for _, e in CASES}
         offered = {getattr(e, field) for e in EFFECTS}
         assert used == offered and len(offered) >= 2, field
+
+
+def test_looped_state_jacobian_equals_closed_form(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The state Jacobian of long chains (columns differentiated in a loop) is the same
+    Jacobian: forced on for a short chain with every kind and effect it touches."""
+    from jointplay.derive import codegen
+    from jointplay.derive.symbolic import derive
+
+    kinds, effects = _kinds(4), EFFECTS[2]
+    monkeypatch.setattr(codegen, "LOOPED_STATE_JACOBIAN_FROM", 1)
+    robot = _robot(kinds, effects, np.random.default_rng(0))
+    functions, _ = codegen.build_functions(derive(robot.structure(), "recursive"))
+    looped = {fn.name(): fn for fn in functions}
+    assert "jac_state_column" in {f.name() for f in looped["jac_state"].find_functions()}
+    reference = _functions(kinds, effects, "closed")
+    rng = np.random.default_rng(7)
+    for _ in range(STATES_PER_CASE):
+        inputs = _random_inputs(kinds, effects, rng)
+        for name in ("jac_state", "jac_forward_dynamics"):
+            for a, e in zip(_evaluate(looped[name], inputs), _evaluate(reference[name], inputs),
+                            strict=True):
+                _assert_close(a, e, f"looped {name}")
