@@ -237,3 +237,32 @@ def test_looped_state_jacobian_equals_closed_form(monkeypatch: pytest.MonkeyPatc
             for a, e in zip(_evaluate(looped[name], inputs), _evaluate(reference[name], inputs),
                             strict=True):
                 _assert_close(a, e, f"looped {name}")
+
+
+def test_formulation_switch(monkeypatch: pytest.MonkeyPatch) -> None:
+    """auto: closed form up to the threshold, the recursion from it; the environment and an
+    explicit argument override; a wrong value names where it came from and what is allowed;
+    the formulation is part of the input hash."""
+    from jointplay.common.errors import DescriptionError
+    from jointplay.store import formulation as f
+    from jointplay.store.stamp import provenance
+
+    monkeypatch.delenv(f.ENVIRONMENT, raising=False)
+    rng = np.random.default_rng(0)
+    small = _robot(("locked", "clearance", "clearance", "locked"), EFFECTS[0], rng).structure()
+    large = _robot(("clearance",) * 3, EFFECTS[0], rng).structure()
+    assert f.coordinate_count(small) == 6 < f.RECURSIVE_FROM_COORDINATES
+    assert f.formulation_for(small) == "closed"
+    assert f.coordinate_count(large) == 9 >= f.RECURSIVE_FROM_COORDINATES
+    assert f.formulation_for(large) == "recursive"
+    assert f.formulation_for(large, "closed") == "closed"
+    monkeypatch.setenv(f.ENVIRONMENT, "recursive")
+    assert f.formulation_for(small) == "recursive"
+    assert f.formulation_for(small, "auto") == "closed"
+    monkeypatch.setenv(f.ENVIRONMENT, "fast")
+    with pytest.raises(DescriptionError, match=r"\$JOINTPLAY_FORMULATION.*'fast'.*auto"):
+        f.formulation_for(small)
+    with pytest.raises(DescriptionError, match=r"the formulation.*'kane'"):
+        f.formulation_for(small, "kane")
+    hashes = {provenance(small.as_dict(), name)["input_hash"] for name in f.FORMULATIONS}
+    assert len(hashes) == 2
