@@ -308,8 +308,8 @@ def _recursive_state_jacobian(model: SymbolicModel, inputs: _Inputs, chain: Any,
         columns = fn_column.map(2 * n, "serial")(xm, taum, pm, acc_m, forces_m, factors_m,
                                                  d_forces_m, ca.MX.eye(2 * n))
     jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
-    return ca.Function("jac_state", [xm, taum, pm, vm], [ca.densify(jac_x)], names,
-                       ["jac_xdot_x"])
+    # Not densified: the driver reads the output's pattern as CSC, which a dense one is not.
+    return ca.Function("jac_state", [xm, taum, pm, vm], [jac_x], names, ["jac_xdot_x"])
 
 
 def _law_values(law: Any) -> list[Any]:
@@ -389,7 +389,9 @@ def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca
         d_acc = -ca.solve(mass_m, dr, "ldl")
         d_vel = ca.jacobian(um, arg)  # [0 I] for x, zero for the rest
         blocks.append(ca.vertcat(d_vel, d_acc))
-    fn_jac_state = ca.Function("jac_state", [xm, taum, pm, vm], [ca.densify(blocks[0])], names,
+    # Not densified: the driver reads the output's pattern as CSC, which a dense one is not
+    # (CasADi writes a dense pattern in a short form).
+    fn_jac_state = ca.Function("jac_state", [xm, taum, pm, vm], [blocks[0]], names,
                                ["jac_xdot_x"])
     out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
     fn_jac = ca.Function(

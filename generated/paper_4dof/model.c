@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+07c6708fd93f, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+b30745214d2a, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 4fce10b40e31b24640c96edc937d47398ba5f91cc997312f24de315e3bc76b7a
+ * input hash: 38be52522c6d002d4b5214c2372173fc82a7703d41f03ba539f5ecf149e4b2fb
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
@@ -78,12 +78,13 @@
 #define casadi_fmin CASADI_PREFIX(fmin)
 #define casadi_house CASADI_PREFIX(house)
 #define casadi_if_else CASADI_PREFIX(if_else)
-#define casadi_kron_dense CASADI_PREFIX(kron_dense)
+#define casadi_kron_dense_sparse CASADI_PREFIX(kron_dense_sparse)
 #define casadi_ldl CASADI_PREFIX(ldl)
 #define casadi_ldl_solve CASADI_PREFIX(ldl_solve)
 #define casadi_ldl_trs CASADI_PREFIX(ldl_trs)
 #define casadi_mtimes_dense CASADI_PREFIX(mtimes_dense)
 #define casadi_norm_inf CASADI_PREFIX(norm_inf)
+#define casadi_project CASADI_PREFIX(project)
 #define casadi_qr CASADI_PREFIX(qr)
 #define casadi_qr_colcomb CASADI_PREFIX(qr_colcomb)
 #define casadi_qr_mv CASADI_PREFIX(qr_mv)
@@ -109,6 +110,8 @@
 #define casadi_s23 CASADI_PREFIX(s23)
 #define casadi_s24 CASADI_PREFIX(s24)
 #define casadi_s25 CASADI_PREFIX(s25)
+#define casadi_s26 CASADI_PREFIX(s26)
+#define casadi_s27 CASADI_PREFIX(s27)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -295,18 +298,34 @@ void casadi_trans(const casadi_real* x, const casadi_int* sp_x, casadi_real* y,
   }
 }
 
-void casadi_kron_dense(const casadi_real* a, casadi_int mA, casadi_int nA,
-                       const casadi_real* b, casadi_int mB, casadi_int nB,
-                       casadi_real* r) {
-    casadi_int j, s, i, rr, k;
+void casadi_project(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, const casadi_int* sp_y, casadi_real* w) {
+  casadi_int ncol_x, ncol_y, i, el;
+  const casadi_int *colind_x, *row_x, *colind_y, *row_y;
+  ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2; row_y = sp_y + 2 + ncol_y+1;
+  for (i=0; i<ncol_x; ++i) {
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) w[row_y[el]] = 0;
+    for (el=colind_x[i]; el<colind_x[i+1]; ++el) w[row_x[el]] = x[el];
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) y[el] = w[row_y[el]];
+  }
+}
+
+void casadi_kron_dense_sparse(const casadi_real* a, casadi_int mA, casadi_int nA,
+                              const casadi_real* b, const casadi_int* sp_b,
+                              casadi_real* r) {
+    casadi_int nB = sp_b[1];
+    const casadi_int* b_colind = sp_b+2;
+    casadi_int j, s, i, b_el, k;
     casadi_real a_val;
     k = 0;
     for (j=0; j<nA; ++j) {
       for (s=0; s<nB; ++s) {
         for (i=0; i<mA; ++i) {
           a_val = a[j*mA + i];
-          for (rr=0; rr<mB; ++rr) {
-            r[k++] = a_val * b[s*mB + rr];
+          for (b_el=b_colind[s]; b_el<b_colind[s+1]; ++b_el) {
+            r[k++] = a_val * b[b_el];
           }
         }
       }
@@ -691,274 +710,297 @@ static const casadi_int casadi_s17[12] =
   {6, 2, 0, 3, 7, 0, 2, 3,
   0, 1, 4, 5};
 static const casadi_int casadi_s18[4] = {12, 1, 0, 0};
-static const casadi_int casadi_s19[3] = {12, 12, 1};
-static const casadi_int casadi_s20[3] = {1, 1, 1};
-static const casadi_int casadi_s21[3] = {2, 3, 1};
-static const casadi_int casadi_s22[36] = 
+static const casadi_int casadi_s19[3] = {1, 1, 1};
+static const casadi_int casadi_s20[3] = {2, 3, 1};
+static const casadi_int casadi_s21[75] = 
+  {36, 36, 0, 1, 2, 3, 4, 5,
+  6, 7, 8, 9, 10, 11, 12, 13,
+  14, 15, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  30, 31, 32, 33, 34, 35, 36, 0,
+  1, 2, 3, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 32,
+  33, 34, 35};
+static const casadi_int casadi_s22[759] = 
+  {36, 36, 0, 19, 38, 57, 76, 95,
+  114, 135, 156, 177, 198, 219, 240, 259,
+  278, 297, 316, 335, 354, 375, 396, 417,
+  438, 459, 480, 499, 518, 537, 556, 575,
+  594, 615, 636, 657, 678, 699, 720, 0,
+  6, 7, 8, 9, 10, 11, 18, 19,
+  20, 21, 22, 23, 30, 31, 32, 33,
+  34, 35, 1, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 2, 6, 7,
+  8, 9, 10, 11, 18, 19, 20, 21,
+  22, 23, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 4, 6, 7, 8, 9,
+  10, 11, 18, 19, 20, 21, 22, 23,
+  30, 31, 32, 33, 34, 35, 5, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 0, 6, 7, 8, 9, 10, 11,
+  12, 18, 19, 20, 21, 22, 23, 24,
+  30, 31, 32, 33, 34, 35, 1, 6,
+  7, 8, 9, 10, 11, 13, 18, 19,
+  20, 21, 22, 23, 25, 30, 31, 32,
+  33, 34, 35, 2, 6, 7, 8, 9,
+  10, 11, 14, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 15,
+  18, 19, 20, 21, 22, 23, 27, 30,
+  31, 32, 33, 34, 35, 4, 6, 7,
+  8, 9, 10, 11, 16, 18, 19, 20,
+  21, 22, 23, 28, 30, 31, 32, 33,
+  34, 35, 5, 6, 7, 8, 9, 10,
+  11, 17, 18, 19, 20, 21, 22, 23,
+  29, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 12, 18, 19,
+  20, 21, 22, 23, 30, 31, 32, 33,
+  34, 35, 6, 7, 8, 9, 10, 11,
+  13, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 14, 18, 19, 20, 21,
+  22, 23, 30, 31, 32, 33, 34, 35,
+  6, 7, 8, 9, 10, 11, 15, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 16, 18, 19, 20, 21, 22, 23,
+  30, 31, 32, 33, 34, 35, 6, 7,
+  8, 9, 10, 11, 17, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 0, 6, 7, 8, 9, 10, 11,
+  12, 18, 19, 20, 21, 22, 23, 24,
+  30, 31, 32, 33, 34, 35, 1, 6,
+  7, 8, 9, 10, 11, 13, 18, 19,
+  20, 21, 22, 23, 25, 30, 31, 32,
+  33, 34, 35, 2, 6, 7, 8, 9,
+  10, 11, 14, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 15,
+  18, 19, 20, 21, 22, 23, 27, 30,
+  31, 32, 33, 34, 35, 4, 6, 7,
+  8, 9, 10, 11, 16, 18, 19, 20,
+  21, 22, 23, 28, 30, 31, 32, 33,
+  34, 35, 5, 6, 7, 8, 9, 10,
+  11, 17, 18, 19, 20, 21, 22, 23,
+  29, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 24, 30, 31, 32, 33,
+  34, 35, 6, 7, 8, 9, 10, 11,
+  18, 19, 20, 21, 22, 23, 25, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  6, 7, 8, 9, 10, 11, 18, 19,
+  20, 21, 22, 23, 27, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 28,
+  30, 31, 32, 33, 34, 35, 6, 7,
+  8, 9, 10, 11, 18, 19, 20, 21,
+  22, 23, 29, 30, 31, 32, 33, 34,
+  35, 0, 6, 7, 8, 9, 10, 11,
+  12, 18, 19, 20, 21, 22, 23, 24,
+  30, 31, 32, 33, 34, 35, 1, 6,
+  7, 8, 9, 10, 11, 13, 18, 19,
+  20, 21, 22, 23, 25, 30, 31, 32,
+  33, 34, 35, 2, 6, 7, 8, 9,
+  10, 11, 14, 18, 19, 20, 21, 22,
+  23, 26, 30, 31, 32, 33, 34, 35,
+  3, 6, 7, 8, 9, 10, 11, 15,
+  18, 19, 20, 21, 22, 23, 27, 30,
+  31, 32, 33, 34, 35, 4, 6, 7,
+  8, 9, 10, 11, 16, 18, 19, 20,
+  21, 22, 23, 28, 30, 31, 32, 33,
+  34, 35, 5, 6, 7, 8, 9, 10,
+  11, 17, 18, 19, 20, 21, 22, 23,
+  29, 30, 31, 32, 33, 34, 35};
+static const casadi_int casadi_s23[741] = 
+  {36, 36, 0, 18, 36, 54, 72, 90,
+  108, 129, 150, 171, 192, 213, 234, 252,
+  270, 288, 306, 324, 342, 363, 384, 405,
+  426, 447, 468, 486, 504, 522, 540, 558,
+  576, 597, 618, 639, 660, 681, 702, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 0, 6, 7, 8, 9,
+  10, 11, 12, 18, 19, 20, 21, 22,
+  23, 24, 30, 31, 32, 33, 34, 35,
+  1, 6, 7, 8, 9, 10, 11, 13,
+  18, 19, 20, 21, 22, 23, 25, 30,
+  31, 32, 33, 34, 35, 2, 6, 7,
+  8, 9, 10, 11, 14, 18, 19, 20,
+  21, 22, 23, 26, 30, 31, 32, 33,
+  34, 35, 3, 6, 7, 8, 9, 10,
+  11, 15, 18, 19, 20, 21, 22, 23,
+  27, 30, 31, 32, 33, 34, 35, 4,
+  6, 7, 8, 9, 10, 11, 16, 18,
+  19, 20, 21, 22, 23, 28, 30, 31,
+  32, 33, 34, 35, 5, 6, 7, 8,
+  9, 10, 11, 17, 18, 19, 20, 21,
+  22, 23, 29, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 0, 6, 7,
+  8, 9, 10, 11, 12, 18, 19, 20,
+  21, 22, 23, 24, 30, 31, 32, 33,
+  34, 35, 1, 6, 7, 8, 9, 10,
+  11, 13, 18, 19, 20, 21, 22, 23,
+  25, 30, 31, 32, 33, 34, 35, 2,
+  6, 7, 8, 9, 10, 11, 14, 18,
+  19, 20, 21, 22, 23, 26, 30, 31,
+  32, 33, 34, 35, 3, 6, 7, 8,
+  9, 10, 11, 15, 18, 19, 20, 21,
+  22, 23, 27, 30, 31, 32, 33, 34,
+  35, 4, 6, 7, 8, 9, 10, 11,
+  16, 18, 19, 20, 21, 22, 23, 28,
+  30, 31, 32, 33, 34, 35, 5, 6,
+  7, 8, 9, 10, 11, 17, 18, 19,
+  20, 21, 22, 23, 29, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 6,
+  7, 8, 9, 10, 11, 18, 19, 20,
+  21, 22, 23, 30, 31, 32, 33, 34,
+  35, 6, 7, 8, 9, 10, 11, 18,
+  19, 20, 21, 22, 23, 30, 31, 32,
+  33, 34, 35, 6, 7, 8, 9, 10,
+  11, 18, 19, 20, 21, 22, 23, 30,
+  31, 32, 33, 34, 35, 6, 7, 8,
+  9, 10, 11, 18, 19, 20, 21, 22,
+  23, 30, 31, 32, 33, 34, 35, 0,
+  6, 7, 8, 9, 10, 11, 12, 18,
+  19, 20, 21, 22, 23, 24, 30, 31,
+  32, 33, 34, 35, 1, 6, 7, 8,
+  9, 10, 11, 13, 18, 19, 20, 21,
+  22, 23, 25, 30, 31, 32, 33, 34,
+  35, 2, 6, 7, 8, 9, 10, 11,
+  14, 18, 19, 20, 21, 22, 23, 26,
+  30, 31, 32, 33, 34, 35, 3, 6,
+  7, 8, 9, 10, 11, 15, 18, 19,
+  20, 21, 22, 23, 27, 30, 31, 32,
+  33, 34, 35, 4, 6, 7, 8, 9,
+  10, 11, 16, 18, 19, 20, 21, 22,
+  23, 28, 30, 31, 32, 33, 34, 35,
+  5, 6, 7, 8, 9, 10, 11, 17,
+  18, 19, 20, 21, 22, 23, 29, 30,
+  31, 32, 33, 34, 35};
+static const casadi_int casadi_s24[36] = 
+  {0, 19, 20, 21, 22, 23, 1, 2,
+  3, 4, 5, 6, 24, 26, 28, 30,
+  32, 34, 7, 8, 9, 10, 11, 12,
+  25, 27, 29, 31, 33, 35, 13, 14,
+  15, 16, 17, 18};
+static const casadi_int casadi_s25[36] = 
   {0, 1, 2, 3, 4, 5, 6, 7,
   8, 9, 10, 11, 12, 13, 14, 15,
   16, 17, 18, 19, 20, 21, 22, 23,
   24, 25, 26, 27, 28, 29, 30, 31,
   32, 33, 34, 35};
-static const casadi_int casadi_s23[1335] = 
-  {36, 36, 0, 36, 72, 108, 144, 180,
-  216, 252, 288, 324, 360, 396, 432, 468,
-  504, 540, 576, 612, 648, 684, 720, 756,
-  792, 828, 864, 900, 936, 972, 1008, 1044,
-  1080, 1116, 1152, 1188, 1224, 1260, 1296, 0,
+static const casadi_int casadi_s26[588] = 
+  {36, 36, 0, 19, 38, 57, 76, 95,
+  114, 134, 155, 177, 200, 224, 249, 273,
+  296, 318, 339, 359, 378, 396, 413, 429,
+  444, 458, 471, 483, 494, 504, 513, 521,
+  528, 534, 539, 543, 546, 548, 549, 0,
   1, 2, 3, 4, 5, 6, 7, 8,
   9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
+  17, 18, 1, 2, 3, 4, 5, 6,
+  7, 8, 9, 10, 11, 12, 13, 14,
+  15, 16, 17, 18, 19, 2, 3, 4,
   5, 6, 7, 8, 9, 10, 11, 12,
   13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 0, 1, 2, 3, 4,
-  5, 6, 7, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35};
-static const casadi_int casadi_s24[705] = 
-  {36, 36, 0, 36, 71, 105, 138, 170,
-  201, 231, 260, 288, 315, 341, 366, 390,
-  413, 435, 456, 476, 495, 513, 530, 546,
-  561, 575, 588, 600, 611, 621, 630, 638,
-  645, 651, 656, 660, 663, 665, 666, 0,
-  1, 2, 3, 4, 5, 6, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 1, 2, 3, 4, 5,
-  6, 7, 8, 9, 10, 11, 12, 13,
-  14, 15, 16, 17, 18, 19, 20, 21,
-  22, 23, 24, 25, 26, 27, 28, 29,
-  30, 31, 32, 33, 34, 35, 2, 3,
-  4, 5, 6, 7, 8, 9, 10, 11,
-  12, 13, 14, 15, 16, 17, 18, 19,
-  20, 21, 22, 23, 24, 25, 26, 27,
-  28, 29, 30, 31, 32, 33, 34, 35,
   3, 4, 5, 6, 7, 8, 9, 10,
   11, 12, 13, 14, 15, 16, 17, 18,
-  19, 20, 21, 22, 23, 24, 25, 26,
-  27, 28, 29, 30, 31, 32, 33, 34,
-  35, 4, 5, 6, 7, 8, 9, 10,
+  19, 20, 21, 4, 5, 6, 7, 8,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 5, 6,
+  7, 8, 9, 10, 11, 12, 13, 14,
+  15, 16, 17, 18, 19, 20, 21, 22,
+  23, 6, 7, 8, 9, 10, 11, 12,
+  13, 14, 15, 16, 17, 18, 19, 20,
+  21, 22, 23, 24, 25, 7, 8, 9,
+  10, 11, 12, 13, 14, 15, 16, 17,
+  18, 19, 20, 21, 22, 23, 24, 25,
+  26, 27, 8, 9, 10, 11, 12, 13,
+  14, 15, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  9, 10, 11, 12, 13, 14, 15, 16,
+  17, 18, 19, 20, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 10,
   11, 12, 13, 14, 15, 16, 17, 18,
   19, 20, 21, 22, 23, 24, 25, 26,
-  27, 28, 29, 30, 31, 32, 33, 34,
-  35, 5, 6, 7, 8, 9, 10, 11,
+  27, 28, 29, 30, 31, 32, 33, 11,
   12, 13, 14, 15, 16, 17, 18, 19,
   20, 21, 22, 23, 24, 25, 26, 27,
   28, 29, 30, 31, 32, 33, 34, 35,
-  6, 7, 8, 9, 10, 11, 12, 13,
-  14, 15, 16, 17, 18, 19, 20, 21,
-  22, 23, 24, 25, 26, 27, 28, 29,
-  30, 31, 32, 33, 34, 35, 7, 8,
-  9, 10, 11, 12, 13, 14, 15, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 8, 9, 10, 11, 12,
-  13, 14, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 9,
-  10, 11, 12, 13, 14, 15, 16, 17,
-  18, 19, 20, 21, 22, 23, 24, 25,
-  26, 27, 28, 29, 30, 31, 32, 33,
-  34, 35, 10, 11, 12, 13, 14, 15,
-  16, 17, 18, 19, 20, 21, 22, 23,
-  24, 25, 26, 27, 28, 29, 30, 31,
-  32, 33, 34, 35, 11, 12, 13, 14,
-  15, 16, 17, 18, 19, 20, 21, 22,
-  23, 24, 25, 26, 27, 28, 29, 30,
-  31, 32, 33, 34, 35, 12, 13, 14,
-  15, 16, 17, 18, 19, 20, 21, 22,
-  23, 24, 25, 26, 27, 28, 29, 30,
-  31, 32, 33, 34, 35, 13, 14, 15,
-  16, 17, 18, 19, 20, 21, 22, 23,
-  24, 25, 26, 27, 28, 29, 30, 31,
-  32, 33, 34, 35, 14, 15, 16, 17,
-  18, 19, 20, 21, 22, 23, 24, 25,
-  26, 27, 28, 29, 30, 31, 32, 33,
-  34, 35, 15, 16, 17, 18, 19, 20,
-  21, 22, 23, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 16,
-  17, 18, 19, 20, 21, 22, 23, 24,
-  25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 17, 18, 19, 20, 21,
-  22, 23, 24, 25, 26, 27, 28, 29,
-  30, 31, 32, 33, 34, 35, 18, 19,
+  12, 13, 14, 15, 16, 17, 18, 19,
   20, 21, 22, 23, 24, 25, 26, 27,
   28, 29, 30, 31, 32, 33, 34, 35,
+  13, 14, 15, 16, 17, 18, 19, 20,
+  21, 22, 23, 24, 25, 26, 27, 28,
+  29, 30, 31, 32, 33, 34, 35, 14,
+  15, 16, 17, 18, 19, 20, 21, 22,
+  23, 24, 25, 26, 27, 28, 29, 30,
+  31, 32, 33, 34, 35, 15, 16, 17,
+  18, 19, 20, 21, 22, 23, 24, 25,
+  26, 27, 28, 29, 30, 31, 32, 33,
+  34, 35, 16, 17, 18, 19, 20, 21,
+  22, 23, 24, 25, 26, 27, 28, 29,
+  30, 31, 32, 33, 34, 35, 17, 18,
   19, 20, 21, 22, 23, 24, 25, 26,
   27, 28, 29, 30, 31, 32, 33, 34,
-  35, 20, 21, 22, 23, 24, 25, 26,
-  27, 28, 29, 30, 31, 32, 33, 34,
-  35, 21, 22, 23, 24, 25, 26, 27,
-  28, 29, 30, 31, 32, 33, 34, 35,
-  22, 23, 24, 25, 26, 27, 28, 29,
-  30, 31, 32, 33, 34, 35, 23, 24,
+  35, 18, 19, 20, 21, 22, 23, 24,
   25, 26, 27, 28, 29, 30, 31, 32,
-  33, 34, 35, 24, 25, 26, 27, 28,
-  29, 30, 31, 32, 33, 34, 35, 25,
+  33, 34, 35, 19, 20, 21, 22, 23,
+  24, 25, 26, 27, 28, 29, 30, 31,
+  32, 33, 34, 35, 20, 21, 22, 23,
+  24, 25, 26, 27, 28, 29, 30, 31,
+  32, 33, 34, 35, 21, 22, 23, 24,
+  25, 26, 27, 28, 29, 30, 31, 32,
+  33, 34, 35, 22, 23, 24, 25, 26,
+  27, 28, 29, 30, 31, 32, 33, 34,
+  35, 23, 24, 25, 26, 27, 28, 29,
+  30, 31, 32, 33, 34, 35, 24, 25,
   26, 27, 28, 29, 30, 31, 32, 33,
-  34, 35, 26, 27, 28, 29, 30, 31,
-  32, 33, 34, 35, 27, 28, 29, 30,
-  31, 32, 33, 34, 35, 28, 29, 30,
-  31, 32, 33, 34, 35, 29, 30, 31,
-  32, 33, 34, 35, 30, 31, 32, 33,
-  34, 35, 31, 32, 33, 34, 35, 32,
-  33, 34, 35, 33, 34, 35, 34, 35,
-  35};
-static const casadi_int casadi_s25[705] = 
+  34, 35, 25, 26, 27, 28, 29, 30,
+  31, 32, 33, 34, 35, 26, 27, 28,
+  29, 30, 31, 32, 33, 34, 35, 27,
+  28, 29, 30, 31, 32, 33, 34, 35,
+  28, 29, 30, 31, 32, 33, 34, 35,
+  29, 30, 31, 32, 33, 34, 35, 30,
+  31, 32, 33, 34, 35, 31, 32, 33,
+  34, 35, 32, 33, 34, 35, 33, 34,
+  35, 34, 35, 35};
+static const casadi_int casadi_s27[705] = 
   {36, 36, 0, 1, 3, 6, 10, 15,
   21, 28, 36, 45, 55, 66, 78, 91,
   105, 120, 136, 153, 171, 190, 210, 231,
@@ -6356,11 +6398,11 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   return 0;
 }
 
-/* jac_forward_dynamics:(x[12],tau[2],p[39],v_imp[2],out_xdot[12x1,0nz])->(jac_xdot_x[12x12],jac_xdot_tau[12x2,12nz],jac_xdot_p[12x39,234nz],jac_xdot_v_imp[12x2,12nz]) */
+/* jac_forward_dynamics:(x[12],tau[2],p[39],v_imp[2],out_xdot[12x1,0nz])->(jac_xdot_x[12x12,78nz],jac_xdot_tau[12x2,12nz],jac_xdot_p[12x39,234nz],jac_xdot_v_imp[12x2,12nz]) */
 static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real **res1=res+4, *rr, *w00=w+173, *w01=w+179, *w02=w+185, *w03=w+197, *w05=w+199, *w07=w+201, *w08=w+237, *w09=w+289, *w10=w+361, *w11=w+433;
-  casadi_real *w12=w+511, *w13=w+589, *w15=w+733, *w16=w+735, *w17=w+892, *w18=w+899, *w19=w+911, *w20=w+1145;
+  casadi_real *w12=w+511, *w14=w+589, *w15=w+591, *w16=w+748, *w17=w+755, *w18=w+767, *w19=w+1001;
   const casadi_real **arg1=arg+5, *cs, *ss, *wr02, *wr04, *wr06;
   casadi_clear(w00, 6);
   casadi_fill(w01, 6, 1.);
@@ -6408,18 +6450,17 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   for (i=0, cs=w00; i<6; ++i) *rr++ = *cs++;
   for (i=0, cs=w10; i<72; ++i) *rr++ = *cs++;
   casadi_trans(w11,casadi_s10, w12, casadi_s9, iw);
-  casadi_densify(w12, casadi_s9, w13, 0);
-  casadi_copy(w13, 144, res[0]);
+  casadi_copy(w12, 78, res[0]);
   arg1[0]=wr02;
   arg1[1]=w01;
   arg1[2]=w03;
   arg1[3]=wr04;
   arg1[4]=w05;
-  res1[0]=w15;
-  res1[1]=w16;
-  res1[2]=w17;
+  res1[0]=w14;
+  res1[1]=w15;
+  res1[2]=w16;
   if (casadi_f5(arg1, res1, iw, w, 0)) return 1;
-  casadi_densify(w15, casadi_s11, w02, 0);
+  casadi_densify(w14, casadi_s11, w02, 0);
   rr = w02;
   ss = w07;
   {
@@ -6428,38 +6469,38 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
     casadi_ldl_solve(rr, 2, casadi_s6, lt, d, casadi_s7, w);
   }
   for (i=0, rr=w02, cs=w02; i<12; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w18, cs=w02; i<2; ++i) for (j=0; j<6; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w17, cs=w02; i<2; ++i) for (j=0; j<6; ++j) rr[i+j*2] = *cs++;
   rr=w02;
-  for (i=0, cs=w18; i<12; ++i) *rr++ = *cs++;
-  casadi_trans(w02,casadi_s13, w18, casadi_s12, iw);
-  casadi_copy(w18, 12, res[1]);
-  casadi_densify(w16, casadi_s14, w19, 0);
-  rr = w19;
+  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
+  casadi_trans(w02,casadi_s13, w17, casadi_s12, iw);
+  casadi_copy(w17, 12, res[1]);
+  casadi_densify(w15, casadi_s14, w18, 0);
+  rr = w18;
   ss = w07;
   {
     casadi_real lt[15], d[6], w[6];
     casadi_ldl(casadi_s5, ss, casadi_s6, lt, d, casadi_s7, w);
     casadi_ldl_solve(rr, 39, casadi_s6, lt, d, casadi_s7, w);
   }
-  for (i=0, rr=w19, cs=w19; i<234; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w20, cs=w19; i<39; ++i) for (j=0; j<6; ++j) rr[i+j*39] = *cs++;
-  rr=w19;
-  for (i=0, cs=w20; i<234; ++i) *rr++ = *cs++;
-  casadi_trans(w19,casadi_s16, w20, casadi_s15, iw);
-  casadi_copy(w20, 234, res[2]);
-  casadi_densify(w17, casadi_s17, w18, 0);
-  rr = w18;
+  for (i=0, rr=w18, cs=w18; i<234; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w19, cs=w18; i<39; ++i) for (j=0; j<6; ++j) rr[i+j*39] = *cs++;
+  rr=w18;
+  for (i=0, cs=w19; i<234; ++i) *rr++ = *cs++;
+  casadi_trans(w18,casadi_s16, w19, casadi_s15, iw);
+  casadi_copy(w19, 234, res[2]);
+  casadi_densify(w16, casadi_s17, w17, 0);
+  rr = w17;
   ss = w07;
   {
     casadi_real lt[15], d[6], w[6];
     casadi_ldl(casadi_s5, ss, casadi_s6, lt, d, casadi_s7, w);
     casadi_ldl_solve(rr, 2, casadi_s6, lt, d, casadi_s7, w);
   }
-  for (i=0, rr=w18, cs=w18; i<12; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w02, cs=w18; i<2; ++i) for (j=0; j<6; ++j) rr[i+j*2] = *cs++;
-  rr=w18;
+  for (i=0, rr=w17, cs=w17; i<12; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w02, cs=w17; i<2; ++i) for (j=0; j<6; ++j) rr[i+j*2] = *cs++;
+  rr=w17;
   for (i=0, cs=w02; i<12; ++i) *rr++ = *cs++;
-  casadi_trans(w18,casadi_s13, w02, casadi_s12, iw);
+  casadi_trans(w17,casadi_s13, w02, casadi_s12, iw);
   casadi_copy(w02, 12, res[3]);
   return 0;
 }
@@ -6525,7 +6566,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* jac_forward_dynamics_sparsity_in(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* jac_forward_dynamics_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s19;
+    case 0: return casadi_s9;
     case 1: return casadi_s12;
     case 2: return casadi_s15;
     case 3: return casadi_s12;
@@ -6537,7 +6578,7 @@ CASADI_SYMBOL_EXPORT int jac_forward_dynamics_work(casadi_int *sz_arg, casadi_in
   if (sz_arg) *sz_arg = 10;
   if (sz_res) *sz_res = 7;
   if (sz_iw) *sz_iw = 40;
-  if (sz_w) *sz_w = 1379;
+  if (sz_w) *sz_w = 1235;
   return 0;
 }
 
@@ -6545,15 +6586,14 @@ CASADI_SYMBOL_EXPORT int jac_forward_dynamics_work_bytes(casadi_int *sz_arg, cas
   if (sz_arg) *sz_arg = 10*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 7*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 40*sizeof(casadi_int);
-  if (sz_w) *sz_w = 1379*sizeof(casadi_real);
+  if (sz_w) *sz_w = 1235*sizeof(casadi_real);
   return 0;
 }
 
-/* jac_state:(x[12],tau[2],p[39],v_imp[2])->(jac_xdot_x[12x12]) */
+/* jac_state:(x[12],tau[2],p[39],v_imp[2])->(jac_xdot_x[12x12,78nz]) */
 static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real **res1=res+1, *rr, *w00=w+113, *w01=w+119, *w03=w+125, *w05=w+127, *w07=w+129, *w08=w+165, *w09=w+217, *w10=w+289, *w11=w+361, *w12=w+439;
-  casadi_real *w13=w+517;
   const casadi_real **arg1=arg+4, *cs, *ss, *wr02, *wr04, *wr06;
   casadi_clear(w00, 6);
   casadi_fill(w01, 6, 1.);
@@ -6601,8 +6641,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   for (i=0, cs=w00; i<6; ++i) *rr++ = *cs++;
   for (i=0, cs=w10; i<72; ++i) *rr++ = *cs++;
   casadi_trans(w11,casadi_s10, w12, casadi_s9, iw);
-  casadi_densify(w12, casadi_s9, w13, 0);
-  casadi_copy(w13, 144, res[0]);
+  casadi_copy(w12, 78, res[0]);
   return 0;
 }
 
@@ -6662,7 +6701,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* jac_state_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* jac_state_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s19;
+    case 0: return casadi_s9;
     default: return 0;
   }
 }
@@ -6671,7 +6710,7 @@ CASADI_SYMBOL_EXPORT int jac_state_work(casadi_int *sz_arg, casadi_int* sz_res, 
   if (sz_arg) *sz_arg = 9;
   if (sz_res) *sz_res = 2;
   if (sz_iw) *sz_iw = 13;
-  if (sz_w) *sz_w = 661;
+  if (sz_w) *sz_w = 517;
   return 0;
 }
 
@@ -6679,7 +6718,7 @@ CASADI_SYMBOL_EXPORT int jac_state_work_bytes(casadi_int *sz_arg, casadi_int* sz
   if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 2*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 13*sizeof(casadi_int);
-  if (sz_w) *sz_w = 661*sizeof(casadi_real);
+  if (sz_w) *sz_w = 517*sizeof(casadi_real);
   return 0;
 }
 
@@ -7389,10 +7428,10 @@ CASADI_SYMBOL_EXPORT const casadi_int* energy_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* energy_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s20;
-    case 1: return casadi_s20;
-    case 2: return casadi_s20;
-    case 3: return casadi_s20;
+    case 0: return casadi_s19;
+    case 1: return casadi_s19;
+    case 2: return casadi_s19;
+    case 3: return casadi_s19;
     default: return 0;
   }
 }
@@ -7746,8 +7785,8 @@ CASADI_SYMBOL_EXPORT const char* rk4_step_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* rk4_step_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s3;
-    case 1: return casadi_s21;
-    case 2: return casadi_s20;
+    case 1: return casadi_s20;
+    case 2: return casadi_s19;
     case 3: return casadi_s1;
     case 4: return casadi_s4;
     default: return 0;
@@ -7780,355 +7819,357 @@ CASADI_SYMBOL_EXPORT int rk4_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 /* radau_step:(x[12],tau_stages[2x3],h,p[39],v_imp[2])->(x_next[12],newton_increment) */
 static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
-  casadi_real *qr_beta, *qr_r, *qr_v, *qr_w, **res1=res+2, *rr, *w00=w+1440, *w01=w+1452, *w02=w+1488, *w03=w+2784, w04, *w06=w+4080;
-  casadi_real *w07=w+4086, *w09=w+4088, *w10=w+4090, *w11=w+4234, *w12=w+5530, *w13=w+5566, *w14=w+5578, *w15=w+5590, *w16=w+5602, *w17=w+5638, *w18=w+5650;
-  const casadi_real **arg1=arg+5, *cr, *cs, *ss, *wr00, *wr02, *wr03, *wr05, *wr08;
+  casadi_real *qr_beta, *qr_r, *qr_v, *qr_w, **res1=res+2, *rr, *w00=w+1323, *w01=w+1335, *w02=w+1371, *w03=w+2667, *w04=w+2703, w05;
+  casadi_real *w07=w+3423, *w08=w+3429, *w10=w+3431, *w11=w+3433, *w12=w+3511, *w13=w+4213, *w14=w+4933, *w15=w+4945, *w16=w+4957, *w17=w+4969, *w18=w+5005, *w19=w+5017;
+  const casadi_real **arg1=arg+5, *cr, *cs, *ss, *wr00, *wr02, *wr06, *wr09;
   wr00 = arg[0] ? arg[0] : casadi_zeros;
   casadi_clear(w01, 36);
   wr02 = casadi_c0;
-  wr03 = casadi_c0;
-  w04 = arg[2] ? arg[2][0] : 0;
-  wr05 = casadi_c1;
-  casadi_copy(arg[1], 6, w06);
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
-  wr08 = arg[3] ? arg[3] : casadi_zeros;
-  casadi_copy(arg[4], 2, w09);
+  casadi_fill(w03, 36, 1.);
+  casadi_project(w03, casadi_s21, w04, casadi_s22, w);
+  w05 = arg[2] ? arg[2][0] : 0;
+  wr06 = casadi_c1;
+  casadi_copy(arg[1], 6, w07);
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  wr09 = arg[3] ? arg[3] : casadi_zeros;
+  casadi_copy(arg[4], 2, w10);
   arg1[0]=wr00;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w10;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w11;
   if (casadi_f6(arg1, res1, iw, w, 0)) return 1;
-  casadi_kron_dense(wr05, 3, 3, w10, 12, 12, w11);
-  for (i=0, rr=w11, cs=w11; i<1296; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w03, cr=wr03, cs=w11; i<1296; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_kron_dense_sparse(wr06, 3, 3, w11, casadi_s9, w12);
+  for (i=0, rr=w12, cs=w12; i<702; ++i) (*rr++)  = (w05*(*cs++));
+  casadi_project(w12, casadi_s23, w13, casadi_s22, w);
+  for (i=0, rr=w04, cs=w13; i<720; ++i) (*rr++) -= (*cs++);
   rr = w02;
-  ss = w03;
+  ss = w04;
   casadi_copy(wr02, 1296, rr);
   qr_v = w;
-  qr_r = w+666;
-  qr_beta = w+1332;
-  qr_w = w+1368;
-  casadi_qr(casadi_s23, ss, qr_w, casadi_s24, qr_v, casadi_s25, qr_r, qr_beta, casadi_s22, casadi_s22);
-  casadi_qr_solve(rr, 36, 0, casadi_s24, qr_v, casadi_s25, qr_r, qr_beta, casadi_s22, casadi_s22, qr_w);
-  casadi_clear(w12, 36);
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
+  qr_r = w+549;
+  qr_beta = w+1215;
+  qr_w = w+1251;
+  casadi_qr(casadi_s22, ss, qr_w, casadi_s26, qr_v, casadi_s27, qr_r, qr_beta, casadi_s24, casadi_s25);
+  casadi_qr_solve(rr, 36, 0, casadi_s26, qr_v, casadi_s27, qr_r, qr_beta, casadi_s24, casadi_s25, qr_w);
+  casadi_clear(w03, 36);
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
   arg1[0]=wr00;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w13;
-  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
-  arg1[0]=wr00;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w14;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
   arg1[0]=wr00;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w15;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w16;
-  for (i=0, cs=w13; i<12; ++i) *rr++ = *cs++;
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=wr00;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w17;
   for (i=0, cs=w14; i<12; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w16, 12, 3, wr05, 3, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  casadi_mtimes_dense(w02, 36, 36, w12, 1, w01, 0);
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w17, 12, 3, wr06, 3, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  casadi_mtimes_dense(w02, 36, 36, w03, 1, w01, 0);
   for (i=0, rr=w01, cs=w01; i<36; ++i) *rr++ = (- *cs++ );
-  casadi_clear(w12, 36);
-  casadi_clear(w16, 36);
-  for (rr=w13, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w13, cr=wr00, cs=w13; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
-  arg1[0]=w13;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w14;
-  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w13, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w13, cr=wr00, cs=w13; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
-  arg1[0]=w13;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w15;
-  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w13, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w13, cr=wr00, cs=w13; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
-  arg1[0]=w13;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w17;
-  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w18;
-  for (i=0, cs=w14; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w18, 12, 3, wr05, 3, w16, 0);
-  for (i=0, rr=w16, cs=w16; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w16, cr=w01, cs=w16; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
-  casadi_mtimes_dense(w02, 36, 36, w16, 1, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w01, cs=w12; i<36; ++i) (*rr++) += (*cs++);
-  casadi_clear(w12, 36);
-  casadi_clear(w16, 36);
+  casadi_clear(w03, 36);
+  casadi_clear(w17, 36);
   for (rr=w14, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
   for (i=0, rr=w14, cr=wr00, cs=w14; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
   arg1[0]=w14;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w15;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w14, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
   for (i=0, rr=w14, cr=wr00, cs=w14; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
   arg1[0]=w14;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w14, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
   for (i=0, rr=w14, cr=wr00, cs=w14; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
   arg1[0]=w14;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w13;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w18;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w18;
+  rr=w19;
   for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w13; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w18, 12, 3, wr05, 3, w16, 0);
-  for (i=0, rr=w16, cs=w16; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w16, cr=w01, cs=w16; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
-  casadi_mtimes_dense(w02, 36, 36, w16, 1, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w01, cs=w12; i<36; ++i) (*rr++) += (*cs++);
-  casadi_clear(w12, 36);
-  casadi_clear(w16, 36);
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w19, 12, 3, wr06, 3, w17, 0);
+  for (i=0, rr=w17, cs=w17; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w17, cr=w01, cs=w17; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w17, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w17, 36);
   for (rr=w15, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
   for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
   arg1[0]=w15;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w15, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
   for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
   arg1[0]=w15;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w13;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w18;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w15, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
   for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
   arg1[0]=w15;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w14;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w18;
-  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w13; i<12; ++i) *rr++ = *cs++;
+  rr=w19;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<12; ++i) *rr++ = *cs++;
   for (i=0, cs=w14; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w18, 12, 3, wr05, 3, w16, 0);
-  for (i=0, rr=w16, cs=w16; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w16, cr=w01, cs=w16; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
-  casadi_mtimes_dense(w02, 36, 36, w16, 1, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w01, cs=w12; i<36; ++i) (*rr++) += (*cs++);
-  casadi_clear(w12, 36);
-  casadi_clear(w16, 36);
-  for (rr=w17, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
-  arg1[0]=w17;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w13;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w19, 12, 3, wr06, 3, w17, 0);
+  for (i=0, rr=w17, cs=w17; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w17, cr=w01, cs=w17; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w17, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w17, 36);
+  for (rr=w16, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w18;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w17, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
-  arg1[0]=w17;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  for (rr=w16, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w14;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w17, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w17, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
-  arg1[0]=w17;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  for (rr=w16, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w15;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w18;
-  for (i=0, cs=w13; i<12; ++i) *rr++ = *cs++;
+  rr=w19;
+  for (i=0, cs=w18; i<12; ++i) *rr++ = *cs++;
   for (i=0, cs=w14; i<12; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w18, 12, 3, wr05, 3, w16, 0);
-  for (i=0, rr=w16, cs=w16; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w16, cr=w01, cs=w16; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
-  casadi_mtimes_dense(w02, 36, 36, w16, 1, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w01, cs=w12; i<36; ++i) (*rr++) += (*cs++);
-  casadi_clear(w12, 36);
-  casadi_clear(w16, 36);
-  for (rr=w13, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w13, cr=wr00, cs=w13; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
-  arg1[0]=w13;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w19, 12, 3, wr06, 3, w17, 0);
+  for (i=0, rr=w17, cs=w17; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w17, cr=w01, cs=w17; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w17, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w17, 36);
+  for (rr=w18, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w18, cr=wr00, cs=w18; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w18;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w14;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w13, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w13, cr=wr00, cs=w13; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
-  arg1[0]=w13;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  for (rr=w18, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w18, cr=wr00, cs=w18; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w18;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w15;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  for (rr=w13, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w13, cr=wr00, cs=w13; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
-  arg1[0]=w13;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w17;
+  for (rr=w18, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w18, cr=wr00, cs=w18; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w18;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w18;
+  rr=w19;
   for (i=0, cs=w14; i<12; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w18, 12, 3, wr05, 3, w16, 0);
-  for (i=0, rr=w16, cs=w16; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w16, cr=w01, cs=w16; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
-  casadi_mtimes_dense(w02, 36, 36, w16, 1, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w01, cs=w12; i<36; ++i) (*rr++) += (*cs++);
-  casadi_clear(w12, 36);
-  casadi_clear(w16, 36);
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w19, 12, 3, wr06, 3, w17, 0);
+  for (i=0, rr=w17, cs=w17; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w17, cr=w01, cs=w17; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w17, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w17, 36);
   for (rr=w14, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
   for (i=0, rr=w14, cr=wr00, cs=w14; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
   arg1[0]=w14;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w15;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w14, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
   for (i=0, rr=w14, cr=wr00, cs=w14; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
   arg1[0]=w14;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w14, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
   for (i=0, rr=w14, cr=wr00, cs=w14; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
   arg1[0]=w14;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w13;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w18;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w18;
+  rr=w19;
   for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w13; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w18, 12, 3, wr05, 3, w16, 0);
-  for (i=0, rr=w16, cs=w16; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w16, cr=w01, cs=w16; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
-  casadi_mtimes_dense(w02, 36, 36, w16, 1, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  for (i=0, rr=w01, cs=w12; i<36; ++i) (*rr++) += (*cs++);
-  casadi_clear(w12, 36);
-  casadi_clear(w16, 36);
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w19, 12, 3, wr06, 3, w17, 0);
+  for (i=0, rr=w17, cs=w17; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w17, cr=w01, cs=w17; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w17, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w17, 36);
   for (rr=w15, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
   for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+0; cs!=w06+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
   arg1[0]=w15;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w17;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w16;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w15, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
   for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+2; cs!=w06+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
   arg1[0]=w15;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
-  res1[0]=w13;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w18;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
   for (rr=w15, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
   for (i=0, rr=w15, cr=wr00, cs=w15; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
-  for (rr=w07, cs=w06+4; cs!=w06+6; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
   arg1[0]=w15;
-  arg1[1]=w07;
-  arg1[2]=wr08;
-  arg1[3]=w09;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
   res1[0]=w14;
   if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
-  rr=w18;
-  for (i=0, cs=w17; i<12; ++i) *rr++ = *cs++;
-  for (i=0, cs=w13; i<12; ++i) *rr++ = *cs++;
+  rr=w19;
+  for (i=0, cs=w16; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<12; ++i) *rr++ = *cs++;
   for (i=0, cs=w14; i<12; ++i) *rr++ = *cs++;
-  wr05 = casadi_c2;
-  casadi_mtimes_dense(w18, 12, 3, wr05, 3, w16, 0);
-  for (i=0, rr=w16, cs=w16; i<36; ++i) (*rr++)  = (w04*(*cs++));
-  for (i=0, rr=w16, cr=w01, cs=w16; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
-  casadi_mtimes_dense(w02, 36, 36, w16, 1, w12, 0);
-  for (i=0, rr=w12, cs=w12; i<36; ++i) *rr++ = (- *cs++ );
-  casadi_copy(w12, 36, w16);
-  for (i=0, rr=w01, cs=w16; i<36; ++i) (*rr++) += (*cs++);
-  for (rr=w17, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
-  for (i=0, rr=w00, cr=wr00, cs=w17; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w19, 12, 3, wr06, 3, w17, 0);
+  for (i=0, rr=w17, cs=w17; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w17, cr=w01, cs=w17; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w17, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  for (i=0, rr=w01, cs=w03; i<36; ++i) (*rr++) += (*cs++);
+  casadi_clear(w03, 36);
+  casadi_clear(w17, 36);
+  for (rr=w16, cs=w01+0; cs!=w01+12; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+0; cs!=w07+2; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w18;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w16, cs=w01+12; cs!=w01+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+2; cs!=w07+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w14;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  for (rr=w16, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w16, cr=wr00, cs=w16; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w08, cs=w07+4; cs!=w07+6; cs+=1) *rr++ = *cs;
+  arg1[0]=w16;
+  arg1[1]=w08;
+  arg1[2]=wr09;
+  arg1[3]=w10;
+  res1[0]=w15;
+  if (casadi_f2(arg1, res1, iw, w, 0)) return 1;
+  rr=w19;
+  for (i=0, cs=w18; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w14; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<12; ++i) *rr++ = *cs++;
+  wr06 = casadi_c2;
+  casadi_mtimes_dense(w19, 12, 3, wr06, 3, w17, 0);
+  for (i=0, rr=w17, cs=w17; i<36; ++i) (*rr++)  = (w05*(*cs++));
+  for (i=0, rr=w17, cr=w01, cs=w17; i<36; ++i) (*rr++)  = ((*cr++)-(*cs++));
+  casadi_mtimes_dense(w02, 36, 36, w17, 1, w03, 0);
+  for (i=0, rr=w03, cs=w03; i<36; ++i) *rr++ = (- *cs++ );
+  casadi_copy(w03, 36, w17);
+  for (i=0, rr=w01, cs=w17; i<36; ++i) (*rr++) += (*cs++);
+  for (rr=w18, cs=w01+24; cs!=w01+36; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w00, cr=wr00, cs=w18; i<12; ++i) (*rr++)  = ((*cr++)+(*cs++));
   casadi_copy(w00, 12, res[0]);
-  w04 = casadi_norm_inf(36, w12);
-  if (res[1]) res[1][0] = w04;
+  w05 = casadi_norm_inf(36, w03);
+  if (res[1]) res[1][0] = w05;
   return 0;
 }
 
@@ -8181,8 +8222,8 @@ CASADI_SYMBOL_EXPORT const char* radau_step_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* radau_step_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s3;
-    case 1: return casadi_s21;
-    case 2: return casadi_s20;
+    case 1: return casadi_s20;
+    case 2: return casadi_s19;
     case 3: return casadi_s1;
     case 4: return casadi_s4;
     default: return 0;
@@ -8192,7 +8233,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* radau_step_sparsity_in(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* radau_step_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s3;
-    case 1: return casadi_s20;
+    case 1: return casadi_s19;
     default: return 0;
   }
 }
@@ -8201,7 +8242,7 @@ CASADI_SYMBOL_EXPORT int radau_step_work(casadi_int *sz_arg, casadi_int* sz_res,
   if (sz_arg) *sz_arg = 14;
   if (sz_res) *sz_res = 4;
   if (sz_iw) *sz_iw = 13;
-  if (sz_w) *sz_w = 5686;
+  if (sz_w) *sz_w = 5053;
   return 0;
 }
 
@@ -8209,7 +8250,7 @@ CASADI_SYMBOL_EXPORT int radau_step_work_bytes(casadi_int *sz_arg, casadi_int* s
   if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 13*sizeof(casadi_int);
-  if (sz_w) *sz_w = 5686*sizeof(casadi_real);
+  if (sz_w) *sz_w = 5053*sizeof(casadi_real);
   return 0;
 }
 
