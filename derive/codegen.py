@@ -41,6 +41,7 @@ from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.robot import Robot
 from jointplay.robot.robotio import robot_to_toml
+from jointplay.store.formulation import formulation_for
 from jointplay.store.layout import Layout
 from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.store.stamp import provenance
@@ -66,19 +67,41 @@ class _Inputs:
     v_imp: Any
 
 
-def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, Any]]:
-    """CasADi functions for a symbolic model, and the description of their slots."""
+# Where the dynamics come from: "closed", Kane's mass matrix and forcing, solved by LDL^T;
+# "recursive", the recursion over the chain (see jointplay.derive.recursive).
+FORMULATIONS = ("closed", "recursive")
+
+
+def build_functions(model: SymbolicModel, formulation: str | None = None
+                    ) -> tuple[list[ca.Function], dict[str, Any]]:
+    """CasADi functions for a symbolic model, and the description of their slots.
+
+    ``formulation`` defaults to the one the model was derived for; a model derived for the
+    recursion has no closed form to emit."""
+    formulation = formulation or model.formulation
+    if formulation not in FORMULATIONS:
+        raise ValueError(f"formulation must be one of {', '.join(FORMULATIONS)}, "
+                         f"got {formulation!r}")
+    if formulation == "closed" and model.mass_matrix is None:
+        raise ValueError("this model was derived for the recursive formulation; derive it "
+                         "with formulation='closed' to emit the closed form")
     inputs = _symbolic_inputs(model)
     convert = _converter(model, inputs)
-    per_joint, potential = _contact_outputs(model, convert, inputs.v_imp)
-    # Converted after the contact laws, which bind the placeholder forces the equations use.
-    mass = convert(model.mass_matrix)
-    forcing = convert(model.forcing)
-    kinetic = convert(model.kinetic_energy)
-    gravity_pot = convert(model.gravity_potential)
-    tip = convert(model.tip_position)
-
-    fn_mass, fn_forcing, fn_fd, fn_jac = _dynamics_functions(model, inputs, mass, forcing)
+    if formulation == "recursive":
+        per_joint, potential, kinetic, gravity_pot, tip, dynamics, converters = _recursive(
+            model, inputs, convert)
+        fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state = dynamics
+    else:
+        per_joint, potential = _contact_outputs(model, convert, inputs.v_imp)
+        # Converted after the contact laws, which bind the placeholder forces the equations
+        # use.
+        mass = convert(model.mass_matrix)
+        forcing = convert(model.forcing)
+        kinetic = convert(model.kinetic_energy)
+        gravity_pot = convert(model.gravity_potential)
+        tip = convert(model.tip_position)
+        fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state = _dynamics_functions(
+            model, inputs, mass, forcing)
     fn_contact, fn_energy = _contact_and_energy_functions(inputs, per_joint, kinetic,
                                                           gravity_pot, potential)
     fn_tip = _end_effector_function(model, inputs, tip)
@@ -94,12 +117,13 @@ def build_functions(model: SymbolicModel) -> tuple[list[ca.Function], dict[str, 
         "functions": functions,
     }
     extra = wear_function(model, convert, inputs.x, inputs.p, inputs.v_imp, slots.x, slots.p,
-                          slots.v_imp, slots.joints, functions)
-    fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac)
+                          slots.v_imp, slots.joints, functions,
+                          converters if formulation == "recursive" else None)
+    fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac_state)
     add_step_slots(functions, fn_rk4.name(), fn_radau.name(), RADAU_NEWTON_ITERATIONS, model,
                    slots)
-    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_contact, fn_energy, fn_tip, fn_rk4,
-            fn_radau, *extra], layout
+    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state, fn_contact, fn_energy, fn_tip,
+            fn_rk4, fn_radau, *extra], layout
 
 
 def _symbolic_inputs(model: SymbolicModel) -> _Inputs:
@@ -150,9 +174,181 @@ def _contact_outputs(model: SymbolicModel, convert: SympyToCasadi, v_imp: Any
     return per_joint, potential
 
 
+def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
+               ) -> tuple[dict[str, list[Any]], Any, Any, Any, Any,
+                          tuple[ca.Function, ...], list[SympyToCasadi]]:
+    """The contact outputs, energies, tip and the four dynamics functions from the recursion
+    over the chain (see :mod:`jointplay.derive.recursive`)."""
+    from jointplay.derive import recursive
+
+    n = model.n_coordinates
+    q, u, x, p, tau, v_imp = inputs.q, inputs.u, inputs.x, inputs.p, inputs.tau, inputs.v_imp
+    slots = {(c.joint, c.kind): i for i, c in enumerate(model.coordinates)}
+    by_name = {prm.name: i for i, prm in enumerate(model.parameters)}
+
+    def parameter(name: str) -> Any:
+        return p[by_name[name]]
+
+    structure = model.structure
+    thetas, omegas = recursive.kinematics(structure, q, u, slots, parameter)
+    converters = _joint_converters(model, inputs, slots, parameter, thetas, omegas)
+    per_joint: dict[str, list[Any]] = {key: [] for key in PER_JOINT_DOC}
+    potential = ca.SX(0)
+    for joint_convert in converters:
+        law = model.clearance[0].law  # every joint's law is the template's, rebound
+        for key, value in zip(PER_JOINT_DOC, _law_values(law), strict=True):
+            per_joint[key].append(joint_convert(value))
+        potential = potential + joint_convert(law.potential)
+    contact = {terms.index: (per_joint["f_x"][j], per_joint["f_y"][j], per_joint["f_t"][j])
+               for j, terms in enumerate(model.clearance)}
+    torque_slots = {joint: i for i, joint in enumerate(model.torque_joints)}
+    chain = recursive.chain(structure, q, u, tau, slots, torque_slots, parameter, contact,
+                            thetas, omegas)
+    mass = recursive.mass_matrix(chain)
+    forcing = -recursive.inverse_dynamics(chain, ca.SX.zeros(n, 1))
+    acc = recursive.forward_dynamics(chain)
+    names = ["x", "tau", "p", "v_imp"]
+    fn_mass = ca.Function("mass_matrix", [q, p], [mass], ["q", "p"], ["M"])
+    fn_forcing = ca.Function("forcing", [x, tau, p, v_imp], [forcing], names, ["f"])
+    fn_fd = ca.Function("forward_dynamics", [x, tau, p, v_imp], [ca.vertcat(u, acc)], names,
+                        ["xdot"])
+    # da/dy = -M^-1 dID/dy at the computed a (Carpentier and Mansard), M^-1 by the ABA.
+    acc_sym = ca.SX.sym("a", n)
+    residual = recursive.inverse_dynamics(chain, acc_sym)
+    fn_jac_state = _recursive_state_jacobian(model, inputs, chain, contact, acc, acc_sym,
+                                             slots, torque_slots, parameter, thetas, omegas)
+    # The other blocks (torques, parameters, impact speeds) are not needed while integrating:
+    # one column at a time, by a directional derivative and an ABA solve, looped over columns
+    # in the C, so their code stays the size of one column's.
+    blocks: list[Any] = []
+    xm, taum, pm, vm = (ca.MX.sym(name, arg.numel()) for name, arg in
+                        zip(names, (x, tau, p, v_imp), strict=True))
+    acc_m = fn_fd(xm, taum, pm, vm)[n:]
+    for name, arg in zip(names[1:], (tau, p, v_imp), strict=True):
+        size = arg.numel()
+        if size == 0:
+            blocks.append(ca.MX(2 * n, 0))
+            continue
+        seed = ca.SX.sym("seed", size)
+        column = -recursive.forward_dynamics(chain, ca.jtimes(residual, arg, seed))
+        fn_column = ca.Function(f"jac_column_{name}", [x, acc_sym, tau, p, v_imp, seed],
+                                [column])
+        columns = fn_column.map(size, "serial")(xm, acc_m, taum, pm, vm, ca.MX.eye(size))
+        blocks.append(ca.vertcat(ca.MX(n, size), columns))
+    out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
+    fn_jac = ca.Function(
+        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal],
+        [fn_jac_state(xm, taum, pm, vm), *blocks], [*names, "out_xdot"],
+        ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
+    return (per_joint, potential, chain.kinetic, chain.gravity_potential, chain.tip,
+            (fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state), converters)
+
+
+# From this many coordinates on, the recursion's state Jacobian differentiates the inverse
+# dynamics column by column in a loop (C the size of one recursion, compile time linear in the
+# chain) instead of as straight-line code (faster per call, C quadratic in the chain).
+LOOPED_STATE_JACOBIAN_FROM = 48
+
+
+def _recursive_state_jacobian(model: SymbolicModel, inputs: _Inputs, chain: Any,
+                              contact: dict[int, tuple[Any, Any, Any]], acc: Any, acc_sym: Any,
+                              slots: dict[tuple[int, str], int], torque_slots: dict[int, int],
+                              parameter: Any, thetas: list[Any], omegas: list[Any]
+                              ) -> ca.Function:
+    """``jac_state``: d xdot / dx = [0 I; -M^-1 dID/dx] at the computed accelerations.
+
+    dID/dx is differentiated with the contact forces held as symbols, then chained with
+    each law's own Jacobian (a law is local to its joint, so it is differentiated once, not
+    once per output). M^-1 is applied column by column through the articulated factors,
+    computed once; the columns are a loop in the C, so its size grows with the chain, not
+    with the chain squared."""
+    from jointplay.derive import recursive
+
+    n = model.n_coordinates
+    q, u, x, p, tau, v_imp = inputs.q, inputs.u, inputs.x, inputs.p, inputs.tau, inputs.v_imp
+    names = ["x", "tau", "p", "v_imp"]
+    held = {i: tuple(ca.SX.sym(f"F{axis}{i}") for axis in ("x", "y", "t")) for i in contact}
+    forces = ca.vertcat(*[f for i in contact for f in contact[i]]) if contact else ca.SX(0, 1)
+    held_vec = ca.vertcat(*[f for i in held for f in held[i]]) if held else ca.SX(0, 1)
+    rigid = recursive.chain(model.structure, q, u, tau, slots, torque_slots, parameter, held,
+                            thetas, omegas)
+    residual = recursive.inverse_dynamics(rigid, acc_sym)
+    factors = recursive.factor_vector(chain)
+    factor_sym = ca.SX.sym("factors", factors.numel())
+    column_sym = ca.SX.sym("column", n)
+    solved = recursive.forward_dynamics(recursive.with_factors(chain, factor_sym), column_sym)
+    xm, taum, pm, vm = (ca.MX.sym(name, arg.numel())
+                        for name, arg in zip(names, (x, tau, p, v_imp), strict=True))
+    if n < LOOPED_STATE_JACOBIAN_FROM:
+        # dID/dx as straight-line code: AD skips what a column's seed does not reach.
+        d_residual = ca.jacobian(residual, x)
+        if held:
+            d_residual = d_residual + ca.mtimes(ca.jacobian(residual, held_vec),
+                                                ca.jacobian(forces, x))
+        d_residual = ca.substitute(ca.substitute(d_residual, held_vec, forces), acc_sym, acc)
+        fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp], [d_residual, factors])
+        fn_solve = ca.Function("mass_matrix_solve", [q, p, factor_sym, column_sym], [solved])
+        d_res_m, factors_m = fn_parts(xm, taum, pm, vm)
+        columns = fn_solve.map(2 * n, "serial")(xm[:n], pm, factors_m, d_res_m)
+    else:
+        # Each column's directional derivative of the rigid recursion, then its solve, in a
+        # loop: code the size of one recursion, however long the chain.
+        d_forces = ca.jacobian(forces, x) if held else ca.SX(0, 2 * n)
+        fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp],
+                               [acc, forces, ca.densify(d_forces), factors])
+        seed = ca.SX.sym("seed", 2 * n)
+        force_seed = ca.SX.sym("force_seed", held_vec.numel())
+        directional = ca.jtimes(residual, ca.vertcat(x, held_vec),
+                                ca.vertcat(seed, force_seed))
+        solved_column = ca.substitute(solved, column_sym, directional)
+        fn_column = ca.Function("jac_state_column",
+                                [x, tau, p, acc_sym, held_vec, factor_sym, force_seed, seed],
+                                [solved_column])
+        acc_m, forces_m, d_forces_m, factors_m = fn_parts(xm, taum, pm, vm)
+        columns = fn_column.map(2 * n, "serial")(xm, taum, pm, acc_m, forces_m, factors_m,
+                                                 d_forces_m, ca.MX.eye(2 * n))
+    jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
+    # Not densified: the driver reads the output's pattern as CSC, which a dense one is not.
+    return ca.Function("jac_state", [xm, taum, pm, vm], [jac_x], names, ["jac_xdot_x"])
+
+
+def _law_values(law: Any) -> list[Any]:
+    """A law's expressions in the order of the ``contact`` outputs (PER_JOINT_DOC)."""
+    return [law.penetration, law.penetration_rate, law.sliding_speed, law.normal_force,
+            law.friction_force, law.force_x, law.force_y, law.dissipation]
+
+
+def _joint_converters(model: SymbolicModel, inputs: _Inputs, slots: dict[tuple[int, str], int],
+                      parameter: Any, thetas: list[Any], omegas: list[Any]
+                      ) -> list[SympyToCasadi]:
+    """For each clearance joint, a converter that binds the template law's generic symbols to
+    that joint's coordinates, links' angles and rates, impact speed and parameters."""
+    template = model.template
+    if template is None:
+        return []
+    shared = {symbol: inputs.p[i] for i, symbol in enumerate(model.parameter_symbols)}
+    converters = []
+    for j, terms in enumerate(model.clearance):
+        i = terms.index
+        ex, ey, vx, vy = template.eccentricity
+        a, b = slots[(i, "ex")], slots[(i, "ey")]
+        leaves: dict[sp.Basic, Any] = {
+            **shared, ex: inputs.q[a], ey: inputs.q[b], vx: inputs.u[a], vy: inputs.u[b],
+            template.angles[0]: thetas[i - 2] if i > 1 else ca.SX(0),
+            template.angles[1]: thetas[i - 1],
+            template.speeds[0]: omegas[i - 2] if i > 1 else ca.SX(0),
+            template.speeds[1]: omegas[i - 1],
+            template.impact_speed: inputs.v_imp[j]}
+        leaves.update({symbol: parameter(f"joint{i}.{attribute}")
+                       for attribute, symbol in template.joint_parameters.items()})
+        converters.append(SympyToCasadi(leaves))
+    return converters
+
+
 def _dynamics_functions(model: SymbolicModel, inputs: _Inputs, mass: Any, forcing: Any
-                        ) -> tuple[ca.Function, ca.Function, ca.Function, ca.Function]:
-    """``mass_matrix``, ``forcing``, ``forward_dynamics`` and ``jac_forward_dynamics``."""
+                        ) -> tuple[ca.Function, ...]:
+    """``mass_matrix``, ``forcing``, ``forward_dynamics``, ``jac_forward_dynamics`` and
+    ``jac_state`` from the closed form."""
     n = model.n_coordinates
     q, x, p, tau, v_imp = inputs.q, inputs.x, inputs.p, inputs.tau, inputs.v_imp
     fn_mass = ca.Function("mass_matrix", [q, p], [mass], ["q", "p"], ["M"])
@@ -160,16 +356,21 @@ def _dynamics_functions(model: SymbolicModel, inputs: _Inputs, mass: Any, forcin
                              ["x", "tau", "p", "v_imp"], ["f"])
     acc_sym = ca.SX.sym("a", n)
     residual = ca.mtimes(mass, acc_sym) - forcing
-    fn_residual_jac = ca.Function(
-        "residual_jacobian", [x, acc_sym, tau, p, v_imp],
-        [ca.jacobian(residual, arg) for arg in [x, tau, p, v_imp]])
-    fn_fd, fn_jac = _forward_dynamics(model, fn_mass, fn_forcing, fn_residual_jac)
-    return fn_mass, fn_forcing, fn_fd, fn_jac
+    fn_residual_jac_x = ca.Function("residual_jacobian", [x, acc_sym, tau, p, v_imp],
+                                    [ca.jacobian(residual, x)])
+    fn_residual_jac_rest = ca.Function(
+        "residual_jacobian_inputs", [x, acc_sym, tau, p, v_imp],
+        [ca.jacobian(residual, arg) for arg in [tau, p, v_imp]])
+    return (fn_mass, fn_forcing,
+            *_forward_dynamics(model, fn_mass, fn_forcing, fn_residual_jac_x,
+                               fn_residual_jac_rest))
 
 
 def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca.Function,
-                      fn_residual_jac: ca.Function) -> tuple[ca.Function, ca.Function]:
-    """Forward dynamics and its Jacobian as MX graphs around a sparse LDL^T solve."""
+                      fn_residual_jac_x: ca.Function, fn_residual_jac_rest: ca.Function
+                      ) -> tuple[ca.Function, ca.Function, ca.Function]:
+    """Forward dynamics, its Jacobian and the Jacobian's state block alone, as MX graphs
+    around a sparse LDL^T solve."""
     n = model.n_coordinates
     xm = ca.MX.sym("x", 2 * n)
     taum = ca.MX.sym("tau", len(model.torques))
@@ -179,20 +380,25 @@ def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca
     mass_m = fn_mass(xm[:n], pm)
     acc = ca.solve(mass_m, fn_forcing(xm, taum, pm, vm), "ldl")
     xdot = ca.vertcat(um, acc)
-    fn_fd = ca.Function("forward_dynamics", [xm, taum, pm, vm], [xdot],
-                        ["x", "tau", "p", "v_imp"], ["xdot"])
-    dres = fn_residual_jac(xm, acc, taum, pm, vm)
+    names = ["x", "tau", "p", "v_imp"]
+    fn_fd = ca.Function("forward_dynamics", [xm, taum, pm, vm], [xdot], names, ["xdot"])
+    dres = [fn_residual_jac_x(xm, acc, taum, pm, vm),
+            *fn_residual_jac_rest(xm, acc, taum, pm, vm)]
     blocks = []
     for arg, dr in zip([xm, taum, pm, vm], dres, strict=True):
         d_acc = -ca.solve(mass_m, dr, "ldl")
         d_vel = ca.jacobian(um, arg)  # [0 I] for x, zero for the rest
         blocks.append(ca.vertcat(d_vel, d_acc))
+    # Not densified: the driver reads the output's pattern as CSC, which a dense one is not
+    # (CasADi writes a dense pattern in a short form).
+    fn_jac_state = ca.Function("jac_state", [xm, taum, pm, vm], [blocks[0]], names,
+                               ["jac_xdot_x"])
     out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
     fn_jac = ca.Function(
-        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal], blocks,
-        ["x", "tau", "p", "v_imp", "out_xdot"],
+        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal],
+        [fn_jac_state(xm, taum, pm, vm), *blocks[1:]], [*names, "out_xdot"],
         ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
-    return fn_fd, fn_jac
+    return fn_fd, fn_jac, fn_jac_state
 
 
 def _contact_and_energy_functions(inputs: _Inputs, per_joint: dict[str, list[Any]],
@@ -226,18 +432,27 @@ def _end_effector_function(model: SymbolicModel, inputs: _Inputs, tip: Any) -> c
 
 def wear_function(model: SymbolicModel, convert: SympyToCasadi, x: Any, p: Any, v_imp: Any,
                   x_slot: dict[str, Any], p_slot: dict[str, Any], v_slot: dict[str, Any],
-                  joints: list[str], functions: dict[str, Any]) -> list[ca.Function]:
+                  joints: list[str], functions: dict[str, Any],
+                  joint_converters: list[SympyToCasadi] | None = None) -> list[ca.Function]:
     """``wear(x, p, v_imp)``, the Archard integrands per joint (see :mod:`.wear`), emitted only
-    for a structure that asks for wear."""
+    for a structure that asks for wear. With ``joint_converters`` (the recursive
+    formulation), the integrands are the template joint's, bound joint by joint."""
     if not model.structure.wear:
         return []
     from jointplay.derive.wear import OUTPUTS, wear_terms
 
+    columns: list[list[Any]] = [[] for _ in OUTPUTS]
+    if joint_converters is not None and model.template is not None:
+        t = model.template
+        generic = wear_terms(t.law, 0, *t.eccentricity, t.angles, t.speeds,
+                             t.parameter).values()
+        for joint_convert in joint_converters:
+            for column, value in zip(columns, generic, strict=True):
+                column.append(joint_convert(value))
     psym = dict(zip([prm.name for prm in model.parameters], model.parameter_symbols,
                     strict=True))
     names = [c.name for c in model.coordinates]
-    columns: list[list[Any]] = [[] for _ in OUTPUTS]
-    for terms in model.clearance:
+    for terms in model.clearance if joint_converters is None else []:
         j = terms.index
         ex, ey = (model.q[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))
         vx, vy = (model.u[names.index(f"{axis}{j}")] for axis in ("ex", "ey"))
@@ -264,7 +479,7 @@ RADAU_A = (((88 - 7 * _S6) / 360, (296 - 169 * _S6) / 1800, (-2 + 3 * _S6) / 225
 RADAU_NEWTON_ITERATIONS = 8
 
 
-def fixed_step_functions(fn_fd: ca.Function, fn_jac: ca.Function
+def fixed_step_functions(fn_fd: ca.Function, fn_jac_state: ca.Function
                          ) -> tuple[ca.Function, ca.Function]:
     """One step of explicit RK4 and of implicit Radau IIA, as C with no solver library.
 
@@ -293,7 +508,7 @@ def fixed_step_functions(fn_fd: ca.Function, fn_jac: ca.Function
                       names, ["x_next"])
 
     a = ca.DM(RADAU_A)
-    jac_x = fn_jac(x, tau[:, 0], p, v, ca.MX(ca.Sparsity(nx, 1)))[0]
+    jac_x = fn_jac_state(x, tau[:, 0], p, v)
     newton_inv = ca.solve(ca.MX.eye(3 * nx) - h * ca.kron(ca.MX(a), jac_x),
                           ca.MX.eye(3 * nx), "qr")
     z = ca.MX.zeros(nx, 3)  # stage increments x_i - x, one column per stage
@@ -334,6 +549,7 @@ def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any]) -> str
         f" * model: {robot_name}\n"
         f" * generator: jointplay.derive {prov['generator']}, casadi {prov['casadi']}, "
         f"sympy {prov['sympy']}\n"
+        f" * formulation: {prov.get('formulation', 'closed')}\n"
         f" * input hash: {prov['input_hash']}\n"
         " * Every input and output slot is described, with names and units, in layout.json.\n"
         + _slot_summary(layout)
@@ -341,18 +557,22 @@ def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any]) -> str
     )
 
 
-def emit(robot: Robot) -> Emitted:
-    """Derive and emit the C source and layout for a robot's structure."""
+def emit(robot: Robot, formulation: str | None = None) -> Emitted:
+    """Derive and emit the C source and layout for a robot's structure.
+
+    ``formulation``: "closed", "recursive" or "auto"; None takes ``$JOINTPLAY_FORMULATION``,
+    else "auto" (see :mod:`jointplay.store.formulation`)."""
     structure = robot.structure()
+    formulation = formulation_for(structure, formulation)
     t0 = time.perf_counter()
-    model = derive(structure)
+    model = derive(structure, formulation)
     t1 = time.perf_counter()
-    functions, layout = build_functions(model)
+    functions, layout = build_functions(model, formulation)
     gen = ca.CodeGenerator(SOURCE_NAME, {"with_header": False, "verbose": False})
     for fn in functions:
         gen.add(fn)
     body = gen.dump()
-    prov = {**provenance(structure.as_dict()),
+    prov = {**provenance(structure.as_dict(), formulation),
             "code_sha256": hashlib.sha256(body.encode()).hexdigest()}
     # Through the runtime's own type: what is written is what the loader reads back.
     layout = Layout.from_dict({"name": robot.name, "provenance": prov, **layout}).as_dict()
@@ -362,9 +582,10 @@ def emit(robot: Robot) -> Emitted:
                    timings={"derive": t1 - t0, "emit": t2 - t1, **model.timings})
 
 
-def write_generated(robot: Robot, folder: str | Path) -> Emitted:
+def write_generated(robot: Robot, folder: str | Path, formulation: str | None = None
+                    ) -> Emitted:
     """Write model.c, layout.json and the robot description into ``folder`` atomically."""
-    emitted = emit(robot)
+    emitted = emit(robot, formulation)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     atomic_write_text(folder / SOURCE_NAME, emitted.source)

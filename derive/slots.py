@@ -87,6 +87,10 @@ def function_slots(model: SymbolicModel, slots: SharedSlots) -> dict[str, Any]:
                              "outputs": [slot("xdot", 2 * n, "rad/s, m/s, rad/s^2, m/s^2",
                                                "state derivative", x_entries)],
                              "jacobian": "jac_forward_dynamics"},
+        "jac_state": {"inputs": [x_slot, tau_slot, p_slot, v_slot],
+                      "outputs": [slot("jac_xdot_x", (2 * n, 2 * n), "1/s and mixed",
+                                       "d xdot / d x, the state block of "
+                                       "jac_forward_dynamics alone (what the BDF needs)")]},
         "contact": {"inputs": [x_slot, p_slot, v_slot],
                     "outputs": [slot(k, nc, unit, doc, [f"{k}{j}" for j in joints])
                                 for k, (unit, doc) in PER_JOINT_DOC.items()]},

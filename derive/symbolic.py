@@ -67,12 +67,16 @@ class SymbolicModel:
     torques: list[sp.Symbol]  # one per moving joint, empty if the drive is off
     torque_joints: list[int]
     clearance: list[ClearanceJointTerms]
-    mass_matrix: sp.Matrix
-    forcing: sp.Matrix  # M du/dt = forcing; contact enters via the placeholder symbols
-    kinetic_energy: sp.Expr
-    gravity_potential: sp.Expr
-    tip_position: sp.Matrix  # 2 x 1, end of the last link (where the payload sits)
+    # Kane's closed form; None for the recursive formulation, which builds these from the
+    # chain itself (see jointplay.derive.recursive).
+    mass_matrix: sp.Matrix | None
+    forcing: sp.Matrix | None  # M du/dt = forcing; contact enters via the placeholder symbols
+    kinetic_energy: sp.Expr | None
+    gravity_potential: sp.Expr | None
+    tip_position: sp.Matrix | None  # 2 x 1, end of the last link (where the payload sits)
     timings: dict[str, float] = field(default_factory=dict)
+    formulation: str = "closed"
+    template: JointTemplate | None = None  # the recursive formulation's generic joint laws
 
     @property
     def n_coordinates(self) -> int:
@@ -129,8 +133,11 @@ class _Link:
     omega_bearing: sp.Expr
 
 
-def derive(structure: Structure) -> SymbolicModel:
-    """Derive the equations of motion for a robot structure (see ``Robot.structure()``)."""
+def derive(structure: Structure, formulation: str = "closed") -> SymbolicModel:
+    """Derive the equations of motion for a robot structure (see ``Robot.structure()``).
+
+    ``formulation`` is where the emitted dynamics come from (see
+    :data:`jointplay.derive.codegen.FORMULATIONS`)."""
     t0 = time.perf_counter()
     params = parameter_layout(structure)
     psym = {p.name: sp.Symbol(p.symbol, real=True) for p in params}
@@ -139,6 +146,8 @@ def derive(structure: Structure) -> SymbolicModel:
         return psym[name]
 
     coordinates = _coordinates(list(structure.joints))
+    if formulation == "recursive":
+        return _joint_laws_only(structure, coordinates, params, psym, t0)
     chain = _walk_chain(structure, coordinates, P)
     t1 = time.perf_counter()
 
@@ -170,7 +179,71 @@ def derive(structure: Structure) -> SymbolicModel:
         gravity_potential=chain.gravity_potential,
         tip_position=tip_position,
         timings={"kinematics": t1 - t0, "kane": t2 - t1, "energy": t3 - t2},
+        formulation="closed",
     )
+
+
+@dataclass(frozen=True)
+class JointTemplate:
+    """One clearance joint's laws, derived once with generic symbols for the recursive
+    formulation: its eccentricity and rates, its links' absolute angles and rates (bearing's,
+    journal's), the captured impact speed, and its own parameters (``joint_parameters``, by
+    attribute). ``parameter`` maps a parameter name to its symbol, ``joint0.<attribute>``
+    standing for the joint's own. The emitter binds these per joint."""
+
+    law: laws.ContactTerms
+    eccentricity: tuple[sp.Symbol, sp.Symbol, sp.Symbol, sp.Symbol]  # ex, ey, vx, vy
+    angles: tuple[sp.Symbol, sp.Symbol]
+    speeds: tuple[sp.Symbol, sp.Symbol]
+    impact_speed: sp.Symbol
+    joint_parameters: dict[str, sp.Symbol]
+    parameter: Callable[[str], sp.Symbol]
+
+
+def _joint_template(structure: Structure, psym: dict[str, sp.Symbol]) -> JointTemplate:
+    """The laws of a generic clearance joint (every joint's are this one's, rebound): sympy's
+    Max/Min canonicalisation costs about a second per law, so a law is built once, not once
+    per joint."""
+    own: dict[str, sp.Symbol] = {}
+
+    def parameter(name: str) -> sp.Symbol:
+        if name.startswith("joint0."):
+            attribute = name.split(".", 1)[1]
+            return own.setdefault(attribute, sp.Symbol(f"{attribute}_j", real=True))
+        return psym[name]
+
+    ex, ey, vx, vy = sp.symbols("e_x e_y v_x v_y", real=True)
+    angles = sp.symbols("theta_b theta_j", real=True)
+    speeds = sp.symbols("omega_b omega_j", real=True)
+    impact = sp.Symbol("v_imp", real=True)
+    law = laws.contact_terms(structure, 0, ex, ey, vx, vy, speeds[0], speeds[1], impact,
+                             parameter)
+    return JointTemplate(law, (ex, ey, vx, vy), angles, speeds, impact, own, parameter)
+
+
+def _joint_laws_only(structure: Structure, coordinates: _Coordinates, params: list[Parameter],
+                     psym: dict[str, sp.Symbol], t0: float) -> SymbolicModel:
+    """What the recursive formulation takes from the derivation: the laws of a clearance
+    joint, written with its links' absolute angles and rates as symbols (the recursion binds
+    them, joint by joint), so that a law's size does not grow with the joint's place in the
+    chain nor the derivation's time with the number of joints."""
+    template = _joint_template(structure, psym) if coordinates.eccentricity else None
+    clearance = []
+    for i in coordinates.eccentricity:
+        assert template is not None
+        fx, fy, ft = sp.symbols(f"F_x{i} F_y{i} F_t{i}", real=True)
+        clearance.append(ClearanceJointTerms(i, fx, fy, ft, template.impact_speed,
+                                             template.law, template.angles, template.speeds))
+    torque_joints = ([i for i, kind in enumerate(structure.joints, start=1) if kind in _MOVING]
+                     if structure.drive else [])
+    return SymbolicModel(
+        structure=structure, coordinates=coordinate_layout(structure), q=coordinates.q,
+        u=coordinates.u, parameters=params, parameter_symbols=[psym[p.name] for p in params],
+        torques=[sp.Symbol(f"tau_{i}", real=True) for i in torque_joints],
+        torque_joints=torque_joints, clearance=clearance, mass_matrix=None, forcing=None,
+        kinetic_energy=None, gravity_potential=None, tip_position=None,
+        timings={"kinematics": time.perf_counter() - t0, "kane": 0.0, "energy": 0.0},
+        formulation="recursive", template=template)
 
 
 def _coordinates(kinds: list[str]) -> _Coordinates:

@@ -8,6 +8,7 @@ from typing import Any
 
 from jointplay.cli.args import check_writable_dir, robot_arguments, robot_from_args
 from jointplay.common.files import OutputPlan, all_or_nothing, make_folder
+from jointplay.store.formulation import CHOICES, ENVIRONMENT, RECURSIVE_FROM_COORDINATES
 from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 
 
@@ -17,6 +18,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     robot_arguments(p_derive)
     p_derive.add_argument("--out", required=True, help="folder to write model.c, layout.json "
                                                         "and robot.toml into")
+    p_derive.add_argument("--formulation", choices=CHOICES, default=None,
+                          help="closed form (Kane) or recursion over the chain; default: "
+                               f"${ENVIRONMENT}, else auto (the recursion from "
+                               f"{RECURSIVE_FROM_COORDINATES} coordinates on)")
     p_derive.set_defaults(func=cmd_derive)
     return p_derive
 
@@ -34,8 +39,10 @@ def cmd_derive(args: argparse.Namespace) -> int:
 
     with all_or_nothing(plan):
         make_folder(out, "--out")
-        emitted = write_generated(robot, out)
+        emitted = write_generated(robot, out, args.formulation)
     t = emitted.timings
-    print(f"wrote {out}/model.c ({len(emitted.source) / 1024:.0f} KiB), layout.json, robot.toml "
-          f"in {t['derive']:.2f} s derive + {t['emit']:.2f} s emit")
+    formulation = emitted.layout["provenance"]["formulation"]
+    print(f"wrote {out}/model.c ({len(emitted.source) / 1024:.0f} KiB, {formulation} "
+          f"formulation), layout.json, robot.toml in {t['derive']:.2f} s derive + "
+          f"{t['emit']:.2f} s emit")
     return 0

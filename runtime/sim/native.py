@@ -180,10 +180,13 @@ class NativeIntegrator:
         cfg.max_order = max_order
         # Loading through the model first heals a damaged cached library (model.function
         # rebuilds it once); the driver then calls into the library that loads.
-        for name in ("forward_dynamics", "jac_forward_dynamics", "contact")[:3 if self.nc else 2]:
+        # The state block of the Jacobian alone, where the model has it as its own function.
+        jacobian = ("jac_state" if "jac_state" in model.layout.functions
+                    else "jac_forward_dynamics")
+        for name in ("forward_dynamics", jacobian, "contact")[:3 if self.nc else 2]:
             model.function(name)
         cfg.f, _ = _function(model, "forward_dynamics")
-        cfg.jac, _ = _function(model, "jac_forward_dynamics")
+        cfg.jac, _ = _function(model, jacobian)
         if self.nc:
             cfg.contact, _ = _function(model, "contact")
         # Archard wear, integrated in the loop, for a model generated with it.

@@ -18,6 +18,7 @@ from jointplay import generated
 from jointplay.common.errors import FileError, GeneratedCodeError
 from jointplay.robot import Robot
 from jointplay.store.build import cache_error, cache_root, entry_lock, remove_temporaries
+from jointplay.store.formulation import formulation_for
 from jointplay.store.model import Model, check_generated, load_model, note
 from jointplay.store.stamp import provenance
 
@@ -30,7 +31,8 @@ def generated_folder(robot: Robot) -> Path:
     damaged file, a half-written one) is generated again, with a one-line note, under a lock
     so that concurrent runs repair it once.
     """
-    prov = provenance(robot.structure().as_dict())
+    structure = robot.structure()
+    prov = provenance(structure.as_dict(), formulation_for(structure))
     folder = generated.find(prov["input_hash"])
     if folder is not None:
         return folder

@@ -14,8 +14,8 @@ from typing import Any
 
 from jointplay.robot import canonical_json
 
-_EMITTING_MODULES = ("codegen.py", "cylindrical.py", "laws.py", "lubrication.py", "slots.py",
-                     "symbolic.py", "to_casadi.py", "wear.py")
+_EMITTING_MODULES = ("codegen.py", "cylindrical.py", "laws.py", "lubrication.py", "recursive.py",
+                     "slots.py", "symbolic.py", "to_casadi.py", "wear.py")
 
 
 def _generator_version() -> str:
@@ -40,10 +40,11 @@ def _derive_folder() -> Path:
 GENERATOR_VERSION = _generator_version()
 
 
-def provenance(structure: dict[str, Any]) -> dict[str, str]:
-    """What the emitted text depends on, and the hash that stamps it."""
+def provenance(structure: dict[str, Any], formulation: str = "closed") -> dict[str, str]:
+    """What the emitted text depends on, and the hash that stamps it (``formulation``: see
+    :mod:`jointplay.store.formulation`)."""
     versions = {"generator": GENERATOR_VERSION, "casadi": version("casadi"),
                 "sympy": version("sympy")}
-    inputs = {"structure": structure, **versions}
-    return {**versions,
+    inputs = {"structure": structure, "formulation": formulation, **versions}
+    return {**versions, "formulation": formulation,
             "input_hash": hashlib.sha256(canonical_json(inputs).encode()).hexdigest()}

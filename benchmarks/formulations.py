@@ -1,0 +1,218 @@
+"""Closed form against recursion, and both against Pinocchio, per call, side by side.
+
+For each case (the paper robot; a chain of k links with clearance at every joint; a chain of k
+ideal joints) this derives, emits and compiles the model in both formulations (``closed``:
+Kane's equations and an LDL^T solve; ``recursive``: the articulated-body algorithm and the
+Jacobian -M^-1 dID/dx, see jointplay.derive.recursive) into a temporary cache, and times, in
+one process and in alternating rounds (so a change in the machine's load hits every
+function alike):
+
+* ``forward_dynamics`` and ``jac_state`` (the state block of the Jacobian, what the BDF
+  calls) of each formulation, inputs written in place (``FastFunction.trigger``);
+* with ``--pinocchio``, Pinocchio's ``aba`` and ``computeABADerivatives`` on the same chain
+  (a planar joint, 3 coordinates, for each clearance joint; a revolute joint for each ideal
+  one), called from Python, so its figure includes Python's call overhead (about 1 us).
+
+The state has every clearance joint in contact (|e| = 1.1 c) and moving. Build figures are
+the derive + emit wall time and gcc's, with gcc's peak memory. The closed form is skipped
+above ``--closed-up-to`` coordinates (its build grows too fast to be worth waiting for).
+
+Writes ``formulations.csv`` and ``formulations.md`` into ``--out`` atomically and prints the
+Markdown.
+
+    python benchmarks/formulations.py --links 1-4,8,12 --pinocchio --out out/formulations
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+from build_scaling import machine_facts, markdown, parse_links, to_csv
+from build_scaling_case import PAPER, _robot
+
+from jointplay.bench.child import ChildFailed, json_from_child
+from jointplay.common.files import atomic_write_text
+from jointplay.common.timing import per_call_seconds
+
+FORMULATIONS = ("recursive", "closed")  # recursive first: gcc's peak memory is its own
+COLUMNS: list[tuple[str, str, str]] = [
+    ("structure", "structure", "{}"),
+    ("k", "k", "{}"),
+    ("n", "n", "{}"),
+    ("closed_build_s", "closed build s", "{:.1f}"),
+    ("recursive_build_s", "recursive build s", "{:.1f}"),
+    ("recursive_gcc_mib", "recursive gcc MiB", "{:.0f}"),
+    ("closed_fd_us", "closed fd us", "{:.2f}"),
+    ("recursive_fd_us", "recursive fd us", "{:.2f}"),
+    ("pinocchio_aba_us", "Pinocchio aba us", "{:.2f}"),
+    ("closed_jac_us", "closed jac_state us", "{:.1f}"),
+    ("recursive_jac_us", "recursive jac_state us", "{:.1f}"),
+    ("pinocchio_derivatives_us", "Pinocchio ABA derivatives us", "{:.1f}"),
+    ("max_rel_diff", "max rel diff", "{:.1e}"),
+    ("load", "load", "{:.1f}"),
+]
+
+
+def _state(layout: dict[str, Any], params: Any, rng: Any) -> Any:
+    import numpy as np
+
+    names = [c["name"] for c in layout["coordinates"]]
+    pnames = [p["name"] for p in layout["parameters"]]
+    n = len(names)
+    x = np.zeros(2 * n)
+    for i, name in enumerate(names):
+        if name.startswith("q"):
+            x[i], x[n + i] = rng.uniform(-1.0, 1.0, size=2)
+        elif name.startswith("ex"):
+            j = name[2:]
+            c = (params[pnames.index(f"joint{j}.bearing_radius")]
+                 - params[pnames.index(f"joint{j}.journal_radius")])
+            phi = rng.uniform(0.0, 2.0 * math.pi)
+            x[i], x[i + 1] = 1.1 * c * math.cos(phi), 1.1 * c * math.sin(phi)
+            x[n + i], x[n + i + 1] = rng.uniform(-1e-3, 1e-3, size=2)
+    return x
+
+
+def _pinocchio(robot: Any) -> tuple[Any, Any, Any]:
+    """Pinocchio's model of the chain, with a state and torques, or None without it."""
+    import numpy as np
+    import pinocchio as pin
+
+    model = pin.Model()
+    parent, offset = 0, 0.0
+    for i, (link, joint) in enumerate(zip(robot.links, robot.joints, strict=True), start=1):
+        kind = pin.JointModelPlanar() if joint.kind == "clearance" else pin.JointModelRZ()
+        jid = model.addJoint(parent, kind, pin.SE3(np.eye(3), np.array([offset, 0.0, 0.0])),
+                             f"joint{i}")
+        inertia = np.diag([link.inertia + 0.5, link.inertia + 0.7, link.inertia])
+        model.appendBodyToJoint(jid, pin.Inertia(link.mass, np.array([link.com, 0.0, 0.0]),
+                                                 inertia), pin.SE3.Identity())
+        parent, offset = jid, link.length
+    data = model.createData()
+    rng = np.random.default_rng(1)
+    q = pin.randomConfiguration(model, -np.ones(model.nq), np.ones(model.nq))
+    v = rng.uniform(-1.0, 1.0, model.nv)
+    tau = rng.uniform(-1.0, 1.0, model.nv)
+    return (lambda: pin.aba(model, data, q, v, tau),
+            lambda: pin.computeABADerivatives(model, data, q, v, tau), model.nv)
+
+
+def run_case(spec: dict[str, Any]) -> dict[str, Any]:
+    """Build both formulations of one case and time them (and Pinocchio) interleaved."""
+    import resource
+
+    import casadi as ca
+    import numpy as np
+
+    from jointplay.derive.codegen import emit
+    from jointplay.store.build import DEFAULT_CFLAGS, compile_source
+    from jointplay.store.model import FastFunction
+
+    robot = _robot(spec["structure"], spec["k"])
+    params = np.asarray(robot.parameter_values(), dtype=float)
+    row: dict[str, Any] = {"structure": spec["structure"], "k": spec["k"]}
+    calls: dict[str, Any] = {}
+    outputs: dict[str, list[Any]] = {}
+    with tempfile.TemporaryDirectory(prefix="jointplay-formulations-") as tmp:
+        for formulation in FORMULATIONS:
+            n = len(robot.structure().moving_joints) + 2 * len(robot.structure().clearance_joints)
+            row["n"] = n
+            if formulation == "closed" and n > spec["closed_up_to"]:
+                continue
+            t0 = time.perf_counter()
+            emitted = emit(robot, formulation)
+            emit_s = time.perf_counter() - t0
+            before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+            library, compile_s = compile_source(emitted.source, DEFAULT_CFLAGS,
+                                                cache=Path(tmp) / formulation)
+            peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+            row[f"{formulation}_build_s"] = emit_s + compile_s
+            row[f"{formulation}_gcc_mib"] = max(peak, before) / 1024
+            x = _state(emitted.layout, params, np.random.default_rng(1))
+            rng = np.random.default_rng(2)
+            args = [x, rng.uniform(-1.0, 1.0, len(emitted.layout["torque_joints"])), params,
+                    np.full(len(emitted.layout["clearance_joints"]), 0.05)]
+            outs = []
+            for name, key in (("forward_dynamics", "fd"), ("jac_state", "jac")):
+                fn = FastFunction(ca.external(name, str(library)))
+                for arr, value in zip(fn.inputs, args, strict=False):
+                    arr[:] = value
+                calls[f"{formulation}_{key}_us"] = fn.trigger
+                outs.append(np.concatenate([np.ravel(o) for o in fn(*args)]))
+            outputs[formulation] = outs
+        if spec["pinocchio"] and spec["structure"] != PAPER:
+            aba, derivatives, _ = _pinocchio(robot)
+            calls["pinocchio_aba_us"] = aba
+            calls["pinocchio_derivatives_us"] = derivatives
+        samples: dict[str, list[float]] = {name: [] for name in calls}
+        for _ in range(spec["rounds"]):
+            for name, fn in calls.items():
+                samples[name].append(per_call_seconds(fn, 3, spec["batch_s"]))
+        row.update({name: statistics.median(v) * 1e6 for name, v in samples.items()})
+    if len(outputs) == 2:
+        row["max_rel_diff"] = max(
+            float(np.max(np.abs(a - b)) / max(np.max(np.abs(b)), 1e-300))
+            for a, b in zip(outputs["recursive"], outputs["closed"], strict=True))
+    row["load"] = os.getloadavg()[0]
+    return row
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=(__doc__ or "").split("\n\n")[0])
+    parser.add_argument("--links", type=parse_links, default=parse_links("1-4,8,12"))
+    parser.add_argument("--structures", default="clearance,ideal")
+    parser.add_argument("--no-paper", action="store_true")
+    parser.add_argument("--pinocchio", action="store_true",
+                        help="time Pinocchio's aba and computeABADerivatives beside")
+    parser.add_argument("--closed-up-to", type=int, default=36,
+                        help="skip the closed form above this many coordinates")
+    parser.add_argument("--rounds", type=int, default=9, help="alternating timing rounds")
+    parser.add_argument("--batch-ms", type=float, default=20.0)
+    parser.add_argument("--timeout", type=float, default=3600.0, help="seconds per case")
+    parser.add_argument("--out", type=Path, required=False)
+    parser.add_argument("--worker", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.worker:
+        print(json.dumps(run_case(json.loads(args.worker))))
+        return 0
+    if args.out is None:
+        parser.error("--out is required")
+    cases = [] if args.no_paper else [(PAPER, 4)]
+    cases += [(s.strip(), k) for s in args.structures.split(",") if s.strip()
+              for k in args.links]
+    plan = [args.out / "formulations.csv", args.out / "formulations.md"]
+    args.out.mkdir(parents=True, exist_ok=True)
+    rows = []
+    for structure, k in cases:
+        spec = {"structure": structure, "k": k, "pinocchio": args.pinocchio,
+                "closed_up_to": args.closed_up_to, "rounds": args.rounds,
+                "batch_s": args.batch_ms / 1000}
+        try:
+            row = json_from_child([sys.executable, __file__, "--worker", json.dumps(spec)],
+                                  args.timeout)
+        except ChildFailed as err:
+            row = {**spec, "error": str(err)}
+        rows.append(row)
+        print(json.dumps(row), file=sys.stderr, flush=True)
+    facts = machine_facts()
+    command = " ".join(["python", "benchmarks/formulations.py", *sys.argv[1:]])
+    text = "\n".join([f"`{command}`", "",
+                      *[f"- {key}: {value}" for key, value in facts.items()], "",
+                      markdown(rows, COLUMNS), ""])
+    atomic_write_text(plan[0], to_csv(rows, [k for k, _, _ in COLUMNS] + ["error"]))
+    atomic_write_text(plan[1], text)
+    print(text)
+    return 1 if any(r.get("error") for r in rows) else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
