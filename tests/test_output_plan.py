@@ -659,3 +659,48 @@ def test_identify_model_folder_all_or_nothing(tmp_path: Path,
             ident.identify(jointplay.default_scene(), out, config, quiet=True)
         # the model file goes first (never beside another run's data); the rest as before
         assert snapshot(out) == {n: v for n, v in before.items() if n != MODEL_FILE}
+
+
+# ---- plot and compare: the figure folder against the results files read --------------------
+
+@pytest.mark.parametrize("command", ["plot", "compare"])
+def test_plot_and_compare_never_write_over_a_results_file(
+        tmp_path: Path, command: str, capsys: pytest.CaptureFixture[str],
+        short_run: jointplay.SimulationResult) -> None:
+    """--out naming a results file the command reads is refused before any work (exit 2)."""
+    from jointplay.results.write import write_hdf5
+
+    run = tmp_path / "run.h5"
+    write_hdf5(short_run, run)
+    runs = [str(run)] if command == "plot" else [str(run), str(run)]
+    refused_before_work(capsys, [command, *runs, "--out", str(run), "--no-replay"], tmp_path,
+                        "--out", str(run))
+
+
+@pytest.mark.parametrize("command", ["plot", "compare"])
+def test_plot_and_compare_figures_all_or_nothing(
+        tmp_path: Path, command: str, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch, short_run: jointplay.SimulationResult) -> None:
+    """A full disk at the last figure: exit 1, one line naming the figure folder and the
+    cause, no figure and no folder left; then the same command writes them all."""
+    from jointplay.results.write import write_hdf5
+
+    run = tmp_path / "run.h5"
+    write_hdf5(short_run, run)
+    runs = [str(run)] if command == "plot" else [str(run), str(run)]
+    complete = tmp_path / "complete"
+    probe = Faults(monkeypatch, "none", 0, name="png")
+    assert main([command, *runs, "--out", str(complete), "--no-replay"]) == 0
+    figures = sorted(p.name for p in complete.iterdir())
+    assert len(figures) == probe.calls["fsync"] > 1
+    capsys.readouterr()
+    out = tmp_path / "full"
+    Faults(monkeypatch, "fsync", len(figures), name="png")
+    assert main([command, *runs, "--out", str(out), "--no-replay"]) == 1
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and err.startswith(f"jointplay: error: {out}"), err
+    assert "no space left on device" in err
+    assert not out.exists()
+    Faults(monkeypatch, "none", 0)
+    assert main([command, *runs, "--out", str(out), "--no-replay"]) == 0
+    assert sorted(p.name for p in out.iterdir()) == figures

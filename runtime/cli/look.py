@@ -8,8 +8,10 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.common.errors import DescriptionError
+from jointplay.common.files import all_or_nothing, make_folder
 
 if TYPE_CHECKING:
+    from jointplay.common.files import OutputPlan
     from jointplay.results.records import SimulationResult
 
 
@@ -65,20 +67,31 @@ def _dense_output(result: SimulationResult, label: str, skip: bool) -> None:
         print(f"{label}: orbits by cubic Hermite between the samples: {how}")
 
 
-def _check_out(folder: str) -> Path:
+def _check_out(folder: str, runs: list[str]) -> tuple[Path, OutputPlan]:
+    """The figure folder and the command's output plan: the figures (``*.png`` in ``--out``)
+    against the results files read, refused before any work when they coincide (exit 2)."""
+    from jointplay.common.files import OutputPlan
+
+    plan = OutputPlan()
+    plan.add_inputs("RUN.h5", runs)
+    plan.folder("--out", folder, "its figures", pattern="*.png")
+    plan.check()
     path = Path(folder)
     check_writable_dir(path, "--out")
-    return path
+    return path, plan
 
 
 def cmd_plot(args: argparse.Namespace) -> int:
     from jointplay.results.look import read_result
     from jointplay.results.plots import plot_result
 
-    folder = _check_out(args.out)
+    folder, plan = _check_out(args.out, [args.run])
     result = read_result(args.run, "RUN.h5")
     _dense_output(result, Path(args.run).name, args.no_replay)
-    for path in plot_result(result, folder):
+    with all_or_nothing(plan):  # every figure or none
+        make_folder(folder, "--out")
+        paths = plot_result(result, folder)
+    for path in paths:
         print(f"wrote {path}")
     return 0
 
@@ -95,12 +108,14 @@ def cmd_compare(args: argparse.Namespace) -> int:
     if len(args.runs) < 2:
         raise DescriptionError("RUN.h5", "compare needs two or more results files; for one "
                                "run use `jointplay plot RUN.h5 --out DIR`")
-    folder = _check_out(args.out)
+    folder, plan = _check_out(args.out, args.runs)
     runs = labelled(args.runs, [read_result(p, f"RUN.h5 #{i + 1}")
                                 for i, p in enumerate(args.runs)])
     for label, result in runs:
         _dense_output(result, label, args.no_replay)
-    paths = compare_runs(runs, folder)
+    with all_or_nothing(plan):  # every figure or none
+        make_folder(folder, "--out")
+        paths = compare_runs(runs, folder)
     print(difference_table(differences(runs)))
     for path in paths:
         print(f"wrote {path}")
