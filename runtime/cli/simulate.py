@@ -240,15 +240,18 @@ def _overrides(items: list[str]) -> dict[str, Any]:
         if name.strip().startswith("run."):  # checked and converted by _run_overrides
             out[name.strip()] = value.strip()
             continue
-        try:
-            number = float(value)
-        except ValueError:
-            raise DescriptionError(f"--set {name}", f"must be a number, got {value!r}") \
-                from None
+        number = _number(name, value)
         if not np.isfinite(number):
             raise DescriptionError(f"--set {name}", f"must be finite, got {value!r}")
         out[name.strip()] = number
     return out
+
+
+def _number(name: str, value: str) -> float:
+    try:
+        return float(value)
+    except ValueError:
+        raise DescriptionError(f"--set {name}", f"must be a number, got {value!r}") from None
 
 
 def _run_overrides(overrides: dict[str, Any]) -> dict[str, Any]:
@@ -264,11 +267,7 @@ def _run_overrides(overrides: dict[str, Any]) -> dict[str, Any]:
         if key == "integrator":  # the one setting that is a name, not a number
             changes[key] = value
             continue
-        try:
-            number = float(value)
-        except ValueError:
-            raise DescriptionError(f"--set {name}", f"must be a number, got {value!r}") \
-                from None
+        number = _number(name, value)
         if key == "max_steps":
             if not number.is_integer():
                 raise DescriptionError(f"--set {name}", f"must be a whole number, got {value}")

@@ -267,7 +267,8 @@ def _variable(group: Any, name: str, dims: tuple[str, ...], data: Any, units: st
     return var
 
 
-def _to_json(value: Any) -> str:
+def to_json(value: Any) -> str:
+    """Metadata and statistics as JSON text (arrays as lists, paths as strings)."""
     def default(obj: Any) -> Any:
         if isinstance(obj, np.ndarray | np.generic):
             return obj.tolist()
@@ -344,14 +345,14 @@ def write_result(group: Any, r: SimulationResult, compress: bool = False) -> Non
     # the full coordinate order (angles and journal offsets interleaved as the model has them)
     group.attrs["coordinate_names"] = " ".join(r.coordinate_names)
     group.attrs["energy_components"] = " ".join(r.energy)
-    group.attrs["solver_stats"] = _to_json(r.stats)
+    group.attrs["solver_stats"] = to_json(r.stats)
     # string metadata (the scene's text, its source) readable as attributes of their own
     text = {k: v for k, v in r.metadata.items()
             if isinstance(v, str) and k.isidentifier() and k not in _RESERVED}
     for key, value in text.items():
         group.attrs[key] = value
     group.attrs["metadata_text"] = " ".join(text)
-    group.attrs["metadata_json"] = _to_json({k: v for k, v in r.metadata.items()
+    group.attrs["metadata_json"] = to_json({k: v for k, v in r.metadata.items()
                                              if k not in text})
     for attribute, hooks in OPTIONAL_GROUPS.items():
         part = getattr(r, attribute, None)

@@ -26,6 +26,7 @@ import numpy as np
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import atomic_path
 from jointplay.results import wear as wear_files
+from jointplay.results.netcdf import to_json
 from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult
 
 FORMAT = "jointplay-result"
@@ -183,17 +184,6 @@ def _strings(values: list[str]) -> np.ndarray:
     return np.array(values, dtype=h5py.string_dtype())
 
 
-def _to_json(value: Any) -> str:
-    def default(obj: Any) -> Any:
-        if isinstance(obj, np.ndarray | np.generic):
-            return obj.tolist()
-        if isinstance(obj, Path):
-            return str(obj)
-        raise TypeError(f"cannot store {type(obj).__name__} in a result file")
-
-    return json.dumps(value, default=default)
-
-
 def write_hdf5_v1(result: SimulationResult, path: str | Path) -> None:
     """The version-1 layout (plain HDF5, no dimensions), for tests that the reader keeps
     reading files written before the netCDF-4 layout."""
@@ -246,8 +236,8 @@ def _write_group(group: Any, r: SimulationResult, compress: bool) -> None:
         if isinstance(value, str):
             meta.attrs[key] = value
         else:
-            as_json.attrs[key] = _to_json(value)
-    meta.create_dataset("stats", data=_to_json(r.stats), dtype=h5py.string_dtype())
+            as_json.attrs[key] = to_json(value)
+    meta.create_dataset("stats", data=to_json(r.stats), dtype=h5py.string_dtype())
 
 
 def _str_list(values: Any) -> list[str]:
