@@ -247,9 +247,12 @@ def test_pereira_range_is_checked_on_parameters_given_at_run_time() -> None:
     from jointplay.sim import Stepper, simulate
 
     scene = default_scene().with_robot(_paper_robot("pereira")).with_run(t_end=0.002)
-    for radius in (10.0e-3 - 1e-6, 10.0e-3 - 20e-3 + 1e-9):
+    # below the range (1 um) and above it (10.1 mm; a negative journal radius, as once
+    # here, is refused earlier as a radius out of range)
+    for change in ({"joint2.journal_radius": 10.0e-3 - 1e-6},
+                   {"joint2.bearing_radius": 9.97e-3 + 10.1e-3}):
         with pytest.raises(DescriptionError, match=r"joint2.*Pereira contact law.*5e-06 m"):
-            simulate(scene, parameters={"joint2.journal_radius": radius})
+            simulate(scene, parameters=change)
     with pytest.raises(DescriptionError, match=r"joint3.*Pereira"):
         Stepper(scene, parameters={"joint3.bearing_radius": 9.971e-3})
     simulate(scene, parameters={"joint2.journal_radius": 10.0e-3 - 6e-6})  # inside: runs

@@ -244,7 +244,7 @@ def _validate_lengths(robot: Robot) -> None:
                 raise DescriptionError(
                     f"joints[{i}].journal_radius",
                     f"gives a radial clearance of {c:.6g} m, outside the range the Pereira "
-                    f"law was fitted for ({low:g} m <= c < {high:g} m); choose radii in that "
-                    "range or another contact.stiffness (johnson, liu)")
+                    f"contact law was fitted for ({low:g} m <= c < {high:g} m); choose radii "
+                    "in that range or another contact.stiffness (johnson, liu)")
 
 
