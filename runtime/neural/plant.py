@@ -1,7 +1,7 @@
 """The plant the controllers are identified on and judged by.
 
 The control metrics compare the clearance robot with the ideal one to fractions of a
-micrometre and of a milli-g. At the scenes' default tolerances (rtol 1e-6, atol 1e-5) the
+micrometre and of a milli-g. At the scenes' former default tolerances (rtol 1e-6, atol 1e-5) the
 integrator's own error is larger than that: PD's RMS acceleration error after 50 ms is 2.8x
 its converged value and its largest position error 1.4x (docs/control.md, "The plant"). So
 ``identify``, ``control`` and ``control-study`` integrate the plant (and the ideal robot it is
