@@ -1,0 +1,116 @@
+"""A scene's ``[initial]`` table: the coordinates and speeds it may name, their values checked
+(known names, finite, physically plausible, journals inside their bearings), and how the
+journals start (``journals = "centred"`` or ``"resting"``)."""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Mapping
+from typing import Any
+
+from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
+from jointplay.common.validation import Problems, plausible
+from jointplay.robot import Robot
+from jointplay.robot.structure import Structure, coordinate_layout
+from jointplay.scene.expressions import parse_expression
+
+
+def _error(field_name: str, message: str, source: str | None) -> DescriptionError:
+    return DescriptionError(field_name, message, source)
+
+
+def finite_number(value: Any, where: str, source: str | None) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise _error(where, f"must be a finite number in SI units, got {value!r}", source)
+    return float(value)
+
+
+def coordinate_names(robot: Robot) -> list[str]:
+    """Generalised coordinates in model order: moving angles, then (ex, ey) per clearance."""
+    return list(_coordinates_of(robot.structure()))
+
+
+@functools.lru_cache(maxsize=64)
+def _coordinates_of(structure: Structure) -> tuple[str, ...]:
+    # Every scene built checks its initial state against these: computed once per structure.
+    return tuple(c.name for c in coordinate_layout(structure))
+
+
+def initial_numbers(raw: Any, constants: Mapping[str, float],
+                     source: str | None) -> dict[str, Any]:
+    """``[initial]`` as read: constant expressions (``"-pi/2"``) evaluated; the values are
+    checked by :func:`validate_initial`."""
+    if not isinstance(raw, Mapping):
+        raise _error("initial", f"must be a table, got {type(raw).__name__}", source)
+    problems = Problems()
+    out: dict[str, Any] = {}
+    for key, value in raw.items():
+        with problems.check():
+            if isinstance(value, str):
+                expr = parse_expression(value, field=f"initial.{key}", constants=constants,
+                                        source=source)
+                if not expr.is_constant:
+                    raise _error(f"initial.{key}", "must not depend on t", source)
+                value = float(expr.numpy(0.0))
+            out[key] = value
+    problems.raise_any(source)
+    return out
+
+
+def _initial_kind(key: str) -> str:
+    """The PHYSICAL_RANGES kind of an initial value (eccentricities: the clearance bound)."""
+    if key.startswith("dq"):
+        return "initial.speed"
+    if key.startswith("de"):
+        return "initial.eccentricity_rate"
+    return "initial.angle"
+
+
+def validate_initial(values: Any, robot: Robot) -> dict[str, float]:
+    """The initial state's values, every one checked: a known coordinate or speed of the robot
+    (did-you-mean otherwise), a finite number in its physical range, and each journal inside
+    its bearing. All problems are reported together."""
+    if not isinstance(values, Mapping):
+        raise _error("initial", f"must be a mapping of names to numbers, got "
+                     f"{type(values).__name__}", None)
+    coords = coordinate_names(robot)
+    allowed = (*coords, *[f"d{c}" for c in coords])
+    problems = Problems()
+    out: dict[str, float] = {}
+    for key, value in values.items():
+        with problems.check():
+            if key not in allowed:
+                raise _error(f"initial.{key}", f"unknown key (allowed: {', '.join(allowed)})"
+                             f"{did_you_mean(str(key), allowed)}", None)
+            number = finite_number(value, f"initial.{key}", None)
+            if not key.startswith("e"):  # eccentricities: the clearance bound below
+                plausible(f"initial.{key}", number, _initial_kind(key))
+            out[key] = number
+    for j, joint in enumerate(robot.joints, start=1):
+        if joint.has_clearance:
+            with problems.check():
+                ex, ey = out.get(f"ex{j}", 0.0), out.get(f"ey{j}", 0.0)
+                if math.hypot(ex, ey) > 2 * (joint.bearing_radius - joint.journal_radius):
+                    raise _error(f"initial.ex{j}", "the journal must start inside its bearing: "
+                                 f"|e| <= 2 x the radial clearance "
+                                 f"({joint.bearing_radius - joint.journal_radius:g} m)", None)
+    problems.raise_any()
+    return out
+
+
+JOURNAL_STARTS = ("centred", "resting")
+
+
+def check_journals(journals: Any, initial: Mapping[str, float], source: str | None) -> None:
+    if journals not in JOURNAL_STARTS:
+        raise _error("initial.journals", f"must be one of {', '.join(JOURNAL_STARTS)}, got "
+                     f"{journals!r}", source)
+    if journals == "resting":
+        given = sorted(k for k, v in initial.items()
+                       if (k.startswith("d") or k.startswith(("ex", "ey"))) and v != 0)
+        if given:
+            raise _error("initial.journals", "\"resting\" starts at rest with the journals "
+                         "where they rest: leave out the speeds and eccentricities "
+                         f"({', '.join(given)})", source)
