@@ -28,6 +28,32 @@ def only_line(err: str) -> None:
     assert lines == ["jointplay: interrupted"], err
 
 
+def press_ctrl_c(command: list[str], env: dict[str, str], marker: bytes, *, wait: float,
+                 presses: int, timeout: float) -> tuple[int, str]:
+    """Run ``command``; once its stdout shows ``marker``, wait ``wait`` s, then send SIGINT
+    ``presses`` times 50 ms apart (fewer if it has ended). Its exit status and stderr."""
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    assert proc.stdout is not None
+    try:
+        seen = b""
+        while marker not in seen:
+            chunk = os.read(proc.stdout.fileno(), 4096)
+            assert chunk, f"the command ended before printing {marker!r}"
+            seen += chunk
+        time.sleep(wait)
+        for _ in range(presses):
+            if proc.poll() is not None:
+                break
+            proc.send_signal(signal.SIGINT)
+            time.sleep(0.05)
+        _, err = proc.communicate(timeout=timeout)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    return proc.returncode, err.decode(errors="replace")
+
+
 @pytest.mark.parametrize("integrator", ["bdf", "cvodes", "idas", "rk4", "radau"])
 def test_interrupt_inside_a_long_output_interval(tmp_path: Path, integrator: str) -> None:
     out = tmp_path / "out"
@@ -46,29 +72,10 @@ def test_interrupt_pressed_again_and_again(tmp_path: Path) -> None:
     """Five presses 50 ms apart while it integrates: still one line and exit 130."""
     command = [sys.executable, "-m", "jointplay.cli", "simulate", "--integrator", "rk4",
                *LONG_INTERVAL, "--step", "1e-5", "--out", str(tmp_path / "r.h5")]
-    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            env={**os.environ, "PYTHONUNBUFFERED": "1"})
-    assert proc.stdout is not None
-    seen = b""
-    try:
-        while b"ready in" not in seen:
-            chunk = os.read(proc.stdout.fileno(), 4096)
-            assert chunk, "the command ended before it was ready"
-            seen += chunk
-        time.sleep(0.3)
-        for _ in range(5):
-            if proc.poll() is not None:
-                break
-            proc.send_signal(signal.SIGINT)
-            time.sleep(0.05)
-        _, err = proc.communicate(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-    text = err.decode(errors="replace")
-    check_contract(proc.returncode, text)
-    assert proc.returncode == 130, text
+    code, text = press_ctrl_c(command, {**os.environ, "PYTHONUNBUFFERED": "1"}, b"ready in",
+                              wait=0.3, presses=5, timeout=60)
+    check_contract(code, text)
+    assert code == 130, text
     only_line(text)
     assert list(tmp_path.iterdir()) == []
 
@@ -130,23 +137,9 @@ def test_interrupt_while_importing(tmp_path: Path) -> None:
     command = [sys.executable, "-m", "jointplay.cli", "simulate", "--out", str(out)]
     env = {**os.environ, "PYTHONPATH": os.pathsep.join(
         [str(hook), *filter(None, [os.environ.get("PYTHONPATH")])])}
-    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
-    assert proc.stdout is not None
-    try:
-        seen = b""
-        while b"importing" not in seen:
-            chunk = os.read(proc.stdout.fileno(), 4096)
-            assert chunk, "the command ended before it imported"
-            seen += chunk
-        proc.send_signal(signal.SIGINT)
-        _, err = proc.communicate(timeout=20)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-    text = err.decode(errors="replace")
-    check_contract(proc.returncode, text)
-    assert proc.returncode == 130, text
+    code, text = press_ctrl_c(command, env, b"importing", wait=0.0, presses=1, timeout=20)
+    check_contract(code, text)
+    assert code == 130, text
     only_line(text)
     assert not out.exists()
 
