@@ -396,13 +396,13 @@ def read_result(group: Any, ideal: SimulationResult | None = None) -> Simulation
     offset_index = [c for j in clearance for c in columns[j]]
     angle_cols = [i for i in range(len(names)) if i not in set(offset_index)]
     t = _values(group, "time")
-    motion: dict[str, np.ndarray] = {}
+    motion: dict[str, Any] = {}
     for attribute, _, angle_name, offset_name, _, _ in _MOTION:
         values = np.empty((t.size, len(names)))
         values[:, angle_cols] = _values(group, angle_name)
         values[:, offset_index] = _values(group, offset_name).reshape(t.size, -1)
         motion[attribute] = values
-    arrays = {f.attribute: _values(group, f.variable) for f in SAMPLE_FIELDS}
+    arrays: dict[str, Any] = {f.attribute: _values(group, f.variable) for f in SAMPLE_FIELDS}
     table: dict[str, np.ndarray] = {}
     for name, _, _ in IMPACT_COLUMNS:
         values = _values(group, f"impact_{name}")
@@ -412,7 +412,7 @@ def read_result(group: Any, ideal: SimulationResult | None = None) -> Simulation
     metadata: dict[str, Any] = {key: _text(attrs[key])
                                 for key in _text(attrs["metadata_text"]).split()}
     metadata.update(json.loads(_text(attrs["metadata_json"])))
-    optional = {attribute: hooks.read(group.groups[attribute])
+    optional: dict[str, Any] = {attribute: hooks.read(group.groups[attribute])
                 for attribute, hooks in OPTIONAL_GROUPS.items() if attribute in group.groups}
     return SimulationResult(
         scene_name=_text(attrs["scene_name"]), integrator=_text(attrs["integrator"]),

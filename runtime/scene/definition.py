@@ -35,7 +35,7 @@ from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import Problems, check_keys, read_toml
 from jointplay.robot import Joint, JointKind, Robot, load_robot, robot_from_dict
-from jointplay.scene.expressions import FUNCTIONS, TimeFunction, parse_expression
+from jointplay.scene.expressions import TimeFunction
 from jointplay.scene.initial import check_journals as _check_journals
 from jointplay.scene.initial import (
     coordinate_names,
@@ -43,7 +43,12 @@ from jointplay.scene.initial import (
 )
 from jointplay.scene.initial import finite_number as _finite_number
 from jointplay.scene.initial import initial_numbers as _initial_numbers
-from jointplay.scene.tables import load_torque_table
+from jointplay.scene.torques import (
+    check_finite,
+    check_table_covers_run,
+    read_constants,
+    read_torques,
+)
 
 INTEGRATORS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
 ADAPTIVE: tuple[str, ...] = ("bdf", "cvodes", "idas")
@@ -123,7 +128,7 @@ class Scene:
             if not isinstance(self.run, RunSettings):
                 raise _error("run", "must be a jointplay.RunSettings (use scene.with_run(...) "
                              "to change run settings)", None)
-            _check_table_covers_run(self)
+            check_table_covers_run(self.torques, self.torque_text, self.run.t_end)
         with problems.check():
             if isinstance(self.robot, Robot):
                 object.__setattr__(self, "initial", validate_initial(self.initial, self.robot))
@@ -174,7 +179,7 @@ class Scene:
         (relative to the scene file), which replaces every joint's torque."""
         raw = {**(values or {}), **more}
         base = Path(self.source).parent if self.source else None
-        torques, texts = _torques(raw, self.robot, self.constants, base, self.source)
+        torques, texts = read_torques(raw, self.robot, self.constants, base, self.source)
         if "table" not in raw:  # joints not named keep their torque
             keys = [f"joint{j}" for j in self.robot.moving_joints] if self.robot.drive else []
             kept = [key for key in keys if key not in raw]
@@ -296,64 +301,6 @@ def _robot(raw: Any, base: Path | None, source: str | None) -> Robot:
     return robot_from_dict(raw, source)
 
 
-def _constants(raw: Any, source: str | None) -> dict[str, float]:
-    check_keys(raw, tuple(raw) if isinstance(raw, Mapping) else (), "constants", source)
-    out: dict[str, float] = {}
-    for key, value in raw.items():
-        if not key.isidentifier() or key.startswith("_") or key in ("t", "pi", "e"):
-            raise _error(f"constants.{key}", "a constant's name must be a plain identifier "
-                         "(letters, digits, underscores; not starting with _), and not t, pi "
-                         "or e", source)
-        if key in FUNCTIONS:
-            raise _error(f"constants.{key}", f"{key!r} is the name of a function "
-                         f"({key}(x)); choose another name for the constant", source)
-        out[key] = _finite_number(value, f"constants.{key}", source)
-    return out
-
-
-def _torques(raw: Any, robot: Robot, constants: Mapping[str, float], base: Path | None,
-             source: str | None) -> tuple[tuple[TimeFunction, ...], dict[str, str]]:
-    driven = robot.moving_joints if robot.drive else ()
-    keys = tuple(f"joint{j}" for j in driven)
-    check_keys(raw, (*keys, "table", "hold_ends"), "torques", source)
-    if raw and not robot.drive:
-        raise _error("torques", "the robot's drive is disabled (drive.enabled = false); "
-                     "remove [torques] or enable the drive", source)
-    hold = raw.get("hold_ends", False)
-    if "hold_ends" in raw and ("table" not in raw or not isinstance(hold, bool)):
-        raise _error("torques.hold_ends", "is true or false, and only beside table = ...: it "
-                     "holds a table's first and last rows outside its time range", source)
-    if "table" in raw:
-        if len(raw) > 1 + ("hold_ends" in raw):
-            raise _error("torques.table", "give either a table or expressions, not both",
-                         source)
-        if not isinstance(raw["table"], str):
-            raise _error("torques.table", "must be the path of a CSV file", source)
-        path = (base / raw["table"]) if base is not None else Path(raw["table"])
-        table = load_torque_table(path, columns=len(driven), field="torques.table",
-                                  source=source)
-        table_texts = {"table": str(raw["table"])}
-        if hold:
-            table_texts["hold_ends"] = "true"
-        return tuple(table.column(i) for i in range(len(driven))), table_texts
-    functions: list[TimeFunction] = []
-    texts: dict[str, str] = {}
-    problems = Problems()
-    for key in keys:
-        with problems.check():
-            text = raw.get(key, "0")
-            if isinstance(text, (int, float)) and not isinstance(text, bool):
-                text = repr(float(text))
-            if not isinstance(text, str):
-                raise _error(f"torques.{key}", "must be an expression of t (a string) or a "
-                             "number", source)
-            functions.append(parse_expression(text, field=f"torques.{key}",
-                                              constants=constants, source=source))
-            texts[key] = text
-    problems.raise_any(source)
-    return tuple(functions), texts
-
-
 def scene_inputs(scene: Scene) -> list[Path]:
     """The files a scene was read from (the scene, its torque table): never outputs."""
     if scene.source is None:
@@ -362,25 +309,6 @@ def scene_inputs(scene: Scene) -> list[Path]:
     if "table" in scene.torque_text:
         paths.append(Path(scene.source).parent / scene.torque_text["table"])
     return paths
-
-
-def _check_table_covers_run(scene: Scene) -> None:
-    """A torque table must cover [0, run.t_end], unless ``hold_ends = true`` asks for its first
-    and last rows to be held outside its range: a table that ends at 0.5 s for a 2 s run is
-    otherwise a mistake that would pass unseen."""
-    from jointplay.scene.tables import TableColumn
-
-    if scene.torque_text.get("hold_ends") == "true":
-        return
-    t_end = scene.run.t_end
-    for torque in scene.torques:
-        if isinstance(torque, TableColumn):
-            first, last = float(torque.times[0]), float(torque.times[-1])
-            if first > 0.0 or last < t_end * (1 - 1e-12):
-                raise _error("torques.table", f"covers t = {first:g} to {last:g} s, but the run "
-                             f"lasts from 0 to run.t_end = {t_end:g} s; extend the table, "
-                             "shorten the run, or add hold_ends = true to [torques] to hold "
-                             "its first and last rows", None)
 
 
 def check_scene_name(name: Any) -> None:
@@ -422,7 +350,7 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
             raise _error("description", "must be a string", source)
     constants: dict[str, float] = {}
     with problems.check():
-        constants = _constants(data.get("constants", {}), source)
+        constants = read_constants(data.get("constants", {}), source)
     torques: tuple[TimeFunction, ...] = ()
     texts: dict[str, str] = {}
     initial: dict[str, Any] = {}
@@ -439,13 +367,13 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
         _check_journals(journals, initial, source)
     if robot is not None:
         with problems.check():
-            torques, texts = _torques(data.get("torques", {}), robot, constants, base, source)
+            torques, texts = read_torques(data.get("torques", {}), robot, constants, base, source)
     run = RunSettings()
     with problems.check():
         run = _run_settings(data.get("run", {}), source)
     if robot is not None and texts:
         with problems.check():
-            _check_torques_finite(torques, texts, robot, run, source)
+            check_finite(torques, texts, robot, run, source)
     problems.raise_any(source)
     assert robot is not None
     return Scene(name=name, robot=robot, torques=torques, torque_text=texts, initial=initial,
@@ -460,28 +388,8 @@ def check_torques_finite(scene: Scene) -> None:
     (inside the integrator); a torque such as ``1/(t - 0.3)`` would put NaN or inf into the
     results, so it is refused before anything runs.
     """
-    _check_torques_finite(scene.torques, scene.torque_text, scene.robot, scene.run,
+    check_finite(scene.torques, scene.torque_text, scene.robot, scene.run,
                           scene.source)
-
-
-def _check_torques_finite(torques: tuple[TimeFunction, ...], torque_text: Mapping[str, str],
-                          robot: Robot, run: RunSettings, source: str | None) -> None:
-    import numpy as np
-
-    t = np.arange(run.n_outputs + 1) * run.output_step
-    keys = [f"joint{j}" for j in robot.moving_joints] if robot.drive else []
-    for k, torque in enumerate(torques):
-        values = np.asarray(torque.numpy(t), dtype=np.float64)
-        bad = ~np.isfinite(values)
-        if bad.any():
-            i = int(np.argmax(bad))
-            key = keys[k] if k < len(keys) else f"[{k}]"
-            field_name = "torques.table" if "table" in torque_text else f"torques.{key}"
-            text = torque_text.get(key)
-            shown = f" {text!r}" if text else ""
-            raise _error(field_name, f"the torque{shown} is {values[i]} at t = {t[i]:.9g} s "
-                         "(an output time); every torque must be finite over [0, run.t_end]",
-                         source)
 
 
 def load_scene(path: str | Path) -> Scene:

@@ -190,7 +190,7 @@ def replay(result: SimulationResult) -> tuple[DenseSolution | None, str]:
         return None, "the model its scene builds now is not the one that made the file"
     if len(result.parameters) != len(model.parameters):
         return None, "the file's parameters do not fit the model"
-    again = simulate(scene, model=model, parameters=result.parameters)
+    again = simulate(scene, model=model, parameters=result.parameters.tolist())
     state, replayed = np.hstack([result.q, result.u]), np.hstack([again.q, again.u])
     if state.shape != replayed.shape:
         return None, "running its scene again gives other output times"

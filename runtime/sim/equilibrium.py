@@ -34,7 +34,7 @@ def static_equilibrium(model: object, p: np.ndarray, x0: np.ndarray,
     ecc = [coords.index(f"{axis}{j}") for j in joints for axis in ("ex", "ey")]
     ntau = len(model.torque_joints)  # type: ignore[attr-defined]
     if len(ecc) + ntau != n:
-        raise SimulationError("the static equilibrium needs a drive torque on every moving "
+        raise SimulationError(0.0, "the static equilibrium needs a drive torque on every moving "
                               f"joint ({n - len(ecc)} angles, {ntau} driven)")
     x = np.asarray(x0, dtype=float).copy()
     x[n:] = 0.0
@@ -78,7 +78,7 @@ def static_equilibrium(model: object, p: np.ndarray, x0: np.ndarray,
             lam /= 2
         else:
             break
-    raise SimulationError("no static equilibrium of the journals was found: the largest "
+    raise SimulationError(0.0, "no static equilibrium of the journals was found: the largest "
                           f"acceleration left is {float(np.max(np.abs(r))):.3g} after "
                           f"{MAX_ITERATIONS} Newton steps; start the scene from given "
                           "eccentricities ([initial] ex2 = ..., ey2 = ...) instead")

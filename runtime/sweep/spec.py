@@ -165,7 +165,7 @@ def _scene_fingerprint(scene: Scene) -> dict[str, Any]:
         except OSError:
             torques["table_sha256"] = None
     run = scene.run
-    out = {
+    out: dict[str, Any] = {
         "torques": torques,
         "initial": {k: _hex(v) for k, v in sorted(scene.initial.items())},
         "run": {f.name: (_hex(getattr(run, f.name)) if isinstance(getattr(run, f.name), float)
