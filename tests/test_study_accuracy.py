@@ -129,3 +129,29 @@ def test_control_study_verify_writes_the_accuracy_per_run(
         assert 0 <= kept["accuracy_energy_residual"] < 1e-4 * kept["energy_dissipated"]
     md = (out / "study.md").read_text()
     assert "Accuracy (each run checked" in md and "| scene | neural IMC | 1 |" in md
+
+
+def test_a_check_that_ends_differently_is_compared_where_both_ran() -> None:
+    """A loop stopped as diverged in only one of the two runs: the estimate covers the
+    samples both have, and the note says where each ended."""
+    from jointplay.neural.loop import Run
+    from jointplay.neural.loop_accuracy import accuracy_columns, loop_accuracy
+
+    scene = default_scene().with_run(t_end=0.004)
+    nj = len(scene.robot.moving_joints)
+    t = np.arange(5) * 1e-3
+    y = np.zeros((5, 2 * nj + 6))
+    y[:, 2 * nj] = [0.0, 1e-6, 2e-6, 3e-6, 4e-6]
+    zero = np.zeros((5, nj))
+    run = Run("PD", t, y, zero, zero, 0, 0.1, energy_balance=np.zeros(5), dissipated=1.0)
+    shifted = y[:3].copy()
+    shifted[:, 2 * nj] += 5e-7
+    check = Run("PD", t[:3], shifted, zero[:3], zero[:3], 0, 0.1,
+                diverged="end-effector error above the bound", energy_balance=np.zeros(3),
+                dissipated=1.0)
+    accuracy = loop_accuracy(run, check, scene=scene, check_tol=1e-10)
+    columns = accuracy_columns(accuracy, run, check)
+    assert columns["tip_error_estimate"] == pytest.approx(5e-7)
+    assert columns["agreement_horizon"] == pytest.approx(0.004)
+    assert "the run ran to the end, the check stopped at t = 0.002 s" in columns["accuracy_note"]
+    assert "compared over 3 samples" in columns["accuracy_note"]
