@@ -31,6 +31,7 @@ from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
 from jointplay.neural.control import MODEL_BASED, load_twin
 from jointplay.neural.imc import ControllerSettings
+from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
 from jointplay.neural.metrics import WORSE_MARGIN
 from jointplay.neural.narx import load_narx
 from jointplay.neural.study import (
@@ -86,6 +87,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--undeclared-noise", action="store_true",
                    help="run the noise case without telling the controllers the sensors' "
                         "noise (by default they are told, and choose their horizon for it)")
+    p.add_argument("--verify", action="store_true",
+                   help="check every run against the same loop with the plant at tolerances "
+                        "10x tighter: per case and controller, the estimated tip error, the "
+                        "agreement horizon of the impact sequence and the energy residual "
+                        "(study.csv, study.md); costs a second run of every loop")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
     p.set_defaults(func=cmd_study)
     return p
@@ -143,6 +149,8 @@ def cmd_study(args: argparse.Namespace) -> int:
         *worse_lines(rows, plan.cases),
         "",
         *identification_lines(models),
+        *(accuracy_lines(rows, plan.cases, check_tolerance(plan.scene)) if args.verify
+          else []),
         "The \"after settling\" window of each case starts at "
         + ", ".join(sorted({f"{r['settle_s'] * 1e3:.0f} ms" for r in rows}))
         + " (the later of the internal-model controllers' engagement plus their setpoint "
@@ -150,7 +158,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         "",
         f"Wall time {time.perf_counter() - started:.0f} s.",
     ])
-    written = write_study(plan, rows, summary, text)
+    written = write_study(plan, rows, summary, text, verify=args.verify)
     if not args.quiet:
         print(text)
         for path in written:
@@ -299,7 +307,7 @@ def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, lis
     window); one row per run."""
     STUDY_JOBS.clear()
     for c in plan.cases:
-        STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None))
+        STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None, args.verify))
     base_rows = pool_map(list(range(len(STUDY_JOBS))), args.workers, args.quiet, "baselines")
     rows = [r for rs in base_rows for r in rs]
     limits = {r["case"]: (r["limit"], r["settle_s"]) for r in rows if "limit" in r}
@@ -307,25 +315,29 @@ def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, lis
     for c in plan.cases:
         told = settings if args.undeclared_noise else declared(settings, plan.scene, c)
         for path in models[c.clearance]:
-            STUDY_JOBS.append((c, plan.scenes[c.name], path, told, limits[c.name]))
+            STUDY_JOBS.append((c, plan.scenes[c.name], path, told, limits[c.name],
+                               args.verify))
     model_rows = pool_map(list(range(start, len(STUDY_JOBS))), args.workers, args.quiet,
                            "internal-model runs")
     return rows + [r for rs in model_rows for r in rs]
 
 
 def write_study(plan: StudyPlan, rows: list[dict[str, Any]],
-                summary: dict[tuple[str, str], dict[str, Any]], text: str) -> list[Path]:
-    """study.csv, study.md, study.json and the plots; the paths written."""
+                summary: dict[tuple[str, str], dict[str, Any]], text: str, *,
+                verify: bool = False) -> list[Path]:
+    """study.csv, study.md, study.json and the plots; the paths written. ``verify`` adds
+    the accuracy columns to study.csv."""
     with all_or_nothing(study_outputs(plan.out, plan.scene)):
-        return _write_study(plan, rows, summary, text)
+        return _write_study(plan, rows, summary, text, verify)
 
 
 def _write_study(plan: StudyPlan, rows: list[dict[str, Any]],
-                 summary: dict[tuple[str, str], dict[str, Any]], text: str) -> list[Path]:
+                 summary: dict[tuple[str, str], dict[str, Any]], text: str,
+                 verify: bool) -> list[Path]:
     out = plan.out
     buf = io.StringIO()
     fields = ["case", "clearance_um", "controller", "seed", "horizon", "predicted_noise_ratio",
-              *REPORTED]
+              *REPORTED, *(ACCURACY_COLUMNS if verify else ())]
     writer = csv.DictWriter(buf, fieldnames=fields, extrasaction="ignore")
     writer.writeheader()
     writer.writerows(rows)

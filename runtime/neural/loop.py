@@ -43,6 +43,12 @@ class Run:
     dense_t: np.ndarray = field(default_factory=lambda: np.zeros(0))
     dense_acceleration: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
     impact_times: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s
+    # For the accuracy check (jointplay.neural.loop_accuracy): the plant's contact onsets
+    # (time, joint, approach speed, eccentricity x, y), its energy balance per sample (J) and
+    # the energy its contacts dissipated (J).
+    impact_rows: list[tuple[float, int, float, float, float]] = field(default_factory=list)
+    energy_balance: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    dissipated: float = 0.0
 
     @property
     def guard_counts(self) -> dict[str, int]:
@@ -132,7 +138,9 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
                len(stepper.impacts), time.perf_counter() - start, diverged,
                dense_t=dense_t, dense_acceleration=dense_a,
                # A journal starting in contact is recorded at t = 0 at zero speed: not a strike.
-               impact_times=np.array([float(i[0]) for i in stepper.impacts if i[2] > 0]))
+               impact_times=np.array([float(i[0]) for i in stepper.impacts if i[2] > 0]),
+               impact_rows=list(stepper.impacts), energy_balance=stepper.energy_balance(),
+               dissipated=stepper.dissipated)
 
 
 def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,

@@ -4,11 +4,13 @@ per case, the internal-model controllers once per case and seed) through a proce
 from __future__ import annotations
 
 import math
+from functools import partial
 from pathlib import Path
 from typing import Any
 
 from jointplay.neural.comparison import DIVERGENCE_FACTOR, MODEL_BASED, compare, open_loop_bound
 from jointplay.neural.control import load_twin
+from jointplay.neural.loop_accuracy import accuracy_columns, check_tolerance, loop_accuracy
 from jointplay.neural.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_identity
 
 BASELINES = ("open loop", "PD", "computed torque")
@@ -35,30 +37,38 @@ def study_engagement(settings: Any, dt: float) -> float:
 
 
 def _run_unit(index: int) -> list[dict[str, Any]]:
-    case, scene, model_dir, settings, limit = STUDY_JOBS[index]
+    case, scene, model_dir, settings, limit, verify = STUDY_JOBS[index]
     rows = []
     if model_dir is None:
         narx = None
         # The baselines' window: the later of the case's release impacts and the engagement
         # of the internal-model controllers run after them (one window for every row).
-        result = compare(scene, _dummy_model(scene), settings, controllers=BASELINES,
-                         analyse=False, conditions=case.conditions,
-                         settle_after=study_engagement(settings, scene.run.output_step))
+        run = partial(compare, scene, _dummy_model(scene), settings, controllers=BASELINES,
+                      analyse=False, conditions=case.conditions,
+                      settle_after=study_engagement(settings, scene.run.output_step))
         seed = -1
     else:
         narx = load_narx(model_dir)
         arx = load_twin(model_dir, narx)
         limit, settle = limit
-        result = compare(scene, narx, settings, arx=arx, controllers=MODEL_BASED,
-                         analyse=False, conditions=case.conditions, limit=limit,
-                         transient=settle)
+        run = partial(compare, scene, narx, settings, arx=arx, controllers=MODEL_BASED,
+                      analyse=False, conditions=case.conditions, limit=limit,
+                      transient=settle)
         seed = int(narx.context["training"]["seed"])
+    result = run()
+    # --verify: the same loops with the plant 10x tighter (jointplay.neural.loop_accuracy)
+    check_tol = check_tolerance(scene) if verify else None
+    check = run(plant_tolerance=check_tol) if check_tol is not None else None
     settle_s = result.settling.time if result.settling else 0.0
     nj = len(scene.robot.moving_joints)
     for name, mt in result.metrics.items():
         row = {"case": case.name, "clearance_um": case.clearance * 1e6, "controller": name,
                "seed": seed, **{k: mt.get(k, math.nan) for k in REPORTED},
                "settle_s": settle_s}
+        if check is not None and check_tol is not None:
+            accuracy = loop_accuracy(result.runs[name], check.runs[name], scene=scene,
+                                     check_tol=check_tol)
+            row.update(accuracy_columns(accuracy, result.runs[name], check.runs[name]))
         if name == "open loop":
             row["limit"] = open_loop_bound(result.runs[name], result.reference, nj,
                                            DIVERGENCE_FACTOR)

@@ -22,6 +22,7 @@ peaks change with the tolerance.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -156,23 +157,50 @@ def _max_distance(a: np.ndarray, b: np.ndarray) -> float:
 def compare_runs(result: SimulationResult, check: SimulationResult, *, rtol: float,
                  atol: float, check_rtol: float, check_atol: float) -> Accuracy:
     """The accuracy statement of ``result`` from a tighter run ``check`` of the same scene."""
-    t_end = float(result.t[-1])
-    horizon, agreed = agreement_horizon(result.impacts, check.impacts, t_end,
+    return statement(
+        RunRecord(result.tip_position, result.tip_velocity, result.impacts,
+                  result.energy["balance"], float(result.energy["dissipated"][-1])),
+        RunRecord(check.tip_position, check.tip_velocity, check.impacts,
+                  check.energy["balance"], float(check.energy["dissipated"][-1])),
+        clearance_joints=result.clearance_joints, t_end=float(result.t[-1]), rtol=rtol,
+        atol=atol, check_rtol=check_rtol, check_atol=check_atol,
+        check_wall_s=float(check.stats.get("wall_time_s", math.nan)))
+
+
+@dataclass(frozen=True)
+class RunRecord:
+    """What the statement compares of a run, on the same output samples from t = 0 (a run
+    stopped early has fewer: the two are compared where both have samples)."""
+
+    tip_position: np.ndarray  # (N, 2) m
+    tip_velocity: np.ndarray  # (N, 2) m/s
+    impacts: Impacts
+    energy_balance: np.ndarray  # (N,) J
+    dissipated: float  # J, at the end
+
+
+def statement(run: RunRecord, check: RunRecord, *, clearance_joints: Sequence[int],
+              t_end: float, rtol: float, atol: float, check_rtol: float, check_atol: float,
+              check_wall_s: float = math.nan) -> Accuracy:
+    """The accuracy statement of ``run`` from ``check``, the same run at tighter settings
+    (simulations, and the closed loops of :mod:`jointplay.neural.loop_accuracy`)."""
+    horizon, agreed = agreement_horizon(run.impacts, check.impacts, t_end,
                                         onset_tolerance=ONSET_TOLERANCE * CHECK_MARGIN,
                                         speed_tolerance=SPEED_TOLERANCE * CHECK_MARGIN,
                                         lead=ONSET_TOLERANCE)
-    sensitive = np.arange(len(result.impacts)) >= agreed
-    per_joint = {int(j): (int(np.count_nonzero(result.impacts.joint == j)),
+    sensitive = np.arange(len(run.impacts)) >= agreed
+    per_joint = {int(j): (int(np.count_nonzero(run.impacts.joint == j)),
                           int(np.count_nonzero(check.impacts.joint == j)))
-                 for j in result.clearance_joints}
+                 for j in clearance_joints}
+    n = min(len(run.tip_position), len(check.tip_position))
     return Accuracy(
         rtol=rtol, atol=atol, check_rtol=check_rtol, check_atol=check_atol,
-        tip_error_estimate=_max_distance(result.tip_position, check.tip_position),
-        tip_velocity_error_estimate=_max_distance(result.tip_velocity, check.tip_velocity),
-        energy_residual=float(np.max(np.abs(result.energy["balance"]))),
-        check_energy_residual=float(np.max(np.abs(check.energy["balance"]))),
-        dissipated=float(result.energy["dissipated"][-1]),
+        tip_error_estimate=_max_distance(run.tip_position[:n], check.tip_position[:n]),
+        tip_velocity_error_estimate=_max_distance(run.tip_velocity[:n],
+                                                  check.tip_velocity[:n]),
+        energy_residual=float(np.max(np.abs(run.energy_balance))),
+        check_energy_residual=float(np.max(np.abs(check.energy_balance))),
+        dissipated=run.dissipated,
         agreement_horizon=horizon, agreed_impacts=agreed, tolerance_sensitive=sensitive,
-        impacts=len(result.impacts), check_impacts=len(check.impacts),
-        impacts_per_joint=per_joint, t_end=t_end,
-        check_wall_s=float(check.stats.get("wall_time_s", math.nan)))
+        impacts=len(run.impacts), check_impacts=len(check.impacts),
+        impacts_per_joint=per_joint, t_end=t_end, check_wall_s=check_wall_s)

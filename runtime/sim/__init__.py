@@ -205,6 +205,8 @@ class Stepper:
         self._dense: list[tuple[np.ndarray, ...]] = []  # (t, x, v_imp, tau) per sample
         self.work = 0.0
         self.dissipated = 0.0
+        # (state, drive work, dissipated energy) at every sample, for energy_balance()
+        self._samples: list[tuple[np.ndarray, float, float]] = [(self.x.copy(), 0.0, 0.0)]
         if self._native:
             self._bdf.reset(self.x)
             self._bdf.hold(np.full(len(self.model.torque_joints), np.nan))  # force a start
@@ -218,7 +220,9 @@ class Stepper:
         pr = self._pr
         pr.u_hold[:] = np.asarray(u, dtype=float)
         if self._native:
-            return self._step_native()
+            x = self._step_native()
+            self._samples.append((x.copy(), self.work, self.dissipated))
+            return x
         traj = _Trajectory(x=np.zeros((2, pr.nx)), v_imp=np.zeros((2, pr.nc)),
                            work=np.array([self.work, 0.0]),
                            dissipated=np.array([self.dissipated, 0.0]), impacts=self.impacts)
@@ -226,7 +230,19 @@ class Stepper:
                                    self._events, traj, 0, self.stats)
         self.t += self.sample_time
         self.work, self.dissipated = float(traj.work[1]), float(traj.dissipated[1])
+        self._samples.append((self.x.copy(), self.work, self.dissipated))
         return self.x
+
+    def energy_balance(self) -> np.ndarray:
+        """The energy balance at every sample so far, from t = 0 (J; 0 when exact): energy
+        gained less the work of every torque applied (the scene's and the added ones) plus
+        the energy dissipated, as ``result.energy["balance"]`` of :func:`simulate`."""
+        xs = np.array([s[0] for s in self._samples]).T
+        ps = np.repeat(self._pr.p[:, None], xs.shape[1], axis=1)
+        total = _mapped(self.model, "energy", [xs, ps])[3].ravel()
+        work = np.array([s[1] for s in self._samples])
+        dissipated = np.array([s[2] for s in self._samples])
+        return np.asarray(total - total[0] - work + dissipated)
 
     def _step_native(self) -> np.ndarray:
         pr, integ = self._pr, self._bdf
