@@ -247,13 +247,27 @@ def _unit_columns(start: Any, size: int, width: int) -> Any:
                         for column in range(width)])
 
 
-def _looped_columns(fn_pass: ca.Function, size: int, width: int, args: list[Any]) -> Any:
-    """The ``size`` columns of a Jacobian from ``fn_pass(*args, start)`` (``width`` columns
-    from column ``start``), called in a loop in the C; ``args`` are the same for every pass."""
+def _looped_columns(name: str, inputs: list[Any], start: Any, columns: Any, size: int,
+                    width: int, args: list[Any]) -> Any:
+    """The ``size`` columns of a Jacobian, ``width`` at a time: ``columns`` (an SX expression
+    of ``inputs`` and ``start``) holds the ``width`` columns from column ``start``; ``args``
+    are the MX values of ``inputs``, the same for every pass.
+
+    What does not depend on the column (the nominal recursion's values, which the tangents
+    multiply) is computed once, by ``name_nominal``; the loop over passes, in the C, holds
+    only the tangents' arithmetic (``name_tangents``)."""
+    body, symbols, values = ca.extract_parametric(columns, ca.veccat(*inputs))
+    nominal = ca.veccat(*values) if values else ca.SX(0, 1)
+    nominal_sym = ca.SX.sym("nominal", nominal.numel())
+    if symbols:
+        body = ca.substitute(body, ca.veccat(*symbols), nominal_sym)
+    fn_nominal = ca.Function(f"{name}_nominal", inputs, [nominal])
+    fn_tangents = ca.Function(f"{name}_tangents", [*inputs, nominal_sym, start], [body])
     passes = -(-size // width)
-    looped = fn_pass.map(f"{fn_pass.name()}_loop", "serial", passes, list(range(len(args))), [])
+    looped = fn_tangents.map(f"{name}_loop", "serial", passes, list(range(len(inputs) + 1)),
+                             [])
     starts = ca.DM([list(range(0, passes * width, width))])
-    return looped(*args, starts)[:, :size]
+    return looped(*args, fn_nominal(*args), starts)[:, :size]
 
 
 class _RecursiveJacobians:
@@ -310,10 +324,10 @@ class _RecursiveJacobians:
         start = ca.SX.sym("start")
         width = OTHER_COLUMNS_PER_PASS
         columns = ca.jtimes(self.residual, self.acc_sym, _unit_columns(start, n, width))
-        fn_pass = ca.Function("mass_matrix_columns", [q, p, start], [columns])
         qm, pm = ca.MX.sym("q", n), ca.MX.sym("p", p.numel())
         return ca.Function("mass_matrix", [qm, pm],
-                           [_looped_columns(fn_pass, n, width, [qm, pm])],
+                           [_looped_columns("mass_matrix_columns", [q, p], start, columns, n,
+                                            width, [qm, pm])],
                            ["q", "p"], ["M"])
 
     def state(self) -> ca.Function:
@@ -347,12 +361,11 @@ class _RecursiveJacobians:
             d_forces_sym = ca.SX.sym("d_forces", d_forces.sparsity())
             directional = ca.jtimes(self.residual, ca.vertcat(x, self.held),
                                     ca.vertcat(seed, ca.mtimes(d_forces_sym, seed)))
-            fn_pass = ca.Function(
+            columns = _looped_columns(
                 "jac_state_columns",
-                [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym, start],
-                [self._solve_each(directional)])
-            columns = _looped_columns(fn_pass, 2 * n, STATE_COLUMNS_PER_PASS,
-                                      [xm, taum, pm, acc_m, forces_m, factors_m, d_forces_m])
+                [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
+                self._solve_each(directional), 2 * n, STATE_COLUMNS_PER_PASS,
+                [xm, taum, pm, acc_m, forces_m, factors_m, d_forces_m])
         jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
         # Not densified: the driver reads the output's pattern as CSC, which a dense one is not.
         return ca.Function("jac_state", [xm, taum, pm, vm], [jac_x],
@@ -377,14 +390,12 @@ class _RecursiveJacobians:
             self.residual, ca.vertcat(tau, p, self.held),
             ca.vertcat(seed[:sizes[0] + sizes[1], :],
                        ca.mtimes(d_forces_sym, seed[sizes[0]:, :])))
-        fn_pass = ca.Function(
-            "jac_input_columns",
-            [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym, start],
-            [self._solve_each(directional)])
         acc_m = self.fn_fd(xm, taum, pm, vm)[n:]
-        columns = _looped_columns(fn_pass, sum(sizes), OTHER_COLUMNS_PER_PASS,
-                                  [xm, taum, pm, acc_m, forces_m, self.fn_factors(xm[:n], pm),
-                                   d_forces_m])
+        columns = _looped_columns(
+            "jac_input_columns",
+            [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
+            self._solve_each(directional), sum(sizes), OTHER_COLUMNS_PER_PASS,
+            [xm, taum, pm, acc_m, forces_m, self.fn_factors(xm[:n], pm), d_forces_m])
         blocks, offset = [], 0
         for size in sizes:
             blocks.append(ca.vertcat(ca.MX(n, size), -columns[:, offset:offset + size]))
