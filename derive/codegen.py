@@ -228,9 +228,15 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
 
 
 # From this many coordinates on, the recursion's state Jacobian differentiates the inverse
-# dynamics block of columns by block in a loop (C the size of a few recursions, compile time
-# linear in the chain) instead of as straight-line code (C quadratic in the chain).
-LOOPED_STATE_JACOBIAN_FROM = 48
+# dynamics a pass of columns at a time in a loop (C the size of a few recursions' tangents,
+# growing linearly with the chain) instead of as straight-line code (C quadratic in the chain,
+# but AD there skips what a column's seed does not reach). Measured on 20 and 32 clearance
+# joints (60 and 96 coordinates; `python benchmarks/formulations.py --links 20,32 --structures
+# clearance --no-paper --closed-up-to 0 --pinocchio` with and without `--looped-from 1000`):
+# straight-line code was 2.3x and 8.2x cheaper per call, for 1.08x and 1.31x the build time
+# and 1.4x and 2.3x gcc's peak memory (1.3 GB at 96 coordinates). Beyond the measured range
+# the loop keeps the build bounded. (Runs one after the other on a loaded 2-core machine.)
+LOOPED_STATE_JACOBIAN_FROM = 100
 # Columns a looped Jacobian differentiates per pass: the nominal recursion is evaluated once per
 # pass, its tangents once per column, so wider passes spend less on the nominal values and
 # more on C (the code of a pass grows with its width). The state Jacobian is called at every
