@@ -232,7 +232,7 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
 # growing linearly with the chain) instead of as straight-line code (C quadratic in the chain,
 # but AD there skips what a column's seed does not reach). Measured on 20 and 32 clearance
 # joints (60 and 96 coordinates; `python benchmarks/formulations.py --links 20,32 --structures
-# clearance --no-paper --closed-up-to 0 --pinocchio` with and without `--looped-from 1000`):
+# clearance --no-paper --closed-up-to 0 --pinocchio` with `--looped-from 1`, then `1000`):
 # straight-line code was 2.3x and 8.2x cheaper per call, for 1.08x and 1.31x the build time
 # and 1.4x and 2.3x gcc's peak memory (1.3 GB at 96 coordinates). Beyond the measured range
 # the loop keeps the build bounded. (Runs one after the other on a loaded 2-core machine.)
