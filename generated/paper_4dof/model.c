@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+c1757eaa6ff5, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+d14d3c1791a7, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: ce355864321a2c6c4abfd3e7cdb016754239567920ca5dbb0dc89189c7368a1c
+ * input hash: c1c3b713555ecfee44c1b2732ce5174a915f848c04d6d54d138e7e7e51804e61
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
