@@ -183,7 +183,8 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
 
     n = model.n_coordinates
     q, u, x, p, tau, v_imp = inputs.q, inputs.u, inputs.x, inputs.p, inputs.tau, inputs.v_imp
-    slots = {(c.joint, c.kind): i for i, c in enumerate(model.coordinates)}
+    slots: dict[tuple[int, str], int] = {(c.joint, c.kind): i
+                                         for i, c in enumerate(model.coordinates)}
     by_name = {prm.name: i for i, prm in enumerate(model.parameters)}
 
     def parameter(name: str) -> Any:
@@ -300,7 +301,8 @@ class _RecursiveJacobians:
         self.acc_sym = acc_sym
         self.fn_fd = fn_fd
         q, u, tau = inputs.q, inputs.u, inputs.tau
-        held = {i: tuple(ca.SX.sym(f"F{axis}{i}") for axis in ("x", "y", "t")) for i in contact}
+        held: dict[int, tuple[Any, Any, Any]] = {
+            i: (ca.SX.sym(f"Fx{i}"), ca.SX.sym(f"Fy{i}"), ca.SX.sym(f"Ft{i}")) for i in contact}
         self.forces = (ca.vertcat(*[f for i in contact for f in contact[i]]) if contact
                        else ca.SX(0, 1))
         self.held = (ca.vertcat(*[f for i in held for f in held[i]]) if held

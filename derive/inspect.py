@@ -33,6 +33,8 @@ def sections(model: SymbolicModel, simplify: bool = False) -> list[tuple[str, li
                 f"[m/s] normal approach speed at the onset of joint {c.index}'s impact")
                for c in model.clearance]
     n = model.n_coordinates
+    assert model.mass_matrix is not None and model.forcing is not None, \
+        "the equations are shown for models derived in closed form"
     mass = [(f"M[{i + 1},{j + 1}]", simp(model.mass_matrix[i, j]), "")
             for i in range(n) for j in range(i, n) if model.mass_matrix[i, j] != 0]
     forcing = [(f"f[{i + 1}] ({model.coordinates[i].name})", simp(model.forcing[i]), "")

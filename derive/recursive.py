@@ -288,8 +288,8 @@ def forward_dynamics(chain_: Chain, generalised: Any | None = None) -> Any:
         U, Dinv, Ia = chain_.articulated[index]
         pA = bias_forces[index]
         if joint.slots:
-            applied = (ca.vertcat(*[generalised[s] for s in joint.slots]) if solve_only
-                       else joint.generalised)
+            applied = (ca.vertcat(*[generalised[s] for s in joint.slots])
+                       if generalised is not None else joint.generalised)
             u_prime = applied - ca.mtimes(joint.S.T, pA)
             stored[index] = u_prime
             if len(joint.slots) == 3:
