@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+a6801daa8664, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+13e89fbe4273, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 00feb04a41f513cd759af3db823a67b1558bd90ec6168ffd56a0a4c8f0e4dc4c
+ * input hash: ddee40f5655f1726f51263f44c1385c006237ac34d0a78622dac3939df008ad5
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
