@@ -116,7 +116,7 @@ def test_residual_selection_is_never_worse_than_arx_on_validation() -> None:
     arx = linear_twin(truth)  # a linear model with the same normalisation
     segments = _data(truth, 26)
     chosen, selection = select_residual(truth, arx, segments, window=40)
-    d, u = windows(segments, 40, truth.history)
+    d, u, _ = windows(segments, 40, truth.history)
     assert selection.alpha == 1.0  # the data come from the network: its residual helps
     assert window_loss(chosen, d, u, truth.output_scale) <= selection.arx_loss
     # Data from the linear model: the residual only hurts, and the choice is the ARX itself.
@@ -132,7 +132,7 @@ def test_a_model_worse_than_persistence_is_refused_with_what_to_change() -> None
     segments = _data(truth, 32)
     garbage = replace(truth, increment_scale=truth.increment_scale * 300)
     arx = linear_twin(garbage)
-    d, u = windows(segments, 40, truth.history)
+    d, u, _ = windows(segments, 40, truth.history)
     sel = Selection(1.0, {1.0: window_loss(garbage, d, u, truth.output_scale)},
                     window_loss(arx, d, u, truth.output_scale),
                     window_loss(garbage, d, u, truth.output_scale),

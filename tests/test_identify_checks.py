@@ -88,11 +88,11 @@ def test_runaway_free_run_start_is_shrunk_and_recorded() -> None:
 
     config = IdentifyConfig(hidden=(6,), window=20, transient=0.0)
     torch, net, data = _network(config)
-    dvw, uvw = net.windows(data.validation_segments, config.window)
+    dvw, uvw, wvw = net.windows(data.validation_segments, config.window)
 
     def validate() -> float:
         with torch.no_grad():
-            return float(net.sim_loss(dvw, uvw))
+            return float(net.sim_loss(dvw, uvw, wvw))
 
     linear = validate()  # the network starts at the linear fit (residual x 0.01)
     with torch.no_grad():  # a residual that makes the free run explode
@@ -177,6 +177,7 @@ def _scheduled_run(rng: np.random.Generator, n: int) -> Trajectory:
 def test_lpv_arx_sees_what_arx_cannot() -> None:
     from jointplay.neural.identify import _segments, fit_arx, output_increments
     from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
+    from jointplay.neural.training import model_scheduling
     from jointplay.neural.lpv import window_loss as lpv_loss
     from jointplay.neural.twin import window_loss, windows
 
@@ -187,10 +188,23 @@ def test_lpv_arx_sees_what_arx_cannot() -> None:
     arx = fit_arx(_segments(train, 0), names, 2, 2, 1e-3)
     lpv = fit_lpv_arx(scheduled_segments(train, 0, 2), 2, 2,
                       output_increments(names["output_names"]))
-    d, u = windows(_segments(test, 0), 100, arx.history)
+    d, u, _ = windows(_segments(test, 0), 100, arx.history)
     arx_loss = window_loss(arx, d, u, arx.output_scale)
     lpv_test = lpv_loss(lpv, scheduled_segments(test, 0, 2), 100, arx.output_scale)
     # The plant is exactly LPV in the input gain: the scheduled model is near exact in free run,
     # the time-invariant one is not.
     assert lpv_test < 1e-6 * max(arx_loss, 1e-300) or lpv_test < 1e-12
     assert arx_loss > 1e-3
+    # The same model as the controller runs it (one linear layer and a bilinear part, the
+    # scheduling signals computed from the reference and the feedforward) predicts the same.
+    as_narx = lpv.as_narx(names, model_scheduling(names), 1e-3, arx.output_scale, {})
+    d, u, w = windows(_segments(test, 0, names), 100, arx.history)
+    pred = as_narx.free_run(d[0], u[0], w[0])
+    seg = scheduled_segments(test, 0, 2)[0]
+    direct = lpv.free_run(*(a[None, : d.shape[1]] for a in seg))[0]
+    assert np.max(np.abs(pred - direct)) <= 1e-12 * np.max(np.abs(direct))
+    # An ARX model with the scheduling signals as further regressors cannot express a gain
+    # that the configuration multiplies: it stays far from the LPV model.
+    sched_arx = fit_arx(_segments(train, 0, names), names, 2, 2, 1e-3,
+                        scheduling=model_scheduling(names))
+    assert window_loss(sched_arx, d, u, arx.output_scale, w) > 1e3 * lpv_test

@@ -26,15 +26,20 @@ def evaluate(models: dict[str, Narx | None], trajectories: Sequence[Trajectory],
         preds_one, preds_free, truth = [], [], []
         for tr in trajectories:
             d, u = tr.deviation[skip:], tr.v[skip:]
+            w = None
+            if model is not None and model.n_scheduling:
+                from jointplay.neural.scheduling import trajectory_scheduling
+
+                w = trajectory_scheduling(tr, model.output_names, model.input_names)[skip:]
             truth.append(d[history + 1:])
             if model is None:
                 preds_one.append(d[history: -1])
                 preds_free.append(np.repeat(d[history: history + 1], d.shape[0] - history - 1,
                                             axis=0))
             else:
-                preds_one.append(model.one_step(d, u))
+                preds_one.append(model.one_step(d, u, w))
                 with np.errstate(all="ignore"):
-                    preds_free.append(model.free_run(d, u))
+                    preds_free.append(model.free_run(d, u, w))
         y = np.vstack(truth)
         one, free = np.vstack(preds_one), np.vstack(preds_free)
         free = np.where(np.isfinite(free), free, np.sign(np.nan_to_num(free)) * 1e300)

@@ -28,6 +28,9 @@ class IdentifyConfig:
     input_fraction: float = 0.03  # peak of the added-torque excitation, x the limit
     transient: float = 0.05  # s at the start of each trajectory left out (journals settling)
     linear_path: bool = True  # a linear direct path beside the hidden layers
+    # The network also sees the scheduling signals (jointplay.neural.scheduling): the ideal
+    # robot's configuration and speed and the drive torque of the motion.
+    scheduling: bool = False
     one_step_iterations: int = 60
     multi_step_iterations: int = 30
     window: int = 200  # samples per free-run training window
