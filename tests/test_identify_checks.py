@@ -177,8 +177,8 @@ def _scheduled_run(rng: np.random.Generator, n: int) -> Trajectory:
 def test_lpv_arx_sees_what_arx_cannot() -> None:
     from jointplay.neural.identify import _segments, fit_arx, output_increments
     from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
-    from jointplay.neural.training import model_scheduling
     from jointplay.neural.lpv import window_loss as lpv_loss
+    from jointplay.neural.training import model_scheduling
     from jointplay.neural.twin import window_loss, windows
 
     rng = np.random.default_rng(6)
