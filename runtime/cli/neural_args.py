@@ -106,6 +106,13 @@ def add_identify_data_arguments(parser: argparse.ArgumentParser, *, study: bool 
                             help=study_help if study else own_help)
 
 
+def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--scheduling", action="store_true",
+                        help="the network also sees the scheduling signals: the ideal robot's "
+                             "joint angles (cos, sin) and speeds and the drive torques of the "
+                             "motion (the LPV-ARX baseline always does)")
+
+
 def add_iterations_argument(parser: argparse.ArgumentParser, flag: str, text: str) -> None:
     parser.add_argument(flag, default=ITERATIONS_DEFAULT, help=text)
 

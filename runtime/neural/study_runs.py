@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from jointplay.neural.comparison import DIVERGENCE_FACTOR, MODEL_BASED, compare, open_loop_bound
-from jointplay.neural.control import load_twin
+from jointplay.neural.control import load_lpv, load_twin
 from jointplay.neural.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_identity
 
 BASELINES = ("open loop", "PD", "computed torque")
@@ -49,7 +49,8 @@ def _run_unit(index: int) -> list[dict[str, Any]]:
         narx = load_narx(model_dir)
         arx = load_twin(model_dir, narx)
         limit, settle = limit
-        result = compare(scene, narx, settings, arx=arx, controllers=MODEL_BASED,
+        result = compare(scene, narx, settings, arx=arx, lpv=load_lpv(model_dir),
+                         controllers=MODEL_BASED,
                          analyse=False, conditions=case.conditions, limit=limit,
                          transient=settle)
         seed = int(narx.context["training"]["seed"])
@@ -108,6 +109,17 @@ def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[
     return out
 
 
+def _matches(narx: Any, scene: Any, seed: int, identify_args: dict[str, Any]) -> bool:
+    """Whether a model folder's model was identified for this robot with these settings (a
+    folder from another study is identified again, not reused)."""
+    training = narx.context.get("training", {})
+    same = narx.context.get("robot", {}).get("robot_hash") == \
+        robot_identity(scene.robot)["robot_hash"]
+    return same and training.get("seed") == seed and all(
+        training.get(k, False if k == "scheduling" else None) == v
+        for k, v in identify_args.items())
+
+
 def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str, Any],
                   quiet: bool, first: int = 0) -> list[Path]:
     """One identified model per seed (reused when its folder already holds one for this
@@ -117,8 +129,8 @@ def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str,
     out = []
     for seed in range(first, first + seeds):
         path = folder / f"seed{seed}"
-        ok = (path / MODEL_FILE).is_file() and load_narx(path).context.get("robot", {}).get(
-            "robot_hash") == robot_identity(scene.robot)["robot_hash"]
+        ok = (path / MODEL_FILE).is_file() and _matches(load_narx(path), scene, seed,
+                                                         identify_args)
         if not ok and not (path / REJECTED_FILE).is_file():
             if not quiet:
                 print(f"identifying {path} ...", flush=True)
