@@ -208,3 +208,49 @@ def test_lpv_arx_sees_what_arx_cannot() -> None:
     sched_arx = fit_arx(_segments(train, 0, names), names, 2, 2, 1e-3,
                         scheduling=model_scheduling(names))
     assert window_loss(sched_arx, d, u, arx.output_scale, w) > 1e3 * lpv_test
+
+
+# ---- data over the operating range ------------------------------------------------------------
+
+def test_training_runs_span_the_clearances_and_payloads_asked_for() -> None:
+    """Training and validation runs cycle through every clearance x payload pair (the test
+    runs stay on the scene's robot), and a model made so is accepted on each of those robots
+    and refused on another."""
+    from dataclasses import replace
+
+    from test_control import random_narx
+
+    from jointplay.common.errors import DescriptionError
+    from jointplay.neural.identify import _context, default_limits, inner_loop_for
+    from jointplay.neural.narx import check_robot
+    from jointplay.neural.trajectories import _plan
+    from jointplay.robot import with_parameters
+    from jointplay.scene.definition import default_scene
+
+    scene = default_scene()
+    config = IdentifyConfig(n_train=4, n_validation=2, n_test=1, duration=0.3,
+                            clearances=(30e-6, 100e-6), payloads=(3.0,))
+    inner = inner_loop_for(scene, (), ())
+    tasks = _plan(scene, config, inner, default_limits(scene))
+    seen = []
+    for task in tasks:
+        robot = task.scene.robot
+        gap = robot.joints[1].bearing_radius - robot.joints[1].journal_radius
+        seen.append((task.split, round(gap * 1e6, 6), robot.payload_mass))
+    assert seen[:4] == [("train", 30.0, 3.0), ("train", 100.0, 3.0)] * 2
+    assert seen[4:6] == [("validation", 30.0, 3.0), ("validation", 100.0, 3.0)]
+    assert seen[6] == ("test", 30.0, 2.0)  # the scene's own robot
+    assert tasks[1].description["robot"] == {"clearance": 100e-6, "payload": 3.0}
+    context = _context(scene, config, inner, default_limits(scene))
+    model = replace(random_narx(1), context=context)
+    dt = scene.run.output_step
+    check_robot(model, scene.robot, dt, "model")  # the scene's robot itself
+    wide = with_parameters(scene.robot, {"joint2.journal_radius": 0.0099,
+                                         "joint3.journal_radius": 0.0099,
+                                         "payload.mass": 3.0})  # 100 µm, 3 kg
+    check_robot(model, wide, dt, "model")
+    other = with_parameters(scene.robot, {"payload.mass": 5.0})
+    with pytest.raises(DescriptionError, match="different parameter values"):
+        check_robot(model, other, dt, "model")
+    with pytest.raises(DescriptionError, match="clearances"):
+        IdentifyConfig(clearances=(-1e-6,))

@@ -13,6 +13,7 @@ from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_identify_data_arguments,
     add_iterations_argument,
+    add_operating_range_arguments,
     add_scheduling_argument,
     check_duration,
     float_list,
@@ -20,6 +21,7 @@ from jointplay.cli.neural_args import (
     iteration_counts,
     load_control_scene,
     neural_scene_argument,
+    operating_range,
     trajectory_counts,
 )
 from jointplay.common import limits as size_limits
@@ -62,6 +64,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--window", type=int, default=IdentifyConfig.window,
                    help="samples per free-run training window (default %(default)s)")
     add_scheduling_argument(p)
+    add_operating_range_arguments(p)
     p.add_argument("--no-linear-path", action="store_true",
                    help="no linear direct path beside the hidden layers (the bare network)")
     p.add_argument("--kp", help=f"inner-loop PD stiffness per driven joint, N m/rad (default "
@@ -150,7 +153,7 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         torque_limit=float_list(args.torque_limit, "--torque-limit", n),
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
-        scheduling=args.scheduling)
+        scheduling=args.scheduling, **operating_range(args))
 
 
 def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:

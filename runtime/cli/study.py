@@ -19,12 +19,14 @@ from typing import TYPE_CHECKING, Any
 from jointplay.cli.neural_args import (
     add_identify_data_arguments,
     add_iterations_argument,
+    add_operating_range_arguments,
     add_scheduling_argument,
     add_settings_arguments,
     float_list,
     iteration_counts,
     load_control_scene,
     neural_scene_argument,
+    operating_range,
     settings_from_args,
     trajectory_counts,
 )
@@ -82,6 +84,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="processes for the closed-loop runs (default %(default)s)")
     add_identify_data_arguments(p, study=True)
     add_scheduling_argument(p)
+    add_operating_range_arguments(p, prefix="identify-")
     add_iterations_argument(p, "--identify-iterations",
                             "identify: L-BFGS iterations (default %(default)s)")
     add_settings_arguments(p, ControllerSettings())
@@ -245,7 +248,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     iters = iteration_counts(args.identify_iterations, "--identify-iterations")
     identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
                      "duration": args.duration, "one_step_iterations": iters[0],
-                     "multi_step_iterations": iters[1], "scheduling": args.scheduling}
+                     "multi_step_iterations": iters[1], "scheduling": args.scheduling,
+                     **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal)
     scenes = {c.name: case_scene(scene, c) for c in cases}
     return StudyPlan(scene, out, cases, scenes, nominal, identify_args)

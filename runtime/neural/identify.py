@@ -305,8 +305,18 @@ def _context(scene: Any, config: IdentifyConfig, inner: InnerLoop,
     """Where the model came from: robot, scene, plant, training settings, versions."""
     from importlib.metadata import version
 
+    from jointplay.neural.trajectories import robot_variants
+
+    robot = robot_identity(scene.robot)
+    if config.clearances or config.payloads:
+        # The robots the runs span: a controller may use the model on any of them.
+        robot["operating_range"] = {
+            "clearances": list(config.clearances), "payloads": list(config.payloads),
+            "robot_hashes": sorted({robot["robot_hash"], *(
+                robot_identity(s.robot)["robot_hash"]
+                for _, s in robot_variants(scene, config))})}
     return {
-        "robot": robot_identity(scene.robot),
+        "robot": robot,
         "scene": {"name": scene.name, "source": scene.source or "(built-in)",
                   "torques": dict(scene.torque_text),
                   "scene_hash": hashlib.sha256(scene.text.encode()).hexdigest()},

@@ -153,7 +153,8 @@ def robot_identity(robot: Any) -> dict[str, str]:
 
 def check_robot(model: Narx, robot: Any, sample_time: float, path: str | Path,
                 flag: str = "--model") -> None:
-    """Refuse a model trained on another robot or at another sampling period."""
+    """Refuse a model trained on another robot (one outside the clearances and payloads its
+    runs spanned) or at another sampling period."""
     trained = model.context.get("robot", {})
     here = robot_identity(robot)
     where = Path(path)
@@ -162,7 +163,8 @@ def check_robot(model: Narx, robot: Any, sample_time: float, path: str | Path,
                            f"structure (hash {str(trained.get('structure_hash'))[:12]}, this "
                            f"scene's robot {here['name']!r} has {here['structure_hash'][:12]}); "
                            f"identify this robot: {RETRAIN}", flag)
-    if trained.get("robot_hash") != here["robot_hash"]:
+    spanned = trained.get("operating_range", {}).get("robot_hashes", [])
+    if trained.get("robot_hash") != here["robot_hash"] and here["robot_hash"] not in spanned:
         raise _fail(where, f"was trained on robot {trained.get('name')!r} with different "
                            f"parameter values (robot hash {str(trained.get('robot_hash'))[:12]}"
                            f", this scene's {here['robot_hash'][:12]}); identify this robot: "

@@ -113,11 +113,19 @@ def _matches(narx: Any, scene: Any, seed: int, identify_args: dict[str, Any]) ->
     """Whether a model folder's model was identified for this robot with these settings (a
     folder from another study is identified again, not reused)."""
     training = narx.context.get("training", {})
-    same = narx.context.get("robot", {}).get("robot_hash") == \
-        robot_identity(scene.robot)["robot_hash"]
+    robot = narx.context.get("robot", {})
+    here = robot_identity(scene.robot)["robot_hash"]
+    same = robot.get("robot_hash") == here or here in robot.get("operating_range", {}).get(
+        "robot_hashes", [])
     return same and training.get("seed") == seed and all(
-        training.get(k, False if k == "scheduling" else None) == v
+        _setting(training, k) == (list(v) if isinstance(v, tuple) else v)
         for k, v in identify_args.items())
+
+
+def _setting(training: dict[str, Any], key: str) -> Any:
+    """A training setting of a model's context; settings added later take their default."""
+    defaults: dict[str, Any] = {"scheduling": False, "clearances": [], "payloads": []}
+    return training.get(key, defaults.get(key))
 
 
 def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str, Any],
