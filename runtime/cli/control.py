@@ -232,7 +232,10 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         f"weight {alpha if alpha is not None else 'not recorded'}"
         + ("; the network's residual weight is 0: the neural IMC's model IS its ARX twin, "
            "its row is the ARX-IMC's with the guard, and the network does no work"
-           if alpha == 0 else ""),
+           if alpha == 0 and not job.narx.n_scheduling else "")
+        + ("; the network's residual weight is 0: the neural IMC's model is the linear ARX "
+           "model with the scheduling signals as further regressors, and the network does "
+           "no work" if alpha == 0 and job.narx.n_scheduling else ""),
         *([comparison.noise_tuning.describe() + "; every controller measured through that "
            "noise (seed 1)"] if comparison.noise_tuning else []),
         "compiled step: " + ", ".join(

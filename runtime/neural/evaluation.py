@@ -127,6 +127,13 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
             f"{res['one_step_nrmse_persistence']:.4g}.",
             "",
         ]
+        dropped = res.get("scheduling_dropped")
+        if dropped:
+            lines += [
+                "With the scheduling signals, no blend beat the ARX twin without them on "
+                f"validation (free-run loss {dropped['best_blend_loss']:.4g} against "
+                f"{dropped['twin_loss']:.4g}): the saved model is the ARX twin, and the "
+                "network does no work.", ""]
         if not res["usable"]:
             lines += ["**REJECTED**: " + "; ".join(res["problems"]) + ".", ""]
     lines += _baseline_lines(metrics)

@@ -189,12 +189,26 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
         context={**context, "model": "ARX with the scheduling signals (least squares)"})
     seg_val = _segments(split["validation"], skip, names)
     model, selection = select_residual(trained, start, seg_val, config.window)
+    dropped = None
+    if config.scheduling:
+        # The ARX twin (no scheduling signals) is a candidate too: where it is better on
+        # validation than every blend, the scheduling signals did not help, and it is saved.
+        from jointplay.neural.twin import window_loss, windows
+
+        d, u, w = windows(seg_val, config.window, arx.history)
+        twin_loss = window_loss(arx, d, u, model.output_scale, w)
+        if twin_loss < selection.losses[selection.alpha]:
+            dropped = {"twin_loss": twin_loss,
+                       "best_blend_loss": selection.losses[selection.alpha]}
+            model = replace(arx, context=trained.context)
+            selection = replace(selection, alpha=0.0)
     verdict = judge(model, start, selection, seg_val, config.window)
     baselines, lpv = linear_baselines(model, arx, split, skip, config, inner, names, context)
     metrics: dict[str, Any] = {
         **_errors(model, arx, split, skip),
         "free_run_loss": baselines,
-        "residual": describe(selection, verdict),
+        "residual": {**describe(selection, verdict),
+                     **({"scheduling_dropped": dropped} if dropped else {})},
         "outputs": list(names["output_names"]),
         "training_history": history,
         "seconds": {"simulate": t1 - t0, "train": t2 - t1},
