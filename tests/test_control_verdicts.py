@@ -91,8 +91,8 @@ def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
         metrics={"open loop": after, "PD": {**after, "rms_acceleration_after": 0.5},
                  "ARX-IMC": {**after, "max_acceleration_after": 1.3}},
         runs={}, settling=Settling(0.144, 0.1, 0.144, 0.03), limit=1.0, noise_tuning=None)
-    job = SimpleNamespace(scene=None, narx=None, arx=None, settings=ControllerSettings(),
-                          model_dir=Path("."))
+    job = SimpleNamespace(scene=None, narx=None, arx=None, lpv=None,
+                          settings=ControllerSettings(), model_dir=Path("."))
     args = SimpleNamespace(ct_omega=15.0, ct_zeta=0.2)
     horizons = []
 
