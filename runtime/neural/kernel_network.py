@@ -50,17 +50,12 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
     widths = [nphi, *[w.shape[0] for w in model.weights]]
     width_max = max(widths)
     last = len(model.weights) - 1
-    # The scheduling signals end the regressor and have no tangent (the controller holds
-    # them over its horizon): the first layer and the direct path carry tangents through
-    # the other columns only.
-    varying = nphi - model.n_scheduling
     lines = _input_lines(prefix, nphi, nd, width_max)
     for i in range(len(model.weights)):
         lines += _layer_lines(f"{prefix}W{i}", f"{prefix}B{i}", widths[i], widths[i + 1], nd,
-                              width_max, hidden=i < last,
-                              with_tangent=varying if i == 0 else widths[i])
+                              width_max, hidden=i < last)
     if model.linear is not None:
-        lines += _linear_lines(prefix, nphi, ny, nd, width_max, varying)
+        lines += _linear_lines(prefix, nphi, ny, nd, width_max)
     lines += [
         f"  for (i = 0; i < {ny}; ++i)",
         f"    y[i] = {prefix}CARRY[i] * phi[i] + {prefix}TM[i] + {prefix}TS[i] * a[i];",
@@ -108,15 +103,9 @@ def _input_lines(prefix: str, nphi: int, nd: int, width_max: int) -> list[str]:
 
 
 def _layer_lines(wname: str, bias: str, n_in: int, n_out: int, nd: int, width_max: int,
-                 hidden: bool, with_tangent: int | None = None) -> list[str]:
+                 hidden: bool) -> list[str]:
     """One layer, a = W h + b, in one pass over the weights for the value and every tangent
-    direction (inputs from ``with_tangent`` on have none); a hidden layer then applies
-    tanh."""
-    n_tan = n_in if with_tangent is None else with_tangent
-    rest = ([f"    for (j = {n_tan}; j < {n_in}; ++j) {{",
-             "      const double hj = h[j];",
-             f"      for (i = 0; i < {n_out}; ++i) a[i] += {wname}[j * {n_out} + i] * hj;",
-             "    }"] if n_tan < n_in else [])
+    direction; a hidden layer then applies tanh."""
     tangents = "".join(f" da[{k * width_max} + i] += wji * dh{k};" for k in range(nd))
     loads = " ".join(f"const double dh{k} = dh[{k * width_max} + j];" for k in range(nd))
     lines = [
@@ -124,14 +113,13 @@ def _layer_lines(wname: str, bias: str, n_in: int, n_out: int, nd: int, width_ma
         "  if (tangent) {",
         f"    for (k = 0; k < {nd}; ++k) for (i = 0; i < {n_out}; ++i) "
         f"da[k * {width_max} + i] = 0;",
-        f"    for (j = 0; j < {n_tan}; ++j) {{",
+        f"    for (j = 0; j < {n_in}; ++j) {{",
         f"      const double hj = h[j]; {loads}",
         f"      for (i = 0; i < {n_out}; ++i) {{",
         f"        const double wji = {wname}[j * {n_out} + i];",
         f"        a[i] += wji * hj;{tangents}",
         "      }",
         "    }",
-        *rest,
         "  } else {",
         f"    for (j = 0; j < {n_in}; ++j) {{",
         "      const double hj = h[j];",
@@ -148,27 +136,19 @@ def _layer_lines(wname: str, bias: str, n_in: int, n_out: int, nd: int, width_ma
     return lines
 
 
-def _linear_lines(prefix: str, nphi: int, ny: int, nd: int, width_max: int,
-                  with_tangent: int | None = None) -> list[str]:
-    """The direct linear term on the normalised regressor, added to the output layer
-    (entries from ``with_tangent`` on have no tangent)."""
+def _linear_lines(prefix: str, nphi: int, ny: int, nd: int, width_max: int) -> list[str]:
+    """The direct linear term on the normalised regressor, added to the output layer."""
     tangents = "".join(f" da[{k * width_max} + i] += lji * dz{k};" for k in range(nd))
     loads = " ".join(f"const double dz{k} = dz[{k * nphi} + j];" for k in range(nd))
-    n_tan = nphi if with_tangent is None else with_tangent
-    rest = ([f"    for (j = {n_tan}; j < {nphi}; ++j) {{",
-             "      const double zj = z[j];",
-             f"      for (i = 0; i < {ny}; ++i) a[i] += {prefix}L[j * {ny} + i] * zj;",
-             "    }"] if n_tan < nphi else [])
     return [
         "  if (tangent) {",
-        f"    for (j = 0; j < {n_tan}; ++j) {{",
+        f"    for (j = 0; j < {nphi}; ++j) {{",
         f"      const double zj = z[j]; {loads}",
         f"      for (i = 0; i < {ny}; ++i) {{",
         f"        const double lji = {prefix}L[j * {ny} + i];",
         f"        a[i] += lji * zj;{tangents}",
         "      }",
         "    }",
-        *rest,
         "  } else {",
         f"    for (j = 0; j < {nphi}; ++j) {{",
         "      const double zj = z[j];",
