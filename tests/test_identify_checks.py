@@ -4,6 +4,7 @@ NaN is repaired, and the repair recorded. Synthetic linear plants (fast, seeded)
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -254,3 +255,28 @@ def test_training_runs_span_the_clearances_and_payloads_asked_for() -> None:
         check_robot(model, other, dt, "model")
     with pytest.raises(DescriptionError, match="clearances"):
         IdentifyConfig(clearances=(-1e-6,))
+
+
+def test_network_trained_with_scheduling_signals_exports_them() -> None:
+    """--scheduling: the network's regressor ends with the scheduling signals, the exported
+    model reproduces torch's predictions (train_narx checks to 1e-9) and its free run takes
+    the signals from the runs' reference and feedforward."""
+    pytest.importorskip("torch")
+    from jointplay.neural.scheduling import scheduling_names, trajectory_scheduling
+    from jointplay.neural.training import train_narx
+
+    rng = np.random.default_rng(8)
+    train = [_scheduled_run(rng, 300) for _ in range(2)]
+    validation = [replace(_scheduled_run(rng, 300), split="validation")]
+    names = _names()
+    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
+                            multi_step_iterations=2, scheduling=True)
+    model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
+    assert model.scheduling == scheduling_names(JOINTS)
+    assert model.n_regressor == 2 * 10 + 2 * 2 + 8
+    assert history["export_check"][0] < 1e-9
+    run = validation[0]
+    w = trajectory_scheduling(run, names["output_names"], names["input_names"])
+    assert np.all(np.isfinite(model.free_run(run.deviation, run.v, w)))
+    with pytest.raises(ValueError, match="scheduling signals"):
+        model.free_run(run.deviation, run.v)
