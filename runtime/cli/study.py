@@ -303,7 +303,7 @@ def compile_all(models: dict[float, list[Path]], settings: ControllerSettings) -
 
 def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, list[Path]],
               settings: ControllerSettings) -> list[dict[str, Any]]:
-    """The baselines once per case, then both internal-model controllers per case and seed
+    """The baselines once per case, then the internal-model controllers per case and seed
     (bounded by the baselines' divergence limit, measured after the baselines' settling
     window); one row per run."""
     STUDY_JOBS.clear()
