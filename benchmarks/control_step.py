@@ -11,7 +11,11 @@ round and the median round are reported:
   horizon 10, gcc -O1;
 - the guarded step (ARX fallback) as CasADi SX code at the default horizon 5 (gcc -O1);
 - the loop kernel (jointplay.neural.imc_kernel, gcc -O3) at horizon 10 and at the default 5;
-- ``ARX-IMC``: the same law with the linear twin (constant matrices), loop kernel.
+- ``ARX-IMC``: the same law with the linear twin (constant matrices), loop kernel;
+- the network with the scheduling signals (the ideal robot's joint angles as cos and sin, its
+  joint speeds, the drive torques: 8 more regressors), guarded, loop kernel, default horizon;
+- ``LPV-ARX-IMC``: the LPV-ARX model (input gain and offset affine in the scheduling
+  signals), guarded, CasADi SX code (the loop kernel does not run bilinear models).
 
 Times are CPU seconds of this process (``time.process_time``), so other work on a shared
 machine inflates them less than wall time.
@@ -78,6 +82,35 @@ def linear_twin(model: Narx) -> Narx:
                    biases=(np.zeros(model.n_outputs),), linear=None)
 
 
+def with_scheduling(model: Narx, seed: int = 2) -> Narx:
+    """The network with the scheduling signals of joints 2 and 3 as further regressors."""
+    from dataclasses import replace
+
+    from jointplay.neural.scheduling import scheduling_names
+
+    rng = np.random.default_rng(seed)
+    names = scheduling_names([2, 3])
+    ns = len(names)
+    first = np.hstack([model.weights[0], rng.normal(0, 0.3, (model.weights[0].shape[0], ns))])
+    linear = None if model.linear is None else np.hstack(
+        [model.linear, rng.normal(0, 0.1, (model.n_outputs, ns))])
+    return replace(model, weights=(first, *model.weights[1:]), linear=linear,
+                   regressor_mean=np.concatenate([model.regressor_mean, np.zeros(ns)]),
+                   regressor_scale=np.concatenate([model.regressor_scale, np.ones(ns)]),
+                   scheduling=names)
+
+
+def lpv_model(twin: Narx, seed: int = 3) -> Narx:
+    """An LPV-ARX model of the twin's shape: the scheduling signals' offsets and a bilinear
+    input gain."""
+    from dataclasses import replace
+
+    rng = np.random.default_rng(seed)
+    scheduled = with_scheduling(twin, seed)
+    ns, n_u = scheduled.n_scheduling, scheduled.n_input_regressors
+    return replace(scheduled, bilinear=rng.normal(0, 0.05, (twin.n_outputs, ns * n_u)))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", required=True)
@@ -85,15 +118,19 @@ def main() -> None:
                                         "default shape)")
     args = parser.parse_args()
     if args.model:
-        from jointplay.neural.control import load_twin
+        from jointplay.neural.control import load_lpv, load_twin
         from jointplay.neural.narx import load_narx
 
         model = load_narx(args.model)
         twin = load_twin(Path(args.model), model)
+        lpv = load_lpv(Path(args.model))
+        scheduled = model if model.n_scheduling else None
+        model = _unscheduled(model)
     else:
         model = random_model()
         twin = linear_twin(model)
-    pairs = [_call_overhead(), *_variants(model, twin)]
+        lpv = scheduled = None
+    pairs = [_call_overhead(), *_variants(model, twin, scheduled, lpv)]
     rows = _measure(pairs, ROUNDS, CALLS)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -106,6 +143,20 @@ def main() -> None:
     text = _markdown(rows, what)
     atomic_write_text(out / "control_step.md", text)
     print(text)
+
+
+def _unscheduled(model: Narx) -> Narx:
+    """The model without its scheduling regressors (for the variants of the step as it was:
+    the cost does not depend on the weights)."""
+    from dataclasses import replace
+
+    if not model.n_scheduling:
+        return model
+    keep = model.n_regressor - model.n_scheduling
+    return replace(model, weights=(model.weights[0][:, :keep], *model.weights[1:]),
+                   linear=None if model.linear is None else model.linear[:, :keep],
+                   regressor_mean=model.regressor_mean[:keep],
+                   regressor_scale=model.regressor_scale[:keep], scheduling=())
 
 
 ROUNDS = 15  # rounds over all variants, interleaved: a burst of other work on a shared
@@ -123,8 +174,11 @@ def _call_overhead() -> tuple[dict[str, Any], FastFunction]:
              "code": "SX", "sx_operations": 2, "compile_s": 0.0}, trivial)
 
 
-def _variants(model: Any, twin: Any) -> list[tuple[dict[str, Any], FastFunction]]:
+def _variants(model: Any, twin: Any, scheduled: Any = None,
+              lpv: Any = None) -> list[tuple[dict[str, Any], FastFunction]]:
     """Each way of compiling the controller step: its size, gcc time and compiled call."""
+    scheduled = scheduled if scheduled is not None else with_scheduling(model)
+    lpv = lpv if lpv is not None else lpv_model(twin)
     variants = [
         ("before: CasADi SX code, network only", model, None, False,
          ControllerSettings(horizon=10, guard=False, tracked=TRACKED)),
@@ -134,7 +188,11 @@ def _variants(model: Any, twin: Any) -> list[tuple[dict[str, Any], FastFunction]
         ("after: loop kernel, guarded (default)", model, twin, True,
          ControllerSettings(tracked=TRACKED)),
         ("ARX-IMC, loop kernel (default)", twin, None, True, ControllerSettings(
-            tracked=TRACKED))]
+            tracked=TRACKED)),
+        ("network with scheduling signals, loop kernel, guarded (default)", scheduled, twin,
+         True, ControllerSettings(tracked=TRACKED)),
+        ("LPV-ARX-IMC, CasADi SX code, guarded (default)", lpv, twin, False,
+         ControllerSettings(tracked=TRACKED))]
     out = []
     for label, m, fallback, kernel, settings in variants:
         settings = resolve_settings(m, settings)

@@ -43,9 +43,9 @@ def absolute_loss(train: list, part: list, skip: int, names: dict, scale: np.nda
             "input_units": (*names["input_units"], *("N m",) * nj)}
     model = fit_arx(seg, wide, 2, 2, 1e-3)
     ys = [(t.y[skip:], np.hstack([t.v, t.tau_base])[skip:]) for t in part]
-    d, u = windows(ys, WINDOW, model.history)
+    d, u, _ = windows(ys, WINDOW, model.history)
     rs = [(t.r[skip:], np.hstack([t.v, t.tau_base])[skip:]) for t in part]
-    r, _ = windows(rs, WINDOW, model.history)
+    r, _, _ = windows(rs, WINDOW, model.history)
     m = model.history
     hist = [d[:, m - i] for i in range(2)]
     out = []
@@ -79,7 +79,7 @@ def main() -> None:
                       output_increments(names["output_names"]))
     rows = []
     for part in ("validation", "test"):
-        d, u = windows(_segments(split[part], skip), WINDOW, arx.history)
+        d, u, _ = windows(_segments(split[part], skip), WINDOW, arx.history)
         rows.append((part, window_loss(arx, d, u, arx.output_scale),
                      absolute_loss(split["train"], split[part], skip, names, arx.output_scale,
                                    nj),

@@ -24,6 +24,7 @@ from jointplay.neural.control import (
     compare,
     compile_controller,
     horizon_gain,
+    load_lpv,
     load_twin,
     nominal_spectral_radius,
     resolve_settings,
@@ -407,9 +408,10 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     assert trajectories[-1].family == "chirp" and meta["sample_time"] == 1e-3
     assert (out / "arx.json").is_file()
     short = scene.with_run(t_end=0.06)
-    result = compare(short, model, ControllerSettings(horizon=3), arx=load_twin(out, model))
+    result = compare(short, model, ControllerSettings(horizon=3), arx=load_twin(out, model),
+                     lpv=load_lpv(out))
     assert set(result.metrics) == {"open loop", "PD", "computed torque", "ARX-IMC",
-                                   "neural IMC"}
+                                   "LPV-ARX-IMC", "neural IMC"}
     for m in result.metrics.values():
         assert all(np.isfinite(v) for v in m.values())
     assert all(us > 0 for us in result.per_call_us.values())
@@ -428,8 +430,9 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     finally:
         identify_module.train_narx = original
     assert {name: (out / name).read_bytes() for name in before} == before
-    assert sorted(p.name for p in out.iterdir()) == ["arx.json", "datasets.h5", "metrics.json",
-                                                      REJECTED_FILE, "report.md"]
+    assert sorted(p.name for p in out.iterdir()) == ["arx.json", "datasets.h5", "lpv.json",
+                                                      "metrics.json", REJECTED_FILE,
+                                                      "report.md"]
 
 
 def test_training_data_with_nan_is_refused() -> None:

@@ -116,7 +116,7 @@ def test_residual_selection_is_never_worse_than_arx_on_validation() -> None:
     arx = linear_twin(truth)  # a linear model with the same normalisation
     segments = _data(truth, 26)
     chosen, selection = select_residual(truth, arx, segments, window=40)
-    d, u = windows(segments, 40, truth.history)
+    d, u, _ = windows(segments, 40, truth.history)
     assert selection.alpha == 1.0  # the data come from the network: its residual helps
     assert window_loss(chosen, d, u, truth.output_scale) <= selection.arx_loss
     # Data from the linear model: the residual only hurts, and the choice is the ARX itself.
@@ -132,7 +132,7 @@ def test_a_model_worse_than_persistence_is_refused_with_what_to_change() -> None
     segments = _data(truth, 32)
     garbage = replace(truth, increment_scale=truth.increment_scale * 300)
     arx = linear_twin(garbage)
-    d, u = windows(segments, 40, truth.history)
+    d, u, _ = windows(segments, 40, truth.history)
     sel = Selection(1.0, {1.0: window_loss(garbage, d, u, truth.output_scale)},
                     window_loss(arx, d, u, truth.output_scale),
                     window_loss(garbage, d, u, truth.output_scale),
@@ -209,14 +209,35 @@ def test_guard_keeps_a_damaged_model_bounded_and_divergence_is_reported(
     assert unguarded.metrics[NEURAL]["diverged"] == 1.0
 
 
+def with_scheduling(model: Narx, seed: int = 40) -> Narx:
+    """The network with the scheduling signals of joints 2 and 3 as further regressors."""
+    from jointplay.neural.scheduling import scheduling_names
+
+    rng = np.random.default_rng(seed)
+    names = scheduling_names([2, 3])
+    ns = len(names)
+    first = np.hstack([model.weights[0], rng.normal(0, 0.3, (model.weights[0].shape[0], ns))])
+    linear = None if model.linear is None else np.hstack(
+        [model.linear, rng.normal(0, 0.05, (model.n_outputs, ns))])
+    return replace(model, weights=(first, *model.weights[1:]), linear=linear,
+                   regressor_mean=np.concatenate([model.regressor_mean,
+                                                  rng.normal(0, 0.3, ns)]),
+                   regressor_scale=np.concatenate([model.regressor_scale,
+                                                   rng.uniform(0.5, 2.0, ns)]),
+                   scheduling=names)
+
+
 @pytest.mark.parametrize("case", ["network with fallback", "network, guard off",
-                                  "linear model", "network, no fallback"])
+                                  "linear model", "network, no fallback",
+                                  "scheduled network with fallback"])
 def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
     """The compiled loop kernel against the CasADi definition of the step, on random states
     over four decades of scale, with the hold counters set (the guard's branches all run)."""
     model = random_narx(3)
     twin = linear_twin(model)
     main, fallback, settings = {
+        "scheduled network with fallback": (with_scheduling(model), twin, ControllerSettings(
+            horizon=4, tracked=("q2", "q3", "dq2"))),
         "network with fallback": (model, twin, ControllerSettings(
             horizon=4, tracked=("q2", "q3", "dq2"))),
         "network, guard off": (model, None, ControllerSettings(

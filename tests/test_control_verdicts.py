@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from jointplay.neural.comparison import RELEASE_GAP, engagement_end, release_end, settling
-from jointplay.neural.loop import Run
+from jointplay.neural.loop import LoopConditions, Run
 from jointplay.neural.metrics import WORSE_MARGIN, worse_lines, worse_than_baselines
 
 
@@ -91,8 +91,8 @@ def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
         metrics={"open loop": after, "PD": {**after, "rms_acceleration_after": 0.5},
                  "ARX-IMC": {**after, "max_acceleration_after": 1.3}},
         runs={}, settling=Settling(0.144, 0.1, 0.144, 0.03), limit=1.0, noise_tuning=None)
-    job = SimpleNamespace(scene=None, narx=None, arx=None, settings=ControllerSettings(),
-                          model_dir=Path("."))
+    job = SimpleNamespace(scene=None, narx=None, arx=None, lpv=None,
+                          settings=ControllerSettings(), model_dir=Path("."))
     args = SimpleNamespace(ct_omega=15.0, ct_zeta=0.2)
     horizons = []
 
@@ -120,3 +120,22 @@ def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
         metrics={"ARX-IMC": {**after, "rms_acceleration_after": 2.0}}))
     lines = control_cli.retune_lines(args, job, comparison)
     assert "at horizons 10, 20: use PD" in lines[-1]
+
+
+def test_study_sets_the_network_against_both_linear_controllers() -> None:
+    """The study's goal lines: the network's RMS acceleration error after settling over
+    ARX-IMC's (goal 0.75) and over LPV-ARX-IMC's (goal: below 1), median and worst seed."""
+    from jointplay.neural.comparison import LINEAR, LPV, NEURAL
+    from jointplay.neural.study_cases import Case
+    from jointplay.neural.study_report import ratio_goals
+
+    key = "rms_acceleration_after"
+    values = {NEURAL: (1.0, 3.0), LINEAR: (2.0, 4.0), LPV: (2.0, 2.0)}
+    rows = [{"case": "scene", "controller": name, "seed": seed, key: v}
+            for name, vs in values.items() for seed, v in zip((11, 12), vs, strict=True)]
+    lines = ratio_goals(rows, [Case("scene", 30e-6, (), LoopConditions())])
+    assert lines == [
+        "- scene: neural IMC / ARX-IMC RMS |Δa| after settling: median 0.625, worst seed "
+        "0.750 (goal <= 0.75 on the worst seed: met)",
+        "- scene: neural IMC / LPV-ARX-IMC RMS |Δa| after settling: median 1.000, worst seed "
+        "1.500 (goal < 1 on the worst seed: NOT met)"]

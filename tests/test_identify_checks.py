@@ -4,6 +4,7 @@ NaN is repaired, and the repair recorded. Synthetic linear plants (fast, seeded)
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -88,11 +89,11 @@ def test_runaway_free_run_start_is_shrunk_and_recorded() -> None:
 
     config = IdentifyConfig(hidden=(6,), window=20, transient=0.0)
     torch, net, data = _network(config)
-    dvw, uvw = net.windows(data.validation_segments, config.window)
+    dvw, uvw, wvw = net.windows(data.validation_segments, config.window)
 
     def validate() -> float:
         with torch.no_grad():
-            return float(net.sim_loss(dvw, uvw))
+            return float(net.sim_loss(dvw, uvw, wvw))
 
     linear = validate()  # the network starts at the linear fit (residual x 0.01)
     with torch.no_grad():  # a residual that makes the free run explode
@@ -178,6 +179,7 @@ def test_lpv_arx_sees_what_arx_cannot() -> None:
     from jointplay.neural.identify import _segments, fit_arx, output_increments
     from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
     from jointplay.neural.lpv import window_loss as lpv_loss
+    from jointplay.neural.training import model_scheduling
     from jointplay.neural.twin import window_loss, windows
 
     rng = np.random.default_rng(6)
@@ -187,10 +189,94 @@ def test_lpv_arx_sees_what_arx_cannot() -> None:
     arx = fit_arx(_segments(train, 0), names, 2, 2, 1e-3)
     lpv = fit_lpv_arx(scheduled_segments(train, 0, 2), 2, 2,
                       output_increments(names["output_names"]))
-    d, u = windows(_segments(test, 0), 100, arx.history)
+    d, u, _ = windows(_segments(test, 0), 100, arx.history)
     arx_loss = window_loss(arx, d, u, arx.output_scale)
     lpv_test = lpv_loss(lpv, scheduled_segments(test, 0, 2), 100, arx.output_scale)
     # The plant is exactly LPV in the input gain: the scheduled model is near exact in free run,
     # the time-invariant one is not.
     assert lpv_test < 1e-6 * max(arx_loss, 1e-300) or lpv_test < 1e-12
     assert arx_loss > 1e-3
+    # The same model as the controller runs it (one linear layer and a bilinear part, the
+    # scheduling signals computed from the reference and the feedforward) predicts the same.
+    as_narx = lpv.as_narx(names, model_scheduling(names), 1e-3, arx.output_scale, {})
+    d, u, w = windows(_segments(test, 0, names), 100, arx.history)
+    pred = as_narx.free_run(d[0], u[0], w[0])
+    seg = scheduled_segments(test, 0, 2)[0]
+    direct = lpv.free_run(*(a[None, : d.shape[1]] for a in seg))[0]
+    assert np.max(np.abs(pred - direct)) <= 1e-12 * np.max(np.abs(direct))
+    # An ARX model with the scheduling signals as further regressors cannot express a gain
+    # that the configuration multiplies: it stays far from the LPV model.
+    sched_arx = fit_arx(_segments(train, 0, names), names, 2, 2, 1e-3,
+                        scheduling=model_scheduling(names))
+    assert window_loss(sched_arx, d, u, arx.output_scale, w) > 1e3 * lpv_test
+
+
+# ---- data over the operating range ------------------------------------------------------------
+
+def test_training_runs_span_the_clearances_and_payloads_asked_for() -> None:
+    """Training and validation runs cycle through every clearance x payload pair (the test
+    runs stay on the scene's robot), and a model made so is accepted on each of those robots
+    and refused on another."""
+    from dataclasses import replace
+
+    from test_control import random_narx
+
+    from jointplay.common.errors import DescriptionError
+    from jointplay.neural.identify import _context, default_limits, inner_loop_for
+    from jointplay.neural.narx import check_robot
+    from jointplay.neural.trajectories import _plan
+    from jointplay.robot import with_parameters
+    from jointplay.scene.definition import default_scene
+
+    scene = default_scene()
+    config = IdentifyConfig(n_train=4, n_validation=2, n_test=1, duration=0.3,
+                            clearances=(30e-6, 100e-6), payloads=(3.0,))
+    inner = inner_loop_for(scene, (), ())
+    tasks = _plan(scene, config, inner, default_limits(scene))
+    seen = []
+    for task in tasks:
+        robot = task.scene.robot
+        gap = robot.joints[1].bearing_radius - robot.joints[1].journal_radius
+        seen.append((task.split, round(gap * 1e6, 6), robot.payload_mass))
+    assert seen[:4] == [("train", 30.0, 3.0), ("train", 100.0, 3.0)] * 2
+    assert seen[4:6] == [("validation", 30.0, 3.0), ("validation", 100.0, 3.0)]
+    assert seen[6] == ("test", 30.0, 2.0)  # the scene's own robot
+    assert tasks[1].description["robot"] == {"clearance": 100e-6, "payload": 3.0}
+    context = _context(scene, config, inner, default_limits(scene))
+    model = replace(random_narx(1), context=context)
+    dt = scene.run.output_step
+    check_robot(model, scene.robot, dt, "model")  # the scene's robot itself
+    wide = with_parameters(scene.robot, {"joint2.journal_radius": 0.0099,
+                                         "joint3.journal_radius": 0.0099,
+                                         "payload.mass": 3.0})  # 100 µm, 3 kg
+    check_robot(model, wide, dt, "model")
+    other = with_parameters(scene.robot, {"payload.mass": 5.0})
+    with pytest.raises(DescriptionError, match="different parameter values"):
+        check_robot(model, other, dt, "model")
+    with pytest.raises(DescriptionError, match="clearances"):
+        IdentifyConfig(clearances=(-1e-6,))
+
+
+def test_network_trained_with_scheduling_signals_exports_them() -> None:
+    """--scheduling: the network's regressor ends with the scheduling signals, the exported
+    model reproduces torch's predictions (train_narx checks to 1e-9) and its free run takes
+    the signals from the runs' reference and feedforward."""
+    pytest.importorskip("torch")
+    from jointplay.neural.scheduling import scheduling_names, trajectory_scheduling
+    from jointplay.neural.training import train_narx
+
+    rng = np.random.default_rng(8)
+    train = [_scheduled_run(rng, 300) for _ in range(2)]
+    validation = [replace(_scheduled_run(rng, 300), split="validation")]
+    names = _names()
+    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
+                            multi_step_iterations=2, scheduling=True)
+    model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
+    assert model.scheduling == scheduling_names(JOINTS)
+    assert model.n_regressor == 2 * 10 + 2 * 2 + 8
+    assert history["export_check"][0] < 1e-9
+    run = validation[0]
+    w = trajectory_scheduling(run, names["output_names"], names["input_names"])
+    assert np.all(np.isfinite(model.free_run(run.deviation, run.v, w)))
+    with pytest.raises(ValueError, match="scheduling signals"):
+        model.free_run(run.deviation, run.v)

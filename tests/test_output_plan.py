@@ -630,7 +630,7 @@ def test_identify_model_folder_all_or_nothing(tmp_path: Path,
     from jointplay.neural.narx import MODEL_FILE
 
     names = [ident.DATASETS_FILE, ident.METRICS_FILE, ident.REPORT_FILE, ident.ARX_FILE,
-             MODEL_FILE]
+             ident.LPV_FILE, MODEL_FILE]
 
     runs = itertools.count()
 

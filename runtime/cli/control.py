@@ -30,6 +30,7 @@ from jointplay.neural.control import (
     NEURAL,
     Comparison,
     compare,
+    load_lpv,
     load_twin,
     metrics_table,
     test_case_scenes,
@@ -93,6 +94,7 @@ class ControlJob:
     model_dir: Path
     narx: Narx
     arx: Narx
+    lpv: Narx | None  # the LPV-ARX model (model folders written before it: none)
     settings: ControllerSettings
     pd_kp: tuple[float, ...]
     pd_kd: tuple[float, ...]
@@ -111,7 +113,7 @@ def cmd_control(args: argparse.Namespace) -> int:
         print(f"scene {job.scene.name}: reference = ideal-joint robot under the scene's "
               f"torques; plant = compiled clearance model; controller every "
               f"{job.scene.run.output_step:g} s")
-    comparison = compare(job.scene, job.narx, job.settings, arx=job.arx,
+    comparison = compare(job.scene, job.narx, job.settings, arx=job.arx, lpv=job.lpv,
                          transient=args.transient, ct_omega=args.ct_omega,
                          ct_zeta=args.ct_zeta, pd_kp=job.pd_kp, pd_kd=job.pd_kd,
                          quiet=args.quiet, divergence_factor=args.divergence_factor,
@@ -154,6 +156,7 @@ def control_job(args: argparse.Namespace) -> ControlJob:
     narx = load_narx(model_dir)
     check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
     arx = load_twin(model_dir, narx)
+    lpv = load_lpv(model_dir)
     settings = settings_from_args(args, narx)
     nj = len(scene.robot.moving_joints)
     pd_kp = float_list(args.pd_kp, "--pd-kp", nj)
@@ -166,7 +169,7 @@ def control_job(args: argparse.Namespace) -> ControlJob:
 
         check_output_path(args.out, "--out")
     cases = test_case_scenes(model_dir, scene) if args.test_cases else []
-    return ControlJob(scene, model_dir, narx, arx, settings, pd_kp, pd_kd, cases)
+    return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases)
 
 
 def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
@@ -229,7 +232,10 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         f"weight {alpha if alpha is not None else 'not recorded'}"
         + ("; the network's residual weight is 0: the neural IMC's model IS its ARX twin, "
            "its row is the ARX-IMC's with the guard, and the network does no work"
-           if alpha == 0 else ""),
+           if alpha == 0 and not job.narx.n_scheduling else "")
+        + ("; the network's residual weight is 0: the neural IMC's model is the linear ARX "
+           "model with the scheduling signals as further regressors, and the network does "
+           "no work" if alpha == 0 and job.narx.n_scheduling else ""),
         *([comparison.noise_tuning.describe() + "; every controller measured through that "
            "noise (seed 1)"] if comparison.noise_tuning else []),
         "compiled step: " + ", ".join(
@@ -268,7 +274,8 @@ def retune_lines(args: argparse.Namespace, job: ControlJob,
         found = None
         for factor in RETUNE_HORIZONS:
             tuned = replace(settings, horizon=settings.horizon * factor)
-            sub = compare(job.scene, job.narx, tuned, arx=job.arx, controllers=(name,),
+            sub = compare(job.scene, job.narx, tuned, arx=job.arx, lpv=job.lpv,
+                          controllers=(name,),
                           limit=comparison.limit, transient=comparison.settling.time,
                           quiet=True, analyse=False, conditions=sensor_noise(job),
                           ct_omega=args.ct_omega, ct_zeta=args.ct_zeta)

@@ -13,12 +13,15 @@ from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_identify_data_arguments,
     add_iterations_argument,
+    add_operating_range_arguments,
+    add_scheduling_argument,
     check_duration,
     float_list,
     int_list,
     iteration_counts,
     load_control_scene,
     neural_scene_argument,
+    operating_range,
     trajectory_counts,
 )
 from jointplay.common import limits as size_limits
@@ -60,6 +63,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                             "%(default)s; early stopping may end either sooner)")
     p.add_argument("--window", type=int, default=IdentifyConfig.window,
                    help="samples per free-run training window (default %(default)s)")
+    add_scheduling_argument(p)
+    add_operating_range_arguments(p)
     p.add_argument("--no-linear-path", action="store_true",
                    help="no linear direct path beside the hidden layers (the bare network)")
     p.add_argument("--kp", help=f"inner-loop PD stiffness per driven joint, N m/rad (default "
@@ -147,7 +152,8 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         kp=float_list(args.kp, "--kp", n), kd=float_list(args.kd, "--kd", n, positive=False),
         torque_limit=float_list(args.torque_limit, "--torque-limit", n),
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
-        window=args.window, workers=args.workers, linear_path=not args.no_linear_path)
+        window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
+        scheduling=args.scheduling, **operating_range(args))
 
 
 def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:

@@ -106,6 +106,33 @@ def add_identify_data_arguments(parser: argparse.ArgumentParser, *, study: bool 
                             help=study_help if study else own_help)
 
 
+def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--scheduling", action="store_true",
+                        help="the network also sees the scheduling signals: the ideal robot's "
+                             "joint angles (cos, sin) and speeds and the drive torques of the "
+                             "motion (the LPV-ARX baseline always does)")
+
+
+def add_operating_range_arguments(parser: argparse.ArgumentParser, prefix: str = "") -> None:
+    parser.add_argument(f"--{prefix}clearances", dest="span_clearances", metavar="M,M",
+                        help="radial clearances, m, the training and validation runs span "
+                             "(each run on one, cycling with the payloads; e.g. "
+                             "30e-6,100e-6; default: the scene's)")
+    parser.add_argument(f"--{prefix}payloads", dest="span_payloads", metavar="KG,KG",
+                        help="payload masses, kg, the training and validation runs span "
+                             "(e.g. 0,2,3; default: the scene's)")
+
+
+def operating_range(args: argparse.Namespace, prefix: str = "") -> dict[str, Any]:
+    """The clearances and payloads the flags give (each checked, named when refused)."""
+    out: dict[str, tuple[float, ...]] = {}
+    for key, flag, positive in (("clearances", f"--{prefix}clearances", True),
+                                ("payloads", f"--{prefix}payloads", False)):
+        text = getattr(args, f"span_{key}")
+        out[key] = float_list(text, flag, positive=positive) if text else ()
+    return out
+
+
 def add_iterations_argument(parser: argparse.ArgumentParser, flag: str, text: str) -> None:
     parser.add_argument(flag, default=ITERATIONS_DEFAULT, help=text)
 

@@ -19,17 +19,20 @@ from typing import TYPE_CHECKING, Any
 from jointplay.cli.neural_args import (
     add_identify_data_arguments,
     add_iterations_argument,
+    add_operating_range_arguments,
+    add_scheduling_argument,
     add_settings_arguments,
     float_list,
     iteration_counts,
     load_control_scene,
     neural_scene_argument,
+    operating_range,
     settings_from_args,
     trajectory_counts,
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
-from jointplay.neural.control import MODEL_BASED, load_twin
+from jointplay.neural.control import MODEL_BASED, load_lpv, load_twin
 from jointplay.neural.imc import ControllerSettings
 from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
 from jointplay.neural.metrics import WORSE_MARGIN
@@ -81,6 +84,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--workers", type=int, default=min(2, os.cpu_count() or 1),
                    help="processes for the closed-loop runs (default %(default)s)")
     add_identify_data_arguments(p, study=True)
+    add_scheduling_argument(p)
+    add_operating_range_arguments(p, prefix="identify-")
     add_iterations_argument(p, "--identify-iterations",
                             "identify: L-BFGS iterations (default %(default)s)")
     add_settings_arguments(p, ControllerSettings())
@@ -251,7 +256,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     iters = iteration_counts(args.identify_iterations, "--identify-iterations")
     identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
                      "duration": args.duration, "one_step_iterations": iters[0],
-                     "multi_step_iterations": iters[1]}
+                     "multi_step_iterations": iters[1], "scheduling": args.scheduling,
+                     **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal)
     scenes = {c.name: case_scene(scene, c) for c in cases}
     return StudyPlan(scene, out, cases, scenes, nominal, identify_args)
@@ -298,11 +304,14 @@ def compile_all(models: dict[float, list[Path]], settings: ControllerSettings) -
             arx = load_twin(path, narx)
             compile_controller(narx, settings, fallback=arx)
             compile_controller(arx, settings)
+            lpv = load_lpv(path)
+            if lpv is not None:
+                compile_controller(lpv, settings, fallback=arx)
 
 
 def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, list[Path]],
               settings: ControllerSettings) -> list[dict[str, Any]]:
-    """The baselines once per case, then both internal-model controllers per case and seed
+    """The baselines once per case, then the internal-model controllers per case and seed
     (bounded by the baselines' divergence limit, measured after the baselines' settling
     window); one row per run."""
     STUDY_JOBS.clear()

@@ -50,9 +50,9 @@ RELEASE_GAP = 0.01  # s
 # The setpoint filter has let go of the deviation measured at engagement once a^n falls below
 # this (a = 0.9: 44 samples).
 SETPOINT_DECAY = 0.01
-NEURAL, LINEAR = "neural IMC", "ARX-IMC"
-CONTROLLERS = ("open loop", "PD", "computed torque", LINEAR, NEURAL)
-MODEL_BASED = (LINEAR, NEURAL)
+NEURAL, LINEAR, LPV = "neural IMC", "ARX-IMC", "LPV-ARX-IMC"
+CONTROLLERS = ("open loop", "PD", "computed torque", LINEAR, LPV, NEURAL)
+MODEL_BASED = (LINEAR, LPV, NEURAL)
 DIVERGENCE_FACTOR = 2.0  # x the open loop's largest tip error
 
 
@@ -149,6 +149,7 @@ class Comparison:
 
 
 def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx | None = None,
+            lpv: Narx | None = None,
             transient: float | None = None, ct_omega: float = 15.0,
             ct_zeta: float = 0.2, pd_kp: Sequence[float] = (), pd_kd: Sequence[float] = (),
             controllers: Sequence[str] = CONTROLLERS, quiet: bool = True,
@@ -164,7 +165,9 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     first and sets the divergence bound
     (``divergence_factor`` x its largest tip error). ``arx`` is the linear twin: the
     ARX-IMC's model and the neural controller's fallback (without it there is no ARX-IMC and
-    the neural controller falls back to the inner loop alone). ``analyse`` also measures each
+    the neural controller falls back to the inner loop alone). ``lpv``: the LPV-ARX model
+    (the LPV-ARX-IMC's, with the ARX twin as its fallback; without it there is no such row).
+    ``analyse`` also measures each
     compiled step's cost and its linearised loop's spectral radius (nominal, and along the
     run).
     """
@@ -179,11 +182,12 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     reference = reference_outputs(ideal)
     model = load_scene_model(scene)
     nj = len(scene.robot.moving_joints)
-    names = [c for c in controllers if arx is not None or c != LINEAR]
+    names = [c for c in controllers if (arx is not None or c != LINEAR)
+             and (lpv is not None or c != LPV)]
     tuning = None
     if settings.measurement_noise and any(c in MODEL_BASED for c in names):
         settings, tuning = tune_to_noise(narx, arx, settings)
-    ctrls = _compile(names, narx, arx, settings, compiled)
+    ctrls = _compile(names, narx, arx, settings, compiled, lpv)
     if limit is None:
         names = ["open loop", *[c for c in names if c != "open loop"]]
     gains = _Gains(pd_kp, pd_kd, ct_omega, ct_zeta)
@@ -228,12 +232,15 @@ def open_loop_bound(open_loop: Run, reference: np.ndarray, nj: int, factor: floa
 
 
 def _compile(names: Sequence[str], narx: Narx, arx: Narx | None, settings: ControllerSettings,
-             compiled: dict[str, Controller] | None) -> dict[str, Controller]:
+             compiled: dict[str, Controller] | None,
+             lpv: Narx | None = None) -> dict[str, Controller]:
     """The internal-model controllers ``names`` asks for; those in ``compiled`` are reused."""
     ctrls: dict[str, Controller] = dict(compiled or {})
     for name in names:
         if name == NEURAL and name not in ctrls:
             ctrls[name] = compile_controller(narx, settings, fallback=arx)
+        elif name == LPV and name not in ctrls and lpv is not None:
+            ctrls[name] = compile_controller(lpv, settings, fallback=arx)
         elif name == LINEAR and name not in ctrls and arx is not None:
             ctrls[name] = compile_controller(arx, settings)
     return ctrls
@@ -330,8 +337,9 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
     if counts.get("episodes", 0):
         warn = True
         # A controller without a fallback (ARX-IMC) hands over to the inner loop alone.
-        what, where = (("the network was", f"{counts['on_fallback_model']} samples on the ARX "
-                        "fallback, ") if name == NEURAL else (f"its model ({name}) was", ""))
+        what, where = ((f"its model ({'the network' if name == NEURAL else 'LPV-ARX'}) was",
+                        f"{counts['on_fallback_model']} samples on the ARX fallback, ")
+                       if name in (NEURAL, LPV) else (f"its model ({name}) was", ""))
         parts.append(f"bounded over the {duration:g} s run only with the guard: {what} "
                      f"distrusted {counts['episodes']} time(s) ({where}"
                      f"{counts['inner_loop_only']} samples with the inner loop alone)")
@@ -451,7 +459,7 @@ def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any],
     write_hdf5_in_memory(path, build)
 
 
-__all__ = ["CONTROLLERS", "DEFAULT_TRANSIENT", "DIVERGENCE_FACTOR", "LINEAR", "MARGINAL",
+__all__ = ["CONTROLLERS", "DEFAULT_TRANSIENT", "DIVERGENCE_FACTOR", "LINEAR", "LPV", "MARGINAL",
            "MODEL_BASED", "NEURAL", "RELEASE_GAP", "SETPOINT_DECAY", "Comparison", "Settling",
            "compare", "engagement_end", "open_loop_bound", "release_end", "settling",
            "stability_radii",

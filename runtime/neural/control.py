@@ -6,6 +6,8 @@ Controllers, each against the ideal-joint robot's motion under the scene's torqu
 - PD: the inner loop alone;
 - computed torque with the ideal-joint model;
 - ARX-IMC: the internal-model law with the linear ARX twin inside;
+- LPV-ARX-IMC: the same law with the LPV-ARX model inside (its input gain and offset affine
+  in the scheduling signals, jointplay.neural.lpv), guarded, the ARX twin as its fallback;
 - neural IMC: the same law with the NARX network inside, guarded (see jointplay.neural.imc), the ARX
   twin as its fallback.
 
@@ -67,7 +69,7 @@ from jointplay.neural.metrics import (
     run_metrics,
     tip_errors,
 )
-from jointplay.neural.narx import ARX_FILE, Narx, load_narx
+from jointplay.neural.narx import ARX_FILE, LPV_FILE, Narx, load_narx
 
 EXIT_DIVERGED = 3
 
@@ -110,6 +112,14 @@ def test_case_scenes(model_dir: Path, scene: Any) -> list[tuple[str, Any]]:
     return out
 
 
+def load_lpv(model_dir: Path) -> Narx | None:
+    """The LPV-ARX model of a model folder (lpv.json), or None for folders written before
+    identify made it."""
+    if not (model_dir / LPV_FILE).is_file():
+        return None
+    return load_narx(model_dir, filename=LPV_FILE)
+
+
 def load_twin(model_dir: Path, narx: Narx) -> Narx:
     """The ARX twin of a model folder: arx.json, or (folders written before it existed) a
     least-squares fit on the stored training runs, as identify makes it."""
@@ -146,7 +156,7 @@ __all__ = ["CONTROLLERS", "DEFAULT_TRANSIENT", "DIVERGENCE_FACTOR", "FLAGS", "GU
            "ControllerSettings", "Law", "LoopConditions", "Run", "build_step", "compare",
            "compile_controller", "computed_torque_law",
            "default_tracked", "dense_acceleration_error", "generate_c", "horizon_gain",
-           "imc_law", "load_twin", "local_spectral_radii", "metrics_table",
+           "imc_law", "load_lpv", "load_twin", "local_spectral_radii", "metrics_table",
            "nominal_spectral_radius", "pd_law", "per_call_us", "resolve_settings",
            "run_loop", "run_metrics", "stability_radii",
            "test_case_scenes", "tip_errors", "verdict", "write_runs"]

@@ -26,15 +26,20 @@ def evaluate(models: dict[str, Narx | None], trajectories: Sequence[Trajectory],
         preds_one, preds_free, truth = [], [], []
         for tr in trajectories:
             d, u = tr.deviation[skip:], tr.v[skip:]
+            w = None
+            if model is not None and model.n_scheduling:
+                from jointplay.neural.scheduling import trajectory_scheduling
+
+                w = trajectory_scheduling(tr, model.output_names, model.input_names)[skip:]
             truth.append(d[history + 1:])
             if model is None:
                 preds_one.append(d[history: -1])
                 preds_free.append(np.repeat(d[history: history + 1], d.shape[0] - history - 1,
                                             axis=0))
             else:
-                preds_one.append(model.one_step(d, u))
+                preds_one.append(model.one_step(d, u, w))
                 with np.errstate(all="ignore"):
-                    preds_free.append(model.free_run(d, u))
+                    preds_free.append(model.free_run(d, u, w))
         y = np.vstack(truth)
         one, free = np.vstack(preds_one), np.vstack(preds_free)
         free = np.where(np.isfinite(free), free, np.sign(np.nan_to_num(free)) * 1e300)
@@ -122,6 +127,13 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
             f"{res['one_step_nrmse_persistence']:.4g}.",
             "",
         ]
+        dropped = res.get("scheduling_dropped")
+        if dropped:
+            lines += [
+                "With the scheduling signals, no blend beat the ARX twin without them on "
+                f"validation (free-run loss {dropped['best_blend_loss']:.4g} against "
+                f"{dropped['twin_loss']:.4g}): the saved model is the ARX twin, and the "
+                "network does no work.", ""]
         if not res["usable"]:
             lines += ["**REJECTED**: " + "; ".join(res["problems"]) + ".", ""]
     lines += _baseline_lines(metrics)

@@ -37,6 +37,7 @@ import json
 import shutil
 import tempfile
 import time
+from collections.abc import Sequence
 from dataclasses import asdict, replace
 from pathlib import Path
 from typing import Any
@@ -72,13 +73,21 @@ from jointplay.neural.inner_loop import (
 )
 from jointplay.neural.narx import (
     ARX_FILE,
+    LPV_FILE,
     MODEL_FILE,
     REJECTED_FILE,
     Narx,
     robot_identity,
     save_narx,
 )
-from jointplay.neural.training import _regress, _segments, fit_arx, train_narx
+from jointplay.neural.training import (
+    Segment,
+    _regress,
+    _segments,
+    fit_arx,
+    model_scheduling,
+    train_narx,
+)
 from jointplay.neural.trajectories import (
     SPLITS,
     TEST_FAMILIES,
@@ -146,7 +155,7 @@ def _move_in(stage: Path, out: Path, rejected: bool) -> None:
     for name in (MODEL_FILE, REJECTED_FILE):  # a model only once every file is in
         (out / name).unlink(missing_ok=True)
     replace_together((stage / name, out / name)
-                     for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, ARX_FILE,
+                     for name in (DATASETS_FILE, METRICS_FILE, REPORT_FILE, ARX_FILE, LPV_FILE,
                                   REJECTED_FILE if rejected else MODEL_FILE))
 
 
@@ -164,6 +173,8 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     split = {s: [t for t in trajectories if t.split == s] for s in SPLITS}
     skip = max(0, round(config.transient / dt))
     # What the model has seen: the controller's guard keeps the internal model inside it.
+    # (The range covers the scheduling signals too, at the regressor's end: a model without
+    # them uses the range's first entries.)
     context["training_range"] = _training_range(split["train"], skip, config, names)
     warnings = data_warnings(split["train"], split["validation"], skip, config, names, dt)
     trained, history = train_narx(split["train"], split["validation"], config, names, dt,
@@ -172,14 +183,34 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     arx = fit_arx(_segments(split["train"], skip), names, config.output_lags,
                   config.input_lags, dt)
     arx = replace(arx, context={**context, "model": "linear ARX twin (least squares)"})
-    seg_val = _segments(split["validation"], skip)
-    model, selection = select_residual(trained, arx, seg_val, config.window)
-    verdict = judge(model, arx, selection, seg_val, config.window)
-    baselines = linear_baselines(model, arx, split, skip, config, inner)
+    # The residual is weighed against the linear model on the network's own regressor (with
+    # the scheduling signals where the network has them): ARX + alpha (network - ARX).
+    start = arx if not config.scheduling else replace(
+        fit_arx(_segments(split["train"], skip, names), names, config.output_lags,
+                config.input_lags, dt, scheduling=model_scheduling(names)),
+        context={**context, "model": "ARX with the scheduling signals (least squares)"})
+    seg_val = _segments(split["validation"], skip, names)
+    model, selection = select_residual(trained, start, seg_val, config.window)
+    dropped = None
+    if config.scheduling:
+        # The ARX twin (no scheduling signals) is a candidate too: where it is better on
+        # validation than every blend, the scheduling signals did not help, and it is saved.
+        from jointplay.neural.twin import window_loss, windows
+
+        d, u, w = windows(seg_val, config.window, arx.history)
+        twin_loss = window_loss(arx, d, u, model.output_scale, w)
+        if twin_loss < selection.losses[selection.alpha]:
+            dropped = {"twin_loss": twin_loss,
+                       "best_blend_loss": selection.losses[selection.alpha]}
+            model = replace(arx, context=trained.context)
+            selection = replace(selection, alpha=0.0)
+    verdict = judge(model, start, selection, seg_val, config.window)
+    baselines, lpv = linear_baselines(model, arx, split, skip, config, inner, names, context)
     metrics: dict[str, Any] = {
         **_errors(model, arx, split, skip),
         "free_run_loss": baselines,
-        "residual": describe(selection, verdict),
+        "residual": {**describe(selection, verdict),
+                     **({"scheduling_dropped": dropped} if dropped else {})},
         "outputs": list(names["output_names"]),
         "training_history": history,
         "seconds": {"simulate": t1 - t0, "train": t2 - t1},
@@ -188,6 +219,7 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
         "warnings": warnings,
     }
     _write_results(out, scene, config, model, arx, metrics, selection, verdict)
+    save_narx(lpv, out, LPV_FILE)
     return metrics
 
 
@@ -200,8 +232,7 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
 MIN_INPUT_SHARE = 0.02
 
 
-def input_share(train: list[tuple[np.ndarray, np.ndarray]],
-                validation: list[tuple[np.ndarray, np.ndarray]], config: IdentifyConfig,
+def input_share(train: Sequence[Segment], validation: Sequence[Segment], config: IdentifyConfig,
                 names: dict[str, Any]) -> np.ndarray:
     """Per output: the share of an output-only least-squares model's one-step residual on the
     validation runs that adding the input lags removes (0 or below: the input explains
@@ -251,28 +282,30 @@ def data_warnings(train: list[Trajectory], validation: list[Trajectory], skip: i
 
 
 def linear_baselines(model: Narx, arx: Narx, split: dict[str, list[Trajectory]], skip: int,
-                     config: IdentifyConfig, inner: InnerLoop) -> dict[str, Any]:
+                     config: IdentifyConfig, inner: InnerLoop, names: dict[str, Any],
+                     context: dict[str, Any]) -> tuple[dict[str, Any], Narx]:
     """Free-run window losses (the selection's loss) of the saved model, its ARX twin and the
     LPV-ARX baseline on the validation and test runs: "better than linear" means better than
-    the better of the two linear models."""
+    the better of the two linear models. Also the LPV-ARX model, as the controller runs it."""
     from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
-    from jointplay.neural.lpv import window_loss as lpv_loss
     from jointplay.neural.twin import window_loss, windows
 
     nj = len(inner.joints)
-    lpv = fit_lpv_arx(scheduled_segments(split["train"], skip, nj), config.output_lags,
-                      config.input_lags, model.increment)
+    fitted = fit_lpv_arx(scheduled_segments(split["train"], skip, nj), config.output_lags,
+                         config.input_lags, model.increment)
+    lpv = fitted.as_narx(names, model_scheduling(names), model.sample_time, arx.output_scale,
+                         {**context, "model": "LPV-ARX (input gain and offset affine in the "
+                                              "scheduling signals; least squares)"})
     out: dict[str, Any] = {"window": config.window,
                            "scheduling": "cos, sin of the ideal joint angles, ideal joint "
                                          "speeds, drive torques of the motion"}
     for part in ("validation", "test"):
-        segs = _segments(split[part], skip)
-        d, u = windows(segs, config.window, model.history)
-        out[part] = {"model": window_loss(model, d, u, model.output_scale),
-                     "arx": window_loss(arx, d, u, model.output_scale),
-                     "lpv_arx": lpv_loss(lpv, scheduled_segments(split[part], skip, nj),
-                                         config.window, model.output_scale)}
-    return out
+        segs = _segments(split[part], skip, names)
+        d, u, w = windows(segs, config.window, model.history)
+        out[part] = {"model": window_loss(model, d, u, model.output_scale, w),
+                     "arx": window_loss(arx, d, u, model.output_scale, w),
+                     "lpv_arx": window_loss(lpv, d, u, model.output_scale, w)}
+    return out, lpv
 
 
 def _signal_names(joints: tuple[int, ...]) -> dict[str, Any]:
@@ -287,8 +320,18 @@ def _context(scene: Any, config: IdentifyConfig, inner: InnerLoop,
     """Where the model came from: robot, scene, plant, training settings, versions."""
     from importlib.metadata import version
 
+    from jointplay.neural.trajectories import robot_variants
+
+    robot: dict[str, Any] = robot_identity(scene.robot)
+    if config.clearances or config.payloads:
+        # The robots the runs span: a controller may use the model on any of them.
+        robot["operating_range"] = {
+            "clearances": list(config.clearances), "payloads": list(config.payloads),
+            "robot_hashes": sorted({robot["robot_hash"], *(
+                robot_identity(s.robot)["robot_hash"]
+                for _, s in robot_variants(scene, config))})}
     return {
-        "robot": robot_identity(scene.robot),
+        "robot": robot,
         "scene": {"name": scene.name, "source": scene.source or "(built-in)",
                   "torques": dict(scene.torque_text),
                   "scene_hash": hashlib.sha256(scene.text.encode()).hexdigest()},
@@ -321,7 +364,7 @@ def _store_datasets(out: Path, trajectories: list[Trajectory], names: dict[str, 
 
 def _training_range(train: list[Trajectory], skip: int, config: IdentifyConfig,
                     names: dict[str, Any]) -> dict[str, Any]:
-    x_train, _ = _regress(_segments(train, skip), config.output_lags, config.input_lags,
+    x_train, _ = _regress(_segments(train, skip, names), config.output_lags, config.input_lags,
                           np.asarray(output_increments(names["output_names"]), dtype=float))
     return {"regressor_min": x_train.min(0).tolist(), "regressor_max": x_train.max(0).tolist()}
 

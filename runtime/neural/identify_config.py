@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from jointplay.common.errors import DescriptionError
@@ -28,6 +29,15 @@ class IdentifyConfig:
     input_fraction: float = 0.03  # peak of the added-torque excitation, x the limit
     transient: float = 0.05  # s at the start of each trajectory left out (journals settling)
     linear_path: bool = True  # a linear direct path beside the hidden layers
+    # The network also sees the scheduling signals (jointplay.neural.scheduling): the ideal
+    # robot's configuration and speed and the drive torque of the motion.
+    scheduling: bool = False
+    # The operating range the training and validation runs span: each run is simulated on
+    # the robot with one of these radial clearances (m, every clearance joint) and payload
+    # masses (kg), cycling through every pair; empty: the scene's own. The test runs stay on
+    # the scene's robot.
+    clearances: tuple[float, ...] = ()
+    payloads: tuple[float, ...] = ()
     one_step_iterations: int = 60
     multi_step_iterations: int = 30
     window: int = 200  # samples per free-run training window
@@ -40,6 +50,12 @@ class IdentifyConfig:
                 or not 0 <= self.seed <= MAX_SEED:
             raise DescriptionError("seed", f"must be a whole number from 0 to {MAX_SEED} "
                                    f"(2**32 - 1), got {self.seed!r}")
+        for name, values in (("clearances", self.clearances), ("payloads", self.payloads)):
+            if not all(isinstance(v, (int, float)) and math.isfinite(v) and v >= 0
+                       and (v > 0 or name == "payloads") for v in values):
+                kind = "positive" if name == "clearances" else "non-negative"
+                raise DescriptionError(name, f"must be {kind} finite numbers, got "
+                                       f"{list(values)}")
 
 
 

@@ -190,7 +190,10 @@ def compile_controller(model: Narx, settings: ControllerSettings, fallback: Narx
     settings = resolve_settings(model, settings)
     # The loop kernel implements the first-order mismatch filter; the pairwise filter of
     # declared noise (mismatch_filter.py) runs as CasADi's code.
-    if kernel and settings.iterations == 1 and not pair_gains(model, settings):
+    # The kernel runs networks and ARX models (with their scheduling signals); a model with
+    # a bilinear part (LPV-ARX) runs as CasADi's code.
+    plain = all(mdl is None or mdl.bilinear is None for mdl in (model, fallback))
+    if kernel and plain and settings.iterations == 1 and not pair_gains(model, settings):
         from jointplay.neural.imc_kernel import kernel_library_source
 
         fn, layout = build_step(model, settings, fallback)
@@ -229,8 +232,31 @@ def _loop_functions(ctrl: Controller) -> tuple[ca.Function, ca.Function]:
     fn = ctrl.function
     ny = ctrl.model.n_outputs
     x = ca.MX.sym("x", ctrl.n_state)
-    nxt = fn(x[:ny], ca.DM.zeros(ny), ca.DM.zeros(ctrl.model.n_inputs), x)[1]
+    r, tau_ff = nominal_reference(ctrl.model)
+    nxt = fn(x[:ny] + r, r, tau_ff, x)[1]
     return ca.Function("loop", [x], [nxt]), ca.Function("loop_jac", [x], [ca.jacobian(nxt, x)])
+
+
+def nominal_reference(model: Narx) -> tuple[np.ndarray, np.ndarray]:
+    """(reference outputs, feedforward) at which a model's scheduling signals take their
+    training means (the angle from its mean cosine and sine): the operating point of the
+    nominal linearisation. Zeros for a model without scheduling signals (it does not see
+    them)."""
+    r, tau_ff = np.zeros(model.n_outputs), np.zeros(model.n_inputs)
+    ns = model.n_scheduling
+    if not ns:
+        return r, tau_ff
+    mean = dict(zip(model.scheduling, model.regressor_mean[model.n_regressor - ns:],
+                    strict=True))
+    for name, value in mean.items():
+        if name.startswith("cos(q"):
+            out = name[4: -len("_ref)")]
+            r[model.output_index(out)] = math.atan2(mean[f"sin({out}_ref)"], value)
+        elif name.endswith("_ref") and not name.startswith(("cos(", "sin(")):
+            r[model.output_index(name[: -len("_ref")])] = value
+        elif name.startswith("tau"):
+            tau_ff[model.input_names.index(f"v{name[3: -len('_ff')]}")] = value
+    return r, tau_ff
 
 
 def _radius(jac: np.ndarray, ctrl: Controller) -> float:

@@ -47,7 +47,8 @@ def _branch(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
     lo, hi = training_box(model, s.trust_range)
     out = [_array(f"{prefix}LO", lo), _array(f"{prefix}HI", hi)]
     lines = [f"static int {prefix}branch(const double* hist, const double* upast, "
-             "const double* vp, const double* ef, const double* target, double* step) {",
+             "const double* vp, const double* w, const double* ef, const double* target, "
+             "double* step) {",
              f"  double n0[{ny}], res[{nt}];",
              "  int i, j, k, ok = 1;"]
     if is_linear(model):
@@ -113,7 +114,12 @@ def _network_increment(prefix: str, model: Narx, s: ControllerSettings, rows: li
 def _rollout_lines(prefix: str, model: Narx, d: int, nt: int) -> list[str]:
     """The network run ``d`` samples ahead with v held, carrying d y / d v forward."""
     ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
-    nphi = model.n_regressor
+    nphi, ns = model.n_regressor, model.n_scheduling
+    o_w = na * ny + nb * nu
+    # The scheduling signals are held over the horizon: in the regressor, with no tangent.
+    held = [f"  for (i = 0; i < {ns}; ++i) phi[{o_w} + i] = w[i];",
+            f"  for (k = 0; k < {nu}; ++k) for (i = 0; i < {ns}; ++i) "
+            f"dphi[k * {nphi} + {o_w} + i] = 0;"] if ns else ["  (void) w;"]
     return [
         f"  double phi[{nphi}], dphi[{nu * nphi}], ys[{na * ny}], dys[{nu * na * ny}];",
         f"  double yn[{ny}], dyn[{nu * ny}], us[{nb * nu}], dus[{nu * nb * nu}];",
@@ -124,6 +130,7 @@ def _rollout_lines(prefix: str, model: Narx, d: int, nt: int) -> list[str]:
         f"  for (i = {nu}; i < {nb * nu}; ++i) us[i] = upast[i - {nu}];",
         f"  for (i = 0; i < {nu * nb * nu}; ++i) dus[i] = 0;",
         f"  for (k = 0; k < {nu}; ++k) dus[k * {nb * nu} + k] = 1;",
+        *held,
         f"  for (int t = 0; t < {d}; ++t) {{",
         f"    for (i = 0; i < {na * ny}; ++i) phi[i] = ys[i];",
         f"    for (i = 0; i < {nb * nu}; ++i) phi[{na * ny} + i] = us[i];",
@@ -200,6 +207,10 @@ def _trust_lines(prefix: str, model: Narx, s: ControllerSettings, rows: list[int
     for row, scale in zip(rows, scales, strict=True):
         lines.append(f"  ok &= ({_c(s.trust_mismatch)} - fabs(ef[{row}] * "
                      f"{_c(1.0 / scale)}) >= 0);")
+    if model.n_scheduling:
+        o_w = na * ny + nb * nu
+        lines.append(f"  for (i = 0; i < {model.n_scheduling}; ++i) ok &= "
+                     f"(w[i] - {prefix}LO[{o_w} + i] >= 0) & ({prefix}HI[{o_w} + i] - w[i] >= 0);")
     lines.append(f"  for (i = 0; i < {nu}; ++i) ok &= (fabs(step[i]) < 1e300);")
     return lines
 
@@ -210,6 +221,8 @@ def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | No
     s = settings
     if s.iterations != 1:
         raise ValueError("the loop kernel implements one Gauss-Newton iteration")
+    if any(m is not None and m.bilinear is not None for m in (model, fallback)):
+        raise ValueError("the loop kernel runs networks and ARX models, not bilinear ones")
     if pair_gains(model, s):
         raise ValueError("the loop kernel implements the first-order mismatch filter only")
     if fallback is not None and not s.guard:
@@ -231,9 +244,25 @@ def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | No
         f"  inner[{i}] = -KP[{i}] * dev[{q}] - KD[{i}] * dev[{dq}];"
         for i, (q, dq) in enumerate(zip(q_idx, dq_idx, strict=True))) if q_idx else \
         f"  for (i = 0; i < {nu}; ++i) inner[i] = 0;"
-    body = (_kernel_head(name, x, s) + inner + "\n" + _kernel_limits(x, s)
-            + _kernel_predictions(x) + _kernel_next_state(x, s))
+    body = (_kernel_head(name, x, s, _scheduling_lines(model, fallback)) + inner + "\n"
+            + _kernel_limits(x, s) + _kernel_predictions(x) + _kernel_next_state(x, s))
     return "".join(parts) + body
+
+
+def _scheduling_lines(model: Narx, fallback: Narx | None) -> str:
+    """C filling ``w`` with the scheduling signals from the reference ``r`` and the
+    feedforward ``ff`` (jointplay.neural.scheduling; the models share one list or take
+    none)."""
+    from jointplay.neural.scheduling import _source
+
+    names = max((m.scheduling for m in (model, fallback) if m is not None), key=len)
+    lines = []
+    for i, name in enumerate(names):
+        kind, j = _source(name, model.output_names, model.input_names)
+        value = {"cos": f"cos(r[{j}])", "sin": f"sin(r[{j}])", "r": f"r[{j}]",
+                 "tau": f"ff[{j}]"}[kind]
+        lines.append(f"  w[{i}] = {value};")
+    return "\n".join(lines) + "\n"
 
 
 @dataclass(frozen=True)
@@ -248,6 +277,8 @@ class _Shape:
     naf: int  # the fallback's output lags, 0 without one
     nbf: int  # the fallback's input lags, 1 without one
     n_phi_max: int
+    ns: int  # scheduling signals of the network (0: none)
+    nsf: int  # of the fallback
     fb: bool  # with a fallback
     o_histf: int
     o_up: int
@@ -267,10 +298,11 @@ class _Shape:
         o_yd = o_eff + (ny if fallback is not None else 0)
         return cls(ny, nu, na, nb, naf, fallback.input_lags if fallback is not None else 1,
                    max(model.n_regressor, fallback.n_regressor if fallback is not None else 0),
+                   model.n_scheduling, fallback.n_scheduling if fallback is not None else 0,
                    fallback is not None, o_histf, o_up, o_ef, o_eff, o_yd, o_yd + ny)
 
 
-def _kernel_head(name: str, x: _Shape, s: ControllerSettings) -> str:
+def _kernel_head(name: str, x: _Shape, s: ControllerSettings, scheduling: str) -> str:
     """The kernel's declarations, the mismatch filters, the target and both branches."""
     ny, nu, fb = x.ny, x.nu, x.fb
     a_d = s.setpoint_filter ** s.horizon
@@ -281,21 +313,22 @@ static int {name}_kernel(const double** arg, double** res) {{
   double *tau = res[0], *xn = res[1], *vout = res[2], *ypred = res[3], *flags = res[4];
   double dev[{ny}], ef[{ny}], eff[{ny}], target[{ny}], dvm[{nu}], dvf[{nu}], step[{nu}];
   double vtry[{nu}], vtr[{nu}], vnew[{nu}], inner[{nu}], phi[{x.n_phi_max}];
-  double yn[{ny}], yfn[{ny}];
+  double yn[{ny}], yfn[{ny}], w[{max(x.ns, x.nsf, 1)}];
   const double *hist = x + 0, *histf = x + {x.o_histf}, *upast = x + {x.o_up};
   const double *vp = upast;
   double hold = x[{x.o_hold}], episodes = x[{x.o_hold + 1}];
   int i, okm, okf = 0, use_main, use_back, at_bound = 0, at_limit = 0;
-  for (i = 0; i < {ny}; ++i) {{
+  w[0] = 0;
+{scheduling}  for (i = 0; i < {ny}; ++i) {{
     dev[i] = y[i] - r[i];
     ef[i] = {_c(b)} * x[{x.o_ef} + i] + {_c(1 - b)} * (dev[i] - hist[i]);
     {f"eff[i] = {_c(b)} * x[{x.o_eff} + i] + {_c(1 - b)} * (dev[i] - histf[i]);" if fb else
      "eff[i] = 0;"}
     target[i] = {_c(a_d)} * x[{x.o_yd} + i];
   }}
-  okm = m_branch(hist, upast, vp, ef, target, dvm);
+  okm = m_branch(hist, upast, vp, w, ef, target, dvm);
   use_main = okm && hold <= 0;
-  {"if (!use_main) okf = f_branch(histf, upast, vp, eff, target, dvf);" if fb else ""}
+  {"if (!use_main) okf = f_branch(histf, upast, vp, w, eff, target, dvf);" if fb else ""}
   use_back = !use_main && okf;
 """
 
@@ -322,10 +355,12 @@ def _kernel_predictions(x: _Shape) -> str:
     return f"""  for (i = 0; i < {na * ny}; ++i) phi[i] = hist[i];
   for (i = 0; i < {nu}; ++i) phi[{na * ny} + i] = vnew[i];
   for (i = 0; i < {(nb - 1) * nu}; ++i) phi[{na * ny + nu} + i] = upast[i];
+  for (i = 0; i < {x.ns}; ++i) phi[{na * ny + nb * nu} + i] = w[i];
   m_eval(phi, 0, yn, 0, 0);
   {f'''for (i = 0; i < {naf * ny}; ++i) phi[i] = histf[i];
   for (i = 0; i < {nu}; ++i) phi[{naf * ny} + i] = vnew[i];
   for (i = 0; i < {(nbf - 1) * nu}; ++i) phi[{naf * ny + nu} + i] = upast[i];
+  for (i = 0; i < {x.nsf}; ++i) phi[{naf * ny + nbf * nu} + i] = w[i];
   f_eval(phi, 0, yfn, 0, 0);''' if x.fb else ""}
 """
 

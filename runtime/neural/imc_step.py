@@ -22,6 +22,7 @@ from jointplay.neural.internal_model import (
 )
 from jointplay.neural.mismatch_filter import pair_gains
 from jointplay.neural.narx import Narx
+from jointplay.neural.scheduling import scheduling_values
 
 STEP_NAME = "imc_step"
 # What the flags output reports, one entry per sample (1.0 when it happened).
@@ -41,7 +42,8 @@ class _Branch:
 
 
 def _branch(model: Narx, s: ControllerSettings, hist: Any, upast: Any, v_prev: Any,
-            e_f_prev: Any, dev: Any, target: Any, cm: np.ndarray, sym: Any) -> _Branch:
+            e_f_prev: Any, dev: Any, target: Any, cm: np.ndarray, sym: Any,
+            w: Any = None) -> _Branch:
     ny, nu, na, d = model.n_outputs, model.n_inputs, model.output_lags, s.horizon
     e = dev - hist[:ny]
     e_f = s.mismatch_filter * e_f_prev + (1 - s.mismatch_filter) * e
@@ -72,12 +74,15 @@ def _branch(model: Narx, s: ControllerSettings, hist: Any, upast: Any, v_prev: A
         hs = sym.sym("h", na * ny)
         us = sym.sym("u", upast.numel())
         vp = sym.sym("vp", nu)
-        y_end = _rollout(model, hs, us, vp + dv, d)
-        linear = ca.Function("linearised", [hs, us, vp, dv], [y_end, ca.jacobian(y_end, dv)])
+        ws = sym.sym("w", model.n_scheduling)
+        y_end = _rollout(model, hs, us, vp + dv, d, ws)
+        linear = ca.Function("linearised", [hs, us, vp, ws, dv],
+                             [y_end, ca.jacobian(y_end, dv)])
         step = sym.zeros(nu, 1)
         n0 = None
+        w_now = w if model.n_scheduling else sym.zeros(0, 1)
         for _ in range(s.iterations):
-            n_val, jac = linear(hist, upast, v_prev, step)
+            n_val, jac = linear(hist, upast, v_prev, w_now, step)
             n0 = n_val if n0 is None else n0
             cj = ca.mtimes(cmd, jac)
             residual = ca.mtimes(cmd, target - e_f - n_val)
@@ -85,7 +90,8 @@ def _branch(model: Narx, s: ControllerSettings, hist: Any, upast: Any, v_prev: A
             step = step + ca.solve(ca.mtimes(cj.T, cj) + lam, rhs)
     if s.guard:
         lo, hi = training_box(model, s.trust_range)
-        phi = ca.vertcat(hist, v_prev, upast[: (model.input_lags - 1) * nu])
+        phi = ca.vertcat(hist, v_prev, upast[: (model.input_lags - 1) * nu],
+                         *([w] if model.n_scheduling else []))
         checks = [phi - ca.DM(lo), ca.DM(hi) - phi,  # >= 0 inside the box
                   n0 - ca.DM(lo[:ny]), ca.DM(hi[:ny]) - n0,
                   s.trust_mismatch - ca.fabs(ca.mtimes(cmd, e_f))]
@@ -99,7 +105,8 @@ def _branch(model: Narx, s: ControllerSettings, hist: Any, upast: Any, v_prev: A
 
     def predict(v_new: Any) -> Any:
         return net(ca.vertcat(*[hist[i * ny:(i + 1) * ny] for i in range(na)], v_new,
-                              *[upast[i * nu:(i + 1) * nu] for i in range(nb - 1)]))
+                              *[upast[i * nu:(i + 1) * nu] for i in range(nb - 1)],
+                              *([w] if model.n_scheduling else [])))
     return _Branch(step, ok, e_f, None, predict)
 
 
@@ -127,11 +134,18 @@ def build_step(model: Narx, settings: ControllerSettings, fallback: Narx | None 
     dev = y - r
     target = (s.setpoint_filter ** d) * x.y_d
     cm = _tracking_matrix(m, s)
-    main = _branch(m, s, x.hist, x.upast, v_prev, x.e_f, dev, target, cm, sym)
+    # The scheduling signals from the reference and the feedforward at this sample
+    # (jointplay.neural.scheduling), for the models that take them.
+    w = None
+    for candidate in (m, fallback):
+        if candidate is not None and candidate.n_scheduling:
+            w = scheduling_values(candidate.scheduling, m.output_names, m.input_names, r, tau_ff)
+    main = _branch(m, s, x.hist, x.upast, v_prev, x.e_f, dev, target, cm, sym, w)
     use_main = ca.logic_and(main.ok, x.hold <= 0)
     back = None
     if fallback is not None:
-        back = _branch(fallback, s, x.hist_f, x.upast, v_prev, x.e_f_f, dev, target, cm, sym)
+        back = _branch(fallback, s, x.hist_f, x.upast, v_prev, x.e_f_f, dev, target, cm, sym,
+                       w)
         use_back = ca.logic_and(ca.logic_not(use_main), back.ok)
         step = ca.if_else(use_main, main.dv, ca.if_else(use_back, back.dv, -v_prev))
     else:

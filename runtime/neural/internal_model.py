@@ -17,8 +17,9 @@ def training_box(model: Narx, margin: float) -> tuple[np.ndarray, np.ndarray]:
     each side (models saved without a range: mean -+ 4 standard deviations)."""
     rng = model.context.get("training_range")
     if rng:
-        lo = np.asarray(rng["regressor_min"], dtype=float)
-        hi = np.asarray(rng["regressor_max"], dtype=float)
+        # The range may cover scheduling signals this model does not take (at its end).
+        lo = np.asarray(rng["regressor_min"], dtype=float)[: model.n_regressor]
+        hi = np.asarray(rng["regressor_max"], dtype=float)[: model.n_regressor]
     else:
         lo = model.regressor_mean - 4 * model.regressor_scale
         hi = model.regressor_mean + 4 * model.regressor_scale
@@ -46,17 +47,21 @@ def _inner_gains(narx: Narx) -> tuple[list[int], list[int], np.ndarray, np.ndarr
 
 
 def is_linear(model: Narx) -> bool:
-    return len(model.weights) == 1
+    """A time-invariant linear model (its rollouts are constant matrices): one layer, no
+    scheduling signals."""
+    return len(model.weights) == 1 and not model.n_scheduling
 
 
-def _rollout(model: Narx, hist: Any, upast: Any, v: Any, d: int) -> Any:
-    """y^(k+d) with the input held at v over the horizon (symbolic)."""
+def _rollout(model: Narx, hist: Any, upast: Any, v: Any, d: int, w: Any = None) -> Any:
+    """y^(k+d) with the input held at v over the horizon (symbolic); the scheduling signals
+    ``w`` (for a model that takes them) held at their current values."""
     net = model.casadi_function("net")
     ny, nu, na, nb = model.n_outputs, model.n_inputs, model.output_lags, model.input_lags
     ys = [hist[i * ny:(i + 1) * ny] for i in range(na)]
     us = [v] + [upast[i * nu:(i + 1) * nu] for i in range(nb - 1)]
+    ws = [w] if model.n_scheduling else []
     for _ in range(d):
-        nxt = net(ca.vertcat(*ys, *us))
+        nxt = net(ca.vertcat(*ys, *us, *ws))
         ys = [nxt, *ys[:-1]]
         us = [v, *us[:-1]]
     return ys[0]
@@ -85,8 +90,11 @@ def horizon_gain(narx: Narx, horizon: int) -> np.ndarray:
     v = ca.MX.sym("v", nu)
     ys: list[Any] = [ca.DM.zeros(ny)] * narx.output_lags
     us: list[Any] = [v] + [ca.DM.zeros(nu)] * (narx.input_lags - 1)
+    # Scheduling signals at their training mean (a gain at a typical operating point).
+    ws = [ca.DM(narx.regressor_mean[narx.n_regressor - narx.n_scheduling:])] \
+        if narx.n_scheduling else []
     for _ in range(horizon):
-        nxt = f(ca.vertcat(*ys, *us))
+        nxt = f(ca.vertcat(*ys, *us, *ws))
         ys = [nxt, *ys[:-1]]
         us = [v, *us[:-1]]
     return np.asarray(ca.Function("gain", [v], [ca.jacobian(ys[0], v)])(np.zeros(nu)))

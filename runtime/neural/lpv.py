@@ -20,9 +20,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
+from jointplay.neural.narx_model import Narx
 from jointplay.neural.trajectories import Trajectory
 
 Scheduled = tuple[np.ndarray, np.ndarray, np.ndarray]  # deviations, inputs, scheduling
@@ -30,7 +32,7 @@ Scheduled = tuple[np.ndarray, np.ndarray, np.ndarray]  # deviations, inputs, sch
 
 def scheduling(trajectory: Trajectory, n_joints: int) -> np.ndarray:
     """Scheduling signals per sample: cos, sin of the ideal joint angles, ideal joint speeds,
-    the motion's drive torques."""
+    the motion's drive torques (jointplay.neural.scheduling, in its order)."""
     q = trajectory.r[:, :n_joints]
     dq = trajectory.r[:, n_joints: 2 * n_joints]
     return np.hstack([np.cos(q), np.sin(q), dq, trajectory.tau_base])
@@ -81,6 +83,29 @@ class LpvArx:
         """The next outputs from regressors ``phi`` (rows), scheduling ``s`` and the current
         outputs ``last``."""
         return self.carry * last + self.features(phi, s) @ self.theta
+
+    def as_narx(self, names: dict[str, Any], scheduling_names: Sequence[str], dt: float,
+                output_scale: np.ndarray, context: dict[str, Any]) -> Narx:
+        """The same model as a NARX model with one linear layer and a bilinear part, so that
+        the controller step runs it (its regressor: the ARX regressor, then the scheduling
+        signals)."""
+        n_phi = self.phi_mean.size
+        n_u = n_phi - self.n_output_regressors
+        ns = self.s_mean.size
+        theta = self.theta
+        blocks = [theta[n_phi + 1 + i * (n_u + 1): n_phi + 1 + (i + 1) * (n_u + 1)]
+                  for i in range(ns)]
+        weight = np.hstack([theta[:n_phi].T, np.column_stack([b[-1] for b in blocks])])
+        bilinear = np.hstack([b[:-1].T for b in blocks])
+        ny = self.carry.size
+        return Narx(weights=(weight,), biases=(theta[n_phi].copy(),),
+                    regressor_mean=np.concatenate([self.phi_mean, self.s_mean]),
+                    regressor_scale=np.concatenate([self.phi_scale, self.s_scale]),
+                    increment_mean=np.zeros(ny), increment_scale=np.ones(ny),
+                    output_scale=output_scale, output_lags=self.output_lags,
+                    input_lags=self.input_lags, sample_time=dt, context=context,
+                    increment=tuple(bool(c) for c in self.carry),
+                    scheduling=tuple(scheduling_names), bilinear=bilinear, **names)
 
     def free_run(self, d: np.ndarray, u: np.ndarray, s: np.ndarray) -> np.ndarray:
         """Windows (B, m + h + 1, .) run on the model's own predictions from their measured

@@ -32,6 +32,7 @@ from jointplay.neural.narx_model import _checksum as _checksum  # as before: tes
 
 MODEL_FILE = "narx.json"
 ARX_FILE = "arx.json"  # the linear twin: same regressor, least squares, same format
+LPV_FILE = "lpv.json"  # the LPV-ARX baseline (scheduled input gain and offset), same format
 REJECTED_FILE = "narx.rejected.json"  # a model identify judged unusable (kept to inspect)
 
 
@@ -82,6 +83,9 @@ def narx_from_dict(data: Any, path: Path, flag: str = "--model") -> Narx:
         vectors = {k: np.array(norm[k], dtype=float).reshape(-1)
                    for k in ("regressor_mean", "regressor_scale", "increment_mean",
                              "increment_scale", "output_scale")}
+        scheduling = tuple(str(n) for n in data.get("scheduling", ()))
+        bilinear = None if data.get("bilinear") is None else np.array(data["bilinear"],
+                                                                       dtype=float)
         sample_time = data["sample_time"]
         sample_time = float(sample_time) if isinstance(sample_time, (int, float)) \
             and not isinstance(sample_time, bool) else sample_time
@@ -97,7 +101,7 @@ def narx_from_dict(data: Any, path: Path, flag: str = "--model") -> Narx:
             output_lags=data["output_lags"], input_lags=data["input_lags"],
             weights=weights, biases=biases, sample_time=sample_time,
             activation=data["activation"], context=context, increment=increment,
-            linear=linear, **vectors)
+            linear=linear, scheduling=scheduling, bilinear=bilinear, **vectors)
     except ValueError as err:
         raise bad(str(err)) from None
     if model.checksum() != data["checksum"]:
@@ -149,7 +153,8 @@ def robot_identity(robot: Any) -> dict[str, str]:
 
 def check_robot(model: Narx, robot: Any, sample_time: float, path: str | Path,
                 flag: str = "--model") -> None:
-    """Refuse a model trained on another robot or at another sampling period."""
+    """Refuse a model trained on another robot (one outside the clearances and payloads its
+    runs spanned) or at another sampling period."""
     trained = model.context.get("robot", {})
     here = robot_identity(robot)
     where = Path(path)
@@ -158,7 +163,8 @@ def check_robot(model: Narx, robot: Any, sample_time: float, path: str | Path,
                            f"structure (hash {str(trained.get('structure_hash'))[:12]}, this "
                            f"scene's robot {here['name']!r} has {here['structure_hash'][:12]}); "
                            f"identify this robot: {RETRAIN}", flag)
-    if trained.get("robot_hash") != here["robot_hash"]:
+    spanned = trained.get("operating_range", {}).get("robot_hashes", [])
+    if trained.get("robot_hash") != here["robot_hash"] and here["robot_hash"] not in spanned:
         raise _fail(where, f"was trained on robot {trained.get('name')!r} with different "
                            f"parameter values (robot hash {str(trained.get('robot_hash'))[:12]}"
                            f", this scene's {here['robot_hash'][:12]}); identify this robot: "
@@ -169,6 +175,20 @@ def check_robot(model: Narx, robot: Any, sample_time: float, path: str | Path,
                            f"same period, or identify again at this one", flag)
 
 
-__all__ = ["ACTIVATIONS", "ARX_FILE", "FORMAT", "FORMAT_VERSION", "MODEL_FILE", "REJECTED_FILE",
-           "Narx", "check_robot", "fit_percent", "load_narx", "narx_from_dict", "nrmse",
-           "robot_identity", "save_narx"]
+__all__ = [
+    "ACTIVATIONS",
+    "ARX_FILE",
+    "FORMAT",
+    "FORMAT_VERSION",
+    "LPV_FILE",
+    "MODEL_FILE",
+    "REJECTED_FILE",
+    "Narx",
+    "check_robot",
+    "fit_percent",
+    "load_narx",
+    "narx_from_dict",
+    "nrmse",
+    "robot_identity",
+    "save_narx",
+]

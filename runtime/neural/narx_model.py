@@ -2,8 +2,8 @@
 
 A model predicts
 
-    y(k+1) = c * y(k) + m + s * (net(z) + L z),   z = (phi(k) - mu) / sigma
-    phi(k) = [y(k), y(k-1), ..., y(k-na+1), u(k), u(k-1), ..., u(k-nb+1)]
+    y(k+1) = c * y(k) + m + s * (net(z) + L z + sum_i w_i B_i z_u),   z = (phi(k) - mu) / sigma
+    phi(k) = [y(k), y(k-1), ..., y(k-na+1), u(k), u(k-1), ..., u(k-nb+1), w(k)]
 
 with ``net`` a fully connected tanh network (linear last layer), ``L`` an optional linear direct
 path, ``mu``/``sigma`` the regressor's normalisation and ``m``/``s`` that of the target.
@@ -12,6 +12,13 @@ values. Increments keep the network's job at the scale of what changes in one sa
 asked for the next angle itself would spend its precision on the angle, and lose to
 persistence); outputs that follow the input without integrating it (accelerations) are
 predicted as values, so that the model does not turn them into integrators.
+
+``w(k)`` are optional scheduling signals (jointplay.neural.scheduling): what the deviation
+dynamics depend on and the controller knows ahead of time (the ideal robot's configuration
+and speed, the drive torque of the motion). ``B_i`` is an optional bilinear part, the input
+lags' gain affine in the normalised scheduling signals ``w_i`` (``z_u`` the normalised input
+lags): with a single linear layer it makes the model a linear-parameter-varying ARX model
+(jointplay.neural.lpv).
 
 This module needs numpy and CasADi only: a saved model (jointplay.neural.narx reads and writes
 it) runs without the training code (and without torch); the checksum over the content catches
@@ -63,6 +70,8 @@ class Narx:
     context: dict[str, Any] = field(default_factory=dict)
     increment: tuple[bool, ...] = ()  # per output; empty: every output is an increment
     linear: np.ndarray | None = None  # (ny, n_regressor) direct path, or None
+    scheduling: tuple[str, ...] = ()  # scheduling signals at the regressor's end
+    bilinear: np.ndarray | None = None  # (ny, n_scheduling * n_input_regressors), or None
 
     @property
     def carry(self) -> np.ndarray:
@@ -86,8 +95,16 @@ class Narx:
         return len(self.input_names)
 
     @property
+    def n_scheduling(self) -> int:
+        return len(self.scheduling)
+
+    @property
+    def n_input_regressors(self) -> int:
+        return self.input_lags * self.n_inputs
+
+    @property
     def n_regressor(self) -> int:
-        return self.output_lags * self.n_outputs + self.input_lags * self.n_inputs
+        return self.output_lags * self.n_outputs + self.n_input_regressors + self.n_scheduling
 
     @property
     def hidden(self) -> tuple[int, ...]:
@@ -106,10 +123,36 @@ class Narx:
                            f"{', '.join(self.output_names)})") from None
 
     # ---- numpy evaluation ----------------------------------------------------------------
-    def regressor(self, y_hist: np.ndarray, u_hist: np.ndarray) -> np.ndarray:
-        """phi from the newest-first windows ``y_hist`` (na, ny) and ``u_hist`` (nb, nu)."""
+    def regressor(self, y_hist: np.ndarray, u_hist: np.ndarray,
+                  w: np.ndarray | None = None) -> np.ndarray:
+        """phi from the newest-first windows ``y_hist`` (na, ny) and ``u_hist`` (nb, nu) and
+        the scheduling signals ``w`` at the current sample (their first n_scheduling)."""
         return np.concatenate([np.ravel(y_hist[: self.output_lags]),
-                               np.ravel(u_hist[: self.input_lags])])
+                               np.ravel(u_hist[: self.input_lags]),
+                               self._own(w)])
+
+    def _own(self, w: np.ndarray | None) -> np.ndarray:
+        """The model's scheduling columns of ``w`` (rows or one row; none without them)."""
+        if not self.n_scheduling:
+            return np.zeros(0) if w is None or np.ndim(w) == 1 else np.zeros((len(w), 0))
+        if w is None:
+            raise ValueError("this model needs its scheduling signals: "
+                             + ", ".join(self.scheduling))
+        return np.asarray(w)[..., : self.n_scheduling]
+
+    def _bilinear(self, z: Any, lib: Any) -> Any:
+        """sum_i w_i B_i z_u on normalised regressors (numpy rows, or a CasADi column)."""
+        ny, nw = self.n_outputs, self.n_scheduling
+        start = self.output_lags * ny
+        nz = self.n_input_regressors
+        bilinear = self.bilinear
+        assert bilinear is not None, "called only for a model with a bilinear part"
+        blocks = [bilinear[:, i * nz: (i + 1) * nz] for i in range(nw)]
+        if lib is np:
+            zu, w = z[..., start: start + nz], z[..., -nw:]
+            return sum(w[..., i: i + 1] * (zu @ b.T) for i, b in enumerate(blocks))
+        zu, w = z[start: start + nz], z[z.numel() - nw:]
+        return sum(w[i] * ca.mtimes(ca.DM(b), zu) for i, b in enumerate(blocks))
 
     def network(self, z: np.ndarray) -> np.ndarray:
         """The bare network on normalised regressors ``z`` (..., n_regressor)."""
@@ -120,6 +163,8 @@ class Narx:
             h = h @ w.T + b
             if i < last:
                 h = np.tanh(h)
+        if self.bilinear is not None:
+            h = h + self._bilinear(z, np)
         return h + z @ self.linear.T if self.linear is not None else h
 
     def predict(self, phi: np.ndarray) -> np.ndarray:
@@ -129,7 +174,8 @@ class Narx:
         return self.carry * phi[..., : self.n_outputs] + self.increment_mean \
             + self.increment_scale * self.network(z)
 
-    def regressors(self, y: np.ndarray, u: np.ndarray) -> np.ndarray:
+    def regressors(self, y: np.ndarray, u: np.ndarray, w: np.ndarray | None = None
+                   ) -> np.ndarray:
         """Every regressor of a trajectory: row j is phi(k) for k = history + j.
 
         ``y`` (N, ny) are outputs at the samples and ``u`` (N, nu) the inputs applied from
@@ -139,13 +185,17 @@ class Narx:
         n = y.shape[0]
         rows = [y[m - i: n - 1 - i] for i in range(self.output_lags)]
         rows += [u[m - i: n - 1 - i] for i in range(self.input_lags)]
+        if self.n_scheduling:
+            rows.append(self._own(w)[m: n - 1])
         return np.concatenate(rows, axis=1)
 
-    def one_step(self, y: np.ndarray, u: np.ndarray) -> np.ndarray:
+    def one_step(self, y: np.ndarray, u: np.ndarray, w: np.ndarray | None = None
+                 ) -> np.ndarray:
         """One-step-ahead predictions of y(k+1) for k = history .. N-2 (measured past)."""
-        return self.predict(self.regressors(y, u))
+        return self.predict(self.regressors(y, u, w))
 
-    def free_run(self, y: np.ndarray, u: np.ndarray) -> np.ndarray:
+    def free_run(self, y: np.ndarray, u: np.ndarray, w: np.ndarray | None = None
+                 ) -> np.ndarray:
         """Simulation: from the first ``history + 1`` measured outputs on, the model feeds back
         its own predictions; returns y(k) for k = history + 1 .. N-1."""
         m = self.history
@@ -156,7 +206,7 @@ class Narx:
         out = np.empty((n - 1 - m, self.n_outputs))
         for j, k in enumerate(range(m, n - 1)):
             u_hist = u[k - self.input_lags + 1: k + 1][::-1]
-            nxt = self.predict(self.regressor(y_hist, u_hist))
+            nxt = self.predict(self.regressor(y_hist, u_hist, None if w is None else w[k]))
             out[j] = nxt
             y_hist = np.vstack([nxt[None, :], y_hist[:-1]])
         return out
@@ -174,13 +224,21 @@ class Narx:
                 h = ca.tanh(h)
         if self.linear is not None:
             h = h + ca.mtimes(ca.DM(self.linear), z)
+        if self.bilinear is not None:
+            h = h + self._bilinear(z, ca)
         y_next = ca.DM(self.carry) * phi[: self.n_outputs] + ca.DM(self.increment_mean) \
             + ca.DM(self.increment_scale) * h
         return ca.Function(name, [phi], [y_next], ["phi"], ["y_next"])
 
     # ---- persistence ---------------------------------------------------------------------
     def content(self) -> dict[str, Any]:
-        """Everything that defines the predictions, as plain JSON data."""
+        """Everything that defines the predictions, as plain JSON data (the scheduling entries
+        only where there are some: models without them keep their checksum)."""
+        extra: dict[str, Any] = {}
+        if self.scheduling:
+            extra["scheduling"] = list(self.scheduling)
+        if self.bilinear is not None:
+            extra["bilinear"] = self.bilinear.tolist()
         return {
             "outputs": [{"name": n, "unit": u, "increment": bool(c)}
                         for n, u, c in zip(self.output_names, self.output_units, self.carry,
@@ -201,6 +259,7 @@ class Narx:
                 "increment_scale": self.increment_scale.tolist(),
                 "output_scale": self.output_scale.tolist(),
             },
+            **extra,
         }
 
     def checksum(self) -> str:
@@ -254,6 +313,10 @@ def _shape_problems(m: Narx) -> list[str]:
         out.append(f"increment has {len(m.increment)} flags for {ny} outputs")
     if m.linear is not None and m.linear.shape != (ny, n_phi):
         out.append(f"linear has shape {m.linear.shape}, expected ({ny}, {n_phi})")
+    n_bi = m.n_scheduling * m.n_input_regressors
+    if m.bilinear is not None and (not n_bi or m.bilinear.shape != (ny, n_bi)):
+        out.append(f"bilinear has shape {m.bilinear.shape}, expected ({ny}, {n_bi}) (and "
+                   "needs scheduling signals)")
     for name, vec, size in (("regressor_mean", m.regressor_mean, n_phi),
                             ("regressor_scale", m.regressor_scale, n_phi),
                             ("increment_mean", m.increment_mean, ny),
@@ -262,7 +325,8 @@ def _shape_problems(m: Narx) -> list[str]:
         if vec.shape != (size,):
             out.append(f"{name} has shape {vec.shape}, expected ({size},)")
     arrays = [*m.weights, *m.biases, m.regressor_mean, m.regressor_scale, m.increment_mean,
-              m.increment_scale, m.output_scale, *([] if m.linear is None else [m.linear])]
+              m.increment_scale, m.output_scale, *([] if m.linear is None else [m.linear]),
+              *([] if m.bilinear is None else [m.bilinear])]
     if not all(np.all(np.isfinite(a)) for a in arrays):
         out.append("weights and normalisation must be finite")
     elif not all(np.all(s > 0) for s in (m.regressor_scale, m.increment_scale,

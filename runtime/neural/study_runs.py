@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from jointplay.neural.comparison import DIVERGENCE_FACTOR, MODEL_BASED, compare, open_loop_bound
-from jointplay.neural.control import load_twin
+from jointplay.neural.control import load_lpv, load_twin
 from jointplay.neural.loop_accuracy import accuracy_columns, check_tolerance, loop_accuracy
 from jointplay.neural.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_identity
 
@@ -51,9 +51,9 @@ def _run_unit(index: int) -> list[dict[str, Any]]:
         narx = load_narx(model_dir)
         arx = load_twin(model_dir, narx)
         limit, settle = limit
-        run = partial(compare, scene, narx, settings, arx=arx, controllers=MODEL_BASED,
-                      analyse=False, conditions=case.conditions, limit=limit,
-                      transient=settle)
+        run = partial(compare, scene, narx, settings, arx=arx, lpv=load_lpv(model_dir),
+                      controllers=MODEL_BASED, analyse=False, conditions=case.conditions,
+                      limit=limit, transient=settle)
         seed = int(narx.context["training"]["seed"])
     result = run()
     # --verify: the same loops with the plant 10x tighter (jointplay.neural.loop_accuracy)
@@ -118,6 +118,25 @@ def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[
     return out
 
 
+def _matches(narx: Any, scene: Any, seed: int, identify_args: dict[str, Any]) -> bool:
+    """Whether a model folder's model was identified for this robot with these settings (a
+    folder from another study is identified again, not reused)."""
+    training = narx.context.get("training", {})
+    robot = narx.context.get("robot", {})
+    here = robot_identity(scene.robot)["robot_hash"]
+    same = robot.get("robot_hash") == here or here in robot.get("operating_range", {}).get(
+        "robot_hashes", [])
+    return same and training.get("seed") == seed and all(
+        _setting(training, k) == (list(v) if isinstance(v, tuple) else v)
+        for k, v in identify_args.items())
+
+
+def _setting(training: dict[str, Any], key: str) -> Any:
+    """A training setting of a model's context; settings added later take their default."""
+    defaults: dict[str, Any] = {"scheduling": False, "clearances": [], "payloads": []}
+    return training.get(key, defaults.get(key))
+
+
 def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str, Any],
                   quiet: bool, first: int = 0) -> list[Path]:
     """One identified model per seed (reused when its folder already holds one for this
@@ -127,8 +146,8 @@ def ensure_models(scene: Any, folder: Path, seeds: int, identify_args: dict[str,
     out = []
     for seed in range(first, first + seeds):
         path = folder / f"seed{seed}"
-        ok = (path / MODEL_FILE).is_file() and load_narx(path).context.get("robot", {}).get(
-            "robot_hash") == robot_identity(scene.robot)["robot_hash"]
+        ok = (path / MODEL_FILE).is_file() and _matches(load_narx(path), scene, seed,
+                                                         identify_args)
         if not ok and not (path / REJECTED_FILE).is_file():
             if not quiet:
                 print(f"identifying {path} ...", flush=True)

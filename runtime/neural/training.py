@@ -21,15 +21,33 @@ import numpy as np
 from jointplay.neural.identify_config import IdentifyConfig
 from jointplay.neural.inner_loop import output_increments
 from jointplay.neural.narx import Narx
+from jointplay.neural.scheduling import scheduling_names, trajectory_scheduling
 from jointplay.neural.trajectories import Trajectory
 
-Segment = tuple[np.ndarray, np.ndarray]  # (deviations, added torques) of one trajectory
+# (deviations, added torques, scheduling signals) of one trajectory; the scheduling signals
+# have no columns for a model without them.
+Segment = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 
 # ---- regressors and the linear fit ----------------------------------------------------------
 
-def _segments(trajectories: Sequence[Trajectory], skip: int) -> list[Segment]:
-    return [(tr.deviation[skip:], tr.v[skip:]) for tr in trajectories]
+def _segments(trajectories: Sequence[Trajectory], skip: int,
+              names: dict[str, Any] | None = None) -> list[Segment]:
+    """Each run after ``skip`` samples; with the signal ``names``, its scheduling signals
+    too (jointplay.neural.scheduling), else none."""
+    out = []
+    for tr in trajectories:
+        if names is not None:
+            w = trajectory_scheduling(tr, names["output_names"], names["input_names"])
+        else:
+            w = np.zeros((tr.v.shape[0], 0))
+        out.append((tr.deviation[skip:], tr.v[skip:], w[skip:]))
+    return out
+
+
+def model_scheduling(names: dict[str, Any]) -> tuple[str, ...]:
+    """The scheduling signals' names of the plant with these signal names."""
+    return scheduling_names([int(n[1:]) for n in names["input_names"]])
 
 
 def _regress(segments: Sequence[Segment], na: int, nb: int,
@@ -37,9 +55,10 @@ def _regress(segments: Sequence[Segment], na: int, nb: int,
     """Regressors and targets (increments where ``carry`` is 1, values where 0)."""
     m = max(na, nb) - 1
     xs, ts = [], []
-    for d, u in segments:
+    for d, u, *w in segments:
         n = d.shape[0]
         rows = [d[m - i: n - 1 - i] for i in range(na)] + [u[m - i: n - 1 - i] for i in range(nb)]
+        rows += [w[0][m: n - 1]] if w else []
         xs.append(np.concatenate(rows, axis=1))
         ts.append(d[m + 1:] - carry * d[m: n - 1])
     return np.vstack(xs), np.vstack(ts)
@@ -56,9 +75,11 @@ def _scale(std: np.ndarray) -> np.ndarray:
 
 
 def fit_arx(segments: Sequence[Segment], names: dict[str, Any],
-            na: int, nb: int, dt: float, ridge: float = 1e-9) -> Narx:
+            na: int, nb: int, dt: float, ridge: float = 1e-9,
+            scheduling: Sequence[str] = ()) -> Narx:
     """The linear ARX baseline on the same regressor, by least squares (a network with no
-    hidden layer, so it runs through the same code)."""
+    hidden layer, so it runs through the same code). Segments with scheduling signals give
+    an ARX model with them as further regressors (``scheduling``: their names)."""
     carry = np.asarray(output_increments(names["output_names"]), dtype=float)
     x, t = _regress(segments, na, nb, carry)
     mu, sigma = x.mean(0), _scale(x.std(0))
@@ -66,9 +87,10 @@ def fit_arx(segments: Sequence[Segment], names: dict[str, Any],
     theta = _least_squares((x - mu) / sigma, (t - tm) / ts, ridge)
     return Narx(weights=(theta[:-1].T.copy(),), biases=(theta[-1].copy(),), regressor_mean=mu,
                 regressor_scale=sigma, increment_mean=tm, increment_scale=ts,
-                output_scale=_scale(np.vstack([d for d, _ in segments]).std(0)),
+                output_scale=_scale(np.vstack([seg[0] for seg in segments]).std(0)),
                 output_lags=na, input_lags=nb, sample_time=dt,
-                increment=tuple(bool(c) for c in carry), **names)
+                increment=tuple(bool(c) for c in carry), scheduling=tuple(scheduling),
+                **names)
 
 
 # ---- the data a training sees ---------------------------------------------------------------
@@ -89,19 +111,22 @@ class _Data:
     ts: np.ndarray
     ys: np.ndarray  # output scale
     increment: tuple[bool, ...]
+    scheduling: tuple[str, ...]  # the scheduling signals at the regressor's end
 
 
 def _training_data(train: Sequence[Trajectory], validation: Sequence[Trajectory],
                    config: IdentifyConfig, names: dict[str, Any], dt: float) -> _Data:
     skip = max(0, round(config.transient / dt))
-    seg_train, seg_val = _segments(train, skip), _segments(validation, skip)
+    scheduled = names if config.scheduling else None
+    seg_train = _segments(train, skip, scheduled)
+    seg_val = _segments(validation, skip, scheduled)
     increment = output_increments(names["output_names"])
     carry = np.asarray(increment, dtype=float)
     x, t = _regress(seg_train, config.output_lags, config.input_lags, carry)
     xv, tv = _regress(seg_val, config.output_lags, config.input_lags, carry)
     return _Data(seg_train, seg_val, x, t, xv, tv, x.mean(0), _scale(x.std(0)), t.mean(0),
-                 _scale(t.std(0)), _scale(np.vstack([d for d, _ in seg_train]).std(0)),
-                 increment)
+                 _scale(t.std(0)), _scale(np.vstack([seg[0] for seg in seg_train]).std(0)),
+                 increment, model_scheduling(names) if config.scheduling else ())
 
 
 # ---- the network in torch -------------------------------------------------------------------
@@ -113,6 +138,7 @@ class _Network:
     def __init__(self, torch: Any, config: IdentifyConfig, data: _Data) -> None:
         self.torch, self.dtype = torch, torch.float64
         self.linear_path = config.linear_path
+        self.scheduling = data.scheduling
         self.na, self.nb = config.output_lags, config.input_lags
         self.m = max(self.na, self.nb) - 1
         self.ny = data.t.shape[1]
@@ -156,21 +182,21 @@ class _Network:
         return self.carry * phi[..., :self.ny] + self.tm + self.ts * self.out(
             (phi - self.mu) / self.sigma)
 
-    def free_run(self, d: Any, u: Any) -> Any:
+    def free_run(self, d: Any, u: Any, w: Any) -> Any:
         """The model fed its own predictions, from the measured history of each window."""
         m, torch = self.m, self.torch
         hist = [d[:, m - i] for i in range(self.na)]
         outs = []
         for j in range(d.shape[1] - m - 1):
             k = m + j
-            phi = torch.cat(hist + [u[:, k - i] for i in range(self.nb)], dim=1)
+            phi = torch.cat(hist + [u[:, k - i] for i in range(self.nb)] + [w[:, k]], dim=1)
             nxt = self.step(phi)
             outs.append(nxt)
             hist = [nxt, *hist[:-1]]
         return torch.stack(outs, dim=1)
 
-    def sim_loss(self, d: Any, u: Any) -> Any:
-        return (((self.free_run(d, u) - d[:, self.m + 1:]) / self.ys) ** 2).mean()
+    def sim_loss(self, d: Any, u: Any, w: Any) -> Any:
+        return (((self.free_run(d, u, w) - d[:, self.m + 1:]) / self.ys) ** 2).mean()
 
     def state(self) -> tuple[dict[str, Any], dict[str, Any]]:
         return ({k: v.detach().clone() for k, v in self.net.state_dict().items()},
@@ -180,19 +206,11 @@ class _Network:
         self.net.load_state_dict(state[0])
         self.direct.load_state_dict(state[1])
 
-    def windows(self, segments: Sequence[Segment], h: int) -> tuple[Any, Any]:
+    def windows(self, segments: Sequence[Segment], h: int) -> tuple[Any, Any, Any]:
         """Overlapping windows of ``h`` predicted samples (with the history before them)."""
-        m = self.m
-        ds, us = [], []
-        for d, u in segments:
-            for s in range(m, d.shape[0] - h, max(1, h // 2)):
-                ds.append(d[s - m: s + h + 1])
-                us.append(u[s - m: s + h + 1])
-        if not ds:  # trajectories shorter than a window: one window each, as long as it gets
-            h = min(d.shape[0] for d, _ in segments) - m - 1
-            ds = [d[: m + h + 1] for d, _ in segments]
-            us = [u[: m + h + 1] for _, u in segments]
-        return self.tensor(np.array(ds)), self.tensor(np.array(us))
+        from jointplay.neural.twin import windows
+
+        return tuple(self.tensor(a) for a in windows(segments, h, self.m))
 
     def export(self, data: _Data, names: dict[str, Any], dt: float,
                context: dict[str, Any]) -> Narx:
@@ -206,7 +224,8 @@ class _Network:
                     output_lags=self.na, input_lags=self.nb, sample_time=dt, context=context,
                     increment=data.increment,
                     linear=(self.direct.weight.detach().numpy().astype(float).copy()
-                            if self.linear_path else None), **names)
+                            if self.linear_path else None), scheduling=self.scheduling,
+                    **names)
 
 
 # ---- training -------------------------------------------------------------------------------
@@ -308,11 +327,11 @@ def _free_run_phase(torch: Any, net: _Network, data: _Data, config: IdentifyConf
     until the one-step network runs stably in free run, and a phase whose loss goes NaN is
     retried (:data:`FREE_RUN_ATTEMPTS`); every repair is recorded in ``history["repairs"]``."""
     repairs: list[dict[str, Any]] = history.setdefault("repairs", [])
-    dvw, uvw = net.windows(data.validation_segments, config.window)
+    dvw, uvw, wvw = net.windows(data.validation_segments, config.window)
 
     def validate() -> float:
         with torch.no_grad():
-            return float(net.sim_loss(dvw, uvw))
+            return float(net.sim_loss(dvw, uvw, wvw))
 
     _stabilise_start(torch, net, validate, repairs)
     for number, attempt in enumerate(FREE_RUN_ATTEMPTS, start=1):
@@ -390,7 +409,7 @@ def _free_run_attempt(torch: Any, net: _Network, data: _Data, config: IdentifyCo
                       history: dict[str, list[Any]], bar: Any, length: int, lr: float,
                       penalty: float, validate: Callable[[], float]) -> str:
     """One early-stopped L-BFGS run on windows of ``length`` samples; how it ended."""
-    dw, uw = net.windows(data.segments, length)
+    dw, uw, ww = net.windows(data.segments, length)
     hidden = [p for layer in net.net if isinstance(layer, torch.nn.Linear)
               for p in (layer.weight,)]
     opt = torch.optim.LBFGS(net.params, lr=lr, max_iter=10, history_size=50,
@@ -398,7 +417,7 @@ def _free_run_attempt(torch: Any, net: _Network, data: _Data, config: IdentifyCo
 
     def closure() -> Any:
         opt.zero_grad()
-        loss = net.sim_loss(dw, uw)
+        loss = net.sim_loss(dw, uw, ww)
         if penalty:
             loss = loss + penalty * sum((w ** 2).mean() for w in hidden)
         loss.backward()

@@ -78,10 +78,42 @@ class _Task:
 
 # ---- planning -----------------------------------------------------------------------------
 
+def robot_variants(scene: Any, config: IdentifyConfig) -> list[tuple[dict[str, float], Any]]:
+    """The robots the training and validation runs span (``config.clearances`` x
+    ``config.payloads``), each with what was changed; the scene's own robot alone when
+    neither is given."""
+    from jointplay.robot import with_parameters
+
+    robot = scene.robot
+    clearances = config.clearances or (None,)
+    payloads = config.payloads or (None,)
+    out = []
+    for payload in payloads:
+        for clearance in clearances:
+            values: dict[str, float] = {}
+            changed: dict[str, float] = {}
+            if clearance is not None:
+                changed["clearance"] = float(clearance)
+                for j in robot.clearance_joints:
+                    bearing = robot.joints[j - 1].bearing_radius
+                    if not clearance < bearing:
+                        raise DescriptionError("--clearances", f"{clearance:g} m is not below "
+                                               f"joint {j}'s bearing radius {bearing:g} m")
+                    values[f"joint{j}.journal_radius"] = bearing - clearance
+            if payload is not None:
+                changed["payload"] = float(payload)
+                values["payload.mass"] = float(payload)
+            out.append((changed, scene.with_robot(with_parameters(robot, values)) if values
+                        else scene))
+    return out
+
+
 def _plan(scene: Any, config: IdentifyConfig, inner: InnerLoop,
           limits: np.ndarray) -> list[_Task]:
-    """Every trajectory's excitation, drawn from one seeded generator per trajectory."""
+    """Every trajectory's excitation, drawn from one seeded generator per trajectory; the
+    training and validation runs cycle through the robot variants (:func:`robot_variants`)."""
     run_scene = scene.with_run(t_end=config.duration)
+    variants = robot_variants(run_scene, config)
     tasks: list[_Task] = []
     counts = {"train": config.n_train, "validation": config.n_validation, "test": config.n_test}
     for s_index, split in enumerate(SPLITS):
@@ -96,7 +128,11 @@ def _plan(scene: Any, config: IdentifyConfig, inner: InnerLoop,
             description = {"base": [describe_torque(f) for f in base],
                            "added": "aprbs(1..100 samples) + multisine(0.1..10 Hz)",
                            "added_peak": (config.input_fraction * limits).tolist()}
-            tasks.append(_Task(split, family, seed, with_torques(run_scene, base), v, inner,
+            robot_scene = run_scene
+            if split != "test" and (config.clearances or config.payloads):
+                changed, robot_scene = variants[i % len(variants)]
+                description["robot"] = changed
+            tasks.append(_Task(split, family, seed, with_torques(robot_scene, base), v, inner,
                                description))
     return tasks
 

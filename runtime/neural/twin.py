@@ -26,6 +26,9 @@ import numpy as np
 
 from jointplay.neural.narx import Narx, nrmse
 
+# (deviations, added torques[, scheduling signals]) of one run
+Segment = tuple[np.ndarray, ...]
+
 ALPHAS = (0.0, 0.25, 0.5, 0.75, 1.0)
 
 
@@ -43,26 +46,32 @@ def blend(narx: Narx, arx: Narx, alpha: float) -> Narx:
                    linear=alpha * direct + (1 - alpha) * w_arx)
 
 
-def windows(segments: Sequence[tuple[np.ndarray, np.ndarray]], length: int,
-            history: int) -> tuple[np.ndarray, np.ndarray]:
-    """Overlapping free-run windows (stride length/2): outputs (B, history + length + 1, ny)
-    and inputs (B, ..., nu). Segments shorter than a window give one window each, as long as
-    the shortest allows."""
+def windows(segments: Sequence[Segment], length: int,
+            history: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Overlapping free-run windows (stride length/2): outputs (B, history + length + 1, ny),
+    inputs (B, ..., nu) and scheduling signals (B, ..., nw; nw may be 0). Segments shorter
+    than a window give one window each, as long as the shortest allows."""
     m, h = history, length
-    ds, us = [], []
-    for d, u in segments:
+    segs = [(seg[0], seg[1], seg[2] if len(seg) > 2 else np.zeros((seg[0].shape[0], 0)))
+            for seg in segments]
+    ds, us, ws = [], [], []
+    for d, u, w in segs:
         for s in range(m, d.shape[0] - h, max(1, h // 2)):
             ds.append(d[s - m: s + h + 1])
             us.append(u[s - m: s + h + 1])
+            ws.append(w[s - m: s + h + 1])
     if not ds:
-        h = min(d.shape[0] for d, _ in segments) - m - 1
-        ds = [d[: m + h + 1] for d, _ in segments]
-        us = [u[: m + h + 1] for _, u in segments]
-    return np.array(ds), np.array(us)
+        h = min(d.shape[0] for d, _, _ in segs) - m - 1
+        ds = [d[: m + h + 1] for d, _, _ in segs]
+        us = [u[: m + h + 1] for _, u, _ in segs]
+        ws = [w[: m + h + 1] for _, _, w in segs]
+    return np.array(ds), np.array(us), np.array(ws)
 
 
-def window_loss(model: Narx | None, d: np.ndarray, u: np.ndarray, scale: np.ndarray) -> float:
-    """Mean squared free-run error over windows, each output divided by ``scale``.
+def window_loss(model: Narx | None, d: np.ndarray, u: np.ndarray, scale: np.ndarray,
+                w: np.ndarray | None = None) -> float:
+    """Mean squared free-run error over windows, each output divided by ``scale``; ``w``:
+    the windows' scheduling signals (for a model that takes them).
 
     ``None`` is persistence: the window's first sample held."""
     m, na, nb = (model.history, model.output_lags, model.input_lags) if model else (
@@ -76,8 +85,12 @@ def window_loss(model: Narx | None, d: np.ndarray, u: np.ndarray, scale: np.ndar
         with np.errstate(all="ignore"):
             for j in range(truth.shape[1]):
                 k = m + j
-                phi = np.concatenate(hist + [u[:, k - i] for i in range(nb)], axis=1)
-                nxt = model.predict(phi)
+                parts = hist + [u[:, k - i] for i in range(nb)]
+                if model.n_scheduling:
+                    if w is None:
+                        raise ValueError("this model needs its scheduling signals")
+                    parts.append(w[:, k, : model.n_scheduling])
+                nxt = model.predict(np.concatenate(parts, axis=1))
                 out.append(nxt)
                 hist = [nxt, *hist[:-1]]
         pred = np.stack(out, axis=1)
@@ -97,26 +110,27 @@ class Selection:
     persistence_loss: float
 
 
-def select_residual(narx: Narx, arx: Narx, segments: Sequence[tuple[np.ndarray, np.ndarray]],
+def select_residual(narx: Narx, arx: Narx, segments: Sequence[Segment],
                     window: int, alphas: Sequence[float] = ALPHAS) -> tuple[Narx, Selection]:
     """The blend with the lowest validation free-run loss (ties go to the smaller alpha)."""
-    d, u = windows(segments, window, narx.history)
+    d, u, w = windows(segments, window, narx.history)
     scale = narx.output_scale
-    losses = {float(a): window_loss(blend(narx, arx, a), d, u, scale) for a in alphas}
+    losses = {float(a): window_loss(blend(narx, arx, a), d, u, scale, w) for a in alphas}
     best = min(losses, key=lambda a: (losses[a], a))
-    selection = Selection(best, losses, losses.get(0.0, window_loss(arx, d, u, scale)),
-                          losses.get(1.0, window_loss(narx, d, u, scale)),
+    selection = Selection(best, losses, losses.get(0.0, window_loss(arx, d, u, scale, w)),
+                          losses.get(1.0, window_loss(narx, d, u, scale, w)),
                           window_loss(None, d, u, scale))
     return blend(narx, arx, best), selection
 
 
-def one_step_nrmse(model: Narx | None, segments: Sequence[tuple[np.ndarray, np.ndarray]],
+def one_step_nrmse(model: Narx | None, segments: Sequence[Segment],
                    history: int) -> float:
     """Mean over outputs of the one-step NRMSE over the segments (None: persistence)."""
     preds, truth = [], []
-    for d, u in segments:
+    for d, u, *w in segments:
         truth.append(d[history + 1:])
-        preds.append(d[history:-1] if model is None else model.one_step(d, u))
+        preds.append(d[history:-1] if model is None else
+                     model.one_step(d, u, w[0] if w else None))
     with np.errstate(all="ignore"):
         value = float(np.mean(nrmse(np.vstack(preds), np.vstack(truth))))
     return value if np.isfinite(value) else float("inf")
@@ -135,10 +149,10 @@ class Verdict:
 
 
 def judge(model: Narx, arx: Narx, selection: Selection,
-          segments: Sequence[tuple[np.ndarray, np.ndarray]], window: int) -> Verdict:
+          segments: Sequence[Segment], window: int) -> Verdict:
     """Is the chosen model better than persistence and no worse than ARX on validation?"""
-    d, u = windows(segments, window, model.history)
-    free = window_loss(model, d, u, model.output_scale)
+    d, u, w = windows(segments, window, model.history)
+    free = window_loss(model, d, u, model.output_scale, w)
     figures = {
         "one_step_nrmse": one_step_nrmse(model, segments, model.history),
         "one_step_nrmse_arx": one_step_nrmse(arx, segments, model.history),
