@@ -208,6 +208,60 @@ def test_fixed_step_convergence_order(method: str, order: int) -> None:
     assert all(r > order - 0.6 for r in rates), (errors, rates)
 
 
+def test_radau_reduced_newton_step_equals_the_full_one() -> None:
+    """The generated Radau step reduces its Newton matrix I - h A (x) J to the speeds' half
+    (J = [0 I; Jq Jv]). One step from inside the paper scene's first impact (at its peak
+    force, where Jq holds the contact stiffness) equals the same simplified Newton written
+    with the full 6n x 6n matrix, built here from the model's own forward dynamics and state
+    Jacobian: the state to 1e-9 of each component's size and the last Newton update to 1e-4
+    relative (measured: 1.0e-12 and 1.4e-6; a 1 % error in the matrix gives 2.5e-9 and 0.15).
+    """
+    import casadi as ca
+
+    from jointplay import generated, load_model
+    from jointplay.derive.codegen import RADAU_A, RADAU_NEWTON_ITERATIONS
+
+    run = simulate(default_scene().with_run(integrator="bdf", t_end=0.003, rtol=1e-9,
+                                            atol=1e-9))
+    peak = float(run.impacts.peak_force_time[0])
+    x0 = np.asarray(run.sol(np.array([peak]))).ravel()
+    model = load_model(generated.folders()["paper_4dof"])
+    library = str(model.library)
+    fd = ca.external("forward_dynamics", library)
+    jac_state = ca.external("jac_state", library)
+    radau_step = ca.external("radau_step", library)
+    nx = fd.size1_in(0)
+    assert x0.size == nx
+    p = np.asarray(run.parameters, dtype=float)
+    v_imp = np.zeros(fd.size1_in(3))
+    v_imp[list(run.clearance_joints).index(int(run.impacts.joint[0]))] = run.impacts.speed[0]
+    assert np.max(model.contact(x0, p, v_imp)["delta"]) > 0  # in contact: Jq is stiff
+    tau = np.array([[0.3, 0.25, 0.2], [-0.2, -0.1, 0.0]])
+    h = 1e-4  # ten times the scene's step: in contact, 8 iterations do not reach round-off
+
+    # The previous formulation: simplified Newton on all 3 nx stage unknowns at once.
+    a = ca.DM(RADAU_A)
+    jac = ca.DM(jac_state(x0, tau[:, 0], p, v_imp))
+    newton_inv = ca.solve(ca.DM.eye(3 * nx) - h * ca.kron(a, jac), ca.DM.eye(3 * nx))
+    z = ca.DM.zeros(nx, 3)
+    for _ in range(RADAU_NEWTON_ITERATIONS):
+        slopes = ca.horzcat(*[fd(x0 + z[:, i], tau[:, i], p, v_imp) for i in range(3)])
+        update = -ca.mtimes(newton_inv, ca.vec(z - h * ca.mtimes(slopes, a.T)))
+        z = z + ca.reshape(update, nx, 3)
+        increment = float(ca.norm_inf(update))
+    full = np.asarray(x0 + z[:, 2]).ravel()
+
+    reduced, reduced_increment = radau_step(x0, tau, h, p, v_imp)
+    reduced = np.asarray(reduced).ravel()
+    scale = np.maximum(np.abs(x0), np.abs(full - x0))
+    # Not converged after the fixed iterations at this step (the last update is well above
+    # round-off), so the result and the update depend on the Newton matrix, not only on the
+    # stage equations' root.
+    assert increment > 1e-12
+    assert float(np.max(np.abs(reduced - full) / scale)) < 1e-9
+    assert float(reduced_increment) == pytest.approx(increment, rel=1e-4)
+
+
 def test_fixed_step_methods_agree_with_cvodes_through_impacts() -> None:
     """The paper scene for 20 ms: RK4 and Radau at 2 us agree with CVODES at 1e-10 to 1 um at
     the tip (onsets between step ends are located by interpolation: first order in h)."""

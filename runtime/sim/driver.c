@@ -109,8 +109,10 @@ typedef struct {
   /* Newton matrix I - c J of a second-order system, J = [0 D; Jq Jv] (scaled; D diagonal):
    * with du solved from the n x n K = I - c Jv - c^2 Jq D, dq = r_q + c D du (exact; an LU
    * of n instead of 2n rows, 8x fewer operations). reduced: J had that form at its last
-   * evaluation; lu_c: the c the LU was formed with. */
-  int reduced; double lu_c; double *rhs_u;
+   * evaluation; lu_c: the c the LU was formed with. full_newton: the reduction is never
+   * used (set from the environment variable JOINTPLAY_FULL_NEWTON at each reset, so that a
+   * test can compare the two paths). */
+  int reduced, full_newton; double lu_c; double *rhs_u;
   double *y_pred, *psi, *d, *y_new, *f_buf, *dy, *scal, *err, *work_n;
   double *xs, *xdot;           /* unscaled state and its derivative */
   double *tau, *u_hold;
@@ -126,6 +128,7 @@ typedef struct {
   long *open_phase;            /* per joint: row of the open phase or -1 */
   /* statistics */
   long n_steps, n_rhs, n_jac, n_lu, n_err_fail, n_newton_fail, n_events, n_onsets;
+  long n_lu_reduced; /* of n_lu, those of the n x n reduced Newton matrix */
   int order_cap, cap_steps, window_steps, recent_failures; /* stability-limit guard */
   double landing_target; /* the onset time a redone step aims at, else +inf */
   double last_safety, last_err_norm, t_old, h_abs_old; int order_old, n_equal_old;
@@ -388,7 +391,7 @@ static int jacobian(jp_sim *s, double t, const double *z) {
       s->J[r * nx + col] = s->jac_sparse[k] * c->scale[col] / c->scale[r];
     }
   int n = nx / 2;
-  s->reduced = nx % 2 == 0;
+  s->reduced = nx % 2 == 0 && !s->full_newton;
   for (int r = 0; r < n && s->reduced; ++r)
     for (int col = 0; col < nx; ++col)
       if (col != n + r && s->J[r * nx + col] != 0.0) { s->reduced = 0; break; }
@@ -405,6 +408,7 @@ static int newton_factor(jp_sim *s, double c_coef) {
     for (int i = 0; i < nx; ++i) s->LU[i * nx + i] += 1.0;
     return lu_factor(nx, s->LU, s->piv);
   }
+  s->n_lu_reduced++;
   for (int i = 0; i < n; ++i) {
     const double *jq = s->J + (size_t)(n + i) * nx, *jv = jq + n;
     for (int j = 0; j < n; ++j)
@@ -1058,7 +1062,9 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
     s->flags[j] = 0.0; s->v_imp[j] = 0.0; s->armed[j] = 0; s->open_phase[j] = -1;
   }
   s->n_steps = s->n_rhs = s->n_jac = s->n_lu = s->n_err_fail = s->n_newton_fail = 0;
-  s->n_events = s->n_onsets = 0;
+  s->n_events = s->n_onsets = 0; s->n_lu_reduced = 0;
+  const char *full = getenv("JOINTPLAY_FULL_NEWTON");
+  s->full_newton = full != NULL && full[0] != '\0' && strcmp(full, "0") != 0;
   if (c->wear.eval) {
     memset(s->wear_volume, 0, c->nc * sizeof(double));
     memset(s->wear_depth, 0, (size_t)2 * c->nc * c->wear_bins * sizeof(double));
@@ -1167,6 +1173,7 @@ void jp_flags(const jp_sim *s, double *flags, double *v_imp) {
 void jp_stats(const jp_sim *s, long *out) {
   out[0] = s->n_steps; out[1] = s->n_rhs; out[2] = s->n_jac; out[3] = s->n_lu;
   out[4] = s->n_err_fail; out[5] = s->n_newton_fail; out[6] = s->n_events; out[7] = s->n_onsets;
+  out[8] = s->n_lu_reduced;
 }
 void jp_failure(const jp_sim *s, double *t, double *h, int *joint) {
   *t = s->fail_t; *h = s->fail_h; *joint = s->fail_joint;

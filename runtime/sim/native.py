@@ -35,7 +35,8 @@ PHASE_COLUMNS = ("joint", "time", "speed", "ex", "ey", "peak_force", "peak_force
                  "max_penetration", "max_penetration_time", "separation_time", "exit_speed",
                  "impulse", "damping_energy", "friction_energy")
 STAT_NAMES = ("steps", "rhs_evaluations", "jacobian_evaluations", "lu_decompositions",
-              "error_test_failures", "newton_failures", "events", "impacts")
+              "error_test_failures", "newton_failures", "events", "impacts",
+              "reduced_lu_decompositions")
 # The driver's own C flags: -O2 (it is small and compiled once); -fno-math-errno as for models.
 DRIVER_CFLAGS = ("-O2", "-fPIC", "-shared", "-fno-math-errno")
 
