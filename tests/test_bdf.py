@@ -122,17 +122,22 @@ def test_table_torques_equal_the_same_expression(tmp_path: Path) -> None:
 
 
 def test_reduced_newton_matrix_equals_the_full_one(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The paper scene's state Jacobian is [0 D; Jq Jv], so every Newton matrix is factored as
-    the n x n I - c Jv - c^2 Jq D (the stat says so); forced through the full 2n x 2n LU
-    instead (JOINTPLAY_FULL_NEWTON), the same run through five impacts takes the same steps
-    and agrees to 1e-10 relative (the two solves differ by round-off only)."""
+    """The paper scene's state Jacobian is [0 D; Jq Jv]: forced to the n x n Newton matrix
+    I - c Jv - c^2 Jq D (JOINTPLAY_NEWTON=reduced; the stat says so), the run through five
+    impacts takes the same steps as through the full 2n x 2n LU and agrees to 1e-10 relative
+    (the two solves differ by round-off only). With 8 coordinates, below the driver's
+    threshold of 12, the default takes the full LU."""
     scene = _bdf(rtol=1e-9, atol=1e-9)
-    monkeypatch.delenv("JOINTPLAY_FULL_NEWTON", raising=False)
+    monkeypatch.setenv("JOINTPLAY_NEWTON", "reduced")
     reduced = simulate(scene)
-    monkeypatch.setenv("JOINTPLAY_FULL_NEWTON", "1")
+    monkeypatch.setenv("JOINTPLAY_NEWTON", "full")
     full = simulate(scene)
+    monkeypatch.delenv("JOINTPLAY_NEWTON")
+    default = simulate(scene)
     assert reduced.stats["reduced_lu_decompositions"] == reduced.stats["lu_decompositions"] > 0
     assert full.stats["reduced_lu_decompositions"] == 0 < full.stats["lu_decompositions"]
+    assert default.stats["reduced_lu_decompositions"] == 0
+    assert default.stats["steps"] == full.stats["steps"]
     assert reduced.stats["steps"] == full.stats["steps"]
     assert len(reduced.impacts) == len(full.impacts) >= 5
     state_reduced = np.hstack([reduced.q, reduced.u])

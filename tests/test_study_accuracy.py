@@ -121,7 +121,7 @@ def test_control_study_verify_writes_the_accuracy_per_run(
         rows = list(csv.DictReader(fh))
     stored = json.loads((out / "study.json").read_text())["rows"]
     assert {r["controller"] for r in rows} == {"open loop", "PD", "computed torque",
-                                               "ARX-IMC", "neural IMC"}
+                                               "ARX-IMC", "LPV-ARX-IMC", "neural IMC"}
     for row, kept in zip(rows, stored, strict=True):
         assert all(name in row for name in ACCURACY_COLUMNS)
         assert 0 < float(row["tip_error_estimate"]) < 1e-6, row

@@ -61,6 +61,15 @@ enum {
 };
 #define STACK_DEPTH 256
 
+/* Which Newton matrix a second-order system's step factors (jp_sim.newton). From this many
+ * coordinates on, the n x n reduction by default: below it the full 2n x 2n LU has at most
+ * 22 rows and costs little beside the Jacobian, and the built-in scenes' published runs
+ * (8 coordinates) were measured through it. The two are equal up to round-off, which the
+ * paper scene's chaotic impact burst amplifies into a different step sequence (README,
+ * "Work-precision"). */
+#define JP_REDUCED_NEWTON_FROM 12
+enum { JP_NEWTON_AUTO = 0, JP_NEWTON_FULL = 1, JP_NEWTON_REDUCED = 2 };
+
 typedef struct {
   casadi_eval eval;
   jp_int n_in, n_out, sz_arg, sz_res, sz_iw, sz_w;
@@ -109,10 +118,11 @@ typedef struct {
   /* Newton matrix I - c J of a second-order system, J = [0 D; Jq Jv] (scaled; D diagonal):
    * with du solved from the n x n K = I - c Jv - c^2 Jq D, dq = r_q + c D du (exact; an LU
    * of n instead of 2n rows, 8x fewer operations). reduced: J had that form at its last
-   * evaluation; lu_c: the c the LU was formed with. full_newton: the reduction is never
-   * used (set from the environment variable JOINTPLAY_FULL_NEWTON at each reset, so that a
-   * test can compare the two paths). */
-  int reduced, full_newton; double lu_c; double *rhs_u;
+   * evaluation; lu_c: the c the LU was formed with. newton: which factorisation is allowed,
+   * set from the environment variable JOINTPLAY_NEWTON at each reset ("full", "reduced";
+   * unset or "auto": reduced from JP_REDUCED_NEWTON_FROM coordinates on), so that a test can
+   * compare the two paths. */
+  int reduced, newton; double lu_c; double *rhs_u;
   double *y_pred, *psi, *d, *y_new, *f_buf, *dy, *scal, *err, *work_n;
   double *xs, *xdot;           /* unscaled state and its derivative */
   double *tau, *u_hold;
@@ -391,7 +401,8 @@ static int jacobian(jp_sim *s, double t, const double *z) {
       s->J[r * nx + col] = s->jac_sparse[k] * c->scale[col] / c->scale[r];
     }
   int n = nx / 2;
-  s->reduced = nx % 2 == 0 && !s->full_newton;
+  s->reduced = nx % 2 == 0 && s->newton != JP_NEWTON_FULL
+              && (s->newton == JP_NEWTON_REDUCED || n >= JP_REDUCED_NEWTON_FROM);
   for (int r = 0; r < n && s->reduced; ++r)
     for (int col = 0; col < nx; ++col)
       if (col != n + r && s->J[r * nx + col] != 0.0) { s->reduced = 0; break; }
@@ -1063,8 +1074,10 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   }
   s->n_steps = s->n_rhs = s->n_jac = s->n_lu = s->n_err_fail = s->n_newton_fail = 0;
   s->n_events = s->n_onsets = 0; s->n_lu_reduced = 0;
-  const char *full = getenv("JOINTPLAY_FULL_NEWTON");
-  s->full_newton = full != NULL && full[0] != '\0' && strcmp(full, "0") != 0;
+  const char *newton = getenv("JOINTPLAY_NEWTON");
+  s->newton = newton == NULL ? JP_NEWTON_AUTO
+              : strcmp(newton, "full") == 0 ? JP_NEWTON_FULL
+              : strcmp(newton, "reduced") == 0 ? JP_NEWTON_REDUCED : JP_NEWTON_AUTO;
   if (c->wear.eval) {
     memset(s->wear_volume, 0, c->nc * sizeof(double));
     memset(s->wear_depth, 0, (size_t)2 * c->nc * c->wear_bins * sizeof(double));
