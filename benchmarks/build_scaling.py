@@ -34,8 +34,8 @@ size, and per-call cost of both functions for every level (interleaved rounds, s
 machine's speed hits every level alike), and the largest relative difference of their outputs
 from the default build.
 
-Writes ``build_scaling.csv``, ``build_scaling.md``, ``build_scaling.png`` (per-call cost and
-build time against k, log scale) and, with ``--flags-compare``, ``build_flags.csv`` into
+Writes ``build_scaling.csv``, ``build_scaling.md``, ``build_scaling.png`` (per-call cost,
+build time and memory against k, log scales) and, with ``--flags-compare``, ``build_flags.csv`` into
 ``--out`` (each atomically, all at the end), and prints the Markdown.
 
     python benchmarks/build_scaling.py --links 1,2,4,8,12,16,20,24,32 --out out/build_scaling
@@ -498,12 +498,14 @@ def _markdown(rows: list[dict[str, Any]], flag_rows: list[dict[str, Any]],
 
 
 def plot(rows: Sequence[dict[str, Any]], path: Path) -> Path:
-    """Per-call cost (jointplay and Pinocchio) and build time (by stage) against k, log
-    scales; a failed case is marked where its build stopped."""
+    """Per-call cost (jointplay and Pinocchio), build time (by stage) and the build's peak
+    memory against k, log scales; a failed case is marked at its k."""
+    from matplotlib.ticker import NullFormatter, ScalarFormatter
+
     from jointplay.common.figures import figure, save
 
-    fig, axes = figure(1, 2, 11.5, 4.4)
-    calls, build = axes[0, 0], axes[0, 1]
+    fig, axes = figure(1, 3, 15.0, 4.4)
+    calls, build, memory = axes[0, 0], axes[0, 1], axes[0, 2]
     styles = {"clearance": "-", "ideal": "--"}
     for structure, style in styles.items():
         ok = [r for r in rows if r["structure"] == structure and not r.get("error")]
@@ -521,6 +523,12 @@ def plot(rows: Sequence[dict[str, Any]], path: Path) -> Path:
             if pts:
                 build.plot(*zip(*pts, strict=True), style, marker="o", ms=3, color=f"C{i}",
                            label=f"{label} ({structure})")
+        for i, (key, label) in enumerate((("build_peak_mib", "build peak"),
+                                          ("gcc_mib", "gcc"), ("emit_mib", "emit"))):
+            pts = [(r["k"], r[key]) for r in ok if r.get(key)]
+            if pts:
+                memory.plot(*zip(*pts, strict=True), style, marker="o", ms=3, color=f"C{i}",
+                            label=f"{label} ({structure})")
         failed = [r for r in rows if r["structure"] == structure and r.get("error")]
         for r in failed:
             build.axvline(r["k"], color="C3", ls=":", lw=1)
@@ -531,9 +539,16 @@ def plot(rows: Sequence[dict[str, Any]], path: Path) -> Path:
     calls.set_title("per call, through Python", fontsize=10)
     build.set_ylabel("seconds (cold process, empty cache)")
     build.set_title("derive, emit and gcc", fontsize=10)
-    for ax in (calls, build):
+    memory.set_ylabel("MiB resident (peak)")
+    memory.set_title("memory of the build", fontsize=10)
+    links = sorted({r["k"] for r in rows if r["structure"] != PAPER})
+    for ax in (calls, build, memory):
         ax.set_xscale("log", base=2)
         ax.set_yscale("log")
+        if links:
+            ax.set_xticks(links)
+        ax.xaxis.set_major_formatter(ScalarFormatter())
+        ax.xaxis.set_minor_formatter(NullFormatter())
         ax.set_xlabel("links k")
         ax.grid(True, which="both", alpha=0.25)
         if ax.get_legend_handles_labels()[0]:
