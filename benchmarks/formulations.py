@@ -51,6 +51,7 @@ COLUMNS: list[tuple[str, str, str]] = [
     ("closed_build_s", "closed build s", "{:.1f}"),
     ("recursive_build_s", "recursive build s", "{:.1f}"),
     ("recursive_gcc_mib", "recursive gcc MiB", "{:.0f}"),
+    ("recursive_c_kb", "recursive C kB", "{:.0f}"),
     ("closed_fd_us", "closed fd us", "{:.2f}"),
     ("recursive_fd_us", "recursive fd us", "{:.2f}"),
     ("pinocchio_aba_us", "Pinocchio aba us", "{:.2f}"),
@@ -89,8 +90,12 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
     import casadi as ca
     import numpy as np
 
+    from jointplay.derive import codegen
     from jointplay.derive.codegen import emit
     from jointplay.store.build import DEFAULT_CFLAGS, compile_source
+
+    if spec.get("looped_from") is not None:
+        codegen.LOOPED_STATE_JACOBIAN_FROM = spec["looped_from"]
     from jointplay.store.model import FastFunction
 
     robot = _robot(spec["structure"], spec["k"])
@@ -113,6 +118,7 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
             peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
             row[f"{formulation}_build_s"] = emit_s + compile_s
             row[f"{formulation}_gcc_mib"] = max(peak, before) / 1024
+            row[f"{formulation}_c_kb"] = len(emitted.source) / 1000
             x = _state(emitted.layout, params, np.random.default_rng(1))
             rng = np.random.default_rng(2)
             args = [x, rng.uniform(-1.0, 1.0, len(emitted.layout["torque_joints"])), params,
@@ -152,6 +158,9 @@ def main() -> int:
                         help="time Pinocchio's aba and computeABADerivatives beside")
     parser.add_argument("--closed-up-to", type=int, default=36,
                         help="skip the closed form above this many coordinates")
+    parser.add_argument("--looped-from", type=int, default=None,
+                        help="coordinates from which the recursion's state Jacobian is looped "
+                             "(default: the generator's LOOPED_STATE_JACOBIAN_FROM)")
     parser.add_argument("--rounds", type=int, default=9, help="alternating timing rounds")
     parser.add_argument("--batch-ms", type=float, default=20.0)
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds per case")
@@ -172,6 +181,7 @@ def main() -> int:
     for structure, k in cases:
         spec = {"structure": structure, "k": k, "pinocchio": args.pinocchio,
                 "closed_up_to": args.closed_up_to, "rounds": args.rounds,
+                "looped_from": args.looped_from,
                 "batch_s": args.batch_ms / 1000}
         try:
             row = json_from_child([sys.executable, __file__, "--worker", json.dumps(spec)],

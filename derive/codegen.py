@@ -204,37 +204,20 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
     torque_slots = {joint: i for i, joint in enumerate(model.torque_joints)}
     chain = recursive.chain(structure, q, u, tau, slots, torque_slots, parameter, contact,
                             thetas, omegas)
-    mass = recursive.mass_matrix(chain)
     forcing = -recursive.inverse_dynamics(chain, ca.SX.zeros(n, 1))
     acc = recursive.forward_dynamics(chain)
     names = ["x", "tau", "p", "v_imp"]
-    fn_mass = ca.Function("mass_matrix", [q, p], [mass], ["q", "p"], ["M"])
     fn_forcing = ca.Function("forcing", [x, tau, p, v_imp], [forcing], names, ["f"])
     fn_fd = ca.Function("forward_dynamics", [x, tau, p, v_imp], [ca.vertcat(u, acc)], names,
                         ["xdot"])
     # da/dy = -M^-1 dID/dy at the computed a (Carpentier and Mansard), M^-1 by the ABA.
     acc_sym = ca.SX.sym("a", n)
-    residual = recursive.inverse_dynamics(chain, acc_sym)
-    fn_jac_state = _recursive_state_jacobian(model, inputs, chain, contact, acc, acc_sym,
-                                             slots, torque_slots, parameter, thetas, omegas)
-    # The other blocks (torques, parameters, impact speeds) are not needed while integrating:
-    # one column at a time, by a directional derivative and an ABA solve, looped over columns
-    # in the C, so their code stays the size of one column's.
-    blocks: list[Any] = []
-    xm, taum, pm, vm = (ca.MX.sym(name, arg.numel()) for name, arg in
-                        zip(names, (x, tau, p, v_imp), strict=True))
-    acc_m = fn_fd(xm, taum, pm, vm)[n:]
-    for name, arg in zip(names[1:], (tau, p, v_imp), strict=True):
-        size = arg.numel()
-        if size == 0:
-            blocks.append(ca.MX(2 * n, 0))
-            continue
-        seed = ca.SX.sym("seed", size)
-        column = -recursive.forward_dynamics(chain, ca.jtimes(residual, arg, seed))
-        fn_column = ca.Function(f"jac_column_{name}", [x, acc_sym, tau, p, v_imp, seed],
-                                [column])
-        columns = fn_column.map(size, "serial")(xm, acc_m, taum, pm, vm, ca.MX.eye(size))
-        blocks.append(ca.vertcat(ca.MX(n, size), columns))
+    jacobians = _RecursiveJacobians(model, inputs, chain, contact, acc_sym, slots, torque_slots,
+                                    parameter, thetas, omegas, fn_fd)
+    fn_mass = jacobians.mass_matrix()
+    fn_jac_state = jacobians.state()
+    xm, taum, pm, vm = jacobians.mx_inputs
+    blocks = jacobians.inputs(xm, taum, pm, vm)
     out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
     fn_jac = ca.Function(
         "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal],
@@ -245,71 +228,185 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
 
 
 # From this many coordinates on, the recursion's state Jacobian differentiates the inverse
-# dynamics column by column in a loop (C the size of one recursion, compile time linear in the
-# chain) instead of as straight-line code (faster per call, C quadratic in the chain).
-LOOPED_STATE_JACOBIAN_FROM = 48
+# dynamics a pass of columns at a time in a loop (C the size of a few recursions' tangents,
+# growing linearly with the chain) instead of as straight-line code (C quadratic in the chain,
+# but AD there skips what a column's seed does not reach). Measured on 20 and 32 clearance
+# joints (60 and 96 coordinates; `python benchmarks/formulations.py --links 20,32 --structures
+# clearance --no-paper --closed-up-to 0 --pinocchio` with `--looped-from 1`, then `1000`):
+# straight-line code was 2.3x and 8.2x cheaper per call, for 1.08x and 1.31x the build time
+# and 1.4x and 2.3x gcc's peak memory (1.3 GB at 96 coordinates). Beyond the measured range
+# the loop keeps the build bounded. (Runs one after the other on a loaded 2-core machine.)
+LOOPED_STATE_JACOBIAN_FROM = 100
+# Columns a looped Jacobian differentiates per pass: the nominal recursion is evaluated once per
+# pass, its tangents once per column, so wider passes spend less on the nominal values and
+# more on C (the code of a pass grows with its width). The state Jacobian is called at every
+# Newton matrix update; the others (mass matrix, torques, parameters, impact speeds) are not
+# called while integrating, so they take the smallest code.
+STATE_COLUMNS_PER_PASS = 4
+OTHER_COLUMNS_PER_PASS = 1
 
 
-def _recursive_state_jacobian(model: SymbolicModel, inputs: _Inputs, chain: Any,
-                              contact: dict[int, tuple[Any, Any, Any]], acc: Any, acc_sym: Any,
-                              slots: dict[tuple[int, str], int], torque_slots: dict[int, int],
-                              parameter: Any, thetas: list[Any], omegas: list[Any]
-                              ) -> ca.Function:
-    """``jac_state``: d xdot / dx = [0 I; -M^-1 dID/dx] at the computed accelerations.
+def _unit_columns(start: Any, size: int, width: int) -> Any:
+    """Columns ``start`` .. ``start + width - 1`` of the size x size identity, built from the
+    symbol ``start``: the C then holds no identity matrix as a constant (size^2 numbers)."""
+    return ca.horzcat(*[ca.vertcat(*[start == row - column for row in range(size)])
+                        for column in range(width)])
 
-    dID/dx is differentiated with the contact forces held as symbols, then chained with
-    each law's own Jacobian (a law is local to its joint, so it is differentiated once, not
-    once per output). M^-1 is applied column by column through the articulated factors,
-    computed once; the columns are a loop in the C, so its size grows with the chain, not
-    with the chain squared."""
-    from jointplay.derive import recursive
 
-    n = model.n_coordinates
-    q, u, x, p, tau, v_imp = inputs.q, inputs.u, inputs.x, inputs.p, inputs.tau, inputs.v_imp
-    names = ["x", "tau", "p", "v_imp"]
-    held = {i: tuple(ca.SX.sym(f"F{axis}{i}") for axis in ("x", "y", "t")) for i in contact}
-    forces = ca.vertcat(*[f for i in contact for f in contact[i]]) if contact else ca.SX(0, 1)
-    held_vec = ca.vertcat(*[f for i in held for f in held[i]]) if held else ca.SX(0, 1)
-    rigid = recursive.chain(model.structure, q, u, tau, slots, torque_slots, parameter, held,
-                            thetas, omegas)
-    residual = recursive.inverse_dynamics(rigid, acc_sym)
-    factors = recursive.factor_vector(chain)
-    factor_sym = ca.SX.sym("factors", factors.numel())
-    column_sym = ca.SX.sym("column", n)
-    solved = recursive.forward_dynamics(recursive.with_factors(chain, factor_sym), column_sym)
-    xm, taum, pm, vm = (ca.MX.sym(name, arg.numel())
-                        for name, arg in zip(names, (x, tau, p, v_imp), strict=True))
-    if n < LOOPED_STATE_JACOBIAN_FROM:
-        # dID/dx as straight-line code: AD skips what a column's seed does not reach.
-        d_residual = ca.jacobian(residual, x)
-        if held:
-            d_residual = d_residual + ca.mtimes(ca.jacobian(residual, held_vec),
-                                                ca.jacobian(forces, x))
-        d_residual = ca.substitute(ca.substitute(d_residual, held_vec, forces), acc_sym, acc)
-        fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp], [d_residual, factors])
-        fn_solve = ca.Function("mass_matrix_solve", [q, p, factor_sym, column_sym], [solved])
-        d_res_m, factors_m = fn_parts(xm, taum, pm, vm)
-        columns = fn_solve.map(2 * n, "serial")(xm[:n], pm, factors_m, d_res_m)
-    else:
-        # Each column's directional derivative of the rigid recursion, then its solve, in a
-        # loop: code the size of one recursion, however long the chain.
-        d_forces = ca.jacobian(forces, x) if held else ca.SX(0, 2 * n)
-        fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp],
-                               [acc, forces, ca.densify(d_forces), factors])
-        seed = ca.SX.sym("seed", 2 * n)
-        force_seed = ca.SX.sym("force_seed", held_vec.numel())
-        directional = ca.jtimes(residual, ca.vertcat(x, held_vec),
-                                ca.vertcat(seed, force_seed))
-        solved_column = ca.substitute(solved, column_sym, directional)
-        fn_column = ca.Function("jac_state_column",
-                                [x, tau, p, acc_sym, held_vec, factor_sym, force_seed, seed],
-                                [solved_column])
-        acc_m, forces_m, d_forces_m, factors_m = fn_parts(xm, taum, pm, vm)
-        columns = fn_column.map(2 * n, "serial")(xm, taum, pm, acc_m, forces_m, factors_m,
-                                                 d_forces_m, ca.MX.eye(2 * n))
-    jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
-    # Not densified: the driver reads the output's pattern as CSC, which a dense one is not.
-    return ca.Function("jac_state", [xm, taum, pm, vm], [jac_x], names, ["jac_xdot_x"])
+def _looped_columns(name: str, inputs: list[Any], start: Any, columns: Any, size: int,
+                    width: int, args: list[Any]) -> Any:
+    """The ``size`` columns of a Jacobian, ``width`` at a time: ``columns`` (an SX expression
+    of ``inputs`` and ``start``) holds the ``width`` columns from column ``start``; ``args``
+    are the MX values of ``inputs``, the same for every pass.
+
+    What does not depend on the column (the nominal recursion's values, which the tangents
+    multiply) is computed once, by ``name_nominal``; the loop over passes, in the C, holds
+    only the tangents' arithmetic (``name_tangents``)."""
+    body, symbols, values = ca.extract_parametric(columns, ca.veccat(*inputs))
+    nominal = ca.veccat(*values) if values else ca.SX(0, 1)
+    nominal_sym = ca.SX.sym("nominal", nominal.numel())
+    if symbols:
+        body = ca.substitute(body, ca.veccat(*symbols), nominal_sym)
+    fn_nominal = ca.Function(f"{name}_nominal", inputs, [nominal])
+    fn_tangents = ca.Function(f"{name}_tangents", [*inputs, nominal_sym, start], [body])
+    passes = -(-size // width)
+    looped = fn_tangents.map(f"{name}_loop", "serial", passes, list(range(len(inputs) + 1)),
+                             [])
+    starts = ca.DM([list(range(0, passes * width, width))])
+    return looped(*args, fn_nominal(*args), starts)[:, :size]
+
+
+class _RecursiveJacobians:
+    """The recursion's mass matrix and the Jacobians of its accelerations.
+
+    da/dy = -M^-1 dID/dy at the computed accelerations a (Carpentier and Mansard, RSS 2018):
+    dID/dy is differentiated with the contact forces held as symbols, then chained with each
+    law's own Jacobian (a law is local to its joint, so it is differentiated once, not once per
+    output). M^-1 is applied column by column through the articulated factors, computed once.
+    The columns are loops in the C over passes of COLUMNS_PER_PASS columns, so the code grows
+    with the chain, not with the chain squared; only the state Jacobian of short chains is
+    straight-line code (below LOOPED_STATE_JACOBIAN_FROM coordinates).
+    """
+
+    def __init__(self, model: SymbolicModel, inputs: _Inputs, chain: Any,
+                 contact: dict[int, tuple[Any, Any, Any]], acc_sym: Any,
+                 slots: dict[tuple[int, str], int], torque_slots: dict[int, int],
+                 parameter: Any, thetas: list[Any], omegas: list[Any], fn_fd: ca.Function
+                 ) -> None:
+        from jointplay.derive import recursive
+
+        self.n = n = model.n_coordinates
+        self.symbols = inputs
+        self.acc_sym = acc_sym
+        self.fn_fd = fn_fd
+        q, u, tau = inputs.q, inputs.u, inputs.tau
+        held = {i: tuple(ca.SX.sym(f"F{axis}{i}") for axis in ("x", "y", "t")) for i in contact}
+        self.forces = (ca.vertcat(*[f for i in contact for f in contact[i]]) if contact
+                       else ca.SX(0, 1))
+        self.held = (ca.vertcat(*[f for i in held for f in held[i]]) if held
+                     else ca.SX(0, 1))
+        rigid = recursive.chain(model.structure, q, u, tau, slots, torque_slots, parameter,
+                                held, thetas, omegas)
+        self.residual = recursive.inverse_dynamics(rigid, acc_sym)
+        factors = recursive.factor_vector(chain)
+        self.factor_sym = ca.SX.sym("factors", factors.numel())
+        self.column_sym = ca.SX.sym("column", n)
+        self.solved = recursive.forward_dynamics(
+            recursive.with_factors(chain, self.factor_sym), self.column_sym)
+        self.fn_factors = ca.Function("articulated_factors", [q, inputs.p], [factors])
+        names = ["x", "tau", "p", "v_imp"]
+        self.mx_inputs = tuple(ca.MX.sym(name, arg.numel()) for name, arg in
+                               zip(names, (inputs.x, tau, inputs.p, inputs.v_imp), strict=True))
+
+    def _solve_each(self, columns: Any) -> Any:
+        """M^-1 applied to each column of ``columns`` (n x width) through the factors."""
+        return ca.horzcat(*[ca.substitute(self.solved, self.column_sym, columns[:, c])
+                            for c in range(columns.size2())])
+
+    def mass_matrix(self) -> ca.Function:
+        """``mass_matrix``: M e_j = dID/da e_j (ID is linear in a), a pass of columns at a
+        time."""
+        n, q, p = self.n, self.symbols.q, self.symbols.p
+        start = ca.SX.sym("start")
+        width = OTHER_COLUMNS_PER_PASS
+        columns = ca.jtimes(self.residual, self.acc_sym, _unit_columns(start, n, width))
+        qm, pm = ca.MX.sym("q", n), ca.MX.sym("p", p.numel())
+        return ca.Function("mass_matrix", [qm, pm],
+                           [_looped_columns("mass_matrix_columns", [q, p], start, columns, n,
+                                            width, [qm, pm])],
+                           ["q", "p"], ["M"])
+
+    def state(self) -> ca.Function:
+        """``jac_state``: d xdot / dx = [0 I; -M^-1 dID/dx] at the computed accelerations."""
+        n = self.n
+        x, tau, p, v_imp = (self.symbols.x, self.symbols.tau, self.symbols.p,
+                            self.symbols.v_imp)
+        xm, taum, pm, vm = self.mx_inputs
+        acc_m = self.fn_fd(xm, taum, pm, vm)[n:]
+        factors_m = self.fn_factors(xm[:n], pm)
+        d_forces = ca.jacobian(self.forces, x)
+        if n < LOOPED_STATE_JACOBIAN_FROM:
+            # dID/dx as straight-line code: AD skips what a column's seed does not reach.
+            d_residual = ca.jacobian(self.residual, x)
+            if self.held.numel():
+                d_residual = d_residual + ca.mtimes(ca.jacobian(self.residual, self.held),
+                                                    d_forces)
+            d_residual = ca.substitute(d_residual, self.held, self.forces)
+            fn_parts = ca.Function("jac_state_parts", [x, tau, p, v_imp, self.acc_sym],
+                                   [d_residual])
+            fn_solve = ca.Function("mass_matrix_solve", [self.factor_sym, self.column_sym],
+                                   [self.solved])
+            d_res_m = fn_parts(xm, taum, pm, vm, acc_m)
+            solve = fn_solve.map("mass_matrix_solve_loop", "serial", 2 * n, [0], [])
+            columns = solve(factors_m, d_res_m)
+        else:
+            fn_forces = ca.Function("contact_forces_x", [x, p, v_imp], [self.forces, d_forces])
+            forces_m, d_forces_m = fn_forces(xm, pm, vm)
+            start = ca.SX.sym("start")
+            seed = _unit_columns(start, 2 * n, STATE_COLUMNS_PER_PASS)
+            d_forces_sym = ca.SX.sym("d_forces", d_forces.sparsity())
+            directional = ca.jtimes(self.residual, ca.vertcat(x, self.held),
+                                    ca.vertcat(seed, ca.mtimes(d_forces_sym, seed)))
+            columns = _looped_columns(
+                "jac_state_columns",
+                [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
+                self._solve_each(directional), 2 * n, STATE_COLUMNS_PER_PASS,
+                [xm, taum, pm, acc_m, forces_m, factors_m, d_forces_m])
+        jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
+        # Not densified: the driver reads the output's pattern as CSC, which a dense one is not.
+        return ca.Function("jac_state", [xm, taum, pm, vm], [jac_x],
+                           ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
+
+    def inputs(self, xm: Any, taum: Any, pm: Any, vm: Any) -> list[Any]:
+        """d xdot / d tau, d p and d v_imp (not needed while integrating): one loop over the
+        stacked inputs [tau; p; v_imp], a pass of columns at a time."""
+        n = self.n
+        x, tau, p, v_imp = (self.symbols.x, self.symbols.tau, self.symbols.p,
+                            self.symbols.v_imp)
+        sizes = [tau.numel(), p.numel(), v_imp.numel()]
+        loads = ca.vertcat(p, v_imp)
+        d_forces = ca.jacobian(self.forces, loads)
+        fn_forces = ca.Function("contact_forces_inputs", [x, p, v_imp],
+                                [self.forces, d_forces])
+        forces_m, d_forces_m = fn_forces(xm, pm, vm)
+        start = ca.SX.sym("start")
+        seed = _unit_columns(start, sum(sizes), OTHER_COLUMNS_PER_PASS)
+        d_forces_sym = ca.SX.sym("d_forces", d_forces.sparsity())
+        directional = ca.jtimes(
+            self.residual, ca.vertcat(tau, p, self.held),
+            ca.vertcat(seed[:sizes[0] + sizes[1], :],
+                       ca.mtimes(d_forces_sym, seed[sizes[0]:, :])))
+        acc_m = self.fn_fd(xm, taum, pm, vm)[n:]
+        columns = _looped_columns(
+            "jac_input_columns",
+            [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
+            self._solve_each(directional), sum(sizes), OTHER_COLUMNS_PER_PASS,
+            [xm, taum, pm, acc_m, forces_m, self.fn_factors(xm[:n], pm), d_forces_m])
+        blocks, offset = [], 0
+        for size in sizes:
+            blocks.append(ca.vertcat(ca.MX(n, size), -columns[:, offset:offset + size]))
+            offset += size
+        return blocks
 
 
 def _law_values(law: Any) -> list[Any]:

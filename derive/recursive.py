@@ -18,13 +18,15 @@ Dynamics Algorithms", 2008, with planar 3-vectors in place of 6-vectors):
   the journal and, reversed, on the bearing, so its power is F . de: it is the generalised
   force of (e_x, e_y). A drive torque is the generalised force of its joint's angle.
 
-From these: the inverse dynamics by recursive Newton-Euler (RNEA), the mass matrix by the
-composite-rigid-body algorithm (CRBA, for the ``mass_matrix`` output only), and the forward
-dynamics by the articulated-body algorithm (ABA), all straight-line CasADi SX. The Jacobian
+From these: the inverse dynamics by recursive Newton-Euler (RNEA) and the forward dynamics by
+the articulated-body algorithm (ABA), straight-line CasADi SX; the mass matrix's columns are
+the RNEA's derivative with respect to the accelerations (M e_j, see
+:mod:`jointplay.derive.codegen`). The Jacobian
 of the accelerations follows Carpentier and Mansard (RSS 2018): with ID(q, u, a) = M a - f,
 da/dy = -M^-1 dID/dy at the computed a, dID/dy by AD of the RNEA (linear cost per input),
 and M^-1 applied column by column through the ABA's articulated inertias, already computed
-(linear cost per column), never forming or factorising M.
+and passed to the solve with the entries of X and S (linear cost per column, no
+trigonometry), never forming or factorising M.
 
 The per-joint laws (contact, friction, film, wear) stay the symbolic derivation's
 (:mod:`jointplay.derive.laws`): they are written with the link's absolute angle and rate as
@@ -226,35 +228,6 @@ def inverse_dynamics(chain_: Chain, acceleration: Any) -> Any:
     return out
 
 
-def mass_matrix(chain_: Chain) -> Any:
-    """CRBA: M from the composite inertias (dense n x n: quadratic, by its nature)."""
-    M = ca.SX.zeros(chain_.n, chain_.n)
-    joints = chain_.joints
-    composite = [j.inertia for j in joints]
-    for index in range(len(joints) - 1, 0, -1):
-        X = joints[index].X
-        composite[index - 1] = composite[index - 1] + ca.mtimes([X.T, composite[index], X])
-    for index, joint in enumerate(joints):
-        if not joint.slots:
-            continue
-        F = ca.mtimes(composite[index], joint.S)
-        _place(M, joint.slots, joint.slots, ca.mtimes(joint.S.T, F))
-        for before in range(index, 0, -1):
-            F = ca.mtimes(joints[before].X.T, F)
-            other = joints[before - 1]
-            if other.slots:
-                block = ca.mtimes(other.S.T, F)
-                _place(M, other.slots, joint.slots, block)
-                _place(M, joint.slots, other.slots, block.T)
-    return M
-
-
-def _place(M: Any, rows: list[int], cols: list[int], block: Any) -> None:
-    for r, row in enumerate(rows):
-        for c, col in enumerate(cols):
-            M[row, col] = block[r, c]
-
-
 def _small_inverse(D: Any) -> Any:
     """The inverse of a symmetric positive definite 1x1, 2x2 or 3x3 SX, by cofactors."""
     size = D.shape[0]
@@ -363,13 +336,26 @@ def _inverse_transpose_times(S: Any, w: Vec) -> Vec:
     return _vec(w[0] - S[1, 0] * w[1] - S[2, 0] * w[2], w[1], w[2])
 
 
+def _has_angle(joint: Joint) -> bool:
+    return len(joint.slots) in (1, 3)
+
+
+def _has_eccentricity(joint: Joint) -> bool:
+    return joint.kind in CLEARANCE_KINDS
+
+
 def factor_vector(chain_: Chain) -> Any:
-    """The articulated factors every M^-1 solve reuses (U and D^-1 per joint; D^-1 alone for a
-    three-coordinate joint), as one vector."""
+    """What every M^-1 solve reuses, as one vector: per joint, the entries of X and S that
+    vary (e_y, -e_x; J_y, -J_x), U (joints with fewer than three coordinates) and D^-1. A
+    solve then costs a few multiplications per joint, with no trigonometry."""
     if not chain_.articulated:
         articulate(chain_)
     parts = []
     for joint, (U, Dinv, _) in zip(chain_.joints, chain_.articulated, strict=True):
+        if _has_eccentricity(joint):
+            parts += [joint.X[1, 0], joint.X[2, 0]]
+        if _has_angle(joint):
+            parts += [joint.S[1, 0], joint.S[2, 0]]
         if joint.slots and len(joint.slots) < 3:
             parts.append(ca.vec(U))
         if joint.slots:
@@ -378,22 +364,42 @@ def factor_vector(chain_: Chain) -> Any:
 
 
 def with_factors(chain_: Chain, factors: Any) -> Chain:
-    """The chain with its articulated factors read from ``factors`` (as laid out by
-    :func:`factor_vector`), so that a solve can take them as an input."""
+    """The chain as far as an M^-1 solve needs it (X, S and the articulated factors), read
+    from ``factors`` (as laid out by :func:`factor_vector`), so that a solve takes them as
+    an input and nothing else."""
     offset = 0
+
+    def take(count: int) -> Any:
+        nonlocal offset
+        offset += count
+        return factors[offset - count:offset]
+
     articulated = []
+    joints = []
+    zero = ca.SX.zeros(3, 1)
     for joint in chain_.joints:
         size = len(joint.slots)
+        X: Any = ca.SX.eye(3)
+        if _has_eccentricity(joint):
+            x10, x20 = ca.vertsplit(take(2))
+            X = ca.vertcat(ca.horzcat(1, 0, 0), ca.horzcat(x10, 1, 0), ca.horzcat(x20, 0, 1))
+        columns = []
+        if _has_angle(joint):
+            s10, s20 = ca.vertsplit(take(2))
+            columns.append(_vec(1, s10, s20))
+        if _has_eccentricity(joint):
+            columns += [_vec(0, 1, 0), _vec(0, 0, 1)]
+        S = ca.horzcat(*columns) if columns else ca.SX(3, 0)
         U: Any = ca.SX(3, 0)
         Dinv: Any = ca.SX(0, 0)
         if size and size < 3:
-            U = ca.reshape(factors[offset:offset + 3 * size], 3, size)
-            offset += 3 * size
+            U = ca.reshape(take(3 * size), 3, size)
         if size:
-            Dinv = ca.reshape(factors[offset:offset + size * size], size, size)
-            offset += size * size
+            Dinv = ca.reshape(take(size * size), size, size)
         articulated.append((U, Dinv, ca.SX.zeros(3, 3)))
-    view = Chain(chain_.joints, chain_.n, chain_.thetas, chain_.omegas, chain_.kinetic,
+        joints.append(Joint(joint.kind, joint.slots, X, S, zero, ca.SX.zeros(3, 3), zero, zero,
+                            zero, ca.SX(0, 1)))
+    view = Chain(joints, chain_.n, chain_.thetas, chain_.omegas, chain_.kinetic,
                  chain_.gravity_potential, chain_.tip)
     view.articulated = articulated
     return view
