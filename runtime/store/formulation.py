@@ -1,7 +1,7 @@
 """Which formulation of the dynamics a model is emitted with: decided without sympy.
 
 * ``closed``: Kane's mass matrix and forcing as expressions, solved by a sparse LDL^T; the
-  Jacobian by AD of M a - f. Smallest code and cost for short chains (the paper robot).
+  Jacobian by AD of M a - f. The smallest code for short chains (the paper robot).
 * ``recursive``: the articulated-body algorithm over the chain, and the Jacobian as
   -M^-1 dID/dx through the articulated inertias (:mod:`jointplay.derive.recursive`). Its
   derivation time does not grow with the chain, and its cost grows linearly (forward
@@ -9,7 +9,10 @@
   grow faster.
 
 ``auto`` (the default) takes the recursion from :data:`RECURSIVE_FROM_COORDINATES`
-coordinates on, where it measured cheaper per call (README, "Scaling with the link count");
+coordinates on. The latest measurement (README, "Which formulation a model is emitted with")
+has the recursion as cheap or cheaper from 2 coordinates on in most cases, the paper robot
+included; the threshold stays above the paper robot until its checked-in model and the
+figures measured on it are regenerated with the recursion;
 ``$JOINTPLAY_FORMULATION`` or an explicit argument overrides it. The formulation is part of a
 model's input hash, so both can sit in the cache side by side.
 """
