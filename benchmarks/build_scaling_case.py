@@ -1,6 +1,8 @@
 """One case of the build-scaling benchmark (see build_scaling.py), run in a fresh process:
-derive, emit and compile a (structure, k) model into an empty cache, time its functions per
-call, and optionally the same C at other optimisation levels."""
+derive, emit and compile a (structure, k) model into an empty cache, each stage reported to
+the parent (:func:`jointplay.bench.child.report_stage`) with its peak memory, time its
+functions per call beside Pinocchio's on the same chain, and optionally the same C at other
+optimisation levels."""
 
 from __future__ import annotations
 
@@ -67,7 +69,8 @@ def _state(model: Any, params: Any, rng: Any) -> Any:
 
 def _interleaved(fns: dict[str, Callable[[], Any]], repeats: int, batch_s: float
                  ) -> dict[str, float]:
-    """Like :func:`_time_per_call` for several functions, in alternating rounds."""
+    """Seconds per call of each of ``fns`` (:func:`per_call_seconds`), in alternating rounds:
+    the median over the rounds of each round's median."""
     rounds = max(3, repeats // 3)
     per_round = max(1, repeats // rounds)
     samples: dict[str, list[float]] = {name: [] for name in fns}
@@ -94,20 +97,21 @@ def _rel_diff(a: Sequence[Any], b: Sequence[Any]) -> float:
 
 
 def run_case(spec: dict[str, Any]) -> dict[str, Any]:
-    """Measure one (structure, k); ``spec`` holds structure, k, levels, repeats, batch_s."""
+    """Measure one (structure, k); ``spec`` holds structure, k, formulation (None: the
+    default), levels, repeats, batch_s and pinocchio (whether to time it beside)."""
     import resource
+
+    from jointplay.bench.child import report_stage
 
     with tempfile.TemporaryDirectory(prefix="jointplay-bench-") as tmp_name:
         tmp = Path(tmp_name)
         cache = tmp / "cache"
         os.environ["JOINTPLAY_CACHE"] = str(cache)  # load_model compiles through cache_root()
         built = _cold_build(spec, tmp, cache)
-        calls = _prepared_calls(built.model, built.params)
-        repeats, batch_s = spec["repeats"], spec["batch_s"]
-        per_call = _per_call(calls, repeats, batch_s)
         row: dict[str, Any] = {
             "structure": spec["structure"],
             "k": spec["k"],
+            "formulation": built.formulation,
             "n_coords": built.model.n_coordinates,
             "n_params": len(built.model.parameters),
             "derive_s": built.emitted.timings["derive"],
@@ -118,18 +122,108 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
             "compile_s": built.compile_s,
             "so_kb": built.library.stat().st_size / 1024,
             "total_s": built.wall_emit + built.compile_s,
-            **{key: value * 1e6 for key, value in per_call.items()},
-            "gcc_rss_mb": built.gcc_rss_mb,
-            "py_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+            **built.memory,
             "import_s": built.import_s,
             "load_start": built.load_at_start,
-            "load_end": os.getloadavg()[0],
             "cache_hit": built.cache_hit,
-            "finite": calls.finite,
             "sections_kb": {name: round(b / 1024, 1) for name, b in built.sizes.items()},
         }
+        report_stage("timing", clock="timing", **{k: v for k, v in row.items()
+                                                   if k != "sections_kb"})
+        calls = _prepared_calls(built.model, built.params)
+        repeats, batch_s = spec["repeats"], spec["batch_s"]
+        peer = pinocchio_chain(_robot(spec["structure"], spec["k"])) if (
+            spec.get("pinocchio", True) and spec["structure"] != PAPER) else None
+        row.update({key: value * 1e6 for key, value in
+                    _per_call(calls, peer, repeats, batch_s).items()})
+        row["pin_nv"] = peer.nv if peer is not None else None
+        row["pin_version"] = peer.version if peer is not None else None
+        row["py_rss_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+        row["load_end"] = os.getloadavg()[0]
+        row["finite"] = calls.finite
+        if spec["levels"]:
+            report_stage("flags", clock="timing")
         row["flags"] = _flag_variants(spec, built, calls, cache) if spec["levels"] else []
         return row
+
+
+# ---- peak memory of a stage -------------------------------------------------------------------
+
+def _reset_peak() -> bool:
+    """Reset this process's resident high-water mark (Linux: ``clear_refs`` 5)."""
+    try:
+        with open("/proc/self/clear_refs", "w") as fh:
+            fh.write("5")
+        return True
+    except OSError:
+        return False
+
+
+def _peak_mib() -> float:
+    """This process's resident high-water mark (MiB) since the last reset."""
+    import resource
+
+    try:
+        with open("/proc/self/status") as fh:
+            for line in fh:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+class _DescendantPeak:
+    """While open, samples every ``interval_s`` the resident memory of this process's
+    descendants (gcc, cc1, as) and of this process with them; their peaks in MiB.
+
+    Sampled rather than read from ``getrusage(RUSAGE_CHILDREN)``: a child's ``ru_maxrss``
+    starts from the resident size of the Python process it was forked from, which would
+    hide a compiler smaller than that."""
+
+    def __init__(self, interval_s: float = 0.02) -> None:
+        import threading
+
+        self.interval_s = interval_s
+        self.descendants_mib = 0.0
+        self.with_self_mib = 0.0
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+
+    def __enter__(self) -> _DescendantPeak:
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._stop.set()
+        self._thread.join()
+
+    def _run(self) -> None:
+        page = os.sysconf("SC_PAGE_SIZE") / (1 << 20)
+        me = os.getpid()
+        while True:
+            parent_rss: dict[int, tuple[int, int]] = {}
+            for entry in os.scandir("/proc"):
+                if entry.name.isdigit():
+                    try:
+                        with open(f"/proc/{entry.name}/stat", "rb") as fh:
+                            fields = fh.read().rsplit(b")", 1)[1].split()
+                    except OSError:
+                        continue
+                    parent_rss[int(entry.name)] = (int(fields[1]), int(fields[21]))
+            family, grew = {me}, True
+            while grew:
+                grew = False
+                for pid, (ppid, _) in parent_rss.items():
+                    if ppid in family and pid not in family:
+                        family.add(pid)
+                        grew = True
+            below = sum(parent_rss[p][1] for p in family - {me} if p in parent_rss) * page
+            own = parent_rss.get(me, (0, 0))[1] * page
+            self.descendants_mib = max(self.descendants_mib, below)
+            self.with_self_mib = max(self.with_self_mib, below + own)
+            if self._stop.wait(self.interval_s):
+                return
 
 
 @dataclass
@@ -137,13 +231,14 @@ class _Built:
     """One model built from a cold start, with what its build cost."""
 
     emitted: Any
+    formulation: str
     source: str
     sizes: dict[str, int]
     jac_bytes: int
     library: Path
     compile_s: float
     wall_emit: float
-    gcc_rss_mb: float
+    memory: dict[str, float | None]
     import_s: float
     load_at_start: float
     model: Any
@@ -151,15 +246,44 @@ class _Built:
     cache_hit: bool
 
 
+def _emit_by_stage(robot: Any, formulation: str | None) -> tuple[Any, dict[str, float | None]]:
+    """``emit(robot)`` with the derivation and the emission reported as stages of their own,
+    each with its peak resident memory (the derivation's only when ``emit`` derives through
+    ``codegen.derive``; otherwise ``emit_mib`` spans both and ``derive_mib`` is None)."""
+    from jointplay.bench.child import report_stage
+    from jointplay.derive import codegen
+
+    memory: dict[str, float | None] = {"derive_mib": None}
+    original = codegen.derive
+
+    def derive_as_a_stage(*args: Any, **kwargs: Any) -> Any:
+        _reset_peak()
+        model = original(*args, **kwargs)
+        memory["derive_mib"] = _peak_mib()
+        report_stage("emit", clock="build", derive_mib=memory["derive_mib"])
+        _reset_peak()
+        return model
+
+    report_stage("derive", clock="build")
+    _reset_peak()
+    codegen.derive = derive_as_a_stage
+    try:
+        emitted = codegen.emit(robot, formulation)
+    finally:
+        codegen.derive = original
+    memory["emit_mib"] = _peak_mib()
+    return emitted, memory
+
+
 def _cold_build(spec: dict[str, Any], tmp: Path, cache: Path) -> _Built:
     """Derive, emit, write and compile the (structure, k) model into an empty cache; load it."""
-    import resource
+
+    from jointplay.bench.child import report_stage
 
     t_import = time.perf_counter()
     import casadi  # noqa: F401  (timed with the rest)
     import numpy as np
 
-    from jointplay.derive import emit
     from jointplay.robot.robotio import robot_to_toml
     from jointplay.store.build import DEFAULT_CFLAGS, compile_source
     from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME, load_model
@@ -168,8 +292,9 @@ def _cold_build(spec: dict[str, Any], tmp: Path, cache: Path) -> _Built:
     robot = _robot(spec["structure"], spec["k"])
     load_at_start = os.getloadavg()[0]
     t0 = time.perf_counter()
-    emitted = emit(robot)
+    emitted, memory = _emit_by_stage(robot, spec.get("formulation"))
     wall_emit = time.perf_counter() - t0
+    formulation = str(emitted.layout.get("provenance", {}).get("formulation", "closed"))
     source = emitted.source
     sizes = _section_sizes(source)
 
@@ -179,23 +304,31 @@ def _cold_build(spec: dict[str, Any], tmp: Path, cache: Path) -> _Built:
     atomic_write_text(folder / LAYOUT_NAME, json.dumps(emitted.layout, indent=1) + "\n")
     atomic_write_text(folder / ROBOT_NAME, robot_to_toml(robot))
 
-    library, compile_s = compile_source(source, DEFAULT_CFLAGS, cache=cache)
-    gcc_rss_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
+    report_stage("gcc", clock="build", formulation=formulation,
+                 derive_s=emitted.timings["derive"], emit_s=emitted.timings["emit"],
+                 c_kb=len(source.encode()) / 1024, **memory)
+    with _DescendantPeak() as during_gcc:  # this process stays resident while gcc runs
+        library, compile_s = compile_source(source, DEFAULT_CFLAGS, cache=cache)
+    memory["gcc_mib"] = during_gcc.descendants_mib
+    memory["build_peak_mib"] = max(memory["derive_mib"] or 0.0, memory["emit_mib"] or 0.0,
+                                   during_gcc.with_self_mib)
+    report_stage("load", clock="build", compile_s=compile_s, **memory)
     model = load_model(folder)  # must be a cache hit on the build just made
-    return _Built(emitted=emitted, source=source, sizes=sizes,
+    return _Built(emitted=emitted, formulation=formulation, source=source, sizes=sizes,
                   jac_bytes=sum(sizes.get(name, 0) for name in JAC_SECTIONS),
                   library=library, compile_s=compile_s, wall_emit=wall_emit,
-                  gcc_rss_mb=gcc_rss_mb, import_s=import_s, load_at_start=load_at_start,
+                  memory=memory, import_s=import_s, load_at_start=load_at_start,
                   model=model, params=np.asarray(robot.parameter_values(), dtype=float),
                   cache_hit=model.compile_seconds == 0.0 and model.library == library)
 
 
 @dataclass
 class _Calls:
-    """Both functions bound to one state in contact, with their outputs there."""
+    """The functions bound to one state in contact, with their outputs there."""
 
     fd: Any
     jac: Any
+    jac_state: Any
     fd_args: list[Any]
     jac_args: list[Any]
     finite: bool
@@ -214,21 +347,76 @@ def _prepared_calls(model: Any, params: Any) -> _Calls:
 
     fd = model.function("forward_dynamics")
     jac = model.function("jac_forward_dynamics")
+    jac_state = model.function("jac_state")
     _bind(fd, fd_args)
     _bind(jac, jac_args)
-    fd.trigger()
-    jac.trigger()
-    finite = bool(all(np.all(np.isfinite(o)) for o in (*fd.outputs, *jac.outputs)))
-    return _Calls(fd=fd, jac=jac, fd_args=fd_args, jac_args=jac_args, finite=finite,
-                  reference=[fd(*fd_args), jac(*jac_args)])
+    _bind(jac_state, fd_args)
+    outputs = []
+    for fn in (fd, jac, jac_state):
+        fn.trigger()
+        outputs += list(fn.outputs)
+    finite = bool(all(np.all(np.isfinite(o)) for o in outputs))
+    return _Calls(fd=fd, jac=jac, jac_state=jac_state, fd_args=fd_args, jac_args=jac_args,
+                  finite=finite, reference=[fd(*fd_args), jac(*jac_args)])
 
 
-def _per_call(calls: _Calls, repeats: int, batch_s: float) -> dict[str, float]:
-    """Seconds per call of each calling path."""
+# ---- Pinocchio on the same chain ---------------------------------------------------------------
+
+@dataclass(frozen=True)
+class PinocchioChain:
+    """Pinocchio's ``aba`` and ``computeABADerivatives`` on a chain standing in for a robot,
+    each a call without arguments (like ``FastFunction.trigger``) on a fixed random state."""
+
+    aba: Callable[[], Any]
+    derivatives: Callable[[], Any]
+    nv: int
+    version: str
+
+
+def pinocchio_chain(robot: Any) -> PinocchioChain | None:
+    """A planar joint (x, y, theta: the 3 coordinates a clearance joint spans) for each
+    clearance joint, a revolute joint about z for each ideal one, the links' masses, centres
+    and inertias; None where Pinocchio is not installed."""
+    try:
+        import pinocchio as pin
+    except ImportError:
+        return None
+    import numpy as np
+
+    model = pin.Model()
+    parent, offset = 0, 0.0
+    for i, (link, joint) in enumerate(zip(robot.links, robot.joints, strict=True), start=1):
+        kind = pin.JointModelPlanar() if joint.kind == "clearance" else pin.JointModelRZ()
+        jid = model.addJoint(parent, kind, pin.SE3(np.eye(3), np.array([offset, 0.0, 0.0])),
+                             f"joint{i}")
+        inertia = np.diag([link.inertia + 0.5, link.inertia + 0.7, link.inertia])
+        model.appendBodyToJoint(jid, pin.Inertia(link.mass, np.array([link.com, 0.0, 0.0]),
+                                                 inertia), pin.SE3.Identity())
+        parent, offset = jid, link.length
+    data = model.createData()
+    rng = np.random.default_rng(1)
+    q = pin.randomConfiguration(model, -np.ones(model.nq), np.ones(model.nq))
+    v = rng.uniform(-1.0, 1.0, model.nv)
+    tau = rng.uniform(-1.0, 1.0, model.nv)
+    return PinocchioChain(aba=lambda: pin.aba(model, data, q, v, tau),
+                          derivatives=lambda: pin.computeABADerivatives(model, data, q, v, tau),
+                          nv=int(model.nv), version=str(pin.__version__))
+
+
+def _per_call(calls: _Calls, peer: PinocchioChain | None, repeats: int, batch_s: float
+              ) -> dict[str, float]:
+    """Seconds per call. jointplay's functions through ``FastFunction.trigger`` and
+    Pinocchio's, each a Python call without arguments, are timed in alternating rounds (so
+    a change in the machine's load hits them alike), the same batches and the same median;
+    then jointplay's other calling paths."""
+    side_by_side: dict[str, Callable[[], Any]] = {
+        "fd_trigger_us": calls.fd.trigger, "jac_state_us": calls.jac_state.trigger,
+        "jac_trigger_us": calls.jac.trigger}
+    if peer is not None:
+        side_by_side.update(pin_aba_us=peer.aba, pin_derivatives_us=peer.derivatives)
     fd, jac, fd_args, jac_args = calls.fd, calls.jac, calls.fd_args, calls.jac_args
     return {
-        "fd_trigger_us": per_call_seconds(fd.trigger, repeats, batch_s),
-        "jac_trigger_us": per_call_seconds(jac.trigger, repeats, batch_s),
+        **_interleaved(side_by_side, repeats, batch_s),
         "fd_call_us": per_call_seconds(lambda: fd(*fd_args), repeats, batch_s),
         "jac_call_us": per_call_seconds(lambda: jac(*jac_args), repeats, batch_s),
         "fd_casadi_us": per_call_seconds(lambda: fd.function(*fd_args), repeats, batch_s),

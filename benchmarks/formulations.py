@@ -37,7 +37,7 @@ from pathlib import Path
 from typing import Any
 
 from build_scaling import machine_facts, markdown, parse_links, to_csv
-from build_scaling_case import PAPER, _robot
+from build_scaling_case import PAPER, _robot, pinocchio_chain
 
 from jointplay.bench.child import ChildFailed, json_from_child
 from jointplay.common.files import atomic_write_text
@@ -81,30 +81,6 @@ def _state(layout: dict[str, Any], params: Any, rng: Any) -> Any:
             x[i], x[i + 1] = 1.1 * c * math.cos(phi), 1.1 * c * math.sin(phi)
             x[n + i], x[n + i + 1] = rng.uniform(-1e-3, 1e-3, size=2)
     return x
-
-
-def _pinocchio(robot: Any) -> tuple[Any, Any, Any]:
-    """Pinocchio's model of the chain, with a state and torques, or None without it."""
-    import numpy as np
-    import pinocchio as pin
-
-    model = pin.Model()
-    parent, offset = 0, 0.0
-    for i, (link, joint) in enumerate(zip(robot.links, robot.joints, strict=True), start=1):
-        kind = pin.JointModelPlanar() if joint.kind == "clearance" else pin.JointModelRZ()
-        jid = model.addJoint(parent, kind, pin.SE3(np.eye(3), np.array([offset, 0.0, 0.0])),
-                             f"joint{i}")
-        inertia = np.diag([link.inertia + 0.5, link.inertia + 0.7, link.inertia])
-        model.appendBodyToJoint(jid, pin.Inertia(link.mass, np.array([link.com, 0.0, 0.0]),
-                                                 inertia), pin.SE3.Identity())
-        parent, offset = jid, link.length
-    data = model.createData()
-    rng = np.random.default_rng(1)
-    q = pin.randomConfiguration(model, -np.ones(model.nq), np.ones(model.nq))
-    v = rng.uniform(-1.0, 1.0, model.nv)
-    tau = rng.uniform(-1.0, 1.0, model.nv)
-    return (lambda: pin.aba(model, data, q, v, tau),
-            lambda: pin.computeABADerivatives(model, data, q, v, tau), model.nv)
 
 
 def run_case(spec: dict[str, Any]) -> dict[str, Any]:
@@ -156,9 +132,10 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
                 outs.append(np.concatenate([np.ravel(o) for o in fn(*args)]))
             outputs[formulation] = outs
         if spec["pinocchio"] and spec["structure"] != PAPER:
-            aba, derivatives, _ = _pinocchio(robot)
-            calls["pinocchio_aba_us"] = aba
-            calls["pinocchio_derivatives_us"] = derivatives
+            peer = pinocchio_chain(robot)
+            if peer is not None:
+                calls["pinocchio_aba_us"] = peer.aba
+                calls["pinocchio_derivatives_us"] = peer.derivatives
         samples: dict[str, list[float]] = {name: [] for name in calls}
         for _ in range(spec["rounds"]):
             for name, fn in calls.items():

@@ -33,7 +33,15 @@ from __future__ import annotations
 import warnings
 from typing import Any
 
-from jointplay.bench.child import ChildFailed, json_from_child
+from jointplay.bench.child import (
+    ChildFailed,
+    ChildLimits,
+    ChildOutcome,
+    ChildProgress,
+    json_from_child,
+    report_stage,
+    watch_child,
+)
 from jointplay.bench.fidelity import (
     FID_COLUMNS,
     FID_CSV_KEYS,
@@ -123,15 +131,16 @@ def __getattr__(name: str) -> Any:
 
 __all__ = [
     "CHECK_METHODS", "COUNT_KEYS", "CPU_COLUMNS", "DEFAULT_CHECK_STEP", "DEFAULT_METHODS",
-    "DEFAULT_RTOLS", "DEFAULT_STEPS", "ERROR_KEYS", "ERROR_LABELS", "FID_COLUMNS", "FID_CSV_KEYS",
-    "QUICK_RTOLS", "QUICK_STEPS", "QUICK_T_END", "REFERENCE_RTOL", "SCALING_COLUMNS",
-    "SCALING_CSV_KEYS", "SCALING_SIM_TIME", "SCALING_TORQUE", "STRUCTURES", "SURROGATE_ENTRY",
-    "SURROGATE_MODULE", "TIMING_KEYS", "TIP_ERRORS", "TIP_ERROR_COLUMNS", "WP_COLUMNS",
-    "WP_CSV_KEYS", "ChildFailed", "Fidelity", "Reference", "Timed", "WorkPrecision", "all_errors",
-    "cold_compile_seconds", "cpu_name", "fidelity", "final_state_error", "heading",
-    "json_from_child", "machine_facts", "markdown_table", "reference_solution", "run_counts",
-    "run_label", "run_scaling_case", "scaling", "scaling_case", "scaling_scene", "state_scale",
+    "DEFAULT_RTOLS", "DEFAULT_STEPS", "ERROR_KEYS", "ERROR_LABELS", "FID_COLUMNS",
+    "FID_CSV_KEYS", "QUICK_RTOLS", "QUICK_STEPS", "QUICK_T_END", "REFERENCE_RTOL",
+    "SCALING_COLUMNS", "SCALING_CSV_KEYS", "SCALING_SIM_TIME", "SCALING_TORQUE", "STRUCTURES",
+    "SURROGATE_ENTRY", "SURROGATE_MODULE", "TIMING_KEYS", "TIP_ERRORS", "TIP_ERROR_COLUMNS",
+    "WP_COLUMNS", "WP_CSV_KEYS", "ChildFailed", "ChildLimits", "ChildOutcome", "ChildProgress",
+    "Fidelity", "Reference", "Timed", "WorkPrecision", "all_errors", "cold_compile_seconds",
+    "cpu_name", "fidelity", "final_state_error", "heading", "json_from_child", "machine_facts",
+    "markdown_table", "reference_solution", "report_stage", "run_counts", "run_label",
+    "run_scaling_case", "scaling", "scaling_case", "scaling_scene", "state_scale",
     "surrogate_row", "sweep_configurations", "timed_runs", "timing_columns", "tip_errors",
-    "to_csv", "without_friction", "work_precision", "write_fidelity", "write_report",
-    "write_scaling", "write_work_precision",
+    "to_csv", "watch_child", "without_friction", "work_precision", "write_fidelity",
+    "write_report", "write_scaling", "write_work_precision",
 ]
