@@ -84,20 +84,9 @@ def linear_twin(model: Narx) -> Narx:
 
 def with_scheduling(model: Narx, seed: int = 2) -> Narx:
     """The network with the scheduling signals of joints 2 and 3 as further regressors."""
-    from dataclasses import replace
+    from jointplay.neural.scheduling import with_random_scheduling
 
-    from jointplay.neural.scheduling import scheduling_names
-
-    rng = np.random.default_rng(seed)
-    names = scheduling_names([2, 3])
-    ns = len(names)
-    first = np.hstack([model.weights[0], rng.normal(0, 0.3, (model.weights[0].shape[0], ns))])
-    linear = None if model.linear is None else np.hstack(
-        [model.linear, rng.normal(0, 0.1, (model.n_outputs, ns))])
-    return replace(model, weights=(first, *model.weights[1:]), linear=linear,
-                   regressor_mean=np.concatenate([model.regressor_mean, np.zeros(ns)]),
-                   regressor_scale=np.concatenate([model.regressor_scale, np.ones(ns)]),
-                   scheduling=names)
+    return with_random_scheduling(model, [2, 3], np.random.default_rng(seed), linear_sd=0.1)
 
 
 def lpv_model(twin: Narx, seed: int = 3) -> Narx:

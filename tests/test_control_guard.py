@@ -210,21 +210,12 @@ def test_guard_keeps_a_damaged_model_bounded_and_divergence_is_reported(
 
 
 def with_scheduling(model: Narx, seed: int = 40) -> Narx:
-    """The network with the scheduling signals of joints 2 and 3 as further regressors."""
-    from jointplay.neural.scheduling import scheduling_names
+    """The network with the scheduling signals of joints 2 and 3 as further regressors (their
+    normalisation drawn too)."""
+    from jointplay.neural.scheduling import with_random_scheduling
 
-    rng = np.random.default_rng(seed)
-    names = scheduling_names([2, 3])
-    ns = len(names)
-    first = np.hstack([model.weights[0], rng.normal(0, 0.3, (model.weights[0].shape[0], ns))])
-    linear = None if model.linear is None else np.hstack(
-        [model.linear, rng.normal(0, 0.05, (model.n_outputs, ns))])
-    return replace(model, weights=(first, *model.weights[1:]), linear=linear,
-                   regressor_mean=np.concatenate([model.regressor_mean,
-                                                  rng.normal(0, 0.3, ns)]),
-                   regressor_scale=np.concatenate([model.regressor_scale,
-                                                   rng.uniform(0.5, 2.0, ns)]),
-                   scheduling=names)
+    return with_random_scheduling(model, [2, 3], np.random.default_rng(seed), linear_sd=0.05,
+                                  random_normalisation=True)
 
 
 @pytest.mark.parametrize("case", ["network with fallback", "network, guard off",

@@ -74,3 +74,25 @@ def trajectory_scheduling(trajectory: Any, output_names: Sequence[str],
 
 
 __all__ = ["scheduling_names", "scheduling_values", "trajectory_scheduling"]
+
+
+def with_random_scheduling(model: Any, joints: Sequence[int], rng: np.random.Generator, *,
+                           linear_sd: float, random_normalisation: bool = False) -> Any:
+    """``model`` (a Narx) extended by the scheduling signals of ``joints`` as further
+    regressors with random weights (first layer N(0, 0.3), linear path N(0, ``linear_sd``)):
+    a network of the trained one's shape, to exercise and time the controller step with
+    scheduling inputs. ``random_normalisation`` also draws their means and scales (else 0
+    and 1), so that a check covers the normalisation too."""
+    from dataclasses import replace
+
+    names = scheduling_names(joints)
+    ns = len(names)
+    first = np.hstack([model.weights[0], rng.normal(0, 0.3, (model.weights[0].shape[0], ns))])
+    linear = None if model.linear is None else np.hstack(
+        [model.linear, rng.normal(0, linear_sd, (model.n_outputs, ns))])
+    mean = rng.normal(0, 0.3, ns) if random_normalisation else np.zeros(ns)
+    scale = rng.uniform(0.5, 2.0, ns) if random_normalisation else np.ones(ns)
+    return replace(model, weights=(first, *model.weights[1:]), linear=linear,
+                   regressor_mean=np.concatenate([model.regressor_mean, mean]),
+                   regressor_scale=np.concatenate([model.regressor_scale, scale]),
+                   scheduling=names)
