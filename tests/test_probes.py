@@ -12,10 +12,12 @@ it as a subprocess, which gets a real SIGINT at the phase named.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import resource
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -524,15 +526,23 @@ def test_interrupted_sweep_keeps_no_row(tmp_path: Path) -> None:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize(("delay", "group"), [(0.5, True), (5.0, True), (5.0, False)])
+@pytest.mark.parametrize(("delay", "group", "busy_port"),
+                         [(0.5, True, False), (5.0, True, False), (5.0, False, True)])
 def test_interrupted_sweep_with_workers_keeps_no_row(tmp_path: Path, delay: float,
-                                                     group: bool) -> None:
+                                                     group: bool, busy_port: bool) -> None:
     """Ctrl-C while the local cluster starts, and while its workers run cases: sent to the
-    whole process group (a terminal) and to the sweep's process alone."""
+    whole process group (a terminal) and to the sweep's process alone; once with the usual
+    port of a cluster's HTTP server (8787) taken, as by another cluster running."""
     sweep = long_sweep(tmp_path)
     out = tmp_path / "out"
-    code, err = interrupt_when(["sweep", str(sweep), "--out", str(out), "--workers", "2"],
-                               "sweep ", delay, group=group)
+    with contextlib.ExitStack() as stack:
+        if busy_port:
+            sock = stack.enter_context(socket.socket())
+            with contextlib.suppress(OSError):  # taken already: the same condition
+                sock.bind(("", 8787))
+                sock.listen()
+        code, err = interrupt_when(["sweep", str(sweep), "--out", str(out), "--workers", "2"],
+                                   "sweep ", delay, group=group)
     check_contract(code, err)
     assert code == 130, err
     assert "UserWarning" not in err

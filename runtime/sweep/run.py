@@ -130,8 +130,12 @@ def _local_cluster(workers: int) -> Iterator[Any]:
     cluster = None
     try:
         with interrupts.deferred(), dask.config.set(settings):
+            # No dashboard; the scheduler's HTTP server (health, metrics) starts anyway, on
+            # 8787 unless told otherwise: a free port, so that a cluster already running
+            # there (another sweep, a user's) costs no warning.
             cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                   dashboard_address=None, silence_logs=logging.CRITICAL)
+                                   dashboard_address=None, silence_logs=logging.CRITICAL,
+                                   scheduler_kwargs={"dashboard_address": ":0"})
         yield cluster
     finally:
         if cluster is not None:
