@@ -143,28 +143,12 @@ def fit_lpv_arx(segments: Sequence[Scheduled], na: int, nb: int, carry: Sequence
                   nb)
 
 
-def windows(segments: Sequence[Scheduled], length: int,
-            history: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Free-run windows as jointplay.neural.twin.windows makes them, with the scheduling."""
-    m, h = history, length
-    ds, us, ss = [], [], []
-    for d, u, s in segments:
-        for start in range(m, d.shape[0] - h, max(1, h // 2)):
-            ds.append(d[start - m: start + h + 1])
-            us.append(u[start - m: start + h + 1])
-            ss.append(s[start - m: start + h + 1])
-    if not ds:
-        h = min(d.shape[0] for d, _, _ in segments) - m - 1
-        ds = [d[: m + h + 1] for d, _, _ in segments]
-        us = [u[: m + h + 1] for _, u, _ in segments]
-        ss = [s[: m + h + 1] for _, _, s in segments]
-    return np.array(ds), np.array(us), np.array(ss)
-
-
 def window_loss(model: LpvArx, segments: Sequence[Scheduled], length: int,
                 scale: np.ndarray) -> float:
     """Mean squared free-run error over windows, each output divided by ``scale`` (the loss
     jointplay.neural.twin uses for the network and ARX)."""
+    from jointplay.neural.twin import windows
+
     d, u, s = windows(segments, length, model.history)
     pred = model.free_run(d, u, s)
     with np.errstate(all="ignore"):
@@ -172,5 +156,4 @@ def window_loss(model: LpvArx, segments: Sequence[Scheduled], length: int,
     return loss if np.isfinite(loss) else float("inf")
 
 
-__all__ = ["LpvArx", "fit_lpv_arx", "scheduled_segments", "scheduling", "window_loss",
-           "windows"]
+__all__ = ["LpvArx", "fit_lpv_arx", "scheduled_segments", "scheduling", "window_loss"]
