@@ -4,9 +4,11 @@ Functions emitted (all take the parameter vector ``p`` as a runtime input):
 
 * ``mass_matrix(q, p) -> M``                      M(q) du/dt = f
 * ``forcing(x, tau, p, v_imp) -> f``              f including contact, friction, gravity, drive
-* ``forward_dynamics(x, tau, p, v_imp) -> xdot``  xdot = [u; M^-1 f], plus
-  ``jac_forward_dynamics``, its exact Jacobian with respect to every input, in the calling
-  convention CasADi looks up in a compiled library (so CVODES/IDAS get it for free)
+* ``forward_dynamics(x, tau, p, v_imp) -> xdot``  xdot = [u; M^-1 f], plus ``jac_state``, its
+  exact Jacobian with respect to x, and ``jac_forward_dynamics``, with respect to every input,
+  in the calling convention CasADi looks up in a compiled library (so CVODES/IDAS get it for
+  free); the latter's input blocks live in a second, deferred library (DEFERRED_EXPORTS),
+  compiled on first use
 * ``contact(x, p, v_imp) -> delta, delta_dot, v_t, f_n, f_t, f_x, f_y`` per clearance joint
 * ``energy(x, p) -> kinetic, gravity, contact, total``
 * ``end_effector(x, udot, p) -> position, velocity, acceleration`` of the tip of the last link
@@ -43,9 +45,8 @@ from jointplay.robot import Robot
 from jointplay.robot.robotio import robot_to_toml
 from jointplay.store.formulation import formulation_for
 from jointplay.store.layout import Layout
-from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
+from jointplay.store.model import DEFERRED_SOURCE_NAME, LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.store.stamp import provenance
-
 
 # CasADi's common-subexpression elimination on every emitted function: the symbolic laws and
 # AD repeat subexpressions that are not shared nodes (at 12 clearance joints it takes the
@@ -65,6 +66,7 @@ class Emitted:
     source: str  # the C text, header included
     layout: dict[str, Any]
     timings: dict[str, float]
+    deferred_source: str = ""  # the deferred library's C text, header included
 
 
 @dataclass(frozen=True)
@@ -78,6 +80,19 @@ class _Inputs:
     p: Any
     tau: Any
     v_imp: Any
+
+
+# The deferred library: what integration and a default run never call, compiled on the first
+# call that needs it (see jointplay.store.model). Its C holds the input blocks of the full
+# Jacobian (torques, parameters, impact speeds: over a third of the 12-link chain's gcc time)
+# and two wrappers over the eager library's own functions, which it is linked against:
+# ``jac_forward_dynamics`` (the state block is the eager ``jac_state``, not compiled twice) and
+# ``differentiable_forward_dynamics``, ``forward_dynamics`` beside that Jacobian, for CasADi's
+# integrators (a compiled function's Jacobian is looked up in its own library).
+INPUT_JACOBIANS = "jac_forward_dynamics_inputs"
+DEFERRED_FUNCTIONS = (INPUT_JACOBIANS,)
+DEFERRED_EXPORTS = (INPUT_JACOBIANS, "jac_forward_dynamics", "differentiable_forward_dynamics",
+                    "jac_differentiable_forward_dynamics")
 
 
 # Where the dynamics come from: "closed", Kane's mass matrix and forcing, solved by LDL^T;
@@ -232,13 +247,16 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
     fn_jac_state = jacobians.state()
     xm, taum, pm, vm = jacobians.mx_inputs
     blocks = jacobians.inputs(xm, taum, pm, vm)
-    out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
-    fn_jac = _function(
-        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal],
-        [fn_jac_state(xm, taum, pm, vm), *blocks], [*names, "out_xdot"],
-        ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
+    fn_jac = _input_jacobians(xm, taum, pm, vm, blocks)
     return (per_joint, potential, chain.kinetic, chain.gravity_potential, chain.tip,
             (fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state), converters)
+
+
+def _input_jacobians(xm: Any, taum: Any, pm: Any, vm: Any, blocks: list[Any]) -> ca.Function:
+    """``jac_forward_dynamics_inputs``: d xdot / d tau, d p and d v_imp, the blocks of the full
+    Jacobian that integration never calls; they go into the deferred library."""
+    return _function(INPUT_JACOBIANS, [xm, taum, pm, vm], blocks, ["x", "tau", "p", "v_imp"],
+                     ["jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
 
 
 # From this many coordinates on, the recursion's state Jacobian differentiates the inverse
@@ -505,12 +523,7 @@ def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca
     # (CasADi writes a dense pattern in a short form).
     fn_jac_state = _function("jac_state", [xm, taum, pm, vm], [blocks[0]], names,
                                ["jac_xdot_x"])
-    out_nominal = ca.MX.sym("out_xdot", ca.Sparsity(2 * n, 1))
-    fn_jac = _function(
-        "jac_forward_dynamics", [xm, taum, pm, vm, out_nominal],
-        [fn_jac_state(xm, taum, pm, vm), *blocks[1:]], [*names, "out_xdot"],
-        ["jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
-    return fn_fd, fn_jac, fn_jac_state
+    return fn_fd, _input_jacobians(xm, taum, pm, vm, blocks[1:]), fn_jac_state
 
 
 def _contact_and_energy_functions(inputs: _Inputs, per_joint: dict[str, list[Any]],
@@ -649,6 +662,106 @@ def fixed_step_functions(fn_fd: ca.Function, fn_jac_state: ca.Function
     return rk4, radau
 
 
+_FULL_JACOBIAN_IN = ("x", "tau", "p", "v_imp", "out_xdot")
+_FULL_JACOBIAN_OUT = ("jac_xdot_x", "jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp")
+
+
+def _switch(names: tuple[str, ...]) -> str:
+    cases = "".join(f'    case {i}: return "{name}";\n' for i, name in enumerate(names))
+    return f"  switch (i) {{\n{cases}    default: return 0;\n  }}\n"
+
+
+def _exported(name: str, call: str, n_in: int, n_out: int, names_in: tuple[str, ...],
+              names_out: tuple[str, ...], sparsity_in: str, sparsity_out: str, work: str
+              ) -> str:
+    """The entry points CasADi's ``external`` reads, for a function implemented by ``call``
+    (C statements ending in a return) and ``work`` (statements setting the four sizes)."""
+    sizes = "casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w"
+    real = "const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem"
+    export = "CASADI_SYMBOL_EXPORT"
+    return (
+        f"{export} int {name}({real}) {{\n  (void) mem;\n{call}}}\n\n"
+        f"{export} int {name}_checkout(void) {{\n  return 0;\n}}\n\n"
+        f"{export} void {name}_release(int mem) {{\n  (void) mem;\n}}\n\n"
+        f"{export} void {name}_incref(void) {{\n}}\n\n"
+        f"{export} void {name}_decref(void) {{\n}}\n\n"
+        f"{export} casadi_int {name}_n_in(void) {{ return {n_in};}}\n\n"
+        f"{export} casadi_int {name}_n_out(void) {{ return {n_out};}}\n\n"
+        f"{export} casadi_real {name}_default_in(casadi_int i) {{\n  (void) i;\n"
+        "  return 0;\n}\n\n"
+        f"{export} const char* {name}_name_in(casadi_int i) {{\n{_switch(names_in)}}}\n\n"
+        f"{export} const char* {name}_name_out(casadi_int i) {{\n{_switch(names_out)}}}\n\n"
+        f"{export} const casadi_int* {name}_sparsity_in(casadi_int i) {{\n{sparsity_in}}}\n\n"
+        f"{export} const casadi_int* {name}_sparsity_out(casadi_int i) {{\n{sparsity_out}}}"
+        "\n\n"
+        f"{export} int {name}_work({sizes}) {{\n{work}  return 0;\n}}\n\n"
+        f"{export} int {name}_work_bytes({sizes}) {{\n{work}"
+        "  if (sz_arg) *sz_arg *= sizeof(const casadi_real*);\n"
+        "  if (sz_res) *sz_res *= sizeof(casadi_real*);\n"
+        "  if (sz_iw) *sz_iw *= sizeof(casadi_int);\n"
+        "  if (sz_w) *sz_w *= sizeof(casadi_real);\n"
+        "  return 0;\n}\n\n")
+
+
+def deferred_wrappers(n_state: int) -> str:
+    """The C of the deferred library's wrappers over the eager library (see DEFERRED_EXPORTS),
+    appended to the CasADi code of the input blocks."""
+    real = "const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem"
+    sizes = "casadi_int* sz_arg, casadi_int* sz_res, casadi_int* sz_iw, casadi_int* sz_w"
+    inputs = INPUT_JACOBIANS
+    head = (
+        "/* Wrappers over the eager library, which this one is linked against. */\n"
+        + "".join(f"int {fn}({real});\nint {fn}_work({sizes});\n"
+                  f"const casadi_int* {fn}_sparsity_in(casadi_int i);\n"
+                  f"const casadi_int* {fn}_sparsity_out(casadi_int i);\n"
+                  for fn in ("jac_state", "forward_dynamics"))
+        + f"\nstatic const casadi_int jp_nominal_sparsity[4] = {{{n_state}, 1, 0, 0}};\n\n"
+        "static casadi_int jp_max(casadi_int a, casadi_int b) { return a > b ? a : b; }\n\n"
+        "/* The state block from jac_state, the others from " + inputs + ". A callee uses\n"
+        " * the pointer arrays beyond its own inputs and outputs as scratch, and the caller's\n"
+        " * arrays are its own (kept between calls), so this function's fifth input and its\n"
+        " * outputs are put back before it returns; a block not asked for (a null pointer) is\n"
+        " * not computed. */\n"
+        "static int jp_full_jacobian(const casadi_real** arg, casadi_real** res, "
+        "casadi_int* iw, casadi_real* w) {\n"
+        "  const casadi_real* nominal = arg[4];\n"
+        "  casadi_real* out[4];\n  casadi_int i;\n  int status = 0;\n"
+        "  for (i = 0; i < 4; ++i) out[i] = res[i];\n"
+        "  if (out[0]) {\n    res[0] = out[0];\n"
+        "    status = jac_state(arg, res, iw, w, 0);\n  }\n"
+        "  if (!status && (out[1] || out[2] || out[3])) {\n"
+        "    res[0] = out[1];\n    res[1] = out[2];\n    res[2] = out[3];\n"
+        f"    status = {inputs}(arg, res, iw, w, 0);\n  }}\n"
+        "  arg[4] = nominal;\n"
+        "  for (i = 0; i < 4; ++i) res[i] = out[i];\n"
+        "  return status;\n}\n\n"
+        f"static void jp_full_jacobian_work({sizes}) {{\n"
+        "  casadi_int a0, r0, i0, w0, a1, r1, i1, w1;\n"
+        "  jac_state_work(&a0, &r0, &i0, &w0);\n"
+        f"  {inputs}_work(&a1, &r1, &i1, &w1);\n"
+        "  if (sz_arg) *sz_arg = jp_max(jp_max(a0, a1), 5);\n"
+        "  if (sz_res) *sz_res = jp_max(jp_max(r0, r1), 4);\n"
+        "  if (sz_iw) *sz_iw = jp_max(i0, i1);\n"
+        "  if (sz_w) *sz_w = jp_max(w0, w1);\n}\n\n")
+    full_in = (f"  if (i >= 0 && i < 4) return {inputs}_sparsity_in(i);\n"
+               "  return i == 4 ? jp_nominal_sparsity : 0;\n")
+    full_out = ("  if (i == 0) return jac_state_sparsity_out(0);\n"
+                f"  if (i > 0 && i < 4) return {inputs}_sparsity_out(i - 1);\n  return 0;\n")
+    full_call = "  return jp_full_jacobian(arg, res, iw, w);\n"
+    full_work = "  jp_full_jacobian_work(sz_arg, sz_res, sz_iw, sz_w);\n"
+    text = head
+    for name in ("jac_forward_dynamics", "jac_differentiable_forward_dynamics"):
+        text += _exported(name, full_call, 5, 4, _FULL_JACOBIAN_IN, _FULL_JACOBIAN_OUT,
+                          full_in, full_out, full_work)
+    text += _exported(
+        "differentiable_forward_dynamics", "  return forward_dynamics(arg, res, iw, w, 0);\n",
+        4, 1, _FULL_JACOBIAN_IN[:4], ("xdot",),
+        "  return forward_dynamics_sparsity_in(i);\n",
+        "  return forward_dynamics_sparsity_out(i);\n",
+        "  forward_dynamics_work(sz_arg, sz_res, sz_iw, sz_w);\n")
+    return text
+
+
 def _slot_summary(layout: dict[str, Any]) -> str:
     lines = [" * Functions (inputs -> outputs; column vectors, dense, float64):"]
     for name, fn in layout["functions"].items():
@@ -666,7 +779,17 @@ def _slot_summary(layout: dict[str, Any]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any]) -> str:
+def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any],
+           deferred: bool = False) -> str:
+    """The provenance header of model.c, or with ``deferred`` of the deferred library's C."""
+    if deferred:
+        about = (" * The deferred part of this model: compiled on the first call that needs it,\n"
+                 f" * linked against the library of {SOURCE_NAME}. Functions, in CasADi's calling\n"
+                 " * convention (their slots are forward_dynamics' and its Jacobian's):\n"
+                 + "".join(f" *   {name}\n" for name in DEFERRED_EXPORTS))
+    else:
+        about = (" * Every input and output slot is described, with names and units, in "
+                 "layout.json.\n" + _slot_summary(layout))
     return (
         "/* GENERATED FILE: DO NOT EDIT.\n"
         " * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models\n"
@@ -676,8 +799,7 @@ def header(prov: dict[str, str], robot_name: str, layout: dict[str, Any]) -> str
         f"sympy {prov['sympy']}\n"
         f" * formulation: {prov.get('formulation', 'closed')}\n"
         f" * input hash: {prov['input_hash']}\n"
-        " * Every input and output slot is described, with names and units, in layout.json.\n"
-        + _slot_summary(layout)
+        + about
         + " */\n"
     )
 
@@ -694,17 +816,24 @@ def emit(robot: Robot, formulation: str | None = None) -> Emitted:
     t1 = time.perf_counter()
     functions, layout = build_functions(model, formulation)
     gen = ca.CodeGenerator(SOURCE_NAME, {"with_header": False, "verbose": False})
+    deferred_gen = ca.CodeGenerator(DEFERRED_SOURCE_NAME, {"with_header": False,
+                                                           "verbose": False})
     for fn in functions:
-        gen.add(fn)
+        (deferred_gen if fn.name() in DEFERRED_FUNCTIONS else gen).add(fn)
     body = gen.dump()
+    deferred_body = deferred_gen.dump() + deferred_wrappers(2 * model.n_coordinates)
     prov = {**provenance(structure.as_dict(), formulation),
-            "code_sha256": hashlib.sha256(body.encode()).hexdigest()}
+            "code_sha256": hashlib.sha256(body.encode()).hexdigest(),
+            "deferred_code_sha256": hashlib.sha256(deferred_body.encode()).hexdigest()}
     # Through the runtime's own type: what is written is what the loader reads back.
-    layout = Layout.from_dict({"name": robot.name, "provenance": prov, **layout}).as_dict()
+    layout = Layout.from_dict({"name": robot.name, "provenance": prov, **layout,
+                               "deferred": list(DEFERRED_EXPORTS)}).as_dict()
     source = header(prov, robot.name, layout) + body
+    deferred_source = header(prov, robot.name, layout, deferred=True) + deferred_body
     t2 = time.perf_counter()
     return Emitted(source=source, layout=layout,
-                   timings={"derive": t1 - t0, "emit": t2 - t1, **model.timings})
+                   timings={"derive": t1 - t0, "emit": t2 - t1, **model.timings},
+                   deferred_source=deferred_source)
 
 
 def write_generated(robot: Robot, folder: str | Path, formulation: str | None = None
@@ -714,6 +843,7 @@ def write_generated(robot: Robot, folder: str | Path, formulation: str | None = 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     atomic_write_text(folder / SOURCE_NAME, emitted.source)
+    atomic_write_text(folder / DEFERRED_SOURCE_NAME, emitted.deferred_source)
     atomic_write_text(folder / LAYOUT_NAME, json.dumps(emitted.layout, indent=1) + "\n")
     atomic_write_text(folder / ROBOT_NAME, robot_to_toml(robot))
     return emitted

@@ -91,3 +91,53 @@ def test_loaded_model_matches_casadi_reference(tmp_path: Path, monkeypatch) -> N
     np.testing.assert_allclose(jac, ref_jac, rtol=0, atol=1e-12 * np.abs(ref_jac).max())
     with pytest.raises(ValueError, match="'x' needs 12 values"):
         model.forward_dynamics(x[:5], tau, p, vimp)
+
+
+def test_deferred_library_is_built_on_first_use(tmp_path: Path, monkeypatch, capsys) -> None:  # type: ignore[no-untyped-def]
+    """What integration never calls is compiled on its first call, once, into its own cache
+    entry (keyed by its own C, stamped with the model's provenance); the full Jacobian it
+    serves has the eager library's state block bit for bit and input blocks that match
+    central differences of the forward dynamics."""
+    monkeypatch.setenv("JOINTPLAY_CACHE", str(tmp_path))
+    folder = generated.folders()["paper_4dof"]
+    model = load_model(folder)
+    rng = np.random.default_rng(3)
+    x = rng.normal(size=model.n_state) * 1e-5
+    x[:2] = rng.normal(size=2)
+    p, tau, vimp = model.parameter_vector(), rng.normal(size=2), np.array([0.1, 0.2])
+    state_block = model.function("jac_state")(x, tau, p, vimp)[0]
+    assert model.deferred_library is None
+    assert len(list((tmp_path / "build").iterdir())) == 1
+    capsys.readouterr()
+    blocks = model.jacobian(x, tau, p, vimp)
+    assert "compiling the rest of model" in capsys.readouterr().err
+    deferred = model.deferred_library
+    assert deferred is not None and model.deferred_compile_seconds > 0
+    assert deferred.parent != model.library.parent and str(deferred).startswith(str(tmp_path))
+    header = (deferred.parent / "model.c").read_text()[:1500]
+    assert header.startswith("/* GENERATED FILE: DO NOT EDIT.")
+    assert f"input hash: {model.layout.input_hash}" in header
+    np.testing.assert_array_equal(blocks["x"], state_block)
+    for _ in range(3):  # a call leaves the caller's (reused) argument arrays as it found them
+        for name, block in model.jacobian(x, tau, p, vimp).items():
+            np.testing.assert_array_equal(block, blocks[name], err_msg=name)
+    for name, value, column_of in (("tau", tau, 0), ("p", p, 1), ("v_imp", vimp, 2)):
+        args = [x, tau, p, vimp]
+        for j in range(value.size):
+            step = 1e-6 * max(1.0, abs(value[j]))
+            up, down = value.copy(), value.copy()
+            up[j] += step
+            down[j] -= step
+            args[column_of + 1] = up
+            plus = model.forward_dynamics(*args)
+            args[column_of + 1] = down
+            minus = model.forward_dynamics(*args)
+            central = (plus - minus) / (2 * step)
+            scale = max(1.0, float(np.abs(central).max()))
+            np.testing.assert_allclose(blocks[name][:, j], central, rtol=0,
+                                       atol=1e-5 * scale, err_msg=f"d xdot / d {name}[{j}]")
+    again = load_model(folder)  # a new process would find both libraries in the cache
+    capsys.readouterr()
+    np.testing.assert_array_equal(again.jacobian(x, tau, p, vimp)["p"], blocks["p"])
+    assert again.deferred_library == deferred and again.deferred_compile_seconds == 0.0
+    assert "compiling" not in capsys.readouterr().err

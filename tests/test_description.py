@@ -180,7 +180,7 @@ def test_cli_derive_and_inspect_write_their_outputs(tmp_path: Path) -> None:
     proc = _cli("derive", "--links", "2", "--clearance", "2", "--out", "gen", cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
     assert {p.name for p in (tmp_path / "gen").iterdir()} == {
-        "model.c", "layout.json", "robot.toml"}
+        "model.c", "model_deferred.c", "layout.json", "robot.toml"}
     proc = _cli("inspect", str(tmp_path / "gen" / "robot.toml"), "--out", "eq.md", cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
     text = (tmp_path / "eq.md").read_text()

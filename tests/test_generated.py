@@ -9,9 +9,10 @@ import pytest
 import sympy
 
 from jointplay import generated, load_robot
+from jointplay.common.errors import GeneratedCodeError
 from jointplay.derive import emit
 from jointplay.derive.codegen import write_generated
-from jointplay.store.model import read_generated
+from jointplay.store.model import check_generated, read_generated
 
 FOLDERS = generated.folders()
 
@@ -42,17 +43,25 @@ def test_regenerate_and_diff(name: str, update_generated: bool) -> None:
     assert emitted.source == on_disk, (
         f"generated/{name}/model.c differs from what the generator emits now; regenerate with "
         "`pytest tests/test_generated.py --update-generated` and review the diff")
+    assert emitted.deferred_source == (folder / "model_deferred.c").read_text(), (
+        f"generated/{name}/model_deferred.c differs from what the generator emits now; "
+        "regenerate with `pytest tests/test_generated.py --update-generated` and review the diff")
     assert json.loads((folder / "layout.json").read_text()) == json.loads(
         json.dumps(emitted.layout)), f"generated/{name}/layout.json is stale"
 
 
 def test_hand_edited_source_is_refused(tmp_path) -> None:  # type: ignore[no-untyped-def]
     folder = FOLDERS["paper_4dof"]
-    for f in ("model.c", "layout.json", "robot.toml"):
+    for f in ("model.c", "model_deferred.c", "layout.json", "robot.toml"):
         (tmp_path / f).write_text((folder / f).read_text())
+    deferred = (tmp_path / "model_deferred.c").read_text()
+    (tmp_path / "model_deferred.c").write_text(deferred.replace("return 0;", "return 1;", 1))
+    with pytest.raises(GeneratedCodeError, match=r"model_deferred\.c was edited"):
+        check_generated(tmp_path)
+    (tmp_path / "model_deferred.c").write_text(deferred)
+    check_generated(tmp_path)
     text = (tmp_path / "model.c").read_text()
     (tmp_path / "model.c").write_text(text.replace("input hash: ", "input hash: 0", 1)[:-1])
-    from jointplay.common.errors import GeneratedCodeError
 
     with pytest.raises(GeneratedCodeError, match="input hash"):
         read_generated(tmp_path)

@@ -9,7 +9,7 @@ from typing import Any
 from jointplay.cli.args import check_writable_dir, robot_arguments, robot_from_args
 from jointplay.common.files import OutputPlan, all_or_nothing, make_folder
 from jointplay.store.formulation import CHOICES, ENVIRONMENT, RECURSIVE_FROM_COORDINATES
-from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
+from jointplay.store.model import DEFERRED_SOURCE_NAME, LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
@@ -31,7 +31,7 @@ def cmd_derive(args: argparse.Namespace) -> int:
     out = Path(args.out)
     plan = OutputPlan()
     plan.input("robot", args.robot)
-    for name in (SOURCE_NAME, LAYOUT_NAME, ROBOT_NAME):
+    for name in (SOURCE_NAME, DEFERRED_SOURCE_NAME, LAYOUT_NAME, ROBOT_NAME):
         plan.file("--out", out / name, f"the generated {name}")
     plan.check()
     check_writable_dir(out, "--out")
@@ -43,6 +43,8 @@ def cmd_derive(args: argparse.Namespace) -> int:
     t = emitted.timings
     formulation = emitted.layout["provenance"]["formulation"]
     print(f"wrote {out}/model.c ({len(emitted.source) / 1024:.0f} KiB, {formulation} "
-          f"formulation), layout.json, robot.toml in {t['derive']:.2f} s derive + "
+          f"formulation), {DEFERRED_SOURCE_NAME} "
+          f"({len(emitted.deferred_source) / 1024:.0f} KiB, compiled on first use), "
+          f"layout.json, robot.toml in {t['derive']:.2f} s derive + "
           f"{t['emit']:.2f} s emit")
     return 0

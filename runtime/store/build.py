@@ -29,7 +29,7 @@ import struct
 import subprocess
 import sys
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from jointplay.common.errors import BuildError, FileError
@@ -61,9 +61,12 @@ def compiler_version(cc: str = "gcc") -> str:
     return out.stdout.splitlines()[0].strip()
 
 
-def build_key(source: str, cflags: tuple[str, ...] = DEFAULT_CFLAGS, cc: str = "gcc") -> str:
+def build_key(source: str, cflags: tuple[str, ...] = DEFAULT_CFLAGS, cc: str = "gcc",
+              libraries: tuple[str, ...] = ()) -> str:
+    """The cache key: the C text, the flags, the compiler and its version, and the libraries
+    linked in (by path: a library linked against another names it by its path)."""
     h = hashlib.sha256()
-    for part in (source, " ".join(cflags), cc, compiler_version(cc)):
+    for part in (source, " ".join(cflags), cc, compiler_version(cc), *libraries):
         h.update(part.encode())
         h.update(b"\0")
     return h.hexdigest()
@@ -143,10 +146,13 @@ def compile_source(
     cflags: tuple[str, ...] = DEFAULT_CFLAGS,
     cc: str = "gcc",
     cache: Path | None = None,
+    libraries: tuple[str, ...] = (),
+    announce: Callable[[], None] | None = None,
 ) -> tuple[Path, float]:
     """Return the path of the compiled library for ``source`` and the seconds spent compiling
-    (0.0 when the cache already held a complete build)."""
-    key = build_key(source, cflags, cc)
+    (0.0 when the cache already held a complete build). ``libraries`` (paths of shared
+    libraries) are linked in; ``announce`` is called just before the compiler starts."""
+    key = build_key(source, cflags, cc, libraries)
     entry = (cache or cache_root()) / "build" / key
     library = entry / LIBRARY_NAME
     if _entry_is_complete(entry):
@@ -158,7 +164,7 @@ def compile_source(
         note(f"the compiled model {library} is damaged (its size, checksum or ELF headers "
              "do not match); compiling it again")
     try:
-        return _build(source, cflags, cc, entry)
+        return _build(source, cflags, cc, entry, libraries, announce)
     except (OSError, FileError) as err:
         raise cache_error(entry, err) from None
 
@@ -222,9 +228,10 @@ _OUT_OF_SPACE = ("No space left on device", "Disk quota exceeded", "File too lar
                  "Read-only file system")
 
 
-def _compile(cc: str, cflags: tuple[str, ...], c_file: Path, output: Path) -> None:
+def _compile(cc: str, cflags: tuple[str, ...], c_file: Path, output: Path,
+             libraries: tuple[str, ...] = ()) -> None:
     preexec = _die_with_parent if sys.platform.startswith("linux") else None
-    proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(output), "-lm"],
+    proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(output), *libraries, "-lm"],
                           capture_output=True, text=True, preexec_fn=preexec)
     if proc.returncode == 0:
         return
@@ -236,7 +243,9 @@ def _compile(cc: str, cflags: tuple[str, ...], c_file: Path, output: Path) -> No
     raise BuildError(f"{cc} failed on {c_file}:\n{proc.stderr[-4000:]}")
 
 
-def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path) -> tuple[Path, float]:
+def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path,
+           libraries: tuple[str, ...] = (), announce: Callable[[], None] | None = None
+           ) -> tuple[Path, float]:
     from jointplay.common.files import temp_tag
 
     library = entry / LIBRARY_NAME
@@ -252,9 +261,11 @@ def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path) -> tuple[
             c_file = entry / "model.c"
             atomic_write_text(c_file, source)
             tmp_lib = entry / f".{LIBRARY_NAME}.{temp_tag()}.x.part"
+            if announce is not None:
+                announce()
             t0 = time.perf_counter()
             try:
-                _compile(cc, cflags, c_file, tmp_lib)
+                _compile(cc, cflags, c_file, tmp_lib, libraries)
             except BaseException:  # failed or interrupted: no half-written library left
                 tmp_lib.unlink(missing_ok=True)
                 raise
@@ -263,6 +274,7 @@ def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path) -> tuple[
             atomic_write_text(entry / MARKER_NAME, json.dumps({
                 "sha256": _sha256_file(library), "size": library.stat().st_size,
                 "cflags": list(cflags), "cc": cc, "compiler": compiler_version(cc),
+                "libraries": list(libraries),
                 "seconds": round(elapsed, 3)}))
     except BaseException:
         _discard_failed(entry, fresh)

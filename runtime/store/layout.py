@@ -88,6 +88,9 @@ class Layout:
     parameters: tuple[Parameter, ...]
     torque_joints: tuple[int, ...]
     functions: Mapping[str, FunctionSlots] = field(default_factory=dict)
+    # Functions of the deferred library (compiled on first use); none in a model generated
+    # before there was one, whose every function is in model.c.
+    deferred: tuple[str, ...] = ()
 
     @property
     def clearance_joints(self) -> tuple[int, ...]:
@@ -120,7 +123,8 @@ class Layout:
                 "parameters": [p.as_dict() for p in self.parameters],
                 "torque_joints": list(self.torque_joints),
                 "clearance_joints": list(self.clearance_joints),
-                "functions": {k: f.as_dict() for k, f in self.functions.items()}}
+                "functions": {k: f.as_dict() for k, f in self.functions.items()},
+                **({"deferred": list(self.deferred)} if self.deferred else {})}
 
     @classmethod
     def from_dict(cls, data: Any, source: str = "layout.json") -> Layout:
@@ -133,6 +137,11 @@ class Layout:
         for key, kind in _KEYS.items():
             if not isinstance(data.get(key), kind):
                 raise refuse(f"has no valid {key!r} entry")
+        deferred = data.get("deferred", [])
+        if not isinstance(deferred, list) or not all(isinstance(d, str) for d in deferred) \
+                or (deferred and not isinstance(data["provenance"].get("deferred_code_sha256"),
+                                                str)):
+            raise refuse("has a malformed 'deferred' entry")
         try:
             structure = Structure.from_dict(data["structure"])
             functions = {k: FunctionSlots.from_dict(f) for k, f in data["functions"].items()}
@@ -148,7 +157,8 @@ class Layout:
                          "structure")
         return cls(name=data["name"], provenance=data["provenance"], structure=structure,
                    coordinates=coordinates, parameters=parameters,
-                   torque_joints=tuple(data["torque_joints"]), functions=functions)
+                   torque_joints=tuple(data["torque_joints"]), functions=functions,
+                   deferred=tuple(deferred))
 
 
 _KEYS: dict[str, type] = {"name": str, "structure": dict, "coordinates": list,

@@ -23,6 +23,10 @@ from jointplay.store.build import DEFAULT_CFLAGS, compile_source
 from jointplay.store.layout import Layout
 
 SOURCE_NAME = "model.c"
+# The C of what integration and a default run never call (the Jacobian's input blocks, and
+# wrappers that pair forward_dynamics with its full Jacobian): compiled on first use, linked
+# against model.c's library.
+DEFERRED_SOURCE_NAME = "model_deferred.c"
 LAYOUT_NAME = "layout.json"
 ROBOT_NAME = "robot.toml"
 _HASH_LINE = re.compile(r"^ \* input hash: ([0-9a-f]{64})$", re.MULTILINE)
@@ -116,6 +120,8 @@ class Model:
         self.cflags = cflags
         self._rebuilt = False
         self._functions: dict[str, FastFunction] = {}
+        self.deferred_library: Path | None = None  # compiled on the first call that needs it
+        self.deferred_compile_seconds = 0.0
 
     def __repr__(self) -> str:
         return (f"Model({self.name!r}, coordinates={self.coordinates}, "
@@ -126,14 +132,20 @@ class Model:
         if name not in self._functions:
             functions = self.layout.functions
             jacobians = {f.jacobian for f in functions.values()}
-            if name not in functions and name not in jacobians:
+            if name not in functions and name not in jacobians \
+                    and name not in self.layout.deferred:
                 raise KeyError(f"{name!r} is not a function of this model; it has "
                                f"{', '.join(self.layout.functions)}")
-            try:
-                fn = ca.external(name, str(self.library))
-            except RuntimeError as err:
-                fn = self._rebuilt_external(name, err)
-            if name in functions:
+            if name in self.layout.deferred:
+                fn = self._deferred_external(name)
+            else:
+                try:
+                    fn = ca.external(name, str(self.library))
+                except RuntimeError as err:
+                    fn = self._rebuilt_external(name, err)
+            if name.startswith("differentiable_") and name[15:] in functions:
+                matrices = frozenset(s.name for s in functions[name[15:]].outputs if s.matrix)
+            elif name in functions:
                 matrices = frozenset(s.name for s in functions[name].outputs if s.matrix)
             else:  # a Jacobian: every block is a matrix
                 matrices = frozenset(fn.name_out())
@@ -163,8 +175,54 @@ class Model:
                 from None
 
     def casadi_function(self, name: str) -> ca.Function:
-        """The compiled function as a CasADi ``Function`` (for integrators and AD)."""
+        """The compiled function as a CasADi ``Function`` (for integrators and AD): a function
+        with a generated Jacobian comes from the deferred library, beside that Jacobian, where
+        the model has one (CasADi looks a compiled function's Jacobian up in its library)."""
+        differentiable = f"differentiable_{name}"
+        if differentiable in self.layout.deferred:
+            return self.function(differentiable).function
         return self.function(name).function
+
+    def _deferred_external(self, name: str) -> ca.Function:
+        """``name`` from the deferred library, which is compiled (once, cached) on the first
+        call that needs it, saying so on stderr; one that does not load is rebuilt once."""
+        if self.deferred_library is None:
+            self.deferred_library, self.deferred_compile_seconds = self._compile_deferred()
+        try:
+            return ca.external(name, str(self.deferred_library))
+        except RuntimeError as err:
+            from jointplay.common.errors import BuildError
+            from jointplay.store.build import discard_entry
+
+            cause = (str(err).strip().splitlines() or ["unknown error"])[-1][:200]
+            note(f"the compiled model {self.deferred_library} does not load; compiling it "
+                 "again")
+            discard_entry(self.deferred_library.parent)
+            self.deferred_library, self.deferred_compile_seconds = self._compile_deferred()
+            try:
+                return ca.external(name, str(self.deferred_library))
+            except RuntimeError as again:
+                cause = (str(again).strip().splitlines() or [cause])[-1][:200]
+                raise BuildError(f"the compiled model {self.deferred_library} cannot be "
+                                 f"loaded ({cause})") from None
+
+    def _compile_deferred(self) -> tuple[Path, float]:
+        import sys
+
+        # The eager library first (from the cache, or rebuilt if it was removed): the
+        # deferred one is linked against it by its path.
+        source, _ = read_generated(self.folder)
+        self.library, seconds = compile_source(source, self.cflags)
+        self.compile_seconds += seconds
+        deferred = read_deferred(self.folder, self.layout)
+
+        def announce() -> None:
+            print(f"jointplay: compiling the rest of model {self.name!r} "
+                  f"({', '.join(self.layout.deferred[:2])}, ...: not needed to integrate; "
+                  "once, then cached)", file=sys.stderr, flush=True)
+
+        return compile_source(deferred, self.cflags, libraries=(str(self.library),),
+                              announce=announce)
 
     # ---- parameters ------------------------------------------------------------------------
     def parameter_vector(self, values: Mapping[str, float] | Sequence[float] | None = None,
@@ -259,6 +317,31 @@ def read_generated(folder: str | Path) -> tuple[str, Layout]:
     return source, layout
 
 
+def read_deferred(folder: str | Path, layout: Layout) -> str:
+    """The deferred library's C text of a generated folder, checked against layout.json."""
+    path = Path(folder) / DEFERRED_SOURCE_NAME
+    try:
+        source = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise GeneratedCodeError(f"{folder} is not a whole generated model: {path} is "
+                                 "missing; regenerate it with `jointplay derive`") from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise GeneratedCodeError(f"{path} cannot be read ({err}); regenerate the folder with "
+                                 "`jointplay derive`") from None
+    match = _HASH_LINE.search(source[:3000])
+    if not match or match.group(1) != layout.input_hash:
+        raise GeneratedCodeError(f"{folder}: the input hash of {DEFERRED_SOURCE_NAME} does not "
+                                 f"match {LAYOUT_NAME}; regenerate the folder with "
+                                 "`jointplay derive`")
+    body = source[source.find("*/\n") + 3:]
+    if hashlib.sha256(body.encode()).hexdigest() != layout.provenance.get(
+            "deferred_code_sha256"):
+        raise GeneratedCodeError(f"{path} was edited after it was generated (its checksum does "
+                                 "not match layout.json); regenerate it with `jointplay derive` "
+                                 "instead of editing it")
+    return source
+
+
 def read_defaults(folder: Path, layout: Layout) -> np.ndarray | None:
     """The default parameter vector from the folder's robot.toml (None if it has none)."""
     from jointplay.common.errors import DescriptionError
@@ -281,6 +364,8 @@ def check_generated(folder: str | Path) -> None:
     """Raise :class:`GeneratedCodeError` unless every file of ``folder`` loads."""
     folder = Path(folder)
     _, layout = read_generated(folder)
+    if layout.deferred:
+        read_deferred(folder, layout)
     read_defaults(folder, layout)
 
 
