@@ -125,8 +125,8 @@ FLAG_COLUMNS: list[tuple[str, str, str]] = [
     ("so_kb", ".so KiB", "{:.0f}"),
     ("fd_trigger_us", "fd trigger us", "{:.2f}"),
     ("fd_x", "fd x -O1", "{:.2f}"),
-    ("jac_trigger_us", "jac trigger us", "{:.2f}"),
-    ("jac_x", "jac x -O1", "{:.2f}"),
+    ("jac_trigger_us", "jac_state trigger us", "{:.2f}"),
+    ("jac_x", "jac_state x -O1", "{:.2f}"),
     ("max_rel_diff", "max rel diff", "{:.1e}"),
 ]
 CSV_KEYS = list(dict.fromkeys(

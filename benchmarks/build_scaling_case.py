@@ -389,7 +389,8 @@ def _prepared_calls(model: Any, params: Any) -> _Calls:
         outputs += list(fn.outputs)
     finite = bool(all(np.all(np.isfinite(o)) for o in outputs))
     return _Calls(fd=fd, jac=jac, jac_state=jac_state, fd_args=fd_args, jac_args=jac_args,
-                  finite=finite, reference=[fd(*fd_args), jac(*jac_args)])
+                  finite=finite, reference=[fd(*fd_args), jac(*jac_args),
+                                            jac_state(*fd_args)])
 
 
 # ---- Pinocchio on the same chain ---------------------------------------------------------------
@@ -467,22 +468,23 @@ def _flag_variants(spec: dict[str, Any], built: _Built, calls: _Calls, cache: Pa
     repeats, batch_s = spec["repeats"], spec["batch_s"]
     variants: dict[str, tuple[tuple[str, ...], float, Path, Any, Any]] = {
         " ".join(DEFAULT_CFLAGS): (DEFAULT_CFLAGS, built.compile_s, built.library, calls.fd,
-                                   calls.jac)}
+                                   calls.jac_state)}
     for level in spec["levels"]:
         words = level.split()
         cflags = tuple(w for f in DEFAULT_CFLAGS
                        for w in (words if f.startswith("-O") else [f]))
         lib, seconds = compile_source(built.source, cflags, cache=cache)
         vfd = FastFunction(ca.external("forward_dynamics", str(lib)))
-        vjac = FastFunction(ca.external("jac_forward_dynamics", str(lib)))
+        # The state Jacobian: the eager library's (the full one is in the deferred library).
+        vjac = FastFunction(ca.external("jac_state", str(lib)))
         _bind(vfd, calls.fd_args)
-        _bind(vjac, calls.jac_args)
+        _bind(vjac, calls.fd_args)
         variants[" ".join(cflags)] = (cflags, seconds, lib, vfd, vjac)
     timed_fd = _interleaved({k: v[3].trigger for k, v in variants.items()}, repeats, batch_s)
     timed_jac = _interleaved({k: v[4].trigger for k, v in variants.items()}, repeats, batch_s)
     flags = []
     for key, (cflags, seconds, lib, vfd, vjac) in variants.items():
-        out = [vfd(*calls.fd_args), vjac(*calls.jac_args)]
+        out = [vfd(*calls.fd_args), vjac(*calls.fd_args)]
         flags.append({
             "structure": spec["structure"],
             "k": spec["k"],
@@ -493,6 +495,6 @@ def _flag_variants(spec: dict[str, Any], built: _Built, calls: _Calls, cache: Pa
             "fd_trigger_us": timed_fd[key] * 1e6,
             "jac_trigger_us": timed_jac[key] * 1e6,
             "max_rel_diff": _rel_diff([*out[0], *out[1]],
-                                      [*calls.reference[0], *calls.reference[1]]),
+                                      [*calls.reference[0], *calls.reference[2]]),
         })
     return flags
