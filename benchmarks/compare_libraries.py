@@ -23,24 +23,40 @@ import numpy as np
 from build_scaling_case import _state
 
 
+def _children_cpu() -> float:
+    import resource
+
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def main() -> int:
     import casadi as ca
 
     from jointplay.robot import load_robot
-    from jointplay.store.build import compile_source
+    from jointplay.store.build import DEFAULT_CFLAGS, compile_source
     from jointplay.store.model import FastFunction, read_generated
 
     parser = argparse.ArgumentParser(description=(__doc__ or "").split("\n\n")[0])
     parser.add_argument("folders", nargs=2, type=Path, help="two generated model folders")
     parser.add_argument("--rounds", type=int, default=30, help="interleaved timing rounds")
     parser.add_argument("--round-ms", type=float, default=50.0, help="length of one round")
+    parser.add_argument("--second-cflags", default=None,
+                        help="compile the second folder with these flags instead of the "
+                             "default (e.g. \"-Og -fPIC -shared -fno-math-errno\")")
     args = parser.parse_args()
     functions = ("forward_dynamics", "jac_state")
     bound: dict[tuple[int, str], FastFunction] = {}
     for i, folder in enumerate(args.folders):
         source, layout = read_generated(folder)
         params = np.asarray(load_robot(folder / "robot.toml").parameter_values())
-        library, _ = compile_source(source)
+        cflags = tuple(args.second_cflags.split()) if i == 1 and args.second_cflags else \
+            DEFAULT_CFLAGS
+        cpu = _children_cpu()
+        library, seconds = compile_source(source, cflags)
+        if seconds:
+            print(f"{folder}: gcc {' '.join(cflags)}: {seconds:.2f} s, "
+                  f"{_children_cpu() - cpu:.2f} CPU s", flush=True)
         model = argparse.Namespace(layout=layout)
         rng = np.random.default_rng(1)
         values = [_state(model, params, rng), rng.uniform(-1.0, 1.0, len(layout.torque_joints)),
