@@ -46,7 +46,6 @@ from jointplay.store.layout import Layout
 from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
 from jointplay.store.stamp import provenance
 
-
 # CasADi's common-subexpression elimination on every emitted function: the symbolic laws and
 # AD repeat subexpressions that are not shared nodes (at 12 clearance joints it takes the
 # straight-line state Jacobian from 33779 to 21697 instructions). It merges identical
@@ -257,6 +256,9 @@ LOOPED_STATE_JACOBIAN_FROM = 100
 # Newton matrix update; the others (mass matrix, torques, parameters, impact speeds) are not
 # called while integrating, so they take the smallest code.
 STATE_COLUMNS_PER_PASS = 4
+# Columns of the straight-line state Jacobian's M^-1 solves per call (when 2n is a multiple
+# of it; else 2 or 1): each call reads the articulated factors once.
+SOLVE_COLUMNS_PER_CALL = 4
 OTHER_COLUMNS_PER_PASS = 1
 
 
@@ -367,30 +369,54 @@ class _RecursiveJacobians:
                 d_residual = d_residual + ca.mtimes(ca.jacobian(self.residual, self.held),
                                                     d_forces)
             d_residual = ca.substitute(d_residual, self.held, self.forces)
+            # Dense, so that each column the solves read is contiguous (zeros written here cost
+            # less than densifying the sparse output afterwards).
             fn_parts = _function("jac_state_parts", [x, tau, p, v_imp, self.acc_sym],
-                                   [d_residual])
-            fn_solve = _function("mass_matrix_solve", [self.factor_sym, self.column_sym],
-                                   [self.solved])
-            d_res_m = fn_parts(xm, taum, pm, vm, acc_m)
-            solve = fn_solve.map("mass_matrix_solve_loop", "serial", 2 * n, [0], [])
-            columns = solve(factors_m, d_res_m)
-        else:
-            fn_forces = _function("contact_forces_x", [x, p, v_imp], [self.forces, d_forces])
-            forces_m, d_forces_m = fn_forces(xm, pm, vm)
-            start = ca.SX.sym("start")
-            seed = _unit_columns(start, 2 * n, STATE_COLUMNS_PER_PASS)
-            d_forces_sym = ca.SX.sym("d_forces", d_forces.sparsity())
-            directional = ca.jtimes(self.residual, ca.vertcat(x, self.held),
-                                    ca.vertcat(seed, ca.mtimes(d_forces_sym, seed)))
-            columns = _looped_columns(
-                "jac_state_columns",
-                [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
-                self._solve_each(directional), 2 * n, STATE_COLUMNS_PER_PASS,
-                [xm, taum, pm, acc_m, forces_m, factors_m, d_forces_m])
+                                 [ca.densify(d_residual)])
+            return _function("jac_state", [xm, taum, pm, vm],
+                             [self._state_from_parts(fn_parts(xm, taum, pm, vm, acc_m),
+                                                     factors_m)],
+                             ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
+        fn_forces = _function("contact_forces_x", [x, p, v_imp], [self.forces, d_forces])
+        forces_m, d_forces_m = fn_forces(xm, pm, vm)
+        start = ca.SX.sym("start")
+        seed = _unit_columns(start, 2 * n, STATE_COLUMNS_PER_PASS)
+        d_forces_sym = ca.SX.sym("d_forces", d_forces.sparsity())
+        directional = ca.jtimes(self.residual, ca.vertcat(x, self.held),
+                                ca.vertcat(seed, ca.mtimes(d_forces_sym, seed)))
+        columns = _looped_columns(
+            "jac_state_columns",
+            [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
+            self._solve_each(directional), 2 * n, STATE_COLUMNS_PER_PASS,
+            [xm, taum, pm, acc_m, forces_m, factors_m, d_forces_m])
         jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
         # Not densified: the driver reads the output's pattern as CSC, which a dense one is not.
         return _function("jac_state", [xm, taum, pm, vm], [jac_x],
                            ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
+
+    def _state_from_parts(self, d_residual: Any, factors: Any) -> Any:
+        """[0 I; -M^-1 dID/dx] from dID/dx (dense, n x 2n) with no copying or transposing
+        after the solves: the output's pattern holds every column's entry in the row of its
+        own coordinate (a stored 0 in the first n columns, the 1 of I in the others) above
+        the n rows of the speeds, so column c of the output's nonzeros is
+        (c >= n, -M^-1 dID/dx_c), which is what each solve writes, in order. The solves
+        take SOLVE_COLUMNS_PER_CALL columns a call: the factors are read once per call (and
+        copied once per call by CasADi's map), not once per column."""
+        n = self.n
+        width = next(w for w in (SOLVE_COLUMNS_PER_CALL, 2, 1) if (2 * n) % w == 0)
+        columns = ca.SX.sym("columns", n, width)
+        identity = ca.SX.sym("identity", 1, width)
+        solved = ca.vertcat(identity, -self._solve_each(columns))
+        fn_solve = _function("mass_matrix_solve", [self.factor_sym, columns, identity],
+                             [solved])
+        calls = 2 * n // width
+        solve = fn_solve.map("mass_matrix_solve_loop", "serial", calls, [0], [])
+        identity_row = ca.DM([[0.0] * n + [1.0] * n])
+        values = solve(factors, d_residual, identity_row)
+        rows = [[c % n, *range(n, 2 * n)] for c in range(2 * n)]
+        pattern = ca.Sparsity.triplet(2 * n, 2 * n, [r for rs in rows for r in rs],
+                                      [c for c, rs in enumerate(rows) for _ in rs])
+        return ca.sparsity_cast(values, pattern)
 
     def inputs(self, xm: Any, taum: Any, pm: Any, vm: Any) -> list[Any]:
         """d xdot / d tau, d p and d v_imp (not needed while integrating): one loop over the
