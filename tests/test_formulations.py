@@ -267,3 +267,24 @@ def test_formulation_switch(monkeypatch: pytest.MonkeyPatch) -> None:
         f.formulation_for(small, "kane")
     hashes = {provenance(small.as_dict(), name)["input_hash"] for name in f.FORMULATIONS}
     assert len(hashes) == 2
+
+
+@pytest.mark.parametrize("case", [CASES[0], CASES[2]], ids=_case_id)
+def test_state_jacobian_layout(case: tuple[tuple[str, ...], Effects]) -> None:
+    """The recursion's state Jacobian is stored as the M^-1 solves write it: every column holds
+    the row of its own coordinate (an exact 0 in the first n columns, the 1 of I in the
+    others) above the n speed rows, and nothing else in the first n rows, so the BDF driver
+    sees the form [0 I; Jq Jv] and factors the n x n Newton matrix. Cases with 2n a multiple
+    of four and not (four solve columns a call, and two)."""
+    kinds, effects = case
+    fn = _functions(kinds, effects, "recursive")["jac_state"]
+    inputs = _random_inputs(kinds, effects, np.random.default_rng(3))
+    n = fn.size1_in(0) // 2
+    sparsity = fn.sparsity_out(0)
+    rows, columns = sparsity.get_triplet()
+    expected = [(c % n, c) for c in range(2 * n)] + [(r, c) for c in range(2 * n)
+                                                     for r in range(n, 2 * n)]
+    assert sorted(zip(rows, columns, strict=True)) == sorted(expected)
+    dense = np.asarray(fn.call([inputs[name] for name in fn.name_in()])[0].full())
+    np.testing.assert_array_equal(dense[:n], np.hstack([np.zeros((n, n)), np.eye(n)]))
+    assert np.all(np.isfinite(dense[n:])) and np.any(dense[n:] != 0)
