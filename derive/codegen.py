@@ -41,6 +41,7 @@ from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.robot import Robot
 from jointplay.robot.robotio import robot_to_toml
+from jointplay.robot.structure import CLEARANCE_KINDS, MOVING_KINDS
 from jointplay.store.formulation import formulation_for
 from jointplay.store.layout import Layout
 from jointplay.store.model import LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
@@ -226,7 +227,7 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
     # da/dy = -M^-1 dID/dy at the computed a (Carpentier and Mansard), M^-1 by the ABA.
     acc_sym = ca.SX.sym("a", n)
     jacobians = _RecursiveJacobians(model, inputs, chain, contact, acc_sym, slots, torque_slots,
-                                    parameter, thetas, omegas, fn_fd)
+                                    parameter, thetas, omegas, fn_fd, acc)
     fn_mass = jacobians.mass_matrix()
     fn_jac_state = jacobians.state()
     xm, taum, pm, vm = jacobians.mx_inputs
@@ -260,6 +261,27 @@ STATE_COLUMNS_PER_PASS = 4
 # of it; else 2 or 1): each call reads the articulated factors once.
 SOLVE_COLUMNS_PER_CALL = 4
 OTHER_COLUMNS_PER_PASS = 1
+
+
+def differentiates_the_aba(structure: Any) -> bool:
+    """Whether the recursion's straight-line state Jacobian is AD of the ABA's accelerations
+    (da/dx directly) rather than -M^-1 dID/dx (AD of the RNEA, then 2n solves through the
+    articulated factors).
+
+    Where every joint with coordinates has three (a clearance joint), no joint passes an
+    articulated inertia on (it is exactly zero), so a column's tangent through the ABA stays
+    near the joint it is seeded at, while -M^-1 dID/dx multiplies a dense dID/dx column by
+    M^-1 for each of the 2n columns. Where a joint has one or two coordinates, the articulated
+    inertias it passes on depend on every coordinate below it and their derivatives fill the
+    tangents. Measured side by side on a loaded 2-core machine, one build of each, with the
+    same C flags: 12 clearance joints, AD of the ABA 16.3 us per call against 57.0 us, the C
+    1696 against 1345 KiB, gcc 49.4 against 49.2 s; 12 ideal joints, 12.8 us against 9.6 us,
+    the C 859 against 529 KiB, gcc 22.9 against 10.1 s. Chains that mix the two kinds keep
+    the solves (not measured here)."""
+    kinds = [kind for kind in structure.joints if kind in MOVING_KINDS or kind in
+             CLEARANCE_KINDS]
+    return bool(kinds) and all(kind in MOVING_KINDS and kind in CLEARANCE_KINDS
+                               for kind in kinds)
 
 
 def _unit_columns(start: Any, size: int, width: int) -> Any:
@@ -307,14 +329,16 @@ class _RecursiveJacobians:
     def __init__(self, model: SymbolicModel, inputs: _Inputs, chain: Any,
                  contact: dict[int, tuple[Any, Any, Any]], acc_sym: Any,
                  slots: dict[tuple[int, str], int], torque_slots: dict[int, int],
-                 parameter: Any, thetas: list[Any], omegas: list[Any], fn_fd: ca.Function
-                 ) -> None:
+                 parameter: Any, thetas: list[Any], omegas: list[Any], fn_fd: ca.Function,
+                 acceleration: Any) -> None:
         from jointplay.derive import recursive
 
         self.n = n = model.n_coordinates
         self.symbols = inputs
         self.acc_sym = acc_sym
         self.fn_fd = fn_fd
+        self.acceleration = acceleration
+        self.direct = differentiates_the_aba(model.structure)
         q, u, tau = inputs.q, inputs.u, inputs.tau
         held: dict[int, tuple[Any, Any, Any]] = {
             i: (ca.SX.sym(f"Fx{i}"), ca.SX.sym(f"Fy{i}"), ca.SX.sym(f"Ft{i}")) for i in contact}
@@ -362,6 +386,12 @@ class _RecursiveJacobians:
         acc_m = self.fn_fd(xm, taum, pm, vm)[n:]
         factors_m = self.fn_factors(xm[:n], pm)
         d_forces = ca.jacobian(self.forces, x)
+        if n < LOOPED_STATE_JACOBIAN_FROM and self.direct:
+            # da/dx by AD of the ABA itself, straight-line: no dID/dx, no M^-1 solves.
+            jac_sx = ca.vertcat(ca.horzcat(ca.SX(n, n), ca.SX.eye(n)),
+                                ca.jacobian(self.acceleration, x))
+            return _function("jac_state", [x, tau, p, v_imp], [jac_sx],
+                             ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
         if n < LOOPED_STATE_JACOBIAN_FROM:
             # dID/dx as straight-line code: AD skips what a column's seed does not reach.
             d_residual = ca.jacobian(self.residual, x)
