@@ -323,7 +323,8 @@ class _RecursiveJacobians:
     output). M^-1 is applied column by column through the articulated factors, computed once.
     The columns are loops in the C over passes of COLUMNS_PER_PASS columns, so the code grows
     with the chain, not with the chain squared; only the state Jacobian of short chains is
-    straight-line code (below LOOPED_STATE_JACOBIAN_FROM coordinates).
+    straight-line code (below LOOPED_STATE_JACOBIAN_FROM coordinates), and for a chain of
+    clearance joints only it is AD of the ABA's accelerations (see differentiates_the_aba).
     """
 
     def __init__(self, model: SymbolicModel, inputs: _Inputs, chain: Any,
