@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+2ed7d2bb570c, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+30d9198403ff, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 71c559707b9f774ec576c037d23a1e88c2d4b5eb3d4187fd44302623e8b73990
+ * input hash: 34bdaa76e0757925dfb757de20d4e1363715cb03796ec57e2d1fe726ef69fd81
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
