@@ -96,6 +96,9 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
 
     if spec.get("looped_from") is not None:
         codegen.LOOPED_STATE_JACOBIAN_FROM = spec["looped_from"]
+    if spec.get("state_jacobian", "auto") != "auto":
+        forced = spec["state_jacobian"] == "aba"
+        codegen.differentiates_the_aba = lambda structure: forced
     from jointplay.store.model import FastFunction
 
     robot = _robot(spec["structure"], spec["k"])
@@ -161,6 +164,9 @@ def main() -> int:
     parser.add_argument("--looped-from", type=int, default=None,
                         help="coordinates from which the recursion's state Jacobian is looped "
                              "(default: the generator's LOOPED_STATE_JACOBIAN_FROM)")
+    parser.add_argument("--state-jacobian", choices=("auto", "aba", "solves"), default="auto",
+                        help="the recursion's straight-line state Jacobian: AD of the ABA, "
+                             "-M^-1 dID/dx by solves, or the generator's choice (default)")
     parser.add_argument("--rounds", type=int, default=9, help="alternating timing rounds")
     parser.add_argument("--batch-ms", type=float, default=20.0)
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds per case")
@@ -181,7 +187,7 @@ def main() -> int:
     for structure, k in cases:
         spec = {"structure": structure, "k": k, "pinocchio": args.pinocchio,
                 "closed_up_to": args.closed_up_to, "rounds": args.rounds,
-                "looped_from": args.looped_from,
+                "looped_from": args.looped_from, "state_jacobian": args.state_jacobian,
                 "batch_s": args.batch_ms / 1000}
         try:
             row = json_from_child([sys.executable, __file__, "--worker", json.dumps(spec)],

@@ -43,6 +43,7 @@ from jointplay.derive.symbolic import SymbolicModel, derive
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.robot import Robot
 from jointplay.robot.robotio import robot_to_toml
+from jointplay.robot.structure import CLEARANCE_KINDS, MOVING_KINDS
 from jointplay.store.formulation import formulation_for
 from jointplay.store.layout import Layout
 from jointplay.store.model import DEFERRED_SOURCE_NAME, LAYOUT_NAME, ROBOT_NAME, SOURCE_NAME
@@ -242,7 +243,7 @@ def _recursive(model: SymbolicModel, inputs: _Inputs, convert: SympyToCasadi
     # da/dy = -M^-1 dID/dy at the computed a (Carpentier and Mansard), M^-1 by the ABA.
     acc_sym = ca.SX.sym("a", n)
     jacobians = _RecursiveJacobians(model, inputs, chain, contact, acc_sym, slots, torque_slots,
-                                    parameter, thetas, omegas, fn_fd)
+                                    parameter, thetas, omegas, fn_fd, acc)
     fn_mass = jacobians.mass_matrix()
     fn_jac_state = jacobians.state()
     xm, taum, pm, vm = jacobians.mx_inputs
@@ -275,7 +276,33 @@ LOOPED_STATE_JACOBIAN_FROM = 100
 # Newton matrix update; the others (mass matrix, torques, parameters, impact speeds) are not
 # called while integrating, so they take the smallest code.
 STATE_COLUMNS_PER_PASS = 4
+# Columns of the straight-line state Jacobian's M^-1 solves per call (when 2n is a multiple
+# of it; else 2 or 1): each call reads the articulated factors once.
+SOLVE_COLUMNS_PER_CALL = 4
 OTHER_COLUMNS_PER_PASS = 1
+
+
+def differentiates_the_aba(structure: Any) -> bool:
+    """Whether the recursion's straight-line state Jacobian is AD of the ABA's accelerations
+    (da/dx directly) rather than -M^-1 dID/dx (AD of the RNEA, then 2n solves through the
+    articulated factors).
+
+    Where every joint with coordinates has three (a clearance joint), no joint passes an
+    articulated inertia on (it is exactly zero), so a column's tangent through the ABA stays
+    near the joint it is seeded at, while -M^-1 dID/dx multiplies a dense dID/dx column by
+    M^-1 for each of the 2n columns. Where a joint has one or two coordinates, the articulated
+    inertias it passes on depend on every coordinate below it and their derivatives fill the
+    tangents. Measured with `python benchmarks/formulations.py --links 12 --structures
+    clearance,ideal --no-paper --closed-up-to 0 --pinocchio --state-jacobian aba` and then
+    `solves` (loaded 2-core machine, load average 4.5 and 3.9): 12 clearance joints, state
+    Jacobian 0.58x and 1.62x Pinocchio's computeABADerivatives (timed beside it in each run),
+    C 1737 and 1378 kB, build 44.5 and 27.2 s; 12 ideal joints, 1.43x and 0.63x. The price of
+    AD of the ABA is C about a quarter larger for chains of clearance joints. Chains that mix
+    the kinds keep the solves (not measured)."""
+    kinds = [kind for kind in structure.joints if kind in MOVING_KINDS or kind in
+             CLEARANCE_KINDS]
+    return bool(kinds) and all(kind in MOVING_KINDS and kind in CLEARANCE_KINDS
+                               for kind in kinds)
 
 
 def _unit_columns(start: Any, size: int, width: int) -> Any:
@@ -317,20 +344,23 @@ class _RecursiveJacobians:
     output). M^-1 is applied column by column through the articulated factors, computed once.
     The columns are loops in the C over passes of COLUMNS_PER_PASS columns, so the code grows
     with the chain, not with the chain squared; only the state Jacobian of short chains is
-    straight-line code (below LOOPED_STATE_JACOBIAN_FROM coordinates).
+    straight-line code (below LOOPED_STATE_JACOBIAN_FROM coordinates), and for a chain of
+    clearance joints only it is AD of the ABA's accelerations (see differentiates_the_aba).
     """
 
     def __init__(self, model: SymbolicModel, inputs: _Inputs, chain: Any,
                  contact: dict[int, tuple[Any, Any, Any]], acc_sym: Any,
                  slots: dict[tuple[int, str], int], torque_slots: dict[int, int],
-                 parameter: Any, thetas: list[Any], omegas: list[Any], fn_fd: ca.Function
-                 ) -> None:
+                 parameter: Any, thetas: list[Any], omegas: list[Any], fn_fd: ca.Function,
+                 acceleration: Any) -> None:
         from jointplay.derive import recursive
 
         self.n = n = model.n_coordinates
         self.symbols = inputs
         self.acc_sym = acc_sym
         self.fn_fd = fn_fd
+        self.acceleration = acceleration
+        self.direct = differentiates_the_aba(model.structure)
         q, u, tau = inputs.q, inputs.u, inputs.tau
         held: dict[int, tuple[Any, Any, Any]] = {
             i: (ca.SX.sym(f"Fx{i}"), ca.SX.sym(f"Fy{i}"), ca.SX.sym(f"Ft{i}")) for i in contact}
@@ -378,6 +408,12 @@ class _RecursiveJacobians:
         acc_m = self.fn_fd(xm, taum, pm, vm)[n:]
         factors_m = self.fn_factors(xm[:n], pm)
         d_forces = ca.jacobian(self.forces, x)
+        if n < LOOPED_STATE_JACOBIAN_FROM and self.direct:
+            # da/dx by AD of the ABA itself, straight-line: no dID/dx, no M^-1 solves.
+            jac_sx = ca.vertcat(ca.horzcat(ca.SX(n, n), ca.SX.eye(n)),
+                                ca.jacobian(self.acceleration, x))
+            return _function("jac_state", [x, tau, p, v_imp], [jac_sx],
+                             ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
         if n < LOOPED_STATE_JACOBIAN_FROM:
             # dID/dx as straight-line code: AD skips what a column's seed does not reach.
             d_residual = ca.jacobian(self.residual, x)
@@ -385,30 +421,54 @@ class _RecursiveJacobians:
                 d_residual = d_residual + ca.mtimes(ca.jacobian(self.residual, self.held),
                                                     d_forces)
             d_residual = ca.substitute(d_residual, self.held, self.forces)
+            # Dense, so that each column the solves read is contiguous (zeros written here cost
+            # less than densifying the sparse output afterwards).
             fn_parts = _function("jac_state_parts", [x, tau, p, v_imp, self.acc_sym],
-                                   [d_residual])
-            fn_solve = _function("mass_matrix_solve", [self.factor_sym, self.column_sym],
-                                   [self.solved])
-            d_res_m = fn_parts(xm, taum, pm, vm, acc_m)
-            solve = fn_solve.map("mass_matrix_solve_loop", "serial", 2 * n, [0], [])
-            columns = solve(factors_m, d_res_m)
-        else:
-            fn_forces = _function("contact_forces_x", [x, p, v_imp], [self.forces, d_forces])
-            forces_m, d_forces_m = fn_forces(xm, pm, vm)
-            start = ca.SX.sym("start")
-            seed = _unit_columns(start, 2 * n, STATE_COLUMNS_PER_PASS)
-            d_forces_sym = ca.SX.sym("d_forces", d_forces.sparsity())
-            directional = ca.jtimes(self.residual, ca.vertcat(x, self.held),
-                                    ca.vertcat(seed, ca.mtimes(d_forces_sym, seed)))
-            columns = _looped_columns(
-                "jac_state_columns",
-                [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
-                self._solve_each(directional), 2 * n, STATE_COLUMNS_PER_PASS,
-                [xm, taum, pm, acc_m, forces_m, factors_m, d_forces_m])
+                                 [ca.densify(d_residual)])
+            return _function("jac_state", [xm, taum, pm, vm],
+                             [self._state_from_parts(fn_parts(xm, taum, pm, vm, acc_m),
+                                                     factors_m)],
+                             ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
+        fn_forces = _function("contact_forces_x", [x, p, v_imp], [self.forces, d_forces])
+        forces_m, d_forces_m = fn_forces(xm, pm, vm)
+        start = ca.SX.sym("start")
+        seed = _unit_columns(start, 2 * n, STATE_COLUMNS_PER_PASS)
+        d_forces_sym = ca.SX.sym("d_forces", d_forces.sparsity())
+        directional = ca.jtimes(self.residual, ca.vertcat(x, self.held),
+                                ca.vertcat(seed, ca.mtimes(d_forces_sym, seed)))
+        columns = _looped_columns(
+            "jac_state_columns",
+            [x, tau, p, self.acc_sym, self.held, self.factor_sym, d_forces_sym], start,
+            self._solve_each(directional), 2 * n, STATE_COLUMNS_PER_PASS,
+            [xm, taum, pm, acc_m, forces_m, factors_m, d_forces_m])
         jac_x = ca.vertcat(ca.horzcat(ca.MX(n, n), ca.MX.eye(n)), -columns)
         # Not densified: the driver reads the output's pattern as CSC, which a dense one is not.
         return _function("jac_state", [xm, taum, pm, vm], [jac_x],
                            ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
+
+    def _state_from_parts(self, d_residual: Any, factors: Any) -> Any:
+        """[0 I; -M^-1 dID/dx] from dID/dx (dense, n x 2n) with no copying or transposing
+        after the solves: the output's pattern holds every column's entry in the row of its
+        own coordinate (a stored 0 in the first n columns, the 1 of I in the others) above
+        the n rows of the speeds, so column c of the output's nonzeros is
+        (c >= n, -M^-1 dID/dx_c), which is what each solve writes, in order. The solves
+        take SOLVE_COLUMNS_PER_CALL columns a call: the factors are read once per call (and
+        copied once per call by CasADi's map), not once per column."""
+        n = self.n
+        width = next(w for w in (SOLVE_COLUMNS_PER_CALL, 2, 1) if (2 * n) % w == 0)
+        columns = ca.SX.sym("columns", n, width)
+        identity = ca.SX.sym("identity", 1, width)
+        solved = ca.vertcat(identity, -self._solve_each(columns))
+        fn_solve = _function("mass_matrix_solve", [self.factor_sym, columns, identity],
+                             [solved])
+        calls = 2 * n // width
+        solve = fn_solve.map("mass_matrix_solve_loop", "serial", calls, [0], [])
+        identity_row = ca.DM([[0.0] * n + [1.0] * n])
+        values = solve(factors, d_residual, identity_row)
+        rows = [[c % n, *range(n, 2 * n)] for c in range(2 * n)]
+        pattern = ca.Sparsity.triplet(2 * n, 2 * n, [r for rs in rows for r in rs],
+                                      [c for c, rs in enumerate(rows) for _ in rs])
+        return ca.sparsity_cast(values, pattern)
 
     def inputs(self, xm: Any, taum: Any, pm: Any, vm: Any) -> list[Any]:
         """d xdot / d tau, d p and d v_imp (not needed while integrating): one loop over the

@@ -267,3 +267,34 @@ def test_formulation_switch(monkeypatch: pytest.MonkeyPatch) -> None:
         f.formulation_for(small, "kane")
     hashes = {provenance(small.as_dict(), name)["input_hash"] for name in f.FORMULATIONS}
     assert len(hashes) == 2
+
+
+@pytest.mark.parametrize("case", [CASES[0], CASES[2], CASES[8]], ids=_case_id)
+def test_state_jacobian_layout(case: tuple[tuple[str, ...], Effects]) -> None:
+    """The recursion's state Jacobian is stored so that the BDF driver sees the form
+    [0 I; Jq Jv] and factors the n x n Newton matrix: nothing in the first n rows but the 1
+    of I and, where the M^-1 solves write the output in place, an exact 0 in the row of each
+    column's own coordinate (2n a multiple of four and not: four solve columns a call, and
+    two). A chain of clearance joints only takes AD of the ABA instead, the others the
+    solves."""
+    from types import SimpleNamespace
+
+    from jointplay.derive.codegen import differentiates_the_aba
+
+    kinds, effects = case
+    fn = _functions(kinds, effects, "recursive")["jac_state"]
+    inputs = _random_inputs(kinds, effects, np.random.default_rng(3))
+    n = fn.size1_in(0) // 2
+    direct = set(kinds) <= {"clearance", "locked"}
+    assert differentiates_the_aba(SimpleNamespace(joints=kinds)) == direct
+    rows, columns = fn.sparsity_out(0).get_triplet()
+    top = sorted((r, c) for r, c in zip(rows, columns, strict=True) if r < n)
+    if direct:
+        assert top == [(r, n + r) for r in range(n)]
+    else:
+        assert top == sorted((c % n, c) for c in range(2 * n))
+        assert sorted(zip(rows, columns, strict=True)) == sorted(
+            top + [(r, c) for c in range(2 * n) for r in range(n, 2 * n)])
+    dense = np.asarray(fn.call([inputs[name] for name in fn.name_in()])[0].full())
+    np.testing.assert_array_equal(dense[:n], np.hstack([np.zeros((n, n)), np.eye(n)]))
+    assert np.all(np.isfinite(dense[n:])) and np.any(dense[n:] != 0)
