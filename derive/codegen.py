@@ -56,10 +56,13 @@ from jointplay.store.stamp import provenance
 FUNCTION_OPTIONS: dict[str, Any] = {"cse": True}
 
 
-def _function(name: str, inputs: list[Any], outputs: list[Any], *names: list[str]
+def _function(name: str, inputs: list[Any], outputs: list[Any],
+              input_names: list[str] | None = None, output_names: list[str] | None = None
               ) -> ca.Function:
-    """``ca.Function`` with FUNCTION_OPTIONS."""
-    return ca.Function(name, inputs, outputs, *names, FUNCTION_OPTIONS)
+    """``ca.Function`` with FUNCTION_OPTIONS (and the slots' names, when given)."""
+    if input_names is None or output_names is None:
+        return ca.Function(name, inputs, outputs, FUNCTION_OPTIONS)
+    return ca.Function(name, inputs, outputs, input_names, output_names, FUNCTION_OPTIONS)
 
 
 @dataclass
