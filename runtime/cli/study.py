@@ -23,8 +23,10 @@ from jointplay.cli.neural_args import (
     add_scheduling_argument,
     add_settings_arguments,
     float_list,
+    int_list,
     iteration_counts,
     load_control_scene,
+    lpv_base_setting,
     neural_scene_argument,
     operating_range,
     settings_from_args,
@@ -86,6 +88,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_identify_data_arguments(p, study=True)
     add_scheduling_argument(p)
     add_operating_range_arguments(p, prefix="identify-")
+    p.add_argument("--identify-hidden", default="13,14",
+                   help="identify: hidden layer widths (default %(default)s)")
     add_iterations_argument(p, "--identify-iterations",
                             "identify: L-BFGS iterations (default %(default)s)")
     add_settings_arguments(p, ControllerSettings())
@@ -100,6 +104,18 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
     p.set_defaults(func=cmd_study)
     return p
+
+
+def hidden_widths(args: argparse.Namespace) -> tuple[int, ...]:
+    """--identify-hidden, checked as identify checks --hidden."""
+    from jointplay.common import limits as size_limits
+
+    hidden = tuple(int_list(args.identify_hidden, "--identify-hidden",
+                            high=size_limits.MAX_HIDDEN_WIDTH))
+    if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:
+        raise DescriptionError("--identify-hidden", f"gives {len(hidden)} layers; at most "
+                               f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
+    return hidden
 
 
 @dataclass(frozen=True)
@@ -257,6 +273,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
                      "duration": args.duration, "one_step_iterations": iters[0],
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
+                     "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
                      **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal)
     scenes = {c.name: case_scene(scene, c) for c in cases}

@@ -190,10 +190,9 @@ def compile_controller(model: Narx, settings: ControllerSettings, fallback: Narx
     settings = resolve_settings(model, settings)
     # The loop kernel implements the first-order mismatch filter; the pairwise filter of
     # declared noise (mismatch_filter.py) runs as CasADi's code.
-    # The kernel runs networks and ARX models (with their scheduling signals); a model with
-    # a bilinear part (LPV-ARX) runs as CasADi's code.
-    plain = all(mdl is None or mdl.bilinear is None for mdl in (model, fallback))
-    if kernel and plain and settings.iterations == 1 and not pair_gains(model, settings):
+    # The kernel runs networks, ARX and LPV-ARX models (with their scheduling signals and
+    # bilinear parts).
+    if kernel and settings.iterations == 1 and not pair_gains(model, settings):
         from jointplay.neural.imc_kernel import kernel_library_source
 
         fn, layout = build_step(model, settings, fallback)

@@ -56,6 +56,10 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
                               width_max, hidden=i < last)
     if model.linear is not None:
         lines += _linear_lines(prefix, nphi, ny, nd, width_max)
+    if model.bilinear is not None:
+        lines += _bilinear_lines(model, nd, width_max)
+    else:
+        lines.append("  (void) g;")
     lines += [
         f"  for (i = 0; i < {ny}; ++i)",
         f"    y[i] = {prefix}CARRY[i] * phi[i] + {prefix}TM[i] + {prefix}TS[i] * a[i];",
@@ -65,7 +69,31 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
         f"{prefix}TS[i] * da[k * {width_max} + i];",
         "  }",
         "}"]
-    return _constants(prefix, model) + "\n".join(lines) + "\n"
+    gain = _gain_function(prefix, model) if model.bilinear is not None else ""
+    return _constants(prefix, model) + gain + "\n".join(lines) + "\n"
+
+
+def gain_size(model: Narx) -> int:
+    """Doubles of the scheduled input gain ``g`` that ``{prefix}eval`` takes (0: none)."""
+    return model.n_input_regressors * model.n_outputs if model.bilinear is not None else 0
+
+
+def _gain_function(prefix: str, model: Narx) -> str:
+    """``{prefix}gain(w, g)``: the bilinear part's input gain sum_s w_s B_s at the raw
+    scheduling signals ``w``, once per call of the step (the loop holds the signals over the
+    horizon), column by column (input regressor j: g[j * ny .. j * ny + ny - 1])."""
+    nw, n = model.n_scheduling, gain_size(model)
+    first_w = model.n_regressor - nw
+    return "\n".join([
+        f"static void {prefix}gain(const double* w, double* g) {{",
+        "  int i, s;",
+        f"  for (i = 0; i < {n}; ++i) g[i] = 0;",
+        f"  for (s = 0; s < {nw}; ++s) {{",
+        f"    const double ws = (w[s] - {prefix}MU[{first_w} + s]) * {prefix}ISG[{first_w} + s];",
+        f"    const double* col = {prefix}BL + s * {n};",
+        f"    for (i = 0; i < {n}; ++i) g[i] += ws * col[i];",
+        "  }",
+        "}"]) + "\n"
 
 
 def _constants(prefix: str, model: Narx) -> str:
@@ -79,6 +107,8 @@ def _constants(prefix: str, model: Narx) -> str:
         out += [_array(f"{prefix}W{i}", w.T), _array(f"{prefix}B{i}", b)]
     if model.linear is not None:
         out.append(_array(f"{prefix}L", model.linear.T))
+    if model.bilinear is not None:
+        out.append(_array(f"{prefix}BL", model.bilinear.T))
     return "".join(out)
 
 
@@ -86,7 +116,7 @@ def _input_lines(prefix: str, nphi: int, nd: int, width_max: int) -> list[str]:
     """The function's head: the regressor normalised, with its tangents, as the first layer's
     input."""
     return [f"static void {prefix}eval(const double* phi, const double* dphi, double* y, "
-            "double* dy, int tangent) {",
+            "double* dy, int tangent, const double* g) {",
             f"  double z[{nphi}], dz[{nd * nphi}], h[{width_max}], dh[{nd * width_max}];",
             f"  double a[{width_max}], da[{nd * width_max}];",
             "  int i, j, k;",
@@ -157,4 +187,28 @@ def _linear_lines(prefix: str, nphi: int, ny: int, nd: int, width_max: int) -> l
         "  }"]
 
 
-__all__ = ["TANH"]
+def _bilinear_lines(model: Narx, nd: int, width_max: int) -> list[str]:
+    """The bilinear part (an LPV-ARX input gain), sum_s w_s B_s z_u on the normalised
+    regressor, added to the output layer through the gain ``g`` of ``{prefix}gain``. The
+    scheduling signals carry no tangent here (the loop holds them over the horizon and sets
+    their tangent to 0), so only the input lags' tangents pass through the gain."""
+    ny, nphi = model.n_outputs, model.n_regressor
+    nz, start = model.n_input_regressors, model.output_lags * ny
+    tangents = "".join(f" da[{k * width_max} + i] += gji * dz{k};" for k in range(nd))
+    loads = " ".join(f"const double dz{k} = dz[{k * nphi} + {start} + j];" for k in range(nd))
+    return [
+        f"  for (j = 0; j < {nz}; ++j) {{",
+        f"    const double zj = z[{start} + j];",
+        "    if (tangent) {",
+        f"      {loads}",
+        f"      for (i = 0; i < {ny}; ++i) {{",
+        f"        const double gji = g[j * {ny} + i];",
+        f"        a[i] += gji * zj;{tangents}",
+        "      }",
+        "    } else {",
+        f"      for (i = 0; i < {ny}; ++i) a[i] += g[j * {ny} + i] * zj;",
+        "    }",
+        "  }"]
+
+
+__all__ = ["TANH", "gain_size"]

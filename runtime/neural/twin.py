@@ -41,9 +41,15 @@ def blend(narx: Narx, arx: Narx, alpha: float) -> Narx:
         raise ValueError("the ARX model must be a single linear layer")
     w_arx, b_arx = arx.weights[0], arx.biases[0]
     direct = narx.linear if narx.linear is not None else np.zeros_like(w_arx)
+    # A bilinear part (LPV-ARX base, or a network trained on one) is blended the same way.
+    bilinear = None
+    if narx.bilinear is not None or arx.bilinear is not None:
+        zero = np.zeros_like(narx.bilinear if narx.bilinear is not None else arx.bilinear)
+        bilinear = (alpha * (narx.bilinear if narx.bilinear is not None else zero)
+                    + (1 - alpha) * (arx.bilinear if arx.bilinear is not None else zero))
     return replace(narx, weights=(*narx.weights[:-1], alpha * narx.weights[-1]),
                    biases=(*narx.biases[:-1], alpha * narx.biases[-1] + (1 - alpha) * b_arx),
-                   linear=alpha * direct + (1 - alpha) * w_arx)
+                   linear=alpha * direct + (1 - alpha) * w_arx, bilinear=bilinear)
 
 
 def windows(segments: Sequence[Segment], length: int,
