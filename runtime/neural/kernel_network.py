@@ -54,11 +54,12 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
     for i in range(len(model.weights)):
         lines += _layer_lines(f"{prefix}W{i}", f"{prefix}B{i}", widths[i], widths[i + 1], nd,
                               width_max, hidden=i < last)
-    if model.linear is not None:
-        lines += _linear_lines(prefix, nphi, ny, nd, width_max)
     if model.bilinear is not None:
-        lines += _bilinear_lines(model, nd, width_max)
+        # The direct path with the scheduled input gain added (``{prefix}gain``).
+        lines += _linear_lines("g", nphi, ny, nd, width_max)
     else:
+        if model.linear is not None:
+            lines += _linear_lines(f"{prefix}L", nphi, ny, nd, width_max)
         lines.append("  (void) g;")
     lines += [
         f"  for (i = 0; i < {ny}; ++i)",
@@ -74,24 +75,29 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
 
 
 def gain_size(model: Narx) -> int:
-    """Doubles of the scheduled input gain ``g`` that ``{prefix}eval`` takes (0: none)."""
-    return model.n_input_regressors * model.n_outputs if model.bilinear is not None else 0
+    """Doubles of the scheduled direct path ``g`` that ``{prefix}eval`` takes (0: none)."""
+    return model.n_regressor * model.n_outputs if model.bilinear is not None else 0
 
 
 def _gain_function(prefix: str, model: Narx) -> str:
-    """``{prefix}gain(w, g)``: the bilinear part's input gain sum_s w_s B_s at the raw
-    scheduling signals ``w``, once per call of the step (the loop holds the signals over the
-    horizon), column by column (input regressor j: g[j * ny .. j * ny + ny - 1])."""
-    nw, n = model.n_scheduling, gain_size(model)
-    first_w = model.n_regressor - nw
+    """``{prefix}gain(w, g)``: the direct path with the bilinear part's input gain
+    sum_s w_s B_s added on the input lags' columns, at the raw scheduling signals ``w``; once
+    per call of the step (the loop holds the signals over the horizon, with no tangent, so
+    the bilinear part is a linear term in the input lags there), laid out as ``{prefix}L``
+    (regressor j: g[j * ny .. j * ny + ny - 1])."""
+    ny, nw, nz = model.n_outputs, model.n_scheduling, model.n_input_regressors
+    first_w, start = model.n_regressor - nw, model.output_lags * ny
+    base = (f"  for (i = 0; i < {gain_size(model)}; ++i) g[i] = {prefix}L[i];"
+            if model.linear is not None else
+            f"  for (i = 0; i < {gain_size(model)}; ++i) g[i] = 0;")
     return "\n".join([
         f"static void {prefix}gain(const double* w, double* g) {{",
         "  int i, s;",
-        f"  for (i = 0; i < {n}; ++i) g[i] = 0;",
+        base,
         f"  for (s = 0; s < {nw}; ++s) {{",
         f"    const double ws = (w[s] - {prefix}MU[{first_w} + s]) * {prefix}ISG[{first_w} + s];",
-        f"    const double* col = {prefix}BL + s * {n};",
-        f"    for (i = 0; i < {n}; ++i) g[i] += ws * col[i];",
+        f"    const double* col = {prefix}BL + s * {nz * ny};",
+        f"    for (i = 0; i < {nz * ny}; ++i) g[{start * ny} + i] += ws * col[i];",
         "  }",
         "}"]) + "\n"
 
@@ -166,8 +172,9 @@ def _layer_lines(wname: str, bias: str, n_in: int, n_out: int, nd: int, width_ma
     return lines
 
 
-def _linear_lines(prefix: str, nphi: int, ny: int, nd: int, width_max: int) -> list[str]:
-    """The direct linear term on the normalised regressor, added to the output layer."""
+def _linear_lines(matrix: str, nphi: int, ny: int, nd: int, width_max: int) -> list[str]:
+    """The direct linear term (``matrix``, transposed) on the normalised regressor, added to
+    the output layer."""
     tangents = "".join(f" da[{k * width_max} + i] += lji * dz{k};" for k in range(nd))
     loads = " ".join(f"const double dz{k} = dz[{k * nphi} + j];" for k in range(nd))
     return [
@@ -175,38 +182,14 @@ def _linear_lines(prefix: str, nphi: int, ny: int, nd: int, width_max: int) -> l
         f"    for (j = 0; j < {nphi}; ++j) {{",
         f"      const double zj = z[j]; {loads}",
         f"      for (i = 0; i < {ny}; ++i) {{",
-        f"        const double lji = {prefix}L[j * {ny} + i];",
+        f"        const double lji = {matrix}[j * {ny} + i];",
         f"        a[i] += lji * zj;{tangents}",
         "      }",
         "    }",
         "  } else {",
         f"    for (j = 0; j < {nphi}; ++j) {{",
         "      const double zj = z[j];",
-        f"      for (i = 0; i < {ny}; ++i) a[i] += {prefix}L[j * {ny} + i] * zj;",
-        "    }",
-        "  }"]
-
-
-def _bilinear_lines(model: Narx, nd: int, width_max: int) -> list[str]:
-    """The bilinear part (an LPV-ARX input gain), sum_s w_s B_s z_u on the normalised
-    regressor, added to the output layer through the gain ``g`` of ``{prefix}gain``. The
-    scheduling signals carry no tangent here (the loop holds them over the horizon and sets
-    their tangent to 0), so only the input lags' tangents pass through the gain."""
-    ny, nphi = model.n_outputs, model.n_regressor
-    nz, start = model.n_input_regressors, model.output_lags * ny
-    tangents = "".join(f" da[{k * width_max} + i] += gji * dz{k};" for k in range(nd))
-    loads = " ".join(f"const double dz{k} = dz[{k * nphi} + {start} + j];" for k in range(nd))
-    return [
-        f"  for (j = 0; j < {nz}; ++j) {{",
-        f"    const double zj = z[{start} + j];",
-        "    if (tangent) {",
-        f"      {loads}",
-        f"      for (i = 0; i < {ny}; ++i) {{",
-        f"        const double gji = g[j * {ny} + i];",
-        f"        a[i] += gji * zj;{tangents}",
-        "      }",
-        "    } else {",
-        f"      for (i = 0; i < {ny}; ++i) a[i] += g[j * {ny} + i] * zj;",
+        f"      for (i = 0; i < {ny}; ++i) a[i] += {matrix}[j * {ny} + i] * zj;",
         "    }",
         "  }"]
 
