@@ -17,7 +17,7 @@ round and the median round are reported:
 - the network on an LPV-ARX base (``identify --lpv-base``: the same network with a bilinear
   input gain affine in the scheduling signals), guarded, loop kernel, default horizon;
 - ``LPV-ARX-IMC``: the LPV-ARX model (input gain and offset affine in the scheduling
-  signals), guarded, as CasADi SX code and as the loop kernel (which runs bilinear parts).
+  signals), guarded, as CasADi SX code (its default) and as the loop kernel.
 
 Times are CPU seconds of this process (``time.process_time``), so other work on a shared
 machine inflates them less than wall time.
@@ -193,9 +193,9 @@ def _variants(model: Any, twin: Any, scheduled: Any = None,
          True, ControllerSettings(tracked=TRACKED)),
         ("network on an LPV-ARX base, loop kernel, guarded (default)", lpv_based, twin,
          True, ControllerSettings(tracked=TRACKED)),
-        ("LPV-ARX-IMC, CasADi SX code, guarded", lpv, twin, False,
+        ("LPV-ARX-IMC, CasADi SX code, guarded (default)", lpv, twin, False,
          ControllerSettings(tracked=TRACKED)),
-        ("LPV-ARX-IMC, loop kernel, guarded (default)", lpv, twin, True,
+        ("LPV-ARX-IMC, loop kernel, guarded", lpv, twin, True,
          ControllerSettings(tracked=TRACKED))]
     out = []
     for label, m, fallback, kernel, settings in variants:

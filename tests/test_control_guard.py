@@ -252,7 +252,7 @@ def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
         "network, no fallback": (model, None, ControllerSettings(
             horizon=2, tracked=("q2", "q3"), trust_input=0.01)),
     }[case]
-    ctrl = compile_controller(main, settings, fallback=fallback)
+    ctrl = compile_controller(main, settings, fallback=fallback, kernel=True)
     assert "_kernel(arg, res)" in ctrl.source
     rng = np.random.default_rng(0)
     seen = np.zeros(len(FLAGS))
