@@ -6,8 +6,9 @@ Here the residual is made explicit and earns its place on data it was not traine
 
     model(alpha) = ARX + alpha (network - ARX),   alpha in [0, 1]
 
-is again a network of the same shape (the last layer and the direct path are blended; both
-models share one normalisation), and alpha is chosen on the validation trajectories by the
+is again a network of the same shape (the last layer and the direct path are blended, and a
+bilinear part where either has one: with ``lpv_base`` the linear model is the LPV-ARX fit;
+both models share one normalisation), and alpha is chosen on the validation trajectories by the
 free-run loss over windows (what the controller relies on). alpha = 0 is the ARX model itself,
 so the chosen model is never worse than ARX on that loss.
 
