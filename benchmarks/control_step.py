@@ -14,8 +14,10 @@ round and the median round are reported:
 - ``ARX-IMC``: the same law with the linear twin (constant matrices), loop kernel;
 - the network with the scheduling signals (the ideal robot's joint angles as cos and sin, its
   joint speeds, the drive torques: 8 more regressors), guarded, loop kernel, default horizon;
+- the network on an LPV-ARX base (``identify --lpv-base``: the same network with a bilinear
+  input gain affine in the scheduling signals), guarded, loop kernel, default horizon;
 - ``LPV-ARX-IMC``: the LPV-ARX model (input gain and offset affine in the scheduling
-  signals), guarded, CasADi SX code (the loop kernel does not run bilinear models).
+  signals), guarded, as CasADi SX code (its default) and as the loop kernel.
 
 Times are CPU seconds of this process (``time.process_time``), so other work on a shared
 machine inflates them less than wall time.
@@ -145,7 +147,8 @@ def _unscheduled(model: Narx) -> Narx:
     return replace(model, weights=(model.weights[0][:, :keep], *model.weights[1:]),
                    linear=None if model.linear is None else model.linear[:, :keep],
                    regressor_mean=model.regressor_mean[:keep],
-                   regressor_scale=model.regressor_scale[:keep], scheduling=())
+                   regressor_scale=model.regressor_scale[:keep], scheduling=(),
+                   bilinear=None)
 
 
 ROUNDS = 15  # rounds over all variants, interleaved: a burst of other work on a shared
@@ -166,8 +169,16 @@ def _call_overhead() -> tuple[dict[str, Any], FastFunction]:
 def _variants(model: Any, twin: Any, scheduled: Any = None,
               lpv: Any = None) -> list[tuple[dict[str, Any], FastFunction]]:
     """Each way of compiling the controller step: its size, gcc time and compiled call."""
+    from dataclasses import replace
+
     scheduled = scheduled if scheduled is not None else with_scheduling(model)
     lpv = lpv if lpv is not None else lpv_model(twin)
+    # A network on an LPV-ARX base (identify --lpv-base): the model's own bilinear part, or
+    # one of the LPV-ARX model's shape; the plain scheduled row is the same network without it.
+    if scheduled.bilinear is None:
+        lpv_based = replace(scheduled, bilinear=lpv_model(twin).bilinear)
+    else:
+        lpv_based, scheduled = scheduled, replace(scheduled, bilinear=None)
     variants = [
         ("before: CasADi SX code, network only", model, None, False,
          ControllerSettings(horizon=10, guard=False, tracked=TRACKED)),
@@ -180,7 +191,11 @@ def _variants(model: Any, twin: Any, scheduled: Any = None,
             tracked=TRACKED)),
         ("network with scheduling signals, loop kernel, guarded (default)", scheduled, twin,
          True, ControllerSettings(tracked=TRACKED)),
+        ("network on an LPV-ARX base, loop kernel, guarded (default)", lpv_based, twin,
+         True, ControllerSettings(tracked=TRACKED)),
         ("LPV-ARX-IMC, CasADi SX code, guarded (default)", lpv, twin, False,
+         ControllerSettings(tracked=TRACKED)),
+        ("LPV-ARX-IMC, loop kernel, guarded", lpv, twin, True,
          ControllerSettings(tracked=TRACKED))]
     out = []
     for label, m, fallback, kernel, settings in variants:

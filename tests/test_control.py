@@ -326,6 +326,10 @@ def _parser() -> argparse.ArgumentParser:
     (["control-study", "--out", "/tmp/x", "--train", "0"], "--train/--validation/--test"),
     (["control-study", "--out", "/tmp/x", "--identify-iterations", "1"],
      "--identify-iterations"),
+    (["identify", "--out", "/tmp/x", "--lpv-base"], "--lpv-base"),
+    (["control-study", "--out", "/tmp/x", "--lpv-base"], "--lpv-base"),
+    (["control-study", "--out", "/tmp/x", "--identify-hidden", "0"], "--identify-hidden"),
+    (["control-study", "--out", "/tmp/x", "--identify-window", "1"], "--identify-window"),
 ])
 def test_commands_reject_bad_flags(argv: list[str], flag: str) -> None:
     """DescriptionError is what the command line turns into exit status 2."""

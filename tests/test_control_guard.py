@@ -218,9 +218,19 @@ def with_scheduling(model: Narx, seed: int = 40) -> Narx:
                                   random_normalisation=True)
 
 
+def with_bilinear(model: Narx, seed: int = 41) -> Narx:
+    """The scheduled model with a random bilinear part (an input gain affine in the
+    scheduling signals, as an LPV-ARX model or a network on an LPV-ARX base has)."""
+    rng = np.random.default_rng(seed)
+    shape = (model.n_outputs, model.n_scheduling * model.n_input_regressors)
+    return replace(model, bilinear=rng.normal(0, 0.3, shape))
+
+
 @pytest.mark.parametrize("case", ["network with fallback", "network, guard off",
                                   "linear model", "network, no fallback",
-                                  "scheduled network with fallback"])
+                                  "scheduled network with fallback",
+                                  "network on an LPV-ARX base, with fallback",
+                                  "LPV-ARX model"])
 def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
     """The compiled loop kernel against the CasADi definition of the step, on random states
     over four decades of scale, with the hold counters set (the guard's branches all run)."""
@@ -229,6 +239,11 @@ def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
     main, fallback, settings = {
         "scheduled network with fallback": (with_scheduling(model), twin, ControllerSettings(
             horizon=4, tracked=("q2", "q3", "dq2"))),
+        "network on an LPV-ARX base, with fallback": (
+            with_bilinear(with_scheduling(model)), twin, ControllerSettings(
+                horizon=4, tracked=("q2", "q3", "dq2"))),
+        "LPV-ARX model": (with_bilinear(with_scheduling(twin)), None, ControllerSettings(
+            horizon=5, tracked=("q2", "q3"))),
         "network with fallback": (model, twin, ControllerSettings(
             horizon=4, tracked=("q2", "q3", "dq2"))),
         "network, guard off": (model, None, ControllerSettings(
@@ -237,7 +252,7 @@ def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
         "network, no fallback": (model, None, ControllerSettings(
             horizon=2, tracked=("q2", "q3"), trust_input=0.01)),
     }[case]
-    ctrl = compile_controller(main, settings, fallback=fallback)
+    ctrl = compile_controller(main, settings, fallback=fallback, kernel=True)
     assert "_kernel(arg, res)" in ctrl.source
     rng = np.random.default_rng(0)
     seen = np.zeros(len(FLAGS))

@@ -280,3 +280,38 @@ def test_network_trained_with_scheduling_signals_exports_them() -> None:
     assert np.all(np.isfinite(model.free_run(run.deviation, run.v, w)))
     with pytest.raises(ValueError, match="scheduling signals"):
         model.free_run(run.deviation, run.v)
+
+
+def test_network_on_an_lpv_arx_base_starts_at_the_lpv_fit_and_is_never_worse() -> None:
+    """--lpv-base: the network's linear part is the LPV-ARX fit (fit_arx(lpv=True) predicts as
+    jointplay.neural.lpv's model), training keeps and exports a bilinear part, and the residual
+    weighed against that base is never worse than it in free run on validation."""
+    pytest.importorskip("torch")
+    from jointplay.neural.identify import _segments, fit_arx, output_increments
+    from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
+    from jointplay.neural.training import model_scheduling, train_narx
+    from jointplay.neural.twin import select_residual
+
+    rng = np.random.default_rng(9)
+    train = [_scheduled_run(rng, 300) for _ in range(2)]
+    validation = [replace(_scheduled_run(rng, 300), split="validation")]
+    names = _names()
+    base = fit_arx(_segments(train, 0, names), names, 2, 2, 1e-3,
+                   scheduling=model_scheduling(names), lpv=True)
+    lpv = fit_lpv_arx(scheduled_segments(train, 0, 2), 2, 2,
+                      output_increments(names["output_names"]))
+    d, u, w = _segments(validation, 0, names)[0]
+    phi = base.regressors(d, u, w)
+    direct = lpv.predict(phi[:, : -base.n_scheduling], w[1:-1], d[1:-1])
+    # The same least squares up to the ridge (1e-6 per sample), which here acts on
+    # normalised targets with their mean removed: equal to 1e-4 of the largest prediction.
+    assert np.max(np.abs(base.predict(phi) - direct)) <= 1e-4 * np.max(np.abs(direct))
+    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
+                            multi_step_iterations=2, scheduling=True, lpv_base=True)
+    model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
+    assert model.bilinear is not None and model.bilinear.shape == base.bilinear.shape
+    assert history["export_check"][0] < 1e-9
+    _, selection = select_residual(model, base, _segments(validation, 0, names), 20)
+    assert selection.losses[selection.alpha] <= selection.arx_loss
+    with pytest.raises(Exception, match="scheduling"):
+        IdentifyConfig(lpv_base=True)

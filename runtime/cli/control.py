@@ -235,7 +235,11 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
            if alpha == 0 and not job.narx.n_scheduling else "")
         + ("; the network's residual weight is 0: the neural IMC's model is the linear ARX "
            "model with the scheduling signals as further regressors, and the network does "
-           "no work" if alpha == 0 and job.narx.n_scheduling else ""),
+           "no work" if alpha == 0 and job.narx.n_scheduling and job.narx.bilinear is None
+           else "")
+        + ("; the network's residual weight is 0: the neural IMC's model is the LPV-ARX fit "
+           "it was trained on (--lpv-base), and the network does no work"
+           if alpha == 0 and job.narx.bilinear is not None else ""),
         *([comparison.noise_tuning.describe() + "; every controller measured through that "
            "noise (seed 1)"] if comparison.noise_tuning else []),
         "compiled step: " + ", ".join(

@@ -20,6 +20,7 @@ from jointplay.cli.neural_args import (
     int_list,
     iteration_counts,
     load_control_scene,
+    lpv_base_setting,
     neural_scene_argument,
     operating_range,
     trajectory_counts,
@@ -153,7 +154,7 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         torque_limit=float_list(args.torque_limit, "--torque-limit", n),
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
-        scheduling=args.scheduling, **operating_range(args))
+        scheduling=args.scheduling, lpv_base=lpv_base_setting(args), **operating_range(args))
 
 
 def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:

@@ -111,6 +111,20 @@ def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
                         help="the network also sees the scheduling signals: the ideal robot's "
                              "joint angles (cos, sin) and speeds and the drive torques of the "
                              "motion (the LPV-ARX baseline always does)")
+    parser.add_argument("--lpv-base", action="store_true",
+                        help="with --scheduling: the network's linear part is an LPV-ARX model "
+                             "(input gain affine in the scheduling signals), started at its "
+                             "least-squares fit, and its residual is weighed against it")
+
+
+def lpv_base_setting(args: argparse.Namespace) -> bool:
+    """--lpv-base, refused without --scheduling."""
+    from jointplay.common.errors import DescriptionError
+
+    if args.lpv_base and not args.scheduling:
+        raise DescriptionError("--lpv-base", "needs --scheduling (the LPV-ARX gain is affine "
+                                             "in the scheduling signals)")
+    return bool(args.lpv_base)
 
 
 def add_operating_range_arguments(parser: argparse.ArgumentParser, prefix: str = "") -> None:

@@ -23,8 +23,10 @@ from jointplay.cli.neural_args import (
     add_scheduling_argument,
     add_settings_arguments,
     float_list,
+    int_list,
     iteration_counts,
     load_control_scene,
+    lpv_base_setting,
     neural_scene_argument,
     operating_range,
     settings_from_args,
@@ -33,6 +35,7 @@ from jointplay.cli.neural_args import (
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
 from jointplay.neural.control import MODEL_BASED, load_lpv, load_twin
+from jointplay.neural.identify_config import IdentifyConfig
 from jointplay.neural.imc import ControllerSettings
 from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
 from jointplay.neural.metrics import WORSE_MARGIN
@@ -86,6 +89,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_identify_data_arguments(p, study=True)
     add_scheduling_argument(p)
     add_operating_range_arguments(p, prefix="identify-")
+    p.add_argument("--identify-hidden", default="13,14",
+                   help="identify: hidden layer widths (default %(default)s)")
+    p.add_argument("--identify-window", type=int, default=IdentifyConfig.window,
+                   help="identify: samples per free-run window, for training and for "
+                        "weighing the residual (default %(default)s)")
     add_iterations_argument(p, "--identify-iterations",
                             "identify: L-BFGS iterations (default %(default)s)")
     add_settings_arguments(p, ControllerSettings())
@@ -100,6 +108,29 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
     p.set_defaults(func=cmd_study)
     return p
+
+
+def hidden_widths(args: argparse.Namespace) -> tuple[int, ...]:
+    """--identify-hidden, checked as identify checks --hidden."""
+    from jointplay.common import limits as size_limits
+
+    hidden = tuple(int_list(args.identify_hidden, "--identify-hidden",
+                            high=size_limits.MAX_HIDDEN_WIDTH))
+    if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:
+        raise DescriptionError("--identify-hidden", f"gives {len(hidden)} layers; at most "
+                               f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
+    return hidden
+
+
+def window_setting(args: argparse.Namespace) -> int:
+    """--identify-window, within identify's limits for --window."""
+    from jointplay.common import limits as size_limits
+
+    low, high = size_limits.MIN_WINDOW, size_limits.MAX_WINDOW
+    if not low <= args.identify_window <= high:
+        raise DescriptionError("--identify-window", f"must be an integer from {low} to {high}, "
+                               f"got {args.identify_window}")
+    return int(args.identify_window)
 
 
 @dataclass(frozen=True)
@@ -257,6 +288,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
                      "duration": args.duration, "one_step_iterations": iters[0],
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
+                     "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
+                     "window": window_setting(args),
                      **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal)
     scenes = {c.name: case_scene(scene, c) for c in cases}

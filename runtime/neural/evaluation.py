@@ -89,7 +89,8 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
         "",
         f"NARX: {model.n_regressor} regressors ({model.output_lags} output lags, "
         f"{model.input_lags} input lags) -> hidden {list(model.hidden)} (tanh)"
-        f"{' + linear direct path' if model.linear is not None else ''} -> "
+        f"{' + linear direct path' if model.linear is not None else ''}"
+        f"{' + bilinear part (LPV-ARX input gain)' if model.bilinear is not None else ''} -> "
         f"{model.n_outputs} outputs; sample time {model.sample_time:g} s.",
         f"Plant: clearance robot under a joint PD (kp {inner['kp']}, kd {inner['kd']}) around "
         "the ideal robot's motion; outputs are deviations from it.",
@@ -114,15 +115,17 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
     res = metrics.get("residual")
     if res:
         tried = ", ".join(f"{a}: {v:.4g}" for a, v in res["free_run_loss_by_alpha"].items())
+        # With --lpv-base the linear model the residual is weighed against is LPV-ARX.
+        base = "LPV-ARX" if config.lpv_base else "ARX"
         lines += [
-            "Network = ARX + alpha x (nonlinear residual), alpha chosen on the validation "
+            f"Network = {base} + alpha x (nonlinear residual), alpha chosen on the validation "
             f"trajectories by the free-run loss over {config.window}-sample windows: "
             f"alpha = {res['alpha']:g} (loss by alpha: {tried}; persistence "
             f"{res['free_run_loss_persistence']:.4g}). "
             + ("The residual improves on the linear model on validation."
                if res["alpha"] > 0 and res["free_run_loss"] < res["free_run_loss_arx"]
-               else _no_residual_reason(res)),
-            f"Validation, mean one-step NRMSE: model {res['one_step_nrmse']:.4g}, ARX "
+               else _no_residual_reason(res, base)),
+            f"Validation, mean one-step NRMSE: model {res['one_step_nrmse']:.4g}, {base} "
             f"{res['one_step_nrmse_arx']:.4g}, persistence "
             f"{res['one_step_nrmse_persistence']:.4g}.",
             "",
@@ -144,15 +147,16 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
     return "\n".join(lines)
 
 
-def _no_residual_reason(res: dict[str, Any]) -> str:
-    """Why the residual weight is 0, from the losses (an unstable free run is said as such)."""
+def _no_residual_reason(res: dict[str, Any], base: str = "ARX") -> str:
+    """Why the residual weight is 0, from the losses (an unstable free run is said as such);
+    ``base``: the linear model it was weighed against."""
     net, arx = res["network_free_run_loss"], res["free_run_loss_arx"]
     if not math.isfinite(net) or net > 10 * arx:
         return (f"The trained network's free run is unstable on validation (loss {net:.4g} "
                 f"against the linear model's {arx:.4g}), and no residual weight improves on "
-                "the linear model: the saved network is the ARX model.")
+                f"the linear model: the saved network is the {base} model.")
     return ("The residual does not improve on the linear model on validation (network "
-            f"{net:.4g}, linear {arx:.4g}): the saved network is the ARX model.")
+            f"{net:.4g}, linear {arx:.4g}): the saved network is the {base} model.")
 
 
 def _baseline_lines(metrics: dict[str, Any]) -> list[str]:

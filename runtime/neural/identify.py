@@ -185,10 +185,15 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     arx = replace(arx, context={**context, "model": "linear ARX twin (least squares)"})
     # The residual is weighed against the linear model on the network's own regressor (with
     # the scheduling signals where the network has them): ARX + alpha (network - ARX).
+    # With lpv_base the linear model is the LPV-ARX fit in the network's normalisation:
+    # LPV-ARX + alpha (network - LPV-ARX), never worse than it on validation.
     start = arx if not config.scheduling else replace(
         fit_arx(_segments(split["train"], skip, names), names, config.output_lags,
-                config.input_lags, dt, scheduling=model_scheduling(names)),
-        context={**context, "model": "ARX with the scheduling signals (least squares)"})
+                config.input_lags, dt, scheduling=model_scheduling(names),
+                lpv=config.lpv_base),
+        context={**context, "model": ("LPV-ARX (input gain affine in the scheduling signals; "
+                                      "least squares)" if config.lpv_base else
+                                      "ARX with the scheduling signals (least squares)")})
     seg_val = _segments(split["validation"], skip, names)
     model, selection = select_residual(trained, start, seg_val, config.window)
     dropped = None

@@ -32,6 +32,10 @@ class IdentifyConfig:
     # The network also sees the scheduling signals (jointplay.neural.scheduling): the ideal
     # robot's configuration and speed and the drive torque of the motion.
     scheduling: bool = False
+    # With scheduling: the network's linear part is an LPV-ARX model (its input gain affine
+    # in the scheduling signals, a bilinear part) rather than an ARX model, started at the
+    # least-squares LPV-ARX fit, and its residual is weighed against that model.
+    lpv_base: bool = False
     # The operating range the training and validation runs span: each run is simulated on
     # the robot with one of these radial clearances (m, every clearance joint) and payload
     # masses (kg), cycling through every pair; empty: the scene's own. The test runs stay on
@@ -50,6 +54,9 @@ class IdentifyConfig:
                 or not 0 <= self.seed <= MAX_SEED:
             raise DescriptionError("seed", f"must be a whole number from 0 to {MAX_SEED} "
                                    f"(2**32 - 1), got {self.seed!r}")
+        if self.lpv_base and not (self.scheduling and self.linear_path):
+            raise DescriptionError("lpv_base", "needs the scheduling signals and the linear "
+                                   "direct path (--scheduling, without --no-linear-path)")
         for name, values in (("clearances", self.clearances), ("payloads", self.payloads)):
             if not all(isinstance(v, (int, float)) and math.isfinite(v) and v >= 0
                        and (v > 0 or name == "payloads") for v in values):

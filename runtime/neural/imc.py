@@ -179,21 +179,25 @@ def generate_c(model: Narx, settings: ControllerSettings, fallback: Narx | None 
 
 
 def compile_controller(model: Narx, settings: ControllerSettings, fallback: Narx | None = None,
-                       compiled: bool = True, kernel: bool = True) -> Controller:
+                       compiled: bool = True, kernel: bool | None = None) -> Controller:
     """Build, generate, compile (through the cache) and load the controller step.
 
     ``kernel``: compile the loop kernel (jointplay.neural.imc_kernel) rather than CasADi's
-    straight-line code for the same function (one Gauss-Newton iteration only)."""
+    straight-line code for the same function (one Gauss-Newton iteration only); None: the
+    kernel except for an LPV-ARX model (one linear layer with a bilinear part), whose
+    straight-line code measured faster (3.26 and 3.32 against 3.69 and 3.65 µs, fastest
+    rounds of benchmarks/control_step.py, two runs)."""
     from jointplay.store.build import compile_source
     from jointplay.store.model import FastFunction
 
     settings = resolve_settings(model, settings)
     # The loop kernel implements the first-order mismatch filter; the pairwise filter of
     # declared noise (mismatch_filter.py) runs as CasADi's code.
-    # The kernel runs networks and ARX models (with their scheduling signals); a model with
-    # a bilinear part (LPV-ARX) runs as CasADi's code.
-    plain = all(mdl is None or mdl.bilinear is None for mdl in (model, fallback))
-    if kernel and plain and settings.iterations == 1 and not pair_gains(model, settings):
+    # The kernel runs networks, ARX and LPV-ARX models (with their scheduling signals and
+    # bilinear parts).
+    if kernel is None:
+        kernel = not (model.bilinear is not None and len(model.weights) == 1)
+    if kernel and settings.iterations == 1 and not pair_gains(model, settings):
         from jointplay.neural.imc_kernel import kernel_library_source
 
         fn, layout = build_step(model, settings, fallback)

@@ -34,7 +34,7 @@ from jointplay.neural.internal_model import (
     is_linear,
     training_box,
 )
-from jointplay.neural.kernel_network import TANH, _array, _c, _network
+from jointplay.neural.kernel_network import TANH, _array, _c, _network, gain_size
 from jointplay.neural.mismatch_filter import pair_gains
 from jointplay.neural.narx import Narx
 
@@ -131,6 +131,8 @@ def _rollout_lines(prefix: str, model: Narx, d: int, nt: int) -> list[str]:
         f"  for (i = 0; i < {nu * nb * nu}; ++i) dus[i] = 0;",
         f"  for (k = 0; k < {nu}; ++k) dus[k * {nb * nu} + k] = 1;",
         *held,
+        *([f"  double g[{gain_size(model)}];", f"  {prefix}gain(w, g);"]
+          if gain_size(model) else []),
         f"  for (int t = 0; t < {d}; ++t) {{",
         f"    for (i = 0; i < {na * ny}; ++i) phi[i] = ys[i];",
         f"    for (i = 0; i < {nb * nu}; ++i) phi[{na * ny} + i] = us[i];",
@@ -139,7 +141,7 @@ def _rollout_lines(prefix: str, model: Narx, d: int, nt: int) -> list[str]:
         f"      for (i = 0; i < {nb * nu}; ++i) dphi[k * {nphi} + {na * ny} + i] = "
         f"dus[k * {nb * nu} + i];",
         "    }",
-        f"    {prefix}eval(phi, dphi, yn, dyn, 1);",
+        f"    {prefix}eval(phi, dphi, yn, dyn, 1, {'g' if gain_size(model) else '0'});",
         f"    for (i = {na * ny} - 1; i >= {ny}; --i) ys[i] = ys[i - {ny}];",
         f"    for (i = 0; i < {ny}; ++i) ys[i] = yn[i];",
         f"    for (k = 0; k < {nu}; ++k) {{",
@@ -221,8 +223,6 @@ def kernel_source(model: Narx, settings: ControllerSettings, fallback: Narx | No
     s = settings
     if s.iterations != 1:
         raise ValueError("the loop kernel implements one Gauss-Newton iteration")
-    if any(m is not None and m.bilinear is not None for m in (model, fallback)):
-        raise ValueError("the loop kernel runs networks and ARX models, not bilinear ones")
     if pair_gains(model, s):
         raise ValueError("the loop kernel implements the first-order mismatch filter only")
     if fallback is not None and not s.guard:
@@ -280,6 +280,8 @@ class _Shape:
     ns: int  # scheduling signals of the network (0: none)
     nsf: int  # of the fallback
     fb: bool  # with a fallback
+    gain: int  # doubles of the network's scheduled input gain (0: no bilinear part)
+    gainf: int  # of the fallback's
     o_histf: int
     o_up: int
     o_ef: int
@@ -299,7 +301,9 @@ class _Shape:
         return cls(ny, nu, na, nb, naf, fallback.input_lags if fallback is not None else 1,
                    max(model.n_regressor, fallback.n_regressor if fallback is not None else 0),
                    model.n_scheduling, fallback.n_scheduling if fallback is not None else 0,
-                   fallback is not None, o_histf, o_up, o_ef, o_eff, o_yd, o_yd + ny)
+                   fallback is not None, gain_size(model),
+                   gain_size(fallback) if fallback is not None else 0,
+                   o_histf, o_up, o_ef, o_eff, o_yd, o_yd + ny)
 
 
 def _kernel_head(name: str, x: _Shape, s: ControllerSettings, scheduling: str) -> str:
@@ -349,6 +353,14 @@ def _kernel_limits(x: _Shape, s: ControllerSettings) -> str:
 """
 
 
+def _eval_call(prefix: str, out: str, gain: int) -> str:
+    """One network's prediction (no tangent), its scheduled input gain first if it has one."""
+    if not gain:
+        return f"{prefix}_eval(phi, 0, {out}, 0, 0, 0);"
+    return (f"{{ double g[{gain}]; {prefix}_gain(w, g); "
+            f"{prefix}_eval(phi, 0, {out}, 0, 0, g); }}")
+
+
 def _kernel_predictions(x: _Shape) -> str:
     """Both internal models advanced one sample with the applied v."""
     ny, nu, na, nb, naf, nbf = x.ny, x.nu, x.na, x.nb, x.naf, x.nbf
@@ -356,12 +368,12 @@ def _kernel_predictions(x: _Shape) -> str:
   for (i = 0; i < {nu}; ++i) phi[{na * ny} + i] = vnew[i];
   for (i = 0; i < {(nb - 1) * nu}; ++i) phi[{na * ny + nu} + i] = upast[i];
   for (i = 0; i < {x.ns}; ++i) phi[{na * ny + nb * nu} + i] = w[i];
-  m_eval(phi, 0, yn, 0, 0);
+  {_eval_call("m", "yn", x.gain)}
   {f'''for (i = 0; i < {naf * ny}; ++i) phi[i] = histf[i];
   for (i = 0; i < {nu}; ++i) phi[{naf * ny} + i] = vnew[i];
   for (i = 0; i < {(nbf - 1) * nu}; ++i) phi[{naf * ny + nu} + i] = upast[i];
   for (i = 0; i < {x.nsf}; ++i) phi[{naf * ny + nbf * nu} + i] = w[i];
-  f_eval(phi, 0, yfn, 0, 0);''' if x.fb else ""}
+  {_eval_call("f", "yfn", x.gainf)}''' if x.fb else ""}
 """
 
 

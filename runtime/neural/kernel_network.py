@@ -54,8 +54,13 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
     for i in range(len(model.weights)):
         lines += _layer_lines(f"{prefix}W{i}", f"{prefix}B{i}", widths[i], widths[i + 1], nd,
                               width_max, hidden=i < last)
-    if model.linear is not None:
-        lines += _linear_lines(prefix, nphi, ny, nd, width_max)
+    if model.bilinear is not None:
+        # The direct path with the scheduled input gain added (``{prefix}gain``).
+        lines += _linear_lines("g", nphi, ny, nd, width_max)
+    else:
+        if model.linear is not None:
+            lines += _linear_lines(f"{prefix}L", nphi, ny, nd, width_max)
+        lines.append("  (void) g;")
     lines += [
         f"  for (i = 0; i < {ny}; ++i)",
         f"    y[i] = {prefix}CARRY[i] * phi[i] + {prefix}TM[i] + {prefix}TS[i] * a[i];",
@@ -65,7 +70,36 @@ def _network(prefix: str, model: Narx, nd: int) -> str:
         f"{prefix}TS[i] * da[k * {width_max} + i];",
         "  }",
         "}"]
-    return _constants(prefix, model) + "\n".join(lines) + "\n"
+    gain = _gain_function(prefix, model) if model.bilinear is not None else ""
+    return _constants(prefix, model) + gain + "\n".join(lines) + "\n"
+
+
+def gain_size(model: Narx) -> int:
+    """Doubles of the scheduled direct path ``g`` that ``{prefix}eval`` takes (0: none)."""
+    return model.n_regressor * model.n_outputs if model.bilinear is not None else 0
+
+
+def _gain_function(prefix: str, model: Narx) -> str:
+    """``{prefix}gain(w, g)``: the direct path with the bilinear part's input gain
+    sum_s w_s B_s added on the input lags' columns, at the raw scheduling signals ``w``; once
+    per call of the step (the loop holds the signals over the horizon, with no tangent, so
+    the bilinear part is a linear term in the input lags there), laid out as ``{prefix}L``
+    (regressor j: g[j * ny .. j * ny + ny - 1])."""
+    ny, nw, nz = model.n_outputs, model.n_scheduling, model.n_input_regressors
+    first_w, start = model.n_regressor - nw, model.output_lags * ny
+    base = (f"  for (i = 0; i < {gain_size(model)}; ++i) g[i] = {prefix}L[i];"
+            if model.linear is not None else
+            f"  for (i = 0; i < {gain_size(model)}; ++i) g[i] = 0;")
+    return "\n".join([
+        f"static void {prefix}gain(const double* w, double* g) {{",
+        "  int i, s;",
+        base,
+        f"  for (s = 0; s < {nw}; ++s) {{",
+        f"    const double ws = (w[s] - {prefix}MU[{first_w} + s]) * {prefix}ISG[{first_w} + s];",
+        f"    const double* col = {prefix}BL + s * {nz * ny};",
+        f"    for (i = 0; i < {nz * ny}; ++i) g[{start * ny} + i] += ws * col[i];",
+        "  }",
+        "}"]) + "\n"
 
 
 def _constants(prefix: str, model: Narx) -> str:
@@ -79,6 +113,8 @@ def _constants(prefix: str, model: Narx) -> str:
         out += [_array(f"{prefix}W{i}", w.T), _array(f"{prefix}B{i}", b)]
     if model.linear is not None:
         out.append(_array(f"{prefix}L", model.linear.T))
+    if model.bilinear is not None:
+        out.append(_array(f"{prefix}BL", model.bilinear.T))
     return "".join(out)
 
 
@@ -86,7 +122,7 @@ def _input_lines(prefix: str, nphi: int, nd: int, width_max: int) -> list[str]:
     """The function's head: the regressor normalised, with its tangents, as the first layer's
     input."""
     return [f"static void {prefix}eval(const double* phi, const double* dphi, double* y, "
-            "double* dy, int tangent) {",
+            "double* dy, int tangent, const double* g) {",
             f"  double z[{nphi}], dz[{nd * nphi}], h[{width_max}], dh[{nd * width_max}];",
             f"  double a[{width_max}], da[{nd * width_max}];",
             "  int i, j, k;",
@@ -136,8 +172,9 @@ def _layer_lines(wname: str, bias: str, n_in: int, n_out: int, nd: int, width_ma
     return lines
 
 
-def _linear_lines(prefix: str, nphi: int, ny: int, nd: int, width_max: int) -> list[str]:
-    """The direct linear term on the normalised regressor, added to the output layer."""
+def _linear_lines(matrix: str, nphi: int, ny: int, nd: int, width_max: int) -> list[str]:
+    """The direct linear term (``matrix``, transposed) on the normalised regressor, added to
+    the output layer."""
     tangents = "".join(f" da[{k * width_max} + i] += lji * dz{k};" for k in range(nd))
     loads = " ".join(f"const double dz{k} = dz[{k * nphi} + j];" for k in range(nd))
     return [
@@ -145,16 +182,16 @@ def _linear_lines(prefix: str, nphi: int, ny: int, nd: int, width_max: int) -> l
         f"    for (j = 0; j < {nphi}; ++j) {{",
         f"      const double zj = z[j]; {loads}",
         f"      for (i = 0; i < {ny}; ++i) {{",
-        f"        const double lji = {prefix}L[j * {ny} + i];",
+        f"        const double lji = {matrix}[j * {ny} + i];",
         f"        a[i] += lji * zj;{tangents}",
         "      }",
         "    }",
         "  } else {",
         f"    for (j = 0; j < {nphi}; ++j) {{",
         "      const double zj = z[j];",
-        f"      for (i = 0; i < {ny}; ++i) a[i] += {prefix}L[j * {ny} + i] * zj;",
+        f"      for (i = 0; i < {ny}; ++i) a[i] += {matrix}[j * {ny} + i] * zj;",
         "    }",
         "  }"]
 
 
-__all__ = ["TANH"]
+__all__ = ["TANH", "gain_size"]

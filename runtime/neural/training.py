@@ -74,23 +74,55 @@ def _scale(std: np.ndarray) -> np.ndarray:
     return np.where(std > 1e-300, std, 1.0)
 
 
+def bilinear_features(z: np.ndarray, start: int, n_inputs: int, n_scheduling: int
+                      ) -> np.ndarray:
+    """The products w_i z_u of the normalised input lags and the normalised scheduling
+    signals (the regressor's last columns), block i for signal i: the columns that the
+    bilinear part of jointplay.neural.narx_model multiplies."""
+    zu, w = z[:, start: start + n_inputs], z[:, z.shape[1] - n_scheduling:]
+    return np.hstack([zu * w[:, i: i + 1] for i in range(n_scheduling)])
+
+
+def _linear_fit(z: np.ndarray, t: np.ndarray, ridge: float, bilinear: tuple[int, int, int] | None
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """(weight, bias, bilinear part) of the least-squares fit on normalised regressors ``z``;
+    ``bilinear`` = (start, n_inputs, n_scheduling) adds the input lags' gain affine in the
+    scheduling signals (LPV-ARX; ridge ``ridge`` x samples, as jointplay.neural.lpv)."""
+    if bilinear is None:
+        theta = _least_squares(z, t, ridge)
+        return theta[:-1].T.copy(), theta[-1].copy(), None
+    products = bilinear_features(z, *bilinear)
+    theta = _least_squares(np.hstack([z, products]), t, ridge * z.shape[0])
+    n = z.shape[1]
+    return theta[:n].T.copy(), theta[-1].copy(), theta[n:-1].T.copy()
+
+
 def fit_arx(segments: Sequence[Segment], names: dict[str, Any],
             na: int, nb: int, dt: float, ridge: float = 1e-9,
-            scheduling: Sequence[str] = ()) -> Narx:
+            scheduling: Sequence[str] = (), lpv: bool = False) -> Narx:
     """The linear ARX baseline on the same regressor, by least squares (a network with no
     hidden layer, so it runs through the same code). Segments with scheduling signals give
-    an ARX model with them as further regressors (``scheduling``: their names)."""
+    an ARX model with them as further regressors (``scheduling``: their names); with ``lpv``
+    its input gain is affine in them too (an LPV-ARX model in the network's normalisation,
+    the base of a network trained with ``lpv_base``; ridge :data:`LPV_RIDGE`)."""
     carry = np.asarray(output_increments(names["output_names"]), dtype=float)
     x, t = _regress(segments, na, nb, carry)
     mu, sigma = x.mean(0), _scale(x.std(0))
     tm, ts = t.mean(0), _scale(t.std(0))
-    theta = _least_squares((x - mu) / sigma, (t - tm) / ts, ridge)
-    return Narx(weights=(theta[:-1].T.copy(),), biases=(theta[-1].copy(),), regressor_mean=mu,
+    ny = t.shape[1]
+    shape = (na * ny, x.shape[1] - na * ny - len(scheduling), len(scheduling)) if lpv else None
+    weight, bias, bilinear = _linear_fit((x - mu) / sigma, (t - tm) / ts,
+                                         LPV_RIDGE if lpv else ridge, shape)
+    return Narx(weights=(weight,), biases=(bias,), regressor_mean=mu,
                 regressor_scale=sigma, increment_mean=tm, increment_scale=ts,
                 output_scale=_scale(np.vstack([seg[0] for seg in segments]).std(0)),
                 output_lags=na, input_lags=nb, sample_time=dt,
                 increment=tuple(bool(c) for c in carry), scheduling=tuple(scheduling),
-                **names)
+                bilinear=bilinear, **names)
+
+
+# Ridge of the LPV-ARX fit per sample on normalised features (jointplay.neural.lpv's).
+LPV_RIDGE = 1e-6
 
 
 # ---- the data a training sees ---------------------------------------------------------------
@@ -150,11 +182,24 @@ class _Network:
         layers.append(torch.nn.Linear(width, self.ny, dtype=self.dtype))
         self.net = torch.nn.Sequential(*layers)
         self.direct = torch.nn.Linear(data.x.shape[1], self.ny, bias=False, dtype=self.dtype)
-        self.linear_start: tuple[Any, Any] | None = None  # (weight, bias) of the linear fit
+        # (weight, bias, bilinear part or None) of the linear fit
+        self.linear_start: tuple[Any, Any, Any] | None = None
         self.params = list(self.net.parameters())
+        # lpv_base: the linear part is an LPV-ARX model (input gain affine in the scheduling
+        # signals), a trainable bilinear part beside the direct path.
+        self.bilinear_shape: tuple[int, int, int] | None = None
+        self.bilinear: Any = None
+        if config.lpv_base:
+            ny = data.t.shape[1]
+            n_u = data.x.shape[1] - config.output_lags * ny - len(data.scheduling)
+            self.bilinear_shape = (config.output_lags * ny, n_u, len(data.scheduling))
+            self.bilinear = torch.zeros((ny, n_u * len(data.scheduling)), dtype=self.dtype,
+                                        requires_grad=True)
         if self.linear_path:
             self._start_linear(data)
             self.params += list(self.direct.parameters())
+        if self.bilinear is not None:
+            self.params.append(self.bilinear)
         self.mu, self.sigma, self.tm, self.ts, self.ys, self.carry = (
             self.tensor(a) for a in (data.mu, data.sigma, data.tm, data.ts, data.ys,
                                      np.asarray(data.increment, dtype=float)))
@@ -162,20 +207,30 @@ class _Network:
     def _start_linear(self, data: _Data) -> None:
         """Start from the least-squares linear model, with the hidden layers' output near
         zero: training then only has to add what is nonlinear."""
-        theta = _least_squares((data.x - data.mu) / data.sigma, (data.t - data.tm) / data.ts,
-                               1e-9)
-        self.linear_start = (self.tensor(theta[:-1].T), self.tensor(theta[-1]))
+        weight, bias, bilinear = _linear_fit(
+            (data.x - data.mu) / data.sigma, (data.t - data.tm) / data.ts,
+            LPV_RIDGE if self.bilinear_shape else 1e-9, self.bilinear_shape)
+        self.linear_start = (self.tensor(weight), self.tensor(bias),
+                             None if bilinear is None else self.tensor(bilinear))
         with self.torch.no_grad():
-            self.direct.weight.copy_(self.tensor(theta[:-1].T))
-            self.net[-1].bias.copy_(self.tensor(theta[-1]))
+            self.direct.weight.copy_(self.tensor(weight))
+            self.net[-1].bias.copy_(self.tensor(bias))
             self.net[-1].weight.mul_(0.01)
+            if bilinear is not None:
+                self.bilinear.copy_(self.tensor(bilinear))
 
     def tensor(self, a: Any) -> Any:
         return self.torch.tensor(a, dtype=self.dtype)
 
     def out(self, z: Any) -> Any:
         """Normalised increments (or values) from normalised regressors."""
-        return self.net(z) + self.direct(z) if self.linear_path else self.net(z)
+        h = self.net(z) + self.direct(z) if self.linear_path else self.net(z)
+        if self.bilinear_shape is not None:
+            start, n_u, n_s = self.bilinear_shape
+            zu, w = z[..., start: start + n_u], z[..., z.shape[-1] - n_s:]
+            products = self.torch.cat([zu * w[..., i: i + 1] for i in range(n_s)], dim=-1)
+            h = h + products @ self.bilinear.T
+        return h
 
     def step(self, phi: Any) -> Any:
         """The next outputs from a regressor."""
@@ -198,13 +253,17 @@ class _Network:
     def sim_loss(self, d: Any, u: Any, w: Any) -> Any:
         return (((self.free_run(d, u, w) - d[:, self.m + 1:]) / self.ys) ** 2).mean()
 
-    def state(self) -> tuple[dict[str, Any], dict[str, Any]]:
+    def state(self) -> tuple[dict[str, Any], dict[str, Any], Any]:
         return ({k: v.detach().clone() for k, v in self.net.state_dict().items()},
-                {k: v.detach().clone() for k, v in self.direct.state_dict().items()})
+                {k: v.detach().clone() for k, v in self.direct.state_dict().items()},
+                None if self.bilinear is None else self.bilinear.detach().clone())
 
-    def restore(self, state: tuple[dict[str, Any], dict[str, Any]]) -> None:
+    def restore(self, state: tuple[dict[str, Any], dict[str, Any], Any]) -> None:
         self.net.load_state_dict(state[0])
         self.direct.load_state_dict(state[1])
+        if self.bilinear is not None:
+            with self.torch.no_grad():
+                self.bilinear.copy_(state[2])
 
     def windows(self, segments: Sequence[Segment], h: int) -> tuple[Any, Any, Any]:
         """Overlapping windows of ``h`` predicted samples (with the history before them)."""
@@ -225,6 +284,8 @@ class _Network:
                     increment=data.increment,
                     linear=(self.direct.weight.detach().numpy().astype(float).copy()
                             if self.linear_path else None), scheduling=self.scheduling,
+                    bilinear=(None if self.bilinear is None
+                              else self.bilinear.detach().numpy().astype(float).copy()),
                     **names)
 
 
@@ -371,6 +432,7 @@ def _stabilise_start(torch: Any, net: _Network, validate: Callable[[], float],
     with torch.no_grad():
         weight, bias = last.weight.detach().clone(), last.bias.detach().clone()
         direct = net.direct.weight.detach().clone()
+        bilinear = None if net.bilinear is None else net.bilinear.detach().clone()
     linear = net.linear_start
 
     def set_shrink(c: float) -> None:
@@ -379,6 +441,8 @@ def _stabilise_start(torch: Any, net: _Network, validate: Callable[[], float],
             if linear is not None:  # blend the direct path and the bias back to the linear fit
                 last.bias.copy_(c * bias + (1 - c) * linear[1])
                 net.direct.weight.copy_(c * direct + (1 - c) * linear[0])
+                if bilinear is not None:
+                    net.bilinear.copy_(c * bilinear + (1 - c) * linear[2])
 
     losses: dict[float, float] = {}
     for c in (1.0, 0.0):

@@ -6,8 +6,9 @@ Here the residual is made explicit and earns its place on data it was not traine
 
     model(alpha) = ARX + alpha (network - ARX),   alpha in [0, 1]
 
-is again a network of the same shape (the last layer and the direct path are blended; both
-models share one normalisation), and alpha is chosen on the validation trajectories by the
+is again a network of the same shape (the last layer and the direct path are blended, and a
+bilinear part where either has one: with ``lpv_base`` the linear model is the LPV-ARX fit;
+both models share one normalisation), and alpha is chosen on the validation trajectories by the
 free-run loss over windows (what the controller relies on). alpha = 0 is the ARX model itself,
 so the chosen model is never worse than ARX on that loss.
 
@@ -41,9 +42,15 @@ def blend(narx: Narx, arx: Narx, alpha: float) -> Narx:
         raise ValueError("the ARX model must be a single linear layer")
     w_arx, b_arx = arx.weights[0], arx.biases[0]
     direct = narx.linear if narx.linear is not None else np.zeros_like(w_arx)
+    # A bilinear part (LPV-ARX base, or a network trained on one) is blended the same way.
+    bilinear = None
+    if narx.bilinear is not None or arx.bilinear is not None:
+        zero = np.zeros_like(narx.bilinear if narx.bilinear is not None else arx.bilinear)
+        bilinear = (alpha * (narx.bilinear if narx.bilinear is not None else zero)
+                    + (1 - alpha) * (arx.bilinear if arx.bilinear is not None else zero))
     return replace(narx, weights=(*narx.weights[:-1], alpha * narx.weights[-1]),
                    biases=(*narx.biases[:-1], alpha * narx.biases[-1] + (1 - alpha) * b_arx),
-                   linear=alpha * direct + (1 - alpha) * w_arx)
+                   linear=alpha * direct + (1 - alpha) * w_arx, bilinear=bilinear)
 
 
 def windows(segments: Sequence[Segment], length: int,
