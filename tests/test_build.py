@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from jointplay import generated, load_model
+from jointplay import default_scene, generated, load_model, simulate
 from jointplay.store.build import (
     DEFAULT_CFLAGS,
     LIBRARY_NAME,
@@ -108,6 +108,10 @@ def test_deferred_library_is_built_on_first_use(tmp_path: Path, monkeypatch, cap
     state_block = model.function("jac_state")(x, tau, p, vimp)[0]
     assert model.deferred_library is None
     assert len(list((tmp_path / "build").iterdir())) == 1
+    # A simulation, integration and the assembly of its outputs, never needs it either (the
+    # cache gains the simulation driver's library, not the deferred one).
+    simulate(default_scene().with_run(t_end=0.02), model=model)
+    assert model.deferred_library is None
     capsys.readouterr()
     blocks = model.jacobian(x, tau, p, vimp)
     assert "compiling the rest of model" in capsys.readouterr().err

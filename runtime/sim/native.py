@@ -316,7 +316,9 @@ def map_function(model: Model, name: str, inputs: list[np.ndarray],
                                                        for a in held))
     in_strides = (ctypes.c_long * max(len(held), 1))(*(
         a.shape[1] if a.ndim == 2 else 0 for a in held))
-    casadi_fn = model.casadi_function(name)
+    # The eager library's own function: only its output sizes are read here, and asking
+    # for the differentiable one would compile the deferred library after every run.
+    casadi_fn = model.function(name).function
     outs = [np.zeros((count, casadi_fn.nnz_out(i))) for i in range(casadi_fn.n_out())]
     out_ptrs = (ctypes.c_void_p * len(outs))(*(o.ctypes.data if o.size else None
                                                for o in outs))
