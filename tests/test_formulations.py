@@ -221,11 +221,11 @@ def test_looped_state_jacobian_equals_closed_form(monkeypatch: pytest.MonkeyPatc
     """The state Jacobian of long chains (columns differentiated in a loop) is the same
     Jacobian: forced on for a short chain (the k = 3 case above: joints with two, one and
     three coordinates, and a film; its closed form is shared)."""
-    from jointplay.derive import codegen
+    from jointplay.derive import codegen, recursive_jacobians
     from jointplay.derive.symbolic import derive
 
     kinds, effects = _kinds(3), EFFECTS[3]
-    monkeypatch.setattr(codegen, "LOOPED_STATE_JACOBIAN_FROM", 1)
+    monkeypatch.setattr(recursive_jacobians, "LOOPED_STATE_JACOBIAN_FROM", 1)
     robot = _robot(kinds, effects, np.random.default_rng(0))
     functions, _ = codegen.build_functions(derive(robot.structure(), "recursive"))
     looped = {fn.name(): fn for fn in functions}
@@ -279,7 +279,7 @@ def test_state_jacobian_layout(case: tuple[tuple[str, ...], Effects]) -> None:
     solves."""
     from types import SimpleNamespace
 
-    from jointplay.derive.codegen import differentiates_the_aba
+    from jointplay.derive.recursive_jacobians import differentiates_the_aba
 
     kinds, effects = case
     fn = _functions(kinds, effects, "recursive")["jac_state"]

@@ -219,7 +219,7 @@ def test_radau_reduced_newton_step_equals_the_full_one() -> None:
     import casadi as ca
 
     from jointplay import generated, load_model
-    from jointplay.derive.codegen import RADAU_A, RADAU_NEWTON_ITERATIONS
+    from jointplay.derive.fixed_step import RADAU_A, RADAU_NEWTON_ITERATIONS
 
     run = simulate(default_scene().with_run(integrator="bdf", t_end=0.003, rtol=1e-9,
                                             atol=1e-9))

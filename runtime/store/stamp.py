@@ -14,8 +14,9 @@ from typing import Any
 
 from jointplay.robot import canonical_json
 
-_EMITTING_MODULES = ("codegen.py", "cylindrical.py", "laws.py", "lubrication.py", "recursive.py",
-                     "slots.py", "symbolic.py", "to_casadi.py", "wear.py")
+_EMITTING_MODULES = ("codegen.py", "cylindrical.py", "deferred.py", "fixed_step.py", "laws.py",
+                     "lubrication.py", "recursive.py", "recursive_jacobians.py", "slots.py",
+                     "symbolic.py", "to_casadi.py", "wear.py")
 
 
 def _generator_version() -> str:
