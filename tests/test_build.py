@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import hashlib
 import json
 import multiprocessing
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -145,3 +149,28 @@ def test_deferred_library_is_built_on_first_use(tmp_path: Path, monkeypatch, cap
     np.testing.assert_array_equal(again.jacobian(x, tau, p, vimp)["p"], blocks["p"])
     assert again.deferred_library == deferred and again.deferred_compile_seconds == 0.0
     assert "compiling" not in capsys.readouterr().err
+    # A deferred library in the cache that is whole and verified but does not load (here a
+    # valid library without the model's functions) is compiled again, once, and then serves.
+    # (Replaced by a rename, and loaded in a new process: this one has the old one mapped.)
+    tiny, _ = compile_source("double tiny(double x) { return 2.0 * x; }\n",
+                             cache=tmp_path / "other")
+    (deferred.parent / "stand-in").write_bytes(tiny.read_bytes())
+    os.replace(deferred.parent / "stand-in", deferred)
+    marker_path = deferred.parent / MARKER_NAME
+    marker = json.loads(marker_path.read_text())
+    marker.update(sha256=hashlib.sha256(tiny.read_bytes()).hexdigest(),
+                  size=tiny.stat().st_size)
+    marker_path.write_text(json.dumps(marker))
+    np.savez(tmp_path / "arguments.npz", x=x, tau=tau, p=p, vimp=vimp)
+    code = ("import numpy as np, jointplay, sys\n"
+            "from jointplay import generated\n"
+            f"a = np.load({str(tmp_path / 'arguments.npz')!r})\n"
+            "m = jointplay.load_model(generated.folders()['paper_4dof'])\n"
+            "block = m.jacobian(a['x'], a['tau'], a['p'], a['vimp'])['p']\n"
+            f"np.save({str(tmp_path / 'healed.npy')!r}, block)\n"
+            "assert m.deferred_compile_seconds > 0\n")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=300, env={**os.environ, "JOINTPLAY_CACHE": str(tmp_path)})
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stderr.count("does not load; compiling it again") == 1, proc.stderr
+    np.testing.assert_array_equal(np.load(tmp_path / "healed.npy"), blocks["p"])

@@ -118,7 +118,7 @@ class Model:
         self.n_state = 2 * self.n_coordinates
         self.default_parameters = default_parameters
         self.cflags = cflags
-        self._rebuilt = False
+        self._rebuilt: set[str] = set()  # the libraries compiled again after a failed load
         self._functions: dict[str, FastFunction] = {}
         self.deferred_library: Path | None = None  # compiled on the first call that needs it
         self.deferred_compile_seconds = 0.0
@@ -136,15 +136,10 @@ class Model:
                     and name not in self.layout.deferred:
                 raise KeyError(f"{name!r} is not a function of this model; it has "
                                f"{', '.join(self.layout.functions)}")
-            if name in self.layout.deferred:
-                fn = self._deferred_external(name)
-            else:
-                try:
-                    fn = ca.external(name, str(self.library))
-                except RuntimeError as err:
-                    fn = self._rebuilt_external(name, err)
-            if name.startswith("differentiable_") and name[15:] in functions:
-                matrices = frozenset(s.name for s in functions[name[15:]].outputs if s.matrix)
+            fn = self._external(name, deferred=name in self.layout.deferred)
+            plain = name.removeprefix("differentiable_")
+            if plain != name and plain in functions:
+                matrices = frozenset(s.name for s in functions[plain].outputs if s.matrix)
             elif name in functions:
                 matrices = frozenset(s.name for s in functions[name].outputs if s.matrix)
             else:  # a Jacobian: every block is a matrix
@@ -152,27 +147,42 @@ class Model:
             self._functions[name] = FastFunction(fn, matrices)
         return self._functions[name]
 
-    def _rebuilt_external(self, name: str, err: RuntimeError) -> ca.Function:
-        """A cached library that does not load is rebuilt once, then loaded again."""
+    def _external(self, name: str, deferred: bool) -> ca.Function:
+        """``name`` from the eager library, or from the deferred one (compiled, once and
+        cached, on the first call that needs it, saying so on stderr). A cached library that
+        does not load is compiled again once, then loaded again."""
         from jointplay.common.errors import BuildError
         from jointplay.store.build import discard_entry
 
-        cause = (str(err).strip().splitlines() or ["unknown error"])[-1][:200]
-        if self._rebuilt:
-            raise BuildError(f"the compiled model {self.library} cannot be loaded ({cause})") \
-                from None
-        note(f"the compiled model {self.library} does not load; compiling it again")
-        self._rebuilt = True
-        discard_entry(self.library.parent)
-        source, _ = read_generated(self.folder)
-        self.library, self.compile_seconds = compile_source(source, self.cflags)
-        self._functions.clear()
+        if deferred and self.deferred_library is None:
+            self.deferred_library, self.deferred_compile_seconds = self._compile_deferred()
+        library = self.deferred_library if deferred else self.library
+        assert library is not None
         try:
-            return ca.external(name, str(self.library))
+            return ca.external(name, str(library))
+        except RuntimeError as err:
+            cause = _last_line(err)
+            which = "deferred" if deferred else "eager"
+            if which in self._rebuilt:
+                raise BuildError(f"the compiled model {library} cannot be loaded ({cause})") \
+                    from None
+            note(f"the compiled model {library} does not load; compiling it again")
+            self._rebuilt.add(which)
+            discard_entry(library.parent)
+            if deferred:
+                self.deferred_library, self.deferred_compile_seconds = \
+                    self._compile_deferred()
+                library = self.deferred_library
+            else:
+                source, _ = read_generated(self.folder)
+                self.library, self.compile_seconds = compile_source(source, self.cflags)
+                self._functions.clear()
+                library = self.library
+        try:
+            return ca.external(name, str(library))
         except RuntimeError as again:
-            cause = (str(again).strip().splitlines() or ["unknown error"])[-1][:200]
-            raise BuildError(f"the compiled model {self.library} cannot be loaded ({cause})") \
-                from None
+            raise BuildError(f"the compiled model {library} cannot be loaded "
+                             f"({_last_line(again)})") from None
 
     def casadi_function(self, name: str) -> ca.Function:
         """The compiled function as a CasADi ``Function`` (for integrators and AD): a function
@@ -182,29 +192,6 @@ class Model:
         if differentiable in self.layout.deferred:
             return self.function(differentiable).function
         return self.function(name).function
-
-    def _deferred_external(self, name: str) -> ca.Function:
-        """``name`` from the deferred library, which is compiled (once, cached) on the first
-        call that needs it, saying so on stderr; one that does not load is rebuilt once."""
-        if self.deferred_library is None:
-            self.deferred_library, self.deferred_compile_seconds = self._compile_deferred()
-        try:
-            return ca.external(name, str(self.deferred_library))
-        except RuntimeError as err:
-            from jointplay.common.errors import BuildError
-            from jointplay.store.build import discard_entry
-
-            cause = (str(err).strip().splitlines() or ["unknown error"])[-1][:200]
-            note(f"the compiled model {self.deferred_library} does not load; compiling it "
-                 "again")
-            discard_entry(self.deferred_library.parent)
-            self.deferred_library, self.deferred_compile_seconds = self._compile_deferred()
-            try:
-                return ca.external(name, str(self.deferred_library))
-            except RuntimeError as again:
-                cause = (str(again).strip().splitlines() or [cause])[-1][:200]
-                raise BuildError(f"the compiled model {self.deferred_library} cannot be "
-                                 f"loaded ({cause})") from None
 
     def _compile_deferred(self) -> tuple[Path, float]:
         import sys
@@ -376,6 +363,11 @@ def load_model(folder: str | Path, cflags: tuple[str, ...] = DEFAULT_CFLAGS) -> 
     defaults = read_defaults(folder, layout)
     library, seconds = compile_source(source, cflags)
     return Model(folder, library, layout, seconds, defaults, cflags)
+
+
+def _last_line(err: Exception) -> str:
+    """The last line of a loader's error (the one that says why), shortened."""
+    return (str(err).strip().splitlines() or ["unknown error"])[-1][:200]
 
 
 def note(message: str) -> None:
