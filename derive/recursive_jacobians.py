@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 
 import casadi as ca
 
+from jointplay.derive import recursive_chain_rule
 from jointplay.derive.symbolic import SymbolicModel
 from jointplay.derive.to_casadi import emitted_function
 from jointplay.robot.structure import CLEARANCE_KINDS, MOVING_KINDS
@@ -26,6 +27,7 @@ if TYPE_CHECKING:
 # and 1.4x and 2.3x gcc's peak memory (1.3 GB at 96 coordinates). Beyond the measured range
 # the loop keeps the build bounded. (Runs one after the other on a loaded 2-core machine.)
 LOOPED_STATE_JACOBIAN_FROM = 100
+CHAIN_RULE_FROM = 1
 # Columns a looped Jacobian differentiates per pass: the nominal recursion is evaluated once per
 # pass, its tangents once per column, so wider passes spend less on the nominal values and
 # more on C (the code of a pass grows with its width). The state Jacobian is called at every
@@ -59,6 +61,13 @@ def differentiates_the_aba(structure: Any) -> bool:
              CLEARANCE_KINDS]
     return bool(kinds) and all(kind in MOVING_KINDS and kind in CLEARANCE_KINDS
                                for kind in kinds)
+
+
+def uses_the_chain_rule(structure: Any, coordinates: int) -> bool:
+    """Whether the state Jacobian is the chain rule through each link's pose and twist
+    (:mod:`jointplay.derive.recursive_chain_rule`): for chains of clearance joints only,
+    from CHAIN_RULE_FROM coordinates on."""
+    return coordinates >= CHAIN_RULE_FROM and recursive_chain_rule.applies(structure)
 
 
 def _unit_columns(start: Any, size: int, width: int) -> Any:
@@ -117,6 +126,9 @@ class RecursiveJacobians:
         self.fn_fd = fn_fd
         self.acceleration = acceleration
         self.direct = differentiates_the_aba(model.structure)
+        self.model = model
+        self.slots = slots
+        self.chain_rule = uses_the_chain_rule(model.structure, model.n_coordinates)
         q, u, tau = inputs.q, inputs.u, inputs.tau
         held: dict[int, tuple[Any, Any, Any]] = {
             i: (ca.SX.sym(f"Fx{i}"), ca.SX.sym(f"Fy{i}"), ca.SX.sym(f"Ft{i}")) for i in contact}
@@ -163,6 +175,11 @@ class RecursiveJacobians:
         xm, taum, pm, vm = self.mx_inputs
         acc_m = self.fn_fd(xm, taum, pm, vm)[n:]
         factors_m = self.fn_factors(xm[:n], pm)
+        if self.chain_rule:
+            return emitted_function("jac_state", [xm, taum, pm, vm],
+                                    [recursive_chain_rule.state_jacobian(
+                                        self.model, self.slots, self.mx_inputs)],
+                                    ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
         d_forces = ca.jacobian(self.forces, x)
         if n < LOOPED_STATE_JACOBIAN_FROM and self.direct:
             # da/dx by AD of the ABA itself, straight-line: no dID/dx, no M^-1 solves.
