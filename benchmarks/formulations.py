@@ -96,6 +96,8 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
 
     if spec.get("looped_from") is not None:
         recursive_jacobians.LOOPED_STATE_JACOBIAN_FROM = spec["looped_from"]
+    if spec.get("chain_rule_from") is not None:
+        recursive_jacobians.CHAIN_RULE_FROM = spec["chain_rule_from"]
     if spec.get("state_jacobian", "auto") != "auto":
         forced = spec["state_jacobian"] == "aba"
         recursive_jacobians.differentiates_the_aba = lambda structure: forced
@@ -164,6 +166,10 @@ def main() -> int:
     parser.add_argument("--looped-from", type=int, default=None,
                         help="coordinates from which the recursion's state Jacobian is looped "
                              "(default: the generator's LOOPED_STATE_JACOBIAN_FROM)")
+    parser.add_argument("--chain-rule-from", type=int, default=None,
+                        help="coordinates from which a chain of clearance joints takes the "
+                             "state Jacobian by the chain rule (default: the generator's "
+                             "CHAIN_RULE_FROM)")
     parser.add_argument("--state-jacobian", choices=("auto", "aba", "solves"), default="auto",
                         help="the recursion's straight-line state Jacobian: AD of the ABA, "
                              "-M^-1 dID/dx by solves, or the generator's choice (default)")
@@ -188,6 +194,7 @@ def main() -> int:
         spec = {"structure": structure, "k": k, "pinocchio": args.pinocchio,
                 "closed_up_to": args.closed_up_to, "rounds": args.rounds,
                 "looped_from": args.looped_from, "state_jacobian": args.state_jacobian,
+                "chain_rule_from": args.chain_rule_from,
                 "batch_s": args.batch_ms / 1000}
         try:
             row = json_from_child([sys.executable, __file__, "--worker", json.dumps(spec)],

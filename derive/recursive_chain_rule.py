@@ -1,5 +1,5 @@
 """The state Jacobian of a chain of clearance joints by the chain rule through each link's
-absolute pose and twist: C that grows linearly with the chain, cost quadratic.
+absolute pose and twist: code that grows linearly with the chain, cost quadratically.
 
 Where every joint has three coordinates (a clearance joint: the angle and the eccentricity),
 its subspace S_i is invertible, no joint passes an articulated inertia on, and the
@@ -7,26 +7,27 @@ articulated-body algorithm decouples (see :mod:`jointplay.derive.recursive`): li
 absolute acceleration is A_i = I_i^-1 (S_i^-T g_i - X_{i+1}^T S_{i+1}^-T g_{i+1} + loads), with
 g_i the generalised forces of joint i (drive, contact), whatever the acceleration of link i-1,
 and joint i's accelerations are a_i = S_i^-1 (A_i - X_i A_{i-1} - bias_i). So a_i depends on
-the coordinates of joints i-1, i and i+1 (its *window*) and, through the pose and twist of the
-link the window hangs from (link i-2), on every coordinate below it:
+the states of joints i-1, i and i+1 (its *window*) and, through the pose and twist of the
+link the window hangs from (link i-2), on every state below it:
 
 * Z_m = (theta_m, omega_m, E_m, dE_m/dt), link m's absolute angle and rate and the position
   and velocity of its end, follows Z_m = psi(Z_{m-1}, x_m), x_m joint m's six states;
-* a_i = phi_i(Z_{i-2}, the window's states, torques, impact speeds and parameters): the
-  recursion's own chain and ABA over the window alone, hung from Z_{i-2} with its
-  acceleration taken as zero (which only the window's first joint's accelerations read).
+* a_i = phi_i(Z_{i-2}, the window's states, torques, contact forces and parameters): the
+  recursion's own chain over the window alone, hung from Z_{i-2}, then the decoupled ABA
+  above (the window's first link's acceleration does not need the one it hangs from);
+* each joint's contact law is evaluated once, with its Jacobian with respect to its
+  arguments (the eccentricity, the two links' angles and rates), and held in the windows
+  that read it (three), which chain it.
 
-psi and phi are small SX functions (one phi per kind of window: the middle windows share
-one), differentiated by CasADi's AD: fixed-size local Jacobians, O(1) code per kind. The
-chain rule then sweeps outward, dZ_m/dx = dpsi/dZ dZ_{m-1}/dx + dpsi/dx_m, and
-da_i/dx = dphi_i/dZ dZ_{i-2}/dx + dphi_i/dx_window, as MX products of sparse matrices
-(CasADi's casadi_mtimes loops in the C): the code is a few calls per link, the cost one
-6 x 6 product per pair of links, and the products skip the zeros (a link's pose depends on
-no joint beyond it, so half the Jacobian is structurally zero).
-
-The products are taken transposed (dZ_m/dx^T, 2n x 6, whose columns are long and contiguous:
-casadi_mtimes then runs its inner loop along them), and the Jacobian is assembled as
-[0 I; J]^T and transposed once.
+psi, phi (one function per kind of window: the middle windows share one) and the law are
+small SX functions differentiated by CasADi's AD: fixed-size local Jacobians, O(1) code per
+kind. The chain rule then sweeps outward: dZ_m/dx_j = dpsi_m/dZ_{m-1} dZ_{m-1}/dx_j for every
+joint j below link m, and joint i's rows in joint j's columns are dphi_i/dZ_{i-2}
+dZ_{i-2}/dx_j, 6 x 6 and 3 x 6 products of fixed pattern, done for all j by one loop in the
+C (a CasADi map) per link: code linear in the chain, cost one small product per pair of
+joints, none for the pairs that are structurally zero (a link's pose depends on no joint
+beyond it). One gather writes the pieces into the output's pattern (the index tables of the
+gather and of the pattern grow with the square of the chain, as the Jacobian does).
 """
 
 from __future__ import annotations
@@ -102,7 +103,8 @@ class _WindowKind:
 
 @dataclass
 class _WindowFunction:
-    # (base if hung, states, tau, parameters, forces, law Jacobians, law arguments)
+    # (base if hung, states, tau, parameters, then per joint: forces, law Jacobian, law
+    #  arguments)
     #   -> (dphi/dbase if hung, dphi/dstates)
     function: ca.Function
     parameter_names: list[str]  # in the window's numbering
@@ -173,9 +175,11 @@ def _window_function(model: SymbolicModel, kind: _WindowKind, law_pattern: ca.Sp
     drive = bool(model.torque_joints)
     tau = ca.SX.sym("tau", size if drive else 0)
     base_sym = ca.SX.sym("base", LINK_STATE)
-    forces = ca.SX.sym("forces", 3 * size)
+    # Each window joint's law: its forces, their Jacobian and the arguments it was evaluated
+    # at, each an input of its own (the law's outputs are passed as they are, not copied).
+    forces = [ca.SX.sym(f"forces{w}", 3) for w in range(size)]
     law_jacobians = [ca.SX.sym(f"law_jacobian{w}", law_pattern) for w in range(size)]
-    law_values = ca.SX.sym("law_arguments", LAW_ARGUMENTS * size)
+    law_values = [ca.SX.sym(f"law_arguments{w}", LAW_ARGUMENTS) for w in range(size)]
     parameters = _LocalParameters()
     base = (recursive.Base(*ca.vertsplit(base_sym)) if kind.hung
             else recursive.Base(*[ca.SX(0)] * LINK_STATE))
@@ -196,9 +200,8 @@ def _window_function(model: SymbolicModel, kind: _WindowKind, law_pattern: ca.Sp
                                    omegas[w - 2] if w > 1 else base.omega, omegas[w - 1])
         # The held forces, moving with the arguments as the law's Jacobian says: the value
         # is the law's (the arguments equal those it was evaluated at), the derivative too.
-        held = forces[3 * (w - 1):3 * w] + ca.mtimes(
-            law_jacobians[w - 1],
-            arguments - law_values[LAW_ARGUMENTS * (w - 1):LAW_ARGUMENTS * w])
+        held = forces[w - 1] + ca.mtimes(law_jacobians[w - 1],
+                                         arguments - law_values[w - 1])
         contact[w] = tuple(ca.vertsplit(held))
     # The window as a structure of its own (its last link carries the payload).
     structure = SimpleNamespace(joints=("clearance",) * size, links=size,
@@ -209,8 +212,9 @@ def _window_function(model: SymbolicModel, kind: _WindowKind, law_pattern: ca.Sp
     centre = _centre_accelerations(window.joints, kind.centre)
     states = ca.vertcat(q, u)
     outputs = [ca.jacobian(centre, states)]
-    inputs = [states, tau, parameters.vector(), forces, ca.horzcat(*law_jacobians),
-              law_values]
+    inputs = [states, tau, parameters.vector(),
+              *[symbol for w in range(size)
+                for symbol in (forces[w], law_jacobians[w], law_values[w])]]
     if kind.hung:
         outputs.insert(0, ca.jacobian(centre, base_sym))
         inputs.insert(0, base_sym)
@@ -329,9 +333,7 @@ def state_jacobian(model: SymbolicModel, slots: dict[tuple[int, str], int],
         args = [xm[rows],
                 taum[[torque_index[j] for j in joints]] if model.torque_joints else ca.MX(0, 1),
                 pm[[by_name[_global_name(name, first - 1)] for name in window.parameter_names]],
-                ca.vertcat(*[laws[j - 1][0] for j in joints]),
-                ca.horzcat(*[laws[j - 1][1] for j in joints]),
-                ca.vertcat(*[laws[j - 1][2] for j in joints])]
+                *[value for j in joints for value in laws[j - 1]]]
         if not kind.hung:
             local = window.function(*args)
         else:

@@ -1,7 +1,8 @@
 """The recursion's mass matrix and the Jacobians of its accelerations, as CasADi functions
 (used by :mod:`jointplay.derive.codegen` for the recursive formulation): straight-line or
-looped columns, AD of the ABA for chains of clearance joints, -M^-1 dID/dy through the
-articulated factors otherwise."""
+looped columns, the chain rule through each link's pose and twist for long chains of
+clearance joints (:mod:`jointplay.derive.recursive_chain_rule`), AD of the ABA for short
+ones, -M^-1 dID/dy through the articulated factors otherwise."""
 
 from __future__ import annotations
 
@@ -27,7 +28,21 @@ if TYPE_CHECKING:
 # and 1.4x and 2.3x gcc's peak memory (1.3 GB at 96 coordinates). Beyond the measured range
 # the loop keeps the build bounded. (Runs one after the other on a loaded 2-core machine.)
 LOOPED_STATE_JACOBIAN_FROM = 100
-CHAIN_RULE_FROM = 1
+# From this many coordinates on, a chain of clearance joints takes the state Jacobian by the
+# chain rule through each link's pose and twist (jointplay.derive.recursive_chain_rule: C
+# that grows linearly with the chain) instead of AD of the ABA (straight-line, C quadratic in
+# the chain). Measured on 8, 12 and 16 clearance joints (24, 36 and 48 coordinates; `python
+# benchmarks/formulations.py --links 8,12,16 --structures clearance --no-paper --closed-up-to
+# 0 --pinocchio --chain-rule-from 1`, then `--chain-rule-from 1000`; one run after the
+# other, load average 4.1-4.3 and 3.8-3.9 on a loaded 2-core machine): state Jacobian 0.49x,
+# 0.46x and 0.28x Pinocchio's computeABADerivatives (timed beside it in each run) with the
+# chain rule, 0.34x, 0.37x and 0.37x with AD of the ABA; build (derive + emit + gcc) 7.8, 10.5
+# and 14.0 s against 12.3, 16.1 and 29.6 s, C 450, 625 and 842 kB against 767, 1364 and
+# 2132, gcc's peak memory 109, 123 and 149 MiB against 192, 259 and 444. So the chain rule
+# costs about a quarter more per call at 12 joints and less from 16 on, and builds faster
+# from 8 on; it starts at 12 joints, where the build budget (10 s) rules out the
+# straight-line code.
+CHAIN_RULE_FROM = 36
 # Columns a looped Jacobian differentiates per pass: the nominal recursion is evaluated once per
 # pass, its tangents once per column, so wider passes spend less on the nominal values and
 # more on C (the code of a pass grows with its width). The state Jacobian is called at every
@@ -50,7 +65,9 @@ def differentiates_the_aba(structure: Any) -> bool:
     near the joint it is seeded at, while -M^-1 dID/dx multiplies a dense dID/dx column by
     M^-1 for each of the 2n columns. Where a joint has one or two coordinates, the articulated
     inertias it passes on depend on every coordinate below it and their derivatives fill the
-    tangents. Measured with `python benchmarks/formulations.py --links 12 --structures
+    tangents. (From CHAIN_RULE_FROM coordinates on, a chain of clearance joints takes the
+    chain rule instead, see uses_the_chain_rule.) Measured with `python
+    benchmarks/formulations.py --links 12 --structures
     clearance,ideal --no-paper --closed-up-to 0 --pinocchio --state-jacobian aba` and then
     `solves` (loaded 2-core machine, load average 4.5 and 3.9): 12 clearance joints, state
     Jacobian 0.58x and 1.62x Pinocchio's computeABADerivatives (timed beside it in each run),
@@ -65,8 +82,8 @@ def differentiates_the_aba(structure: Any) -> bool:
 
 def uses_the_chain_rule(structure: Any, coordinates: int) -> bool:
     """Whether the state Jacobian is the chain rule through each link's pose and twist
-    (:mod:`jointplay.derive.recursive_chain_rule`): for chains of clearance joints only,
-    from CHAIN_RULE_FROM coordinates on."""
+    (:mod:`jointplay.derive.recursive_chain_rule`): where every joint is a clearance joint
+    (a chain with a locked joint keeps AD of the ABA), from CHAIN_RULE_FROM coordinates on."""
     return coordinates >= CHAIN_RULE_FROM and recursive_chain_rule.applies(structure)
 
 
@@ -110,7 +127,9 @@ class RecursiveJacobians:
     The columns are loops in the C over passes of COLUMNS_PER_PASS columns, so the code grows
     with the chain, not with the chain squared; only the state Jacobian of short chains is
     straight-line code (below LOOPED_STATE_JACOBIAN_FROM coordinates), and for a chain of
-    clearance joints only it is AD of the ABA's accelerations (see differentiates_the_aba).
+    clearance joints only it is AD of the ABA's accelerations (see differentiates_the_aba),
+    or from CHAIN_RULE_FROM coordinates on the chain rule through each link's pose and twist
+    (see uses_the_chain_rule).
     """
 
     def __init__(self, model: SymbolicModel, inputs: _Inputs, chain: Any,
