@@ -19,6 +19,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cache
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -309,14 +310,16 @@ def _chain_rule_case(k: int) -> tuple[tuple[str, ...], Effects]:
 # the joints below a window (5, 8).
 @pytest.mark.parametrize("k", [1, 2, 3, pytest.param(5, marks=pytest.mark.slow),
                                pytest.param(8, marks=pytest.mark.slow)])
-def test_chain_rule_state_jacobian(k: int, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_chain_rule_state_jacobian(k: int, monkeypatch: pytest.MonkeyPatch,
+                                   tmp_path: Path) -> None:
     """A chain of clearance joints takes the state Jacobian by the chain rule through each
     link's pose and twist (jointplay.derive.recursive_chain_rule). It must equal AD of the
     recursion's forward dynamics (the straight-line Jacobian, CasADi's own) to 1e-12 of its
     largest entry, and central differences of the forward dynamics to 1e-6 of the largest
     entry of each column plus their rounding error (100 eps max|xdot| / step; steps of 1e-7
     times the coordinate's scale: rad, rad/s, and the joint's clearance for an eccentricity
-    and its rate), on states in contact and sliding."""
+    and its rate), on states in contact and sliding. For k = 5 (the loop in the C, the
+    gather into the output's pattern) the compiled C must give the graph's values."""
     from jointplay.derive import codegen, recursive_jacobians
     from jointplay.derive.symbolic import derive
 
@@ -360,3 +363,14 @@ def test_chain_rule_state_jacobian(k: int, monkeypatch: pytest.MonkeyPatch) -> N
             error = np.max(np.abs((high - low) / (2 * step) - actual[:, column]))
             assert error <= 1e-6 * np.max(np.abs(actual[:, column])) + rounding, (
                 f"k = {k}, column {column}: central differences differ by {error:.3e}")
+        if k == 5:
+            import casadi as ca
+
+            from jointplay.store.build import compile_source
+
+            generator = ca.CodeGenerator("jac_state.c", {"with_header": False})
+            generator.add(jac)
+            library, _ = compile_source(generator.dump(), cache=tmp_path)
+            compiled = ca.external("jac_state", str(library))
+            _assert_close(np.asarray(compiled.call(args)[0].full()), actual,
+                          "compiled chain rule jac_state")
