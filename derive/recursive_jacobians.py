@@ -27,6 +27,7 @@ if TYPE_CHECKING:
 # straight-line code was 2.3x and 8.2x cheaper per call, for 1.08x and 1.31x the build time
 # and 1.4x and 2.3x gcc's peak memory (1.3 GB at 96 coordinates). Beyond the measured range
 # the loop keeps the build bounded. (Runs one after the other on a loaded 2-core machine.)
+# Chains of clearance joints only take the chain rule before this (CHAIN_RULE_FROM).
 LOOPED_STATE_JACOBIAN_FROM = 100
 # From this many coordinates on, a chain of clearance joints takes the state Jacobian by the
 # chain rule through each link's pose and twist (jointplay.derive.recursive_chain_rule: C

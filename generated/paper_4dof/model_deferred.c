@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+0b8164d9986d, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+675198204663, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 8de892a15340045bc7fa8b7305552a022f40fb15cfdd9f4f6e60f1c195d65ed9
+ * input hash: 936dd19e283ac034e6abf531278ab64e052c743efd0c0732c847e904d7972233
  * The deferred part of this model: compiled on the first call that needs it,
  * linked against the library of model.c. Functions, in CasADi's calling
  * convention (their slots are forward_dynamics' and its Jacobian's):
