@@ -342,9 +342,11 @@ def state_jacobian(model: SymbolicModel, slots: dict[tuple[int, str], int],
             if m == 1:
                 tangents = owns[1]
             else:
-                # Every joint below link m at once: a loop in the C over the joints.
-                moved, blocks = far.map(f"chain_rule_far_{m - 1}", "serial", m - 1, [0, 1],
-                                        [])(steps[m], d_base, tangents)
+                # Every joint below link m at once: a loop in the C over the joints (the
+                # shared factors repeated here: CasADi's map with shared inputs does the
+                # same, in a wrapper whose outputs are copied once more).
+                moved, blocks = far.map(m - 1, "serial")(
+                    ca.repmat(steps[m], 1, m - 1), ca.repmat(d_base, 1, m - 1), tangents)
                 pieces.append(blocks)
                 for j in range(1, m):
                     sources[(i, j)] = (len(pieces) - 1, JOINT_STATES * (j - 1),

@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+675198204663, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+406be11b5738, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 936dd19e283ac034e6abf531278ab64e052c743efd0c0732c847e904d7972233
+ * input hash: fe8d0d4221f277d71acbdc2f31ce2a00eaa62afd91f2e6cc62ff4048695802d2
  * The deferred part of this model: compiled on the first call that needs it,
  * linked against the library of model.c. Functions, in CasADi's calling
  * convention (their slots are forward_dynamics' and its Jacobian's):
