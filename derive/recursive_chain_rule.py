@@ -91,7 +91,8 @@ def _global_name(name: str, offset: int) -> str:
 @dataclass(frozen=True)
 class _WindowKind:
     """A window's shape: its joints' count, which of them is the joint whose accelerations it
-    gives (0-based) and whether it hangs from a link (else from the ground). Its last link
+    gives (0-based) and whether it hangs from a link's state Z (else from the ground: only
+    joint 1's window; joint 2's hangs from Z_0 = 0, the ground as a link). Its last link
     carries the payload: only the centre joint's accelerations are read, and they read the
     last link's inertia only where the centre is the window's last joint, the chain's last
     joint (a link's own inertia does not reach the accelerations of the joint below it)."""
@@ -323,7 +324,9 @@ def state_jacobian(model: SymbolicModel, slots: dict[tuple[int, str], int],
     tangents: Any = None  # dZ_m/dx_j, j = 1 .. m, side by side
     for i in range(1, k + 1):
         first, last = max(1, i - 1), min(k, i + 1)
-        kind = _WindowKind(last - first + 1, i - first, first > 1)
+        # Joint 2's window hangs from the ground as a link at rest at the origin (Z_0 = 0):
+        # it is then of the middle windows' kind, which saves a function.
+        kind = _WindowKind(last - first + 1, i - first, i > 1)
         if kind not in functions:
             functions[kind] = _window_function(model, kind, law_pattern)
         window = functions[kind]
@@ -339,9 +342,9 @@ def state_jacobian(model: SymbolicModel, slots: dict[tuple[int, str], int],
         else:
             m = first - 1  # the link the window hangs from
             d_base, local = window.function(links[m], *args)
-            if m == 1:
+            if m == 1:  # (m = 0: the ground, which no state moves)
                 tangents = owns[1]
-            else:
+            elif m > 1:
                 # Every joint below link m at once: a loop in the C over the joints (the
                 # shared factors repeated here: CasADi's map with shared inputs does the
                 # same, in a wrapper whose outputs are copied once more).
@@ -352,8 +355,9 @@ def state_jacobian(model: SymbolicModel, slots: dict[tuple[int, str], int],
                     sources[(i, j)] = (len(pieces) - 1, JOINT_STATES * (j - 1),
                                        JOINT_STATES * (j - 1) + 3)
                 tangents = ca.horzcat(moved, owns[m])
-            pieces.append(ca.densify(ca.mtimes(d_base, owns[m])))
-            sources[(i, m)] = (len(pieces) - 1, 0, 3)
+            if m > 0:
+                pieces.append(ca.densify(ca.mtimes(d_base, owns[m])))
+                sources[(i, m)] = (len(pieces) - 1, 0, 3)
         # The window's columns are its joints' q (angle, e_x, e_y) side by side, then their u.
         pieces.append(local)
         for w, j in enumerate(joints):

@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+406be11b5738, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+57f5ab491ac8, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: fe8d0d4221f277d71acbdc2f31ce2a00eaa62afd91f2e6cc62ff4048695802d2
+ * input hash: 0478d4a44072cda3c7a29bbfce0aa49b98d9a4cccefa23d155817ac39c8c3cb0
  * The deferred part of this model: compiled on the first call that needs it,
  * linked against the library of model.c. Functions, in CasADi's calling
  * convention (their slots are forward_dynamics' and its Jacobian's):
