@@ -32,17 +32,17 @@ LOOPED_STATE_JACOBIAN_FROM = 100
 # From this many coordinates on, a chain of clearance joints takes the state Jacobian by the
 # chain rule through each link's pose and twist (jointplay.derive.recursive_chain_rule: C
 # that grows linearly with the chain) instead of AD of the ABA (straight-line, C quadratic in
-# the chain). Measured on 8, 12 and 16 clearance joints (24, 36 and 48 coordinates; `python
-# benchmarks/formulations.py --links 8,12,16 --structures clearance --no-paper --closed-up-to
-# 0 --pinocchio --chain-rule-from 1`, then `--chain-rule-from 1000`; one run after the
-# other, load average 4.1-4.3 and 3.8-3.9 on a loaded 2-core machine): state Jacobian 0.49x,
-# 0.46x and 0.28x Pinocchio's computeABADerivatives (timed beside it in each run) with the
-# chain rule, 0.34x, 0.37x and 0.37x with AD of the ABA; build (derive + emit + gcc) 7.8, 10.5
-# and 14.0 s against 12.3, 16.1 and 29.6 s, C 450, 625 and 842 kB against 767, 1364 and
-# 2132, gcc's peak memory 109, 123 and 149 MiB against 192, 259 and 444. So the chain rule
-# costs about a quarter more per call at 12 joints and less from 16 on, and builds faster
-# from 8 on; it starts at 12 joints, where the build budget (10 s) rules out the
-# straight-line code.
+# the chain). Measured side by side on 8, 12, 16 and 24 clearance joints (24 to 72
+# coordinates; `python benchmarks/formulations.py --links 8,12,16,24 --structures clearance
+# --no-paper --closed-up-to 0 --pinocchio --chain-rule-from 1 --versus-straight-line`, commit
+# a3449a6, load average 2.9-3.8 on a loaded 2-core machine): state Jacobian per call 17.0
+# against 13.3 us, 35.5 against 34.3, 37.2 against 60.6 and 111 against 234 (1.28x, 1.04x,
+# 0.61x and 0.47x; Pinocchio's computeABADerivatives 30.2, 83.3, 138 and 379 us in the same
+# rounds); build (derive + emit + gcc) 5.7 against 20.0 s, 7.9 against 18.7, 14.2 against
+# 34.3 and 17.6 against 79.8; C 415 against 767 kB at 8 joints and 1349 against 4168 at 24;
+# the two Jacobians differ by 7e-14 to 6e-13 of their largest entry. So the chain rule costs
+# as much per call at 12 joints and less from 16 on, and builds 2-4x faster; it starts at 12
+# joints, where the build budget (10 s) rules out the straight-line code.
 CHAIN_RULE_FROM = 36
 # Columns a looped Jacobian differentiates per pass: the nominal recursion is evaluated once per
 # pass, its tangents once per column, so wider passes spend less on the nominal values and
