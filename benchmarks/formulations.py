@@ -11,7 +11,11 @@ function alike):
   calls) of each formulation, inputs written in place (``FastFunction.trigger``);
 * with ``--pinocchio``, Pinocchio's ``aba`` and ``computeABADerivatives`` on the same chain
   (a planar joint, 3 coordinates, for each clearance joint; a revolute joint for each ideal
-  one), called from Python, so its figure includes Python's call overhead (about 1 us).
+  one), called from Python, so its figure includes Python's call overhead (about 1 us);
+* with ``--versus-straight-line``, the recursion's ``jac_state`` once more with the
+  straight-line state Jacobian (AD of the ABA) where the chain rule would be used (chains of
+  clearance joints, see jointplay.derive.recursive_chain_rule), its build, and the largest
+  difference between the two Jacobians relative to the largest entry.
 
 The state has every clearance joint in contact (|e| = 1.1 c) and moving. Build figures are
 the derive + emit wall time and gcc's, with gcc's peak memory. The closed form is skipped
@@ -21,6 +25,8 @@ Writes ``formulations.csv`` and ``formulations.md`` into ``--out`` atomically an
 Markdown.
 
     python benchmarks/formulations.py --links 1-4,8,12 --pinocchio --out out/formulations
+    python benchmarks/formulations.py --links 8,12,16 --structures clearance --no-paper \
+        --closed-up-to 0 --pinocchio --chain-rule-from 1 --versus-straight-line --out DIR
 """
 
 from __future__ import annotations
@@ -59,6 +65,10 @@ COLUMNS: list[tuple[str, str, str]] = [
     ("recursive_jac_us", "recursive jac_state us", "{:.1f}"),
     ("pinocchio_derivatives_us", "Pinocchio ABA derivatives us", "{:.1f}"),
     ("max_rel_diff", "max rel diff", "{:.1e}"),
+    ("straight_build_s", "straight-line build s", "{:.1f}"),
+    ("straight_c_kb", "straight-line C kB", "{:.0f}"),
+    ("straight_jac_us", "straight-line jac_state us", "{:.1f}"),
+    ("straight_max_rel_diff", "jac_state vs straight-line", "{:.1e}"),
     ("load", "load", "{:.1f}"),
 ]
 
@@ -96,6 +106,8 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
 
     if spec.get("looped_from") is not None:
         recursive_jacobians.LOOPED_STATE_JACOBIAN_FROM = spec["looped_from"]
+    if spec.get("chain_rule_from") is not None:
+        recursive_jacobians.CHAIN_RULE_FROM = spec["chain_rule_from"]
     if spec.get("state_jacobian", "auto") != "auto":
         forced = spec["state_jacobian"] == "aba"
         recursive_jacobians.differentiates_the_aba = lambda structure: forced
@@ -107,33 +119,50 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
     calls: dict[str, Any] = {}
     outputs: dict[str, list[Any]] = {}
     with tempfile.TemporaryDirectory(prefix="jointplay-formulations-") as tmp:
-        for formulation in FORMULATIONS:
-            n = len(robot.structure().moving_joints) + 2 * len(robot.structure().clearance_joints)
-            row["n"] = n
-            if formulation == "closed" and n > spec["closed_up_to"]:
-                continue
+
+        def build(formulation: str, key: str) -> list[Any]:
+            """Emit and compile ``formulation``, record its build as ``key`` and register
+            its functions' calls; returns their outputs."""
             t0 = time.perf_counter()
             emitted = emit(robot, formulation)
             emit_s = time.perf_counter() - t0
             before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
             library, compile_s = compile_source(emitted.source, DEFAULT_CFLAGS,
-                                                cache=Path(tmp) / formulation)
+                                                cache=Path(tmp) / key)
             peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
-            row[f"{formulation}_build_s"] = emit_s + compile_s
-            row[f"{formulation}_gcc_mib"] = max(peak, before) / 1024
-            row[f"{formulation}_c_kb"] = len(emitted.source) / 1000
+            row[f"{key}_build_s"] = emit_s + compile_s
+            row[f"{key}_gcc_mib"] = max(peak, before) / 1024
+            row[f"{key}_c_kb"] = len(emitted.source) / 1000
             x = _state(emitted.layout, params, np.random.default_rng(1))
             rng = np.random.default_rng(2)
             args = [x, rng.uniform(-1.0, 1.0, len(emitted.layout["torque_joints"])), params,
                     np.full(len(emitted.layout["clearance_joints"]), 0.05)]
             outs = []
-            for name, key in (("forward_dynamics", "fd"), ("jac_state", "jac")):
+            for name, short in (("forward_dynamics", "fd"), ("jac_state", "jac")):
                 fn = FastFunction(ca.external(name, str(library)))
                 for arr, value in zip(fn.inputs, args, strict=False):
                     arr[:] = value
-                calls[f"{formulation}_{key}_us"] = fn.trigger
+                calls[f"{key}_{short}_us"] = fn.trigger
                 outs.append(np.concatenate([np.ravel(o) for o in fn(*args)]))
-            outputs[formulation] = outs
+            return outs
+
+        n = len(robot.structure().moving_joints) + 2 * len(robot.structure().clearance_joints)
+        row["n"] = n
+        for formulation in FORMULATIONS:
+            if formulation == "closed" and n > spec["closed_up_to"]:
+                continue
+            outputs[formulation] = build(formulation, formulation)
+        if spec.get("versus_straight_line"):
+            # The recursion again with the straight-line state Jacobian (AD of the ABA), for
+            # chains that take the chain rule: timed in the same rounds.
+            chain_rule_from = recursive_jacobians.CHAIN_RULE_FROM
+            recursive_jacobians.CHAIN_RULE_FROM = 10**9
+            straight = build("recursive", "straight")
+            recursive_jacobians.CHAIN_RULE_FROM = chain_rule_from
+            del calls["straight_fd_us"]
+            chain_rule, reference = outputs["recursive"][1], straight[1]
+            row["straight_max_rel_diff"] = float(np.max(np.abs(chain_rule - reference))
+                                                 / max(np.max(np.abs(reference)), 1e-300))
         if spec["pinocchio"] and spec["structure"] != PAPER:
             peer = pinocchio_chain(robot)
             if peer is not None:
@@ -164,6 +193,13 @@ def main() -> int:
     parser.add_argument("--looped-from", type=int, default=None,
                         help="coordinates from which the recursion's state Jacobian is looped "
                              "(default: the generator's LOOPED_STATE_JACOBIAN_FROM)")
+    parser.add_argument("--chain-rule-from", type=int, default=None,
+                        help="coordinates from which a chain of clearance joints takes the "
+                             "state Jacobian by the chain rule (default: the generator's "
+                             "CHAIN_RULE_FROM)")
+    parser.add_argument("--versus-straight-line", action="store_true",
+                        help="also build the recursion with the straight-line state Jacobian "
+                             "(AD of the ABA, no chain rule) and time it in the same rounds")
     parser.add_argument("--state-jacobian", choices=("auto", "aba", "solves"), default="auto",
                         help="the recursion's straight-line state Jacobian: AD of the ABA, "
                              "-M^-1 dID/dx by solves, or the generator's choice (default)")
@@ -188,6 +224,8 @@ def main() -> int:
         spec = {"structure": structure, "k": k, "pinocchio": args.pinocchio,
                 "closed_up_to": args.closed_up_to, "rounds": args.rounds,
                 "looped_from": args.looped_from, "state_jacobian": args.state_jacobian,
+                "chain_rule_from": args.chain_rule_from,
+                "versus_straight_line": args.versus_straight_line,
                 "batch_s": args.batch_ms / 1000}
         try:
             row = json_from_child([sys.executable, __file__, "--worker", json.dumps(spec)],

@@ -62,6 +62,9 @@ class Joint:
     velocity: Vec
     external: Vec  # gravity and friction moments on the link
     generalised: Any  # drive torque and contact force on this joint's coordinates
+    # The link's (and payload's) mass, centre of mass and moment of inertia about it: the
+    # inertia above in the form that solves I A = f without cancellation.
+    rigid: tuple[Any, Any, Any, Any] | None = None
 
 
 @dataclass
@@ -103,6 +106,29 @@ def _gravity_force(mass: Any, cx: Any, cy: Any, gravity: tuple[Any, Any] | None)
     return _vec(cx * mass * gy - cy * mass * gx, mass * gx, mass * gy)
 
 
+def _with_point_mass(rigid: tuple[Any, Any, Any, Any], mass: Any, x: Any, y: Any
+                     ) -> tuple[Any, Any, Any, Any]:
+    """A rigid body's (mass, centre x, y, inertia about the centre) with a point mass added."""
+    m, cx, cy, inertia_c = rigid
+    total = m + mass
+    # The new centre, as offsets from the old one and the point (no large |c|^2 subtracted).
+    share = mass / total
+    dx, dy = x - cx, y - cy
+    inertia = inertia_c + m * share * share * (dx * dx + dy * dy) + mass * (1 - share) * (
+        1 - share) * (dx * dx + dy * dy)
+    return total, cx + share * dx, cy + share * dy, inertia
+
+
+def rigid_solve(rigid: tuple[Any, Any, Any, Any], force: Vec) -> Vec:
+    """I^-1 f for a rigid body given by its mass, centre and inertia about the centre: the
+    angular acceleration from the moment about the centre, then the acceleration of the body
+    point at O."""
+    mass, cx, cy, inertia_c = rigid
+    moment, fx, fy = force[0], force[1], force[2]
+    alpha = (moment + cy * fx - cx * fy) / inertia_c
+    return _vec(alpha, fx / mass + alpha * cy, fy / mass - alpha * cx)
+
+
 def kinematics(structure: Structure, q: Any, u: Any, slots: dict[tuple[int, str], int],
                parameter: Any) -> tuple[list[Any], list[Any]]:
     """Every link's absolute angle and rate (the laws' placeholders are bound to these)."""
@@ -120,10 +146,25 @@ def kinematics(structure: Structure, q: Any, u: Any, slots: dict[tuple[int, str]
     return thetas, omegas
 
 
+@dataclass(frozen=True)
+class Base:
+    """What a part of the chain hangs from, when it does not start at the ground: the
+    absolute angle and rate of the link before its first joint, and the position and
+    velocity of that link's end (where the first joint's bearing is)."""
+
+    theta: Any
+    omega: Any
+    end_x: Any
+    end_y: Any
+    end_vx: Any
+    end_vy: Any
+
+
 def chain(structure: Structure, q: Any, u: Any, tau: Any, slots: dict[tuple[int, str], int],
           torque_slots: dict[int, int], parameter: Any, contact: dict[int, tuple[Any, Any, Any]],
-          thetas: Sequence[Any], omegas: Sequence[Any]) -> Chain:
-    """Walk the chain from the ground: positions, velocities, inertias and loads of every link.
+          thetas: Sequence[Any], omegas: Sequence[Any], base: Base | None = None) -> Chain:
+    """Walk the chain from the ground (or from ``base``): positions, velocities, inertias
+    and loads of every link.
 
     ``contact`` maps a clearance joint to its law's (F_x, F_y, F_t) on the journal;
     ``parameter(name)`` gives a parameter's SX.
@@ -136,6 +177,11 @@ def chain(structure: Structure, q: Any, u: Any, tau: Any, slots: dict[tuple[int,
     end_vy: Any = ca.SX(0)
     velocity: Vec = ca.SX.zeros(3, 1)
     omega_before: Any = ca.SX(0)
+    if base is not None:
+        end_x, end_y, end_vx, end_vy = base.end_x, base.end_y, base.end_vx, base.end_vy
+        omega_before = base.omega
+        # (omega, the velocity of the base link's point at O) from its end's velocity.
+        velocity = _vec(base.omega, end_vx + base.omega * end_y, end_vy - base.omega * end_x)
     joints: list[Joint] = []
     kinetic: Any = ca.SX(0)
     potential: Any = ca.SX(0)
@@ -181,8 +227,10 @@ def chain(structure: Structure, q: Any, u: Any, tau: Any, slots: dict[tuple[int,
         kinetic = kinetic + (mass * (dcx * dcx + dcy * dcy) + inertia_c * omega * omega) / 2
         if gravity is not None:
             potential = potential - mass * (gravity[0] * cx + gravity[1] * cy)
+        rigid = (mass, cx, cy, inertia_c)
         if i == k:  # the payload, a point mass at the tip
             payload = parameter("payload.mass")
+            rigid = _with_point_mass(rigid, payload, end_x, end_y)
             inertia = inertia + _point_inertia(payload, 0, end_x, end_y)
             rate = rate + _point_inertia_rate_times(payload, end_x, end_y, end_vx, end_vy,
                                                     velocity)
@@ -192,7 +240,7 @@ def chain(structure: Structure, q: Any, u: Any, tau: Any, slots: dict[tuple[int,
                 potential = potential - payload * (gravity[0] * end_x + gravity[1] * end_y)
         S = ca.horzcat(*columns) if columns else ca.SX(3, 0)
         joints.append(Joint(kind, own, X, S, bias, inertia, rate, velocity, external,
-                            ca.vertcat(*generalised) if generalised else ca.SX(0, 1)))
+                            ca.vertcat(*generalised) if generalised else ca.SX(0, 1), rigid))
         omega_before = omega
     # Friction moments: R_j F_t on the journal's link, -R_b F_t on the bearing's.
     for i, (_, _, ft) in contact.items():

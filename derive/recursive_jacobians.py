@@ -1,7 +1,8 @@
 """The recursion's mass matrix and the Jacobians of its accelerations, as CasADi functions
 (used by :mod:`jointplay.derive.codegen` for the recursive formulation): straight-line or
-looped columns, AD of the ABA for chains of clearance joints, -M^-1 dID/dy through the
-articulated factors otherwise."""
+looped columns, the chain rule through each link's pose and twist for long chains of
+clearance joints (:mod:`jointplay.derive.recursive_chain_rule`), AD of the ABA for short
+ones, -M^-1 dID/dy through the articulated factors otherwise."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import casadi as ca
 
+from jointplay.derive import recursive_chain_rule
 from jointplay.derive.symbolic import SymbolicModel
 from jointplay.derive.to_casadi import emitted_function
 from jointplay.robot.structure import CLEARANCE_KINDS, MOVING_KINDS
@@ -25,7 +27,23 @@ if TYPE_CHECKING:
 # straight-line code was 2.3x and 8.2x cheaper per call, for 1.08x and 1.31x the build time
 # and 1.4x and 2.3x gcc's peak memory (1.3 GB at 96 coordinates). Beyond the measured range
 # the loop keeps the build bounded. (Runs one after the other on a loaded 2-core machine.)
+# Chains of clearance joints only take the chain rule before this (CHAIN_RULE_FROM).
 LOOPED_STATE_JACOBIAN_FROM = 100
+# From this many coordinates on, a chain of clearance joints takes the state Jacobian by the
+# chain rule through each link's pose and twist (jointplay.derive.recursive_chain_rule: C
+# that grows linearly with the chain) instead of AD of the ABA (straight-line, C quadratic in
+# the chain). Measured side by side on 8, 12, 16 and 24 clearance joints (24 to 72
+# coordinates; `python benchmarks/formulations.py --links 8,12,16,24 --structures clearance
+# --no-paper --closed-up-to 0 --pinocchio --chain-rule-from 1 --versus-straight-line`, commit
+# a3449a6, load average 2.9-3.8 on a loaded 2-core machine): state Jacobian per call 17.0
+# against 13.3 us, 35.5 against 34.3, 37.2 against 60.6 and 111 against 234 (1.28x, 1.04x,
+# 0.61x and 0.47x; Pinocchio's computeABADerivatives 30.2, 83.3, 138 and 379 us in the same
+# rounds); build (derive + emit + gcc) 5.7 against 20.0 s, 7.9 against 18.7, 14.2 against
+# 34.3 and 17.6 against 79.8; C 415 against 767 kB at 8 joints and 1349 against 4168 at 24;
+# the two Jacobians differ by 7e-14 to 6e-13 of their largest entry. So the chain rule costs
+# as much per call at 12 joints and less from 16 on, and builds 2-4x faster; it starts at 12
+# joints, where the build budget (10 s) rules out the straight-line code.
+CHAIN_RULE_FROM = 36
 # Columns a looped Jacobian differentiates per pass: the nominal recursion is evaluated once per
 # pass, its tangents once per column, so wider passes spend less on the nominal values and
 # more on C (the code of a pass grows with its width). The state Jacobian is called at every
@@ -48,7 +66,9 @@ def differentiates_the_aba(structure: Any) -> bool:
     near the joint it is seeded at, while -M^-1 dID/dx multiplies a dense dID/dx column by
     M^-1 for each of the 2n columns. Where a joint has one or two coordinates, the articulated
     inertias it passes on depend on every coordinate below it and their derivatives fill the
-    tangents. Measured with `python benchmarks/formulations.py --links 12 --structures
+    tangents. (From CHAIN_RULE_FROM coordinates on, a chain of clearance joints takes the
+    chain rule instead, see uses_the_chain_rule.) Measured with `python
+    benchmarks/formulations.py --links 12 --structures
     clearance,ideal --no-paper --closed-up-to 0 --pinocchio --state-jacobian aba` and then
     `solves` (loaded 2-core machine, load average 4.5 and 3.9): 12 clearance joints, state
     Jacobian 0.58x and 1.62x Pinocchio's computeABADerivatives (timed beside it in each run),
@@ -59,6 +79,13 @@ def differentiates_the_aba(structure: Any) -> bool:
              CLEARANCE_KINDS]
     return bool(kinds) and all(kind in MOVING_KINDS and kind in CLEARANCE_KINDS
                                for kind in kinds)
+
+
+def uses_the_chain_rule(structure: Any, coordinates: int) -> bool:
+    """Whether the state Jacobian is the chain rule through each link's pose and twist
+    (:mod:`jointplay.derive.recursive_chain_rule`): where every joint is a clearance joint
+    (a chain with a locked joint keeps AD of the ABA), from CHAIN_RULE_FROM coordinates on."""
+    return coordinates >= CHAIN_RULE_FROM and recursive_chain_rule.applies(structure)
 
 
 def _unit_columns(start: Any, size: int, width: int) -> Any:
@@ -101,7 +128,9 @@ class RecursiveJacobians:
     The columns are loops in the C over passes of COLUMNS_PER_PASS columns, so the code grows
     with the chain, not with the chain squared; only the state Jacobian of short chains is
     straight-line code (below LOOPED_STATE_JACOBIAN_FROM coordinates), and for a chain of
-    clearance joints only it is AD of the ABA's accelerations (see differentiates_the_aba).
+    clearance joints only it is AD of the ABA's accelerations (see differentiates_the_aba),
+    or from CHAIN_RULE_FROM coordinates on the chain rule through each link's pose and twist
+    (see uses_the_chain_rule).
     """
 
     def __init__(self, model: SymbolicModel, inputs: _Inputs, chain: Any,
@@ -117,6 +146,9 @@ class RecursiveJacobians:
         self.fn_fd = fn_fd
         self.acceleration = acceleration
         self.direct = differentiates_the_aba(model.structure)
+        self.model = model
+        self.slots = slots
+        self.chain_rule = uses_the_chain_rule(model.structure, model.n_coordinates)
         q, u, tau = inputs.q, inputs.u, inputs.tau
         held: dict[int, tuple[Any, Any, Any]] = {
             i: (ca.SX.sym(f"Fx{i}"), ca.SX.sym(f"Fy{i}"), ca.SX.sym(f"Ft{i}")) for i in contact}
@@ -163,6 +195,11 @@ class RecursiveJacobians:
         xm, taum, pm, vm = self.mx_inputs
         acc_m = self.fn_fd(xm, taum, pm, vm)[n:]
         factors_m = self.fn_factors(xm[:n], pm)
+        if self.chain_rule:
+            return emitted_function("jac_state", [xm, taum, pm, vm],
+                                    [recursive_chain_rule.state_jacobian(
+                                        self.model, self.slots, self.mx_inputs)],
+                                    ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
         d_forces = ca.jacobian(self.forces, x)
         if n < LOOPED_STATE_JACOBIAN_FROM and self.direct:
             # da/dx by AD of the ABA itself, straight-line: no dID/dx, no M^-1 solves.

@@ -19,6 +19,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cache
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -298,3 +299,82 @@ def test_state_jacobian_layout(case: tuple[tuple[str, ...], Effects]) -> None:
     dense = np.asarray(fn.call([inputs[name] for name in fn.name_in()])[0].full())
     np.testing.assert_array_equal(dense[:n], np.hstack([np.zeros((n, n)), np.eye(n)]))
     assert np.all(np.isfinite(dense[n:])) and np.any(dense[n:] != 0)
+
+
+# The effects each chain of the chain-rule test takes: every one of EFFECTS once.
+_CHAIN_RULE_EFFECTS = {1: 4, 2: 0, 3: 1, 5: 2, 8: 3}
+
+
+def _chain_rule_case(k: int) -> tuple[tuple[str, ...], Effects]:
+    """A chain of k clearance joints and its effects."""
+    return ("clearance",) * k, EFFECTS[_CHAIN_RULE_EFFECTS[k]]
+
+
+# One window (k = 1), two from the ground (2), the first hung from a link (3), the loop over
+# the joints below a window (5, 8).
+@pytest.mark.parametrize("k", [1, 2, 3, pytest.param(5, marks=pytest.mark.slow),
+                               pytest.param(8, marks=pytest.mark.slow)])
+def test_chain_rule_state_jacobian(k: int, monkeypatch: pytest.MonkeyPatch,
+                                   tmp_path: Path) -> None:
+    """A chain of clearance joints takes the state Jacobian by the chain rule through each
+    link's pose and twist (jointplay.derive.recursive_chain_rule). It must equal AD of the
+    recursion's forward dynamics (the straight-line Jacobian, CasADi's own) to 1e-12 of its
+    largest entry, and central differences of the forward dynamics to 1e-6 of the largest
+    entry of each column plus their rounding error (100 eps max|xdot| / step; steps of 1e-7
+    times the coordinate's scale: rad, rad/s, and the joint's clearance for an eccentricity
+    and its rate), on states in contact and sliding. For k = 5 (the loop in the C, the
+    gather into the output's pattern) the compiled C must give the graph's values."""
+    from jointplay.derive import codegen, recursive_jacobians
+    from jointplay.derive.symbolic import derive
+
+    kinds, effects = _chain_rule_case(k)
+    robot = _robot(kinds, effects, np.random.default_rng(0))
+    # Forced on below the threshold (the chains it is used for take longer to build).
+    monkeypatch.setattr(recursive_jacobians, "CHAIN_RULE_FROM", 1)
+    assert recursive_jacobians.uses_the_chain_rule(robot.structure(), 3 * k)
+    built, _ = codegen.build_functions(derive(robot.structure(), "recursive"))
+    functions = {fn.name(): fn for fn in built}
+    forward, jac = functions["forward_dynamics"], functions["jac_state"]
+    assert "chain_rule_law" in {f.name() for f in jac.find_functions()}
+    straight_line = forward.jacobian()
+    n = 3 * k
+    # The form the BDF driver factors: nothing in the first n rows but the 1 of I.
+    rows, columns = jac.sparsity_out(0).get_triplet()
+    assert sorted((r, c) for r, c in zip(rows, columns, strict=True) if r < n) == [
+        (r, n + r) for r in range(n)]
+    rng = np.random.default_rng(100 + k)
+    for _ in range(2 if k < 5 else 1):
+        inputs = _random_inputs(kinds, effects, rng)
+        args = [inputs[name] for name in forward.name_in()]
+        actual = np.asarray(jac.call(args)[0].full())
+        expected = np.asarray(straight_line.call([*args, np.zeros(2 * n)])[0].full())
+        _assert_close(actual, expected[:, :2 * n], f"chain rule jac_state, k = {k}")
+        x = inputs["x"]
+        scale = np.ones(2 * n)
+        for j in range(k):
+            joint = robot.joints[j]
+            clearance = joint.bearing_radius - joint.journal_radius
+            for offset in (k + 2 * j, k + 2 * j + 1):
+                scale[offset] = scale[n + offset] = clearance
+        for column in range(2 * n):
+            step = 1e-7 * scale[column]
+            plus, minus = x.copy(), x.copy()
+            plus[column] += step
+            minus[column] -= step
+            high = np.asarray(forward(plus, *args[1:])).ravel()
+            low = np.asarray(forward(minus, *args[1:])).ravel()
+            rounding = 100 * np.finfo(float).eps * np.max(np.abs(high)) / step
+            error = np.max(np.abs((high - low) / (2 * step) - actual[:, column]))
+            assert error <= 1e-6 * np.max(np.abs(actual[:, column])) + rounding, (
+                f"k = {k}, column {column}: central differences differ by {error:.3e}")
+        if k == 5:
+            import casadi as ca
+
+            from jointplay.store.build import compile_source
+
+            generator = ca.CodeGenerator("jac_state.c", {"with_header": False})
+            generator.add(jac)
+            library, _ = compile_source(generator.dump(), cache=tmp_path)
+            compiled = ca.external("jac_state", str(library))
+            _assert_close(np.asarray(compiled.call(args)[0].full()), actual,
+                          "compiled chain rule jac_state")

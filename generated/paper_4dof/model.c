@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+421aafe73a38, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+d52c7f8f9500, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 33623b15c6de3e6364297382a2e9c53a0810dea2eb19df35a353f65e4f8da415
+ * input hash: dd162636dab3937c23ad38439457e8da497304a42aa84cfad1c14eb277c2ad34
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

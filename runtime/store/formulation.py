@@ -3,10 +3,11 @@
 * ``closed``: Kane's mass matrix and forcing as expressions, solved by a sparse LDL^T; the
   Jacobian by AD of M a - f. The smallest code for short chains (the paper robot).
 * ``recursive``: the articulated-body algorithm over the chain, and the Jacobian as
-  -M^-1 dID/dx through the articulated inertias (:mod:`jointplay.derive.recursive`). Its
-  derivation time does not grow with the chain, and its cost grows linearly (forward
-  dynamics) and quadratically (state Jacobian) in the coordinates, where the closed form's
-  grow faster.
+  -M^-1 dID/dx through the articulated inertias (:mod:`jointplay.derive.recursive`), or,
+  for long chains of clearance joints, by the chain rule through each link's pose and
+  twist (:mod:`jointplay.derive.recursive_chain_rule`). Its derivation time does not grow
+  with the chain, and its cost grows linearly (forward dynamics) and quadratically (state
+  Jacobian) in the coordinates, where the closed form's grow faster.
 
 ``auto`` (the default) takes the recursion from :data:`RECURSIVE_FROM_COORDINATES`
 coordinates on. The latest measurement (README, "Which formulation a model is emitted with")
