@@ -130,6 +130,7 @@ typedef struct {
   int *armed;                  /* penetration has been positive since the onset */
   int *rising;                 /* normal force rising at the end of the last step */
   double *tmp_y, *tmp_y2;
+  double *samples;             /* NS x nx: unscaled states at the scan's sample times */
   /* CasADi work */
   const double **arg; double **res; jp_int *iw; double *w;
   double *jac_sparse, *c_out; /* contact outputs: 8 x nc */
@@ -252,14 +253,15 @@ static int rhs(jp_sim *s, double t, const double *z, double *dz) {
   return all_finite(c->nx, dz) ? 0 : 1;
 }
 
-/* Contact outputs at unscaled state xs: c_out[k * nc + j], k in delta, delta_dot, v_t, f_n,
- * f_t, f_x, f_y, dissipation. */
-static void contact_at(jp_sim *s) {
+/* Contact outputs at unscaled state xs (contact_at: at s->xs): c_out[k * nc + j], k in delta,
+ * delta_dot, v_t, f_n, f_t, f_x, f_y, dissipation. */
+static void contact_of(jp_sim *s, const double *xs) {
   const jp_config *c = &s->c;
-  s->arg[0] = s->xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
+  s->arg[0] = xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
   for (int k = 0; k < 8; ++k) s->res[k] = s->c_out + k * c->nc;
   call(s, &c->contact);
 }
+static void contact_at(jp_sim *s) { contact_of(s, s->xs); }
 
 /* Quadrature integrands at scaled state z (torques already at t): drive power, then per joint
  * normal force, damping power, friction power; all in the order of the quadrature block. */
@@ -366,18 +368,24 @@ static void change_d(jp_sim *s, double factor) {
   memcpy(s->D, tmp, (size_t)m * N * sizeof(double));
 }
 
-/* Dense output of the last step at time t into y (N values). */
-static void dense(const jp_sim *s, double t, double *y) {
+/* Dense output of the last step at time t into y: its first n values (n <= N; the state part
+ * alone is n = nx). The product p vanishes from the factor whose shift is t on (t at the end of
+ * the step, or at its start), and adding a zero term changes nothing: the loop stops there. */
+static void dense_first(const jp_sim *s, double t, double *y, int n) {
   int N = s->N, order = s->order;
-  memcpy(y, s->D, N * sizeof(double));
+  memcpy(y, s->D, n * sizeof(double));
   double p = 1.0;
   for (int k = 0; k < order; ++k) {
     double shift = s->t - s->h * k, denom = s->h * (1 + k);
     p *= (t - shift) / denom;
+    if (p == 0.0) break;
     const double *row = s->D + (k + 1) * N;
-    for (int i = 0; i < N; ++i) y[i] += p * row[i];
+    for (int i = 0; i < n; ++i) y[i] += p * row[i];
   }
 }
+
+/* Dense output of the last step at time t into y (N values). */
+static void dense(const jp_sim *s, double t, double *y) { dense_first(s, t, y, s->N); }
 
 static int jacobian(jp_sim *s, double t, const double *z) {
   const jp_config *c = &s->c;
@@ -651,7 +659,7 @@ enum { EV_DELTA = 0, EV_RATE = 1 };
 
 /* The event function `kind` of joint j at time t, on the dense output of the last step. */
 static double event_value(jp_sim *s, int kind, int j, double t) {
-  dense(s, t, s->tmp_y);
+  dense_first(s, t, s->tmp_y, s->c.nx);
   unscale(s, s->tmp_y);
   double delta, rate;
   gap(s, s->xs, j, &delta, &rate);
@@ -755,7 +763,7 @@ static void note_peak(jp_sim *s, int j, int column, int time_column, double valu
 
 /* Normal force of every joint at time t on the dense output, into s->c_out. */
 static void forces_at(jp_sim *s, double t) {
-  dense(s, t, s->tmp_y);
+  dense_first(s, t, s->tmp_y, s->c.nx);
   unscale(s, s->tmp_y);
   contact_at(s);
 }
@@ -794,11 +802,14 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
   if (!nc) return 0;
   double ts[NS], dl[NS][MAX_JOINTS], rt[NS][MAX_JOINTS];
   double t0 = s->t - s->h;
+  int nx = c->nx;
+  /* the state part at each sample, kept (unscaled) for the force samples of pass 2 */
   for (int k = 0; k < NS; ++k) {
+    double *xk = s->samples + (size_t)k * nx;
     ts[k] = k == NS - 1 ? s->t : t0 + s->h * k / (NS - 1);
-    dense(s, ts[k], s->tmp_y);
-    unscale(s, s->tmp_y);
-    for (int j = 0; j < nc; ++j) gap(s, s->xs, j, &dl[k][j], &rt[k][j]);
+    dense_first(s, ts[k], s->tmp_y, nx);
+    for (int i = 0; i < nx; ++i) xk[i] = s->tmp_y[i] * c->scale[i];
+    for (int j = 0; j < nc; ++j) gap(s, xk, j, &dl[k][j], &rt[k][j]);
   }
   double landing = 1e-6 * s->h + 4 * 2.220446049250313e-16 * fabs(s->t);
   /* Pass 1: the earliest onset inside the step that is not at its end. */
@@ -830,7 +841,7 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
   double fn[NS][MAX_JOINTS];
   if (any)
     for (int k = 0; k < NS; ++k) {
-      forces_at(s, ts[k]);
+      contact_of(s, s->samples + (size_t)k * nx);
       for (int j = 0; j < nc; ++j) fn[k][j] = s->c_out[3 * nc + j];
     }
   for (int j = 0; j < nc; ++j) {
@@ -1015,6 +1026,7 @@ jp_sim *jp_create(const jp_config *config) {
   s->rising = calloc(nc + 1, sizeof(int));
   s->open_phase = calloc(nc + 1, sizeof(long));
   s->c_out = calloc(8 * (nc + 1), sizeof(double));
+  s->samples = calloc((size_t)NS * nx + 1, sizeof(double));
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
   const jp_function *fns[4] = {&c->f, &c->jac, &c->contact, &c->wear};
   for (int k = 0; k < 4; ++k) {
@@ -1033,7 +1045,7 @@ jp_sim *jp_create(const jp_config *config) {
   if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->piv || !s->rhs_u ||
       !s->tmp_y2 ||
       !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->v_imp || !s->flags || !s->armed || !s->rising ||
-      !s->open_phase || !s->c_out || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
+      !s->open_phase || !s->c_out || !s->samples || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
     jp_free(s);
     return NULL;
   }
@@ -1055,7 +1067,7 @@ void jp_free(jp_sim *s) {
   void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->piv, s->rhs_u, s->y_pred,
                   s->psi, s->d, s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
                   s->xdot, s->tau, s->u_hold, s->v_imp, s->flags, s->armed, s->rising, s->open_phase,
-                  s->c_out, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
+                  s->c_out, s->samples, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
                   s->wear_out, s->wear_volume, s->wear_depth};
   for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
   free(s);
