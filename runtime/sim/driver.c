@@ -126,6 +126,7 @@ typedef struct {
   double *y_pred, *psi, *d, *y_new, *f_buf, *dy, *scal, *err, *work_n;
   double *xs, *xdot;           /* unscaled state and its derivative */
   double *tau, *u_hold;
+  double tau_t;                /* the time tau holds the torques of, NAN: none */
   double *v_imp, *flags;       /* per clearance joint */
   int *armed;                  /* penetration has been positive since the onset */
   int *rising;                 /* normal force rising at the end of the last step */
@@ -217,9 +218,13 @@ static double torque_table(const jp_config *c, int k, double t) {
   return vs[lo] + s * (vs[hi] - vs[lo]);
 }
 
-/* tau = scene torques at t + held torques; 0 if all finite, else 1 + index of the bad one. */
+/* tau = scene torques at t + held torques; 0 if all finite, else 1 + index of the bad one.
+ * Newton's iterations, the Jacobian and the quadratures ask for the same t in turn: tau is
+ * kept for the last t it was computed at (tau_t; NAN after a hold changes the torques). */
 static int torques_at(jp_sim *s, double t) {
   const jp_config *c = &s->c;
+  if (t == s->tau_t) return 0;
+  s->tau_t = NAN;
   for (int k = 0; k < c->ntau; ++k) {
     int ok = 1;
     double v = c->torque_kind[k] == 0 ? torque_program(c, k, t, &ok) : torque_table(c, k, t);
@@ -227,6 +232,7 @@ static int torques_at(jp_sim *s, double t) {
     if (!ok || !isfinite(v)) return k + 1;
     s->tau[k] = v;
   }
+  s->tau_t = t;
   return 0;
 }
 
@@ -768,22 +774,60 @@ static void forces_at(jp_sim *s, double t) {
   contact_at(s);
 }
 
-/* The largest normal force of joint j in [a, b] (golden-section search on the dense output,
- * to round-off in time): the force is unimodal there, the samples bracket its peak. */
+/* Normal force of joint j at time t on the dense output. */
+static double normal_force_at(jp_sim *s, int j, double t) {
+  forces_at(s, t);
+  return s->c_out[3 * s->c.nc + j];
+}
+
+/* The largest normal force of joint j in [a, b]: the force is unimodal there (the samples
+ * bracket its peak), and Brent's method (parabolic interpolation through the best three
+ * points, a golden-section step wherever the parabola would not shrink the bracket fast
+ * enough) locates it on the dense output. It stops when the peak's time is known to within
+ * 1e-9 of the bracket (or round-off): the value is flat in time there, fixed to round-off.
+ * Brent, "Algorithms for Minimization without Derivatives" (1973), ch. 5, on -F. */
 static double peak_force(jp_sim *s, int j, double a, double b, double *t_peak) {
-  const double g = 0.5 * (sqrt(5.0) - 1.0);
-  int nc = s->c.nc;
-  double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  forces_at(s, x1); double f1 = s->c_out[3 * nc + j];
-  forces_at(s, x2); double f2 = s->c_out[3 * nc + j];
-  /* the peak's value is flat in time: 1e-9 of the bracket fixes it to round-off */
-  double ttol = fmax(1e-9 * (b - a), 8 * 2.220446049250313e-16 * fmax(fabs(a), fabs(b)));
-  for (int it = 0; it < 120 && b - a > ttol; ++it) {
-    if (f1 >= f2) { b = x2; x2 = x1; f2 = f1; x1 = b - g * (b - a); forces_at(s, x1); f1 = s->c_out[3 * nc + j]; }
-    else { a = x1; x1 = x2; f1 = f2; x2 = a + g * (b - a); forces_at(s, x2); f2 = s->c_out[3 * nc + j]; }
+  const double golden = 0.5 * (3.0 - sqrt(5.0));
+  const double eps = 2.220446049250313e-16;
+  /* bracket at the end: b - a <= 4 tol, the golden search's stopping width */
+  double tol = 0.25 * fmax(1e-9 * (b - a), 8 * eps * fmax(fabs(a), fabs(b)));
+  double x = a + golden * (b - a), w = x, v = x;
+  double fx = -normal_force_at(s, j, x), fw = fx, fv = fx;
+  double d = 0.0, e = 0.0;
+  for (int it = 0; it < 120; ++it) {
+    double xm = 0.5 * (a + b), tol2 = 2.0 * tol;
+    if (fabs(x - xm) <= tol2 - 0.5 * (b - a)) break;
+    int parabolic = 0;
+    if (fabs(e) > tol) {
+      double r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), pn = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) pn = -pn;
+      q = fabs(q);
+      double e_before = e;
+      e = d;
+      /* the parabola's vertex, if it lies inside the bracket and the step is less than half
+       * the one before last (else the golden step) */
+      if (fabs(pn) < fabs(0.5 * q * e_before) && pn > q * (a - x) && pn < q * (b - x)) {
+        d = pn / q;
+        double u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = x < xm ? tol : -tol;
+        parabolic = 1;
+      }
+    }
+    if (!parabolic) { e = x >= xm ? a - x : b - x; d = golden * e; }
+    double u = fabs(d) >= tol ? x + d : x + (d > 0 ? tol : -tol);
+    double fu = -normal_force_at(s, j, u);
+    if (fu <= fx) {
+      if (u >= x) a = x; else b = x;
+      v = w; fv = fw; w = x; fw = fx; x = u; fx = fu;
+    } else {
+      if (u < x) a = u; else b = u;
+      if (fu <= fw || w == x) { v = w; fv = fw; w = u; fw = fu; }
+      else if (fu <= fv || v == x || v == w) { v = u; fv = fu; }
+    }
   }
-  if (f1 >= f2) { *t_peak = x1; return f1; }
-  *t_peak = x2; return f2;
+  *t_peak = x;
+  return -fx;
 }
 
 /* A step redone to land on an onset ends within the integration error of the located root
@@ -1000,6 +1044,7 @@ jp_sim *jp_create(const jp_config *config) {
   jp_sim *s = calloc(1, sizeof(jp_sim));
   if (!s) return NULL;
   s->c = *config;
+  s->tau_t = NAN;
   const jp_config *c = &s->c;
   int nx = c->nx, nc = c->nc;
   s->nquad = 1 + 3 * nc;
@@ -1079,7 +1124,7 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   const jp_config *c = &s->c;
   for (int i = 0; i < c->nx; ++i) s->D[i] = x0[i] / c->scale[i];
   for (int i = 0; i < s->nquad; ++i) s->D[c->nx + i] = 0.0;
-  s->t = t0; s->started = 0; s->status = JP_OK; s->n_phases = 0; s->landing_target = INFINITY;
+  s->t = t0; s->started = 0; s->status = JP_OK; s->tau_t = NAN; s->n_phases = 0; s->landing_target = INFINITY;
   s->order_cap = c->max_order; s->cap_steps = 0; s->window_steps = 0; s->recent_failures = 0;
   for (int j = 0; j < c->nc; ++j) {
     s->flags[j] = 0.0; s->v_imp[j] = 0.0; s->armed[j] = 0; s->open_phase[j] = -1;
@@ -1108,7 +1153,7 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
 void jp_hold(jp_sim *s, const double *u) {
   int changed = 0;
   for (int k = 0; k < s->c.ntau; ++k) if (s->u_hold[k] != u[k]) { s->u_hold[k] = u[k]; changed = 1; }
-  if (changed) s->started = 0;
+  if (changed) s->started = 0, s->tau_t = NAN;
 }
 
 /* Integrate to t_end, writing outputs at the n_out times t_out (increasing, in (t, t_end]):
