@@ -132,6 +132,12 @@ typedef struct {
   int *rising;                 /* normal force rising at the end of the last step */
   double *tmp_y, *tmp_y2;
   double *samples;             /* NS x nx: unscaled states at the scan's sample times */
+  /* Normal forces the scan need not compute again (see scan_events): fn_quad from the last
+   * quadrature rates, at time fn_quad_t; fn_carry, the last standing step's force samples at
+   * its end, time fn_carry_t. Each holds for the impact speeds of generation *_gen (v_gen
+   * counts the onsets, which change v_imp and with it the force). */
+  double *fn_quad, *fn_carry, fn_quad_t, fn_carry_t;
+  long fn_quad_gen, fn_carry_gen, v_gen;
   /* CasADi work */
   const double **arg; double **res; jp_int *iw; double *w;
   double *jac_sparse, *c_out; /* contact outputs: 8 x nc */
@@ -269,9 +275,10 @@ static void contact_of(jp_sim *s, const double *xs) {
 }
 static void contact_at(jp_sim *s) { contact_of(s, s->xs); }
 
-/* Quadrature integrands at scaled state z (torques already at t): drive power, then per joint
- * normal force, damping power, friction power; all in the order of the quadrature block. */
-static void quadrature_rates(jp_sim *s, const double *z, double *g) {
+/* Quadrature integrands at time t and scaled state z (torques already at t): drive power, then
+ * per joint normal force, damping power, friction power; all in the order of the quadrature
+ * block. The normal forces are kept (fn_quad) for the event scan. */
+static void quadrature_rates(jp_sim *s, double t, const double *z, double *g) {
   const jp_config *c = &s->c;
   unscale(s, z);
   double power = 0.0;
@@ -288,6 +295,8 @@ static void quadrature_rates(jp_sim *s, const double *z, double *g) {
       g[2 + 3 * j] = diss - friction;
       g[3 + 3 * j] = friction;
     }
+    memcpy(s->fn_quad, s->c_out + 3 * nc, nc * sizeof(double));
+    s->fn_quad_t = t; s->fn_quad_gen = s->v_gen;
   }
 }
 
@@ -495,7 +504,11 @@ static int bdf_start(jp_sim *s, double t, const double *z, const double *quad, d
   if (t_bound > t) h = fmin(h, t_bound - t);
   /* quadrature rates at the start (torques are at t from the first rhs call) */
   rc = torques_at(s, t);
-  quadrature_rates(s, z, s->tmp_y2);
+  quadrature_rates(s, t, z, s->tmp_y2);
+  if (c->nc) {
+    memcpy(s->fn_carry, s->fn_quad, c->nc * sizeof(double));
+    s->fn_carry_t = t; s->fn_carry_gen = s->v_gen;
+  }
   for (int i = 0; i < nx; ++i) s->D[N + i] = f0[i] * h;
   for (int i = 0; i < s->nquad; ++i) s->D[N + nx + i] = s->tmp_y2[i] * h;
   s->t = t; s->h_abs = h; s->h = h; s->order = 1; s->n_equal_steps = 0;
@@ -594,7 +607,7 @@ static int bdf_step(jp_sim *s, double t_bound) {
     }
     /* accepted: quadratures explicitly at the converged state */
     torques_at(s, t_new);
-    quadrature_rates(s, s->y_new, s->tmp_y2);
+    quadrature_rates(s, t_new, s->y_new, s->tmp_y2);
     for (int i = 0; i < nq; ++i) {
       double di = c_coef * s->tmp_y2[i] - s->psi[nx + i];
       s->d[nx + i] = di;
@@ -735,6 +748,7 @@ static void onset(jp_sim *s, int j, double t, const double *y /* scaled, N */) {
   double delta, rate;
   gap(s, s->xs, j, &delta, &rate);
   s->flags[j] = 1.0; s->armed[j] = delta > 0; s->v_imp[j] = rate; s->rising[j] = 1;
+  s->v_gen++;
   s->n_events++;
   if (new_phase(s, j, t, rate, s->xs)) return;
   phase_quadratures(s, s->phases + s->open_phase[j] * PH_FIELDS, y, j, -1.0);
@@ -879,15 +893,31 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
     *t_cut = earliest; *cut_joint = who;
     return earliest - t0 <= landing ? 3 : 1;
   }
-  /* Pass 2: record everything. Forces are sampled only while a joint is in contact. */
+  /* Pass 2: record everything. Forces are sampled only while a joint is in contact. The
+   * step's ends need no new evaluation: its end is the state the quadrature rates were taken
+   * at (fn_quad), its start the end of the step before (fn_carry), each equal to round-off
+   * to the dense output there and valid while no onset has changed an impact speed since. */
   int any = 0;
   for (int j = 0; j < nc; ++j) any |= s->flags[j] > 0.5;
   double fn[NS][MAX_JOINTS];
+  long gen = s->v_gen;
   if (any)
     for (int k = 0; k < NS; ++k) {
-      contact_of(s, s->samples + (size_t)k * nx);
-      for (int j = 0; j < nc; ++j) fn[k][j] = s->c_out[3 * nc + j];
+      const double *known = NULL;
+      if (k == 0 && s->fn_carry_t == s->t_old && s->fn_carry_gen == gen) known = s->fn_carry;
+      if (k == NS - 1 && s->fn_quad_t == s->t && s->fn_quad_gen == gen) known = s->fn_quad;
+      if (!known) {
+        contact_of(s, s->samples + (size_t)k * nx);
+        known = s->c_out + 3 * nc;
+      }
+      for (int j = 0; j < nc; ++j) fn[k][j] = known[j];
     }
+  if (any) {
+    for (int j = 0; j < nc; ++j) s->fn_carry[j] = fn[NS - 1][j];
+    s->fn_carry_t = s->t; s->fn_carry_gen = gen;
+  } else {
+    s->fn_carry_t = NAN;
+  }
   for (int j = 0; j < nc; ++j) {
     int was_in_contact = s->flags[j] > 0.5;
     int k_end = NS - 1; /* last sample of the contact inside this step */
@@ -1072,6 +1102,9 @@ jp_sim *jp_create(const jp_config *config) {
   s->open_phase = calloc(nc + 1, sizeof(long));
   s->c_out = calloc(8 * (nc + 1), sizeof(double));
   s->samples = calloc((size_t)NS * nx + 1, sizeof(double));
+  s->fn_quad = calloc(nc + 1, sizeof(double));
+  s->fn_carry = calloc(nc + 1, sizeof(double));
+  s->fn_quad_t = s->fn_carry_t = NAN;
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
   const jp_function *fns[4] = {&c->f, &c->jac, &c->contact, &c->wear};
   for (int k = 0; k < 4; ++k) {
@@ -1090,7 +1123,7 @@ jp_sim *jp_create(const jp_config *config) {
   if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->piv || !s->rhs_u ||
       !s->tmp_y2 ||
       !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->v_imp || !s->flags || !s->armed || !s->rising ||
-      !s->open_phase || !s->c_out || !s->samples || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
+      !s->open_phase || !s->c_out || !s->samples || !s->fn_quad || !s->fn_carry || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
     jp_free(s);
     return NULL;
   }
@@ -1112,7 +1145,7 @@ void jp_free(jp_sim *s) {
   void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->piv, s->rhs_u, s->y_pred,
                   s->psi, s->d, s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
                   s->xdot, s->tau, s->u_hold, s->v_imp, s->flags, s->armed, s->rising, s->open_phase,
-                  s->c_out, s->samples, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
+                  s->c_out, s->samples, s->fn_quad, s->fn_carry, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
                   s->wear_out, s->wear_volume, s->wear_depth};
   for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
   free(s);
@@ -1124,7 +1157,8 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   const jp_config *c = &s->c;
   for (int i = 0; i < c->nx; ++i) s->D[i] = x0[i] / c->scale[i];
   for (int i = 0; i < s->nquad; ++i) s->D[c->nx + i] = 0.0;
-  s->t = t0; s->started = 0; s->status = JP_OK; s->tau_t = NAN; s->n_phases = 0; s->landing_target = INFINITY;
+  s->t = t0; s->started = 0; s->status = JP_OK; s->tau_t = NAN;
+  s->fn_quad_t = s->fn_carry_t = NAN; s->n_phases = 0; s->landing_target = INFINITY;
   s->order_cap = c->max_order; s->cap_steps = 0; s->window_steps = 0; s->recent_failures = 0;
   for (int j = 0; j < c->nc; ++j) {
     s->flags[j] = 0.0; s->v_imp[j] = 0.0; s->armed[j] = 0; s->open_phase[j] = -1;
