@@ -115,6 +115,7 @@ typedef struct {
   double *D;       /* (MAX_ORDER + 3) x N, row k = k-th difference */
   double *D_save;
   double *J, *LU; int *piv;
+  double *LT, *JqT;  /* L's columns (lu_lower_columns); Jq's columns (reduced Newton matrix) */
   /* Newton matrix I - c J of a second-order system, J = [0 D; Jq Jv] (scaled; D diagonal):
    * with du solved from the n x n K = I - c Jv - c^2 Jq D, dq = r_q + c D du (exact; an LU
    * of n instead of 2n rows, 8x fewer operations). reduced: J had that form at its last
@@ -329,9 +330,39 @@ static int lu_factor(int n, double *a, int *piv) {
   return 0;
 }
 
-static void lu_solve(int n, const double *a, const int *piv, double *b) {
+/* The columns of L (the part of a below its diagonal) as rows of lt, for lu_solve. */
+static void lu_lower_columns(int n, const double *a, double *lt) {
+  for (int j = 0; j < n; ++j)
+    for (int i = j + 1; i < n; ++i) lt[j * n + i] = a[i * n + j];
+}
+
+/* b <- A^-1 b from lu_factor's a and piv, and lt from lu_lower_columns. The forward
+ * substitution runs column by column: each b[i] takes its terms in the order of the row-wise
+ * dot product (j ascending), so the result is the same to the bit, but the updates of
+ * different rows are independent (no chain of dependent additions) and contiguous in lt. */
+static void lu_solve(int n, const double *a, const double *lt, const int *piv, double *b) {
   for (int k = 0; k < n; ++k) { int p = piv[k]; if (p != k) { double tmp = b[k]; b[k] = b[p]; b[p] = tmp; } }
-  for (int i = 1; i < n; ++i) { double sum = b[i]; for (int j = 0; j < i; ++j) sum -= a[i * n + j] * b[j]; b[i] = sum; }
+  int j = 0;
+  for (; j + 4 <= n; j += 4) {
+    /* four columns per pass: b[j..j+3] final within the block first, then the rows below
+     * take the four terms in turn (fewer loads and stores of b) */
+    const double *c0 = lt + j * n, *c1 = c0 + n, *c2 = c1 + n, *c3 = c2 + n;
+    double b0 = b[j];
+    double b1 = b[j + 1] - c0[j + 1] * b0;
+    double b2 = b[j + 2] - c0[j + 2] * b0; b2 -= c1[j + 2] * b1;
+    double b3 = b[j + 3] - c0[j + 3] * b0; b3 -= c1[j + 3] * b1; b3 -= c2[j + 3] * b2;
+    b[j + 1] = b1; b[j + 2] = b2; b[j + 3] = b3;
+    for (int i = j + 4; i < n; ++i) {
+      double r = b[i];
+      r -= c0[i] * b0; r -= c1[i] * b1; r -= c2[i] * b2; r -= c3[i] * b3;
+      b[i] = r;
+    }
+  }
+  for (; j < n - 1; ++j) {
+    const double *col = lt + j * n;
+    double bj = b[j];
+    for (int i = j + 1; i < n; ++i) b[i] -= col[i] * bj;
+  }
   for (int i = n - 1; i >= 0; --i) { double sum = b[i]; for (int j = i + 1; j < n; ++j) sum -= a[i * n + j] * b[j]; b[i] = sum / a[i * n + i]; }
 }
 
@@ -440,7 +471,9 @@ static int newton_factor(jp_sim *s, double c_coef) {
   if (!s->reduced) {
     for (int i = 0; i < nx * nx; ++i) s->LU[i] = -c_coef * s->J[i];
     for (int i = 0; i < nx; ++i) s->LU[i * nx + i] += 1.0;
-    return lu_factor(nx, s->LU, s->piv);
+    if (lu_factor(nx, s->LU, s->piv)) return 1;
+    lu_lower_columns(nx, s->LU, s->LT);
+    return 0;
   }
   s->n_lu_reduced++;
   for (int i = 0; i < n; ++i) {
@@ -449,21 +482,40 @@ static int newton_factor(jp_sim *s, double c_coef) {
       s->LU[i * n + j] = (i == j) - c_coef * jv[j]
                          - c_coef * c_coef * jq[j] * s->J[(size_t)j * nx + n + j];
   }
-  return lu_factor(n, s->LU, s->piv);
+  if (lu_factor(n, s->LU, s->piv)) return 1;
+  lu_lower_columns(n, s->LU, s->LT);
+  /* Jq by columns (see newton_solve) */
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) s->JqT[j * n + i] = s->J[(size_t)(n + i) * nx + j];
+  return 0;
 }
 
 /* b <- (I - c J)^-1 b with the factors of newton_factor. */
 static void newton_solve(jp_sim *s, double *b) {
   int nx = s->c.nx, n = nx / 2;
-  if (!s->reduced) { lu_solve(nx, s->LU, s->piv, b); return; }
+  if (!s->reduced) { lu_solve(nx, s->LU, s->LT, s->piv, b); return; }
   double c_coef = s->lu_c;
-  for (int i = 0; i < n; ++i) {
-    const double *jq = s->J + (size_t)(n + i) * nx;
-    double sum = b[n + i];
-    for (int j = 0; j < n; ++j) sum += c_coef * jq[j] * b[j];
-    s->rhs_u[i] = sum;
+  /* rhs_u = b_u + c Jq b_q, column by column: each row's terms in the order of its dot
+   * product (j ascending), the rows' updates independent */
+  double *u = s->rhs_u;
+  for (int i = 0; i < n; ++i) u[i] = b[n + i];
+  int j = 0;
+  for (; j + 4 <= n; j += 4) { /* four columns per pass: fewer loads and stores of u */
+    const double *c0 = s->JqT + (size_t)j * n, *c1 = c0 + n, *c2 = c1 + n, *c3 = c2 + n;
+    double b0 = b[j], b1 = b[j + 1], b2 = b[j + 2], b3 = b[j + 3];
+    for (int i = 0; i < n; ++i) {
+      double r = u[i];
+      r += c_coef * c0[i] * b0; r += c_coef * c1[i] * b1;
+      r += c_coef * c2[i] * b2; r += c_coef * c3[i] * b3;
+      u[i] = r;
+    }
   }
-  lu_solve(n, s->LU, s->piv, s->rhs_u);
+  for (; j < n; ++j) {
+    const double *col = s->JqT + (size_t)j * n;
+    double bj = b[j];
+    for (int i = 0; i < n; ++i) u[i] += c_coef * col[i] * bj;
+  }
+  lu_solve(n, s->LU, s->LT, s->piv, s->rhs_u);
   for (int i = 0; i < n; ++i) {
     b[n + i] = s->rhs_u[i];
     b[i] += c_coef * s->J[(size_t)i * nx + n + i] * s->rhs_u[i];
@@ -564,17 +616,20 @@ static int bdf_step(jp_sim *s, double t_bound) {
       change_d(s, h / h_abs); h_abs = h; s->have_lu = 0;
     }
     int order = s->order;
-    for (int i = 0; i < N; ++i) {
-      double sum = 0.0;
-      for (int k = 0; k <= order; ++k) sum += s->D[k * N + i];
-      s->y_pred[i] = sum;
+    /* predictor and psi: sums over the differences, row by row (contiguous; each entry's
+     * terms in the same order, k ascending) */
+    for (int i = 0; i < N; ++i) s->y_pred[i] = 0.0 + s->D[i];
+    for (int k = 1; k <= order; ++k) {
+      const double *row = s->D + k * N;
+      for (int i = 0; i < N; ++i) s->y_pred[i] += row[i];
     }
     quad_scale(s, s->y_pred, s->scal);
-    for (int i = 0; i < N; ++i) {
-      double sum = 0.0;
-      for (int k = 1; k <= order; ++k) sum += s->D[k * N + i] * GAMMA[k];
-      s->psi[i] = sum / ALPHA[order];
+    for (int i = 0; i < N; ++i) s->psi[i] = 0.0;
+    for (int k = 1; k <= order; ++k) {
+      const double *row = s->D + k * N;
+      for (int i = 0; i < N; ++i) s->psi[i] += row[i] * GAMMA[k];
     }
+    for (int i = 0; i < N; ++i) s->psi[i] /= ALPHA[order];
     double c_coef = h / ALPHA[order];
     int converged = 0, iters = 0;
     for (;;) {
@@ -1086,6 +1141,8 @@ jp_sim *jp_create(const jp_config *config) {
   s->work_n = calloc(rows * N, sizeof(double));
   s->J = calloc((size_t)nx * nx, sizeof(double));
   s->LU = calloc((size_t)nx * nx, sizeof(double));
+  s->LT = calloc((size_t)nx * nx, sizeof(double));
+  s->JqT = calloc((size_t)nx * nx / 4 + 1, sizeof(double));
   s->piv = calloc(nx, sizeof(int));
   s->rhs_u = calloc(nx / 2 + 1, sizeof(double));
   double **vecs[] = {&s->y_pred, &s->psi, &s->d, &s->y_new, &s->f_buf, &s->dy, &s->scal,
@@ -1120,7 +1177,8 @@ jp_sim *jp_create(const jp_config *config) {
   s->w = calloc(sz_w + 1, sizeof(double));
   jp_int nnz = c->jac.sparsity_out0[2 + c->jac.sparsity_out0[1]];
   s->jac_sparse = calloc(nnz + 1, sizeof(double));
-  if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->piv || !s->rhs_u ||
+  if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->LT || !s->JqT || !s->piv ||
+      !s->rhs_u ||
       !s->tmp_y2 ||
       !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->v_imp || !s->flags || !s->armed || !s->rising ||
       !s->open_phase || !s->c_out || !s->samples || !s->fn_quad || !s->fn_carry || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
@@ -1142,7 +1200,7 @@ jp_sim *jp_create(const jp_config *config) {
 
 void jp_free(jp_sim *s) {
   if (!s) return;
-  void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->piv, s->rhs_u, s->y_pred,
+  void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->LT, s->JqT, s->piv, s->rhs_u, s->y_pred,
                   s->psi, s->d, s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
                   s->xdot, s->tau, s->u_hold, s->v_imp, s->flags, s->armed, s->rising, s->open_phase,
                   s->c_out, s->samples, s->fn_quad, s->fn_carry, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
