@@ -128,6 +128,8 @@ typedef struct {
   double *xs, *xdot;           /* unscaled state and its derivative */
   double *tau, *u_hold;
   double tau_t;                /* the time tau holds the torques of, NAN: none */
+  double *tau_scene;           /* the scene's part of tau (without the held torques) */
+  int *torque_same;            /* per driven joint: an earlier one with the same torque, or -1 */
   double *v_imp, *flags;       /* per clearance joint */
   int *armed;                  /* penetration has been positive since the onset */
   int *rising;                 /* normal force rising at the end of the last step */
@@ -233,8 +235,10 @@ static int torques_at(jp_sim *s, double t) {
   if (t == s->tau_t) return 0;
   s->tau_t = NAN;
   for (int k = 0; k < c->ntau; ++k) {
-    int ok = 1;
-    double v = c->torque_kind[k] == 0 ? torque_program(c, k, t, &ok) : torque_table(c, k, t);
+    int ok = 1, same = s->torque_same[k];
+    double v = same >= 0 ? s->tau_scene[same]
+               : c->torque_kind[k] == 0 ? torque_program(c, k, t, &ok) : torque_table(c, k, t);
+    s->tau_scene[k] = v;
     v += s->u_hold[k];
     if (!ok || !isfinite(v)) return k + 1;
     s->tau[k] = v;
@@ -668,7 +672,9 @@ static int bdf_step(jp_sim *s, double t_bound) {
       s->d[nx + i] = di;
       s->y_new[nx + i] = s->y_pred[nx + i] + di;
     }
-    memcpy(s->D_save, s->D, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
+    /* rows 0..order+2 are all a step at this order reads or writes (those above are written
+     * before they are read, should the order rise): the rest need no copy for a redo */
+    memcpy(s->D_save, s->D, (size_t)(order + 3) * N * sizeof(double));
     s->t_old = s->t; s->h_abs_old = h_abs; s->order_old = order;
     s->n_equal_old = s->n_equal_steps;
     s->n_steps++;
@@ -1121,6 +1127,18 @@ static void wear_step(jp_sim *s) {
 
 /* ---- public interface ------------------------------------------------------------------------ */
 
+/* Whether driven joints a and b have the same torque definition (the same program, or the
+ * same table): a scene that drives every joint alike evaluates it once per time. */
+static int same_torque(const jp_config *c, int a, int b) {
+  if (c->torque_kind[a] != c->torque_kind[b] || c->torque_len[a] != c->torque_len[b]) return 0;
+  int n = c->torque_len[a], sa = c->torque_start[a], sb = c->torque_start[b];
+  if (c->torque_kind[a] == 0)
+    return memcmp(c->ops + sa, c->ops + sb, n * sizeof(int)) == 0
+           && memcmp(c->consts + sa, c->consts + sb, n * sizeof(double)) == 0;
+  return memcmp(c->table_t + sa, c->table_t + sb, n * sizeof(double)) == 0
+         && memcmp(c->table_v + sa, c->table_v + sb, n * sizeof(double)) == 0;
+}
+
 void jp_free(jp_sim *s);
 
 jp_sim *jp_create(const jp_config *config) {
@@ -1152,6 +1170,13 @@ jp_sim *jp_create(const jp_config *config) {
   s->xdot = calloc(nx, sizeof(double));
   s->tau = calloc(c->ntau + 1, sizeof(double));
   s->u_hold = calloc(c->ntau + 1, sizeof(double));
+  s->tau_scene = calloc(c->ntau + 1, sizeof(double));
+  s->torque_same = calloc(c->ntau + 1, sizeof(int));
+  for (int k = 0; k < c->ntau && s->torque_same; ++k) {
+    s->torque_same[k] = -1;
+    for (int m = 0; m < k && s->torque_same[k] < 0; ++m)
+      if (s->torque_same[m] < 0 && same_torque(c, m, k)) s->torque_same[k] = m;
+  }
   s->v_imp = calloc(nc + 1, sizeof(double));
   s->flags = calloc(nc + 1, sizeof(double));
   s->armed = calloc(nc + 1, sizeof(int));
@@ -1178,10 +1203,11 @@ jp_sim *jp_create(const jp_config *config) {
   jp_int nnz = c->jac.sparsity_out0[2 + c->jac.sparsity_out0[1]];
   s->jac_sparse = calloc(nnz + 1, sizeof(double));
   if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->LT || !s->JqT || !s->piv ||
-      !s->rhs_u ||
-      !s->tmp_y2 ||
-      !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->v_imp || !s->flags || !s->armed || !s->rising ||
-      !s->open_phase || !s->c_out || !s->samples || !s->fn_quad || !s->fn_carry || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
+      !s->rhs_u || !s->tmp_y2 ||
+      !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->tau_scene || !s->torque_same ||
+      !s->v_imp || !s->flags || !s->armed || !s->rising ||
+      !s->open_phase || !s->c_out || !s->samples || !s->fn_quad || !s->fn_carry || !s->arg ||
+      !s->res || !s->iw || !s->w || !s->jac_sparse) {
     jp_free(s);
     return NULL;
   }
@@ -1200,9 +1226,11 @@ jp_sim *jp_create(const jp_config *config) {
 
 void jp_free(jp_sim *s) {
   if (!s) return;
-  void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->LT, s->JqT, s->piv, s->rhs_u, s->y_pred,
+  void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->LT, s->JqT, s->piv, s->rhs_u,
+                  s->y_pred,
                   s->psi, s->d, s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
-                  s->xdot, s->tau, s->u_hold, s->v_imp, s->flags, s->armed, s->rising, s->open_phase,
+                  s->xdot, s->tau, s->u_hold, s->tau_scene, s->torque_same, s->v_imp, s->flags,
+                  s->armed, s->rising, s->open_phase,
                   s->c_out, s->samples, s->fn_quad, s->fn_carry, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
                   s->wear_out, s->wear_volume, s->wear_depth};
   for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
@@ -1281,7 +1309,7 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
     if (s->status) break;
     if (ev == 1 || ev == 3) {
       /* redo the step: to land on the onset, or from its start with the captured speed */
-      memcpy(s->D, s->D_save, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
+      memcpy(s->D, s->D_save, (size_t)(s->order_old + 3) * N * sizeof(double));
       s->t = s->t_old; s->h_abs = s->h_abs_old; s->order = s->order_old;
       s->n_equal_steps = s->n_equal_old; s->have_lu = 0; s->n_steps--;
       if (ev == 1) {
