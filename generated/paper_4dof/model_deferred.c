@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+421aafe73a38, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+4333a976840e, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 33623b15c6de3e6364297382a2e9c53a0810dea2eb19df35a353f65e4f8da415
+ * input hash: 3deb83f09daa2114ed50047fa3b6c4c1920917c3f64a29a92f92bbff55de992f
  * The deferred part of this model: compiled on the first call that needs it,
  * linked against the library of model.c. Functions, in CasADi's calling
  * convention (their slots are forward_dynamics' and its Jacobian's):

@@ -97,6 +97,7 @@ typedef struct {
   jp_function f, jac, contact;
   jp_function wear;         /* eval NULL: no wear integrated */
   int wear_bins;            /* angular bins around each surface */
+  jp_function normal;       /* contact's f_n alone; eval NULL: taken from contact */
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -279,6 +280,16 @@ static void contact_of(jp_sim *s, const double *xs) {
   call(s, &c->contact);
 }
 static void contact_at(jp_sim *s) { contact_of(s, s->xs); }
+
+/* The normal forces alone at unscaled state xs, into their place in c_out (the rest of c_out
+ * is left as it was when the model has a function for them, else is contact's too). */
+static void normal_of(jp_sim *s, const double *xs) {
+  const jp_config *c = &s->c;
+  if (!c->normal.eval) { contact_of(s, xs); return; }
+  s->arg[0] = xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
+  s->res[0] = s->c_out + 3 * c->nc;
+  call(s, &c->normal);
+}
 
 /* Quadrature integrands at time t and scaled state z (torques already at t): drive power, then
  * per joint normal force, damping power, friction power; all in the order of the quadrature
@@ -842,11 +853,11 @@ static void note_peak(jp_sim *s, int j, int column, int time_column, double valu
  * cannot beat it (the force is resolved by the steps), so it is not refined. */
 #define PEAK_MARGIN 1e-2
 
-/* Normal force of every joint at time t on the dense output, into s->c_out. */
+/* Normal force of every joint at time t on the dense output, into s->c_out (f_n's part). */
 static void forces_at(jp_sim *s, double t) {
   dense_first(s, t, s->tmp_y, s->c.nx);
   unscale(s, s->tmp_y);
-  contact_at(s);
+  normal_of(s, s->xs);
 }
 
 /* Normal force of joint j at time t on the dense output. */
@@ -968,7 +979,7 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
       if (k == 0 && s->fn_carry_t == s->t_old && s->fn_carry_gen == gen) known = s->fn_carry;
       if (k == NS - 1 && s->fn_quad_t == s->t && s->fn_quad_gen == gen) known = s->fn_quad;
       if (!known) {
-        contact_of(s, s->samples + (size_t)k * nx);
+        normal_of(s, s->samples + (size_t)k * nx);
         known = s->c_out + 3 * nc;
       }
       for (int j = 0; j < nc; ++j) fn[k][j] = known[j];
@@ -1188,8 +1199,8 @@ jp_sim *jp_create(const jp_config *config) {
   s->fn_carry = calloc(nc + 1, sizeof(double));
   s->fn_quad_t = s->fn_carry_t = NAN;
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
-  const jp_function *fns[4] = {&c->f, &c->jac, &c->contact, &c->wear};
-  for (int k = 0; k < 4; ++k) {
+  const jp_function *fns[5] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal};
+  for (int k = 0; k < 5; ++k) {
     if (!fns[k]->eval) continue;
     if (fns[k]->sz_arg > sz_arg) sz_arg = fns[k]->sz_arg;
     if (fns[k]->sz_res > sz_res) sz_res = fns[k]->sz_res;

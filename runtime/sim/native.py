@@ -65,7 +65,7 @@ class _Config(ctypes.Structure):
                 ("max_steps", ctypes.c_long), ("max_events", ctypes.c_long),
                 ("max_order", ctypes.c_int),
                 ("f", _Function), ("jac", _Function), ("contact", _Function),
-                ("wear", _Function), ("wear_bins", ctypes.c_int)]
+                ("wear", _Function), ("wear_bins", ctypes.c_int), ("normal", _Function)]
 
 
 @functools.cache
@@ -191,6 +191,11 @@ class NativeIntegrator:
         cfg.jac, _ = _function(model, jacobian)
         if self.nc:
             cfg.contact, _ = _function(model, "contact")
+            # The normal forces alone, for the event scan's samples, where the model has them
+            # as their own function (generated since; without it the scan reads contact's).
+            if "normal_force" in model.layout.functions:
+                model.function("normal_force")
+                cfg.normal, _ = _function(model, "normal_force")
         # Archard wear, integrated in the loop, for a model generated with it.
         self.wear_bins = WEAR_BINS if model.structure.wear is not None else 0
         if self.wear_bins:
