@@ -475,6 +475,10 @@ static int jacobian(jp_sim *s, double t, const double *z) {
   for (int r = 0; r < n && s->reduced; ++r)
     for (int col = 0; col < nx; ++col)
       if (col != n + r && s->J[r * nx + col] != 0.0) { s->reduced = 0; break; }
+  /* Jq by columns, for newton_solve (once per Jacobian, not per factorisation) */
+  if (s->reduced)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) s->JqT[j * n + i] = s->J[(size_t)(n + i) * nx + j];
   return all_finite(nx * nx, s->J) ? 0 : 1;
 }
 
@@ -499,9 +503,6 @@ static int newton_factor(jp_sim *s, double c_coef) {
   }
   if (lu_factor(n, s->LU, s->piv)) return 1;
   lu_lower_columns(n, s->LU, s->LT);
-  /* Jq by columns (see newton_solve) */
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) s->JqT[j * n + i] = s->J[(size_t)(n + i) * nx + j];
   return 0;
 }
 
