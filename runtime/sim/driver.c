@@ -337,9 +337,11 @@ static int lu_factor(int n, double *a, int *piv) {
     if (big == 0.0) return 1;
     if (p != k) for (int j = 0; j < n; ++j) { double tmp = a[k * n + j]; a[k * n + j] = a[p * n + j]; a[p * n + j] = tmp; }
     double inv = 1.0 / a[k * n + k];
+    const double *pivot_row = a + k * n;
     for (int i = k + 1; i < n; ++i) {
-      double l = a[i * n + k] *= inv;
-      if (l != 0.0) for (int j = k + 1; j < n; ++j) a[i * n + j] -= l * a[k * n + j];
+      double *row = a + i * n;
+      double l = row[k] *= inv;
+      if (l != 0.0) for (int j = k + 1; j < n; ++j) row[j] -= l * pivot_row[j];
     }
   }
   return 0;
@@ -420,12 +422,15 @@ static void change_d(jp_sim *s, double factor) {
     }
   /* D[:m] = RU^T D[:m] */
   double *tmp = s->work_n; /* needs m * N: work_n has (MAX_ORDER + 3) * N */
-  for (int i = 0; i < m; ++i)
-    for (int col = 0; col < N; ++col) {
-      double sum = 0.0;
-      for (int k = 0; k < m; ++k) sum += RU[k * m + i] * s->D[k * N + col];
-      tmp[i * N + col] = sum;
+  for (int i = 0; i < m; ++i) { /* row by row: each entry's terms in turn, k ascending */
+    double *out = tmp + i * N;
+    for (int col = 0; col < N; ++col) out[col] = 0.0;
+    for (int k = 0; k < m; ++k) {
+      const double *row = s->D + k * N;
+      double r = RU[k * m + i];
+      for (int col = 0; col < N; ++col) out[col] += r * row[col];
     }
+  }
   memcpy(s->D, tmp, (size_t)m * N * sizeof(double));
 }
 
