@@ -20,9 +20,11 @@
  *   damping after the onset depends on the approach speed captured at it), and the approach
  *   speed d(delta)/dt is captured;
  * - separation (delta crosses 0 downwards while in contact): located, recorded;
- * - maximum penetration (d(delta)/dt crosses 0 downwards in contact) and peak normal force
- *   (dF_n/dt crosses 0 downwards, the derivative by a central difference along the dense
- *   output): located, recorded per phase.
+ * - maximum penetration (d(delta)/dt crosses 0 downwards in contact), located, and peak
+ *   normal force: the normal forces are sampled with the penetrations (the model's
+ *   normal_force, the contact law's f_n alone, where it has one; the step's ends come from the
+ *   quadrature rates and the step before), and a sampled maximum that can beat the phase's
+ *   peak so far is located by Brent's method on the dense output; recorded per phase.
  * The state is scaled: eccentricities in units of their joint's clearance, so one absolute
  * tolerance means the same for angles and micrometre play.
  *
