@@ -113,8 +113,8 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
         tip = convert(model.tip_position)
         fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state = _dynamics_functions(
             model, inputs, mass, forcing)
-    fn_contact, fn_energy = _contact_and_energy_functions(inputs, per_joint, kinetic,
-                                                          gravity_pot, potential)
+    fn_contact, fn_normal, fn_energy = _contact_and_energy_functions(
+        inputs, per_joint, kinetic, gravity_pot, potential)
     fn_tip = _end_effector_function(model, inputs, tip)
 
     slots = shared_slots(model)
@@ -133,8 +133,8 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
     fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac_state)
     add_step_slots(functions, fn_rk4.name(), fn_radau.name(), RADAU_NEWTON_ITERATIONS, model,
                    slots)
-    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state, fn_contact, fn_energy, fn_tip,
-            fn_rk4, fn_radau, *extra], layout
+    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state, fn_contact, fn_normal, fn_energy,
+            fn_tip, fn_rk4, fn_radau, *extra], layout
 
 
 def _symbolic_inputs(model: SymbolicModel) -> _Inputs:
@@ -328,8 +328,10 @@ def _forward_dynamics(model: SymbolicModel, fn_mass: ca.Function, fn_forcing: ca
 
 def _contact_and_energy_functions(inputs: _Inputs, per_joint: dict[str, list[Any]],
                                   kinetic: Any, gravity_pot: Any, potential: Any
-                                  ) -> tuple[ca.Function, ca.Function]:
-    """``contact`` (one column per output, one row per clearance joint) and ``energy``."""
+                                  ) -> tuple[ca.Function, ca.Function, ca.Function]:
+    """``contact`` (one column per output, one row per clearance joint), ``normal_force``
+    (its f_n alone: what the BDF driver's event scan samples, without the rest's cost) and
+    ``energy``."""
     x, p, v_imp = inputs.x, inputs.p, inputs.v_imp
 
     def stack(values: list[Any]) -> Any:
@@ -338,10 +340,12 @@ def _contact_and_energy_functions(inputs: _Inputs, per_joint: dict[str, list[Any
     contact_outs = [stack(per_joint[k]) for k in per_joint]
     fn_contact = emitted_function("contact", [x, p, v_imp], contact_outs,
                              ["x", "p", "v_imp"], list(per_joint))
+    fn_normal = emitted_function("normal_force", [x, p, v_imp], [stack(per_joint["f_n"])],
+                                 ["x", "p", "v_imp"], ["f_n"])
     total = kinetic + gravity_pot + potential
     fn_energy = emitted_function("energy", [x, p], [kinetic, gravity_pot, potential, total],
                             ["x", "p"], ["kinetic", "gravity", "contact", "total"])
-    return fn_contact, fn_energy
+    return fn_contact, fn_normal, fn_energy
 
 
 def _end_effector_function(model: SymbolicModel, inputs: _Inputs, tip: Any) -> ca.Function:

@@ -94,6 +94,9 @@ def function_slots(model: SymbolicModel, slots: SharedSlots) -> dict[str, Any]:
         "contact": {"inputs": [x_slot, p_slot, v_slot],
                     "outputs": [slot(k, nc, unit, doc, [f"{k}{j}" for j in joints])
                                 for k, (unit, doc) in PER_JOINT_DOC.items()]},
+        "normal_force": {"inputs": [x_slot, p_slot, v_slot],
+                         "outputs": [slot("f_n", nc, *PER_JOINT_DOC["f_n"],
+                                          [f"f_n{j}" for j in joints])]},
         "energy": {"inputs": [x_slot, p_slot],
                    "outputs": [slot("kinetic", 1, "J", "kinetic energy"),
                                slot("gravity", 1, "J", "gravitational potential energy"),

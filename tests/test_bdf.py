@@ -146,3 +146,40 @@ def test_reduced_newton_matrix_equals_the_full_one(monkeypatch: pytest.MonkeyPat
     assert float(np.max(np.abs(state_reduced - state_full) / scale)) < 1e-10
     np.testing.assert_allclose(reduced.impacts.time, full.impacts.time, rtol=0, atol=1e-12)
     np.testing.assert_allclose(reduced.impacts.peak_force, full.impacts.peak_force, rtol=1e-10)
+
+
+def test_event_scan_normal_forces_equal_the_contact_functions() -> None:
+    """The event scan samples the normal forces through the model's ``normal_force`` (the
+    contact function's f_n alone). It equals contact's f_n to the bit on random states, and a
+    model without it (generated before it existed) scans through ``contact``: the same phase
+    table, to the bit."""
+    import dataclasses
+
+    from jointplay.results.records import Impacts
+    from jointplay.store.lookup import model_for
+    from jointplay.store.model import load_model
+
+    scene = _bdf(output_step=1e-3)
+    model = model_for(scene.robot)
+    rng = np.random.default_rng(7)
+    normal, contact = model.function("normal_force"), model.function("contact")
+    p = np.asarray(model.default_parameters, dtype=float)
+    clearance_rows = [model.coordinates.index(f"e{axis}{j}") for j in model.clearance_joints
+                      for axis in "xy"]
+    for _ in range(20):
+        x = rng.normal(size=model.n_state)
+        x[clearance_rows] *= 40e-6  # about the clearance: some joints in contact, some not
+        v_imp = rng.uniform(0.01, 1.0, size=len(model.clearance_joints))
+        f_n = np.asarray(normal(x, p, v_imp)[0], dtype=float).ravel()
+        expected = np.asarray(contact(x, p, v_imp)[3], dtype=float).ravel()
+        assert np.array_equal(f_n, expected)
+        assert np.any(f_n > 0)
+    with_function = simulate(scene, model=model)
+    older = load_model(model.folder)
+    older.layout = dataclasses.replace(older.layout, functions={
+        k: v for k, v in older.layout.functions.items() if k != "normal_force"})
+    without = simulate(scene, model=older)
+    assert len(with_function.impacts) >= 3
+    for name in Impacts.column_names():
+        np.testing.assert_array_equal(getattr(with_function.impacts, name),
+                                      getattr(without.impacts, name), err_msg=name)

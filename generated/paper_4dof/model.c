@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+d52c7f8f9500, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+357219581cfd, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: dd162636dab3937c23ad38439457e8da497304a42aa84cfad1c14eb277c2ad34
+ * input hash: ea6868caf848321cc9219722ff5701a7f3601fd2ee220aa622bd5bde06adf8c6
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
@@ -13,6 +13,7 @@
  *   jac_forward_dynamics: d forward_dynamics / d each input, CasADi's calling convention
  *   jac_state(x[12], tau[2], p[39], v_imp[2]) -> jac_xdot_x[12x12]
  *   contact(x[12], p[39], v_imp[2]) -> delta[2x1], delta_dot[2x1], v_t[2x1], f_n[2x1], f_t[2x1], f_x[2x1], f_y[2x1], dissipation[2x1]
+ *   normal_force(x[12], p[39], v_imp[2]) -> f_n[2x1]
  *   energy(x[12], p[39]) -> kinetic[1x1], gravity[1x1], contact[1x1], total[1x1]
  *   end_effector(x[12], udot[6], p[39]) -> position[2x1], velocity[2x1], acceleration[2x1]
  *   rk4_step(x[12], tau_stages[2], h[1], p[39], v_imp[2]) -> x_next[12x1]
@@ -63,6 +64,7 @@
 #define casadi_dot CASADI_PREFIX(dot)
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
+#define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -3527,8 +3529,211 @@ CASADI_SYMBOL_EXPORT int contact_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
   return 0;
 }
 
-/* energy:(x[12],p[39])->(kinetic,gravity,contact,total) */
+/* normal_force:(x[12],p[39],v_imp[2])->(f_n[2]) */
 static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15;
+  a00=0.;
+  a01=arg[1]? arg[1][21] : 0;
+  a02=-9.9999999999999995e-07;
+  a03=(a02*a01);
+  a04=9.9999999999999995e-07;
+  a05=arg[1]? arg[1][20] : 0;
+  a06=(a04*a05);
+  a03=(a03+a06);
+  a03=casadi_sq(a03);
+  a06=arg[0]? arg[0][2] : 0;
+  a07=casadi_sq(a06);
+  a08=arg[0]? arg[0][3] : 0;
+  a09=casadi_sq(a08);
+  a07=(a07+a09);
+  a03=casadi_fmax(a03,a07);
+  a07=sqrt(a03);
+  a07=(a01+a07);
+  a07=(a07-a05);
+  a09=(a00<a07);
+  a10=1.3333333333333333e+00;
+  a11=(a05*a01);
+  a05=(a05-a01);
+  a11=(a11/a05);
+  a11=sqrt(a11);
+  a11=(a10*a11);
+  a05=1.;
+  a01=arg[1]? arg[1][23] : 0;
+  a01=casadi_sq(a01);
+  a01=(a05-a01);
+  a12=arg[1]? arg[1][22] : 0;
+  a01=(a01/a12);
+  a12=arg[1]? arg[1][25] : 0;
+  a12=casadi_sq(a12);
+  a12=(a05-a12);
+  a13=arg[1]? arg[1][24] : 0;
+  a12=(a12/a13);
+  a01=(a01+a12);
+  a11=(a11/a01);
+  a01=7.5000000000000000e-01;
+  a12=-7.5000000000000000e-01;
+  a13=arg[1]? arg[1][34] : 0;
+  a13=casadi_sq(a13);
+  a12=(a12*a13);
+  a01=(a01+a12);
+  a12=arg[2]? arg[2][0] : 0;
+  a13=arg[1]? arg[1][35] : 0;
+  a12=casadi_fmax(a12,a13);
+  a12=(a01/a12);
+  a14=-5.0000000000000000e-01;
+  a03=pow(a03,a14);
+  a06=(a03*a06);
+  a15=arg[0]? arg[0][8] : 0;
+  a06=(a06*a15);
+  a03=(a03*a08);
+  a08=arg[0]? arg[0][9] : 0;
+  a03=(a03*a08);
+  a06=(a06+a03);
+  a12=(a12*a06);
+  a12=(a05+a12);
+  a11=(a11*a12);
+  a12=1.0000000000000000e-300;
+  a07=casadi_fmax(a12,a07);
+  a06=arg[1]? arg[1][33] : 0;
+  a07=pow(a07,a06);
+  a11=(a11*a07);
+  a09=(a09?a11:0);
+  a09=casadi_fmax(a00,a09);
+  if (res[0]!=0) res[0][0]=a09;
+  a09=arg[1]? arg[1][27] : 0;
+  a02=(a02*a09);
+  a11=arg[1]? arg[1][26] : 0;
+  a04=(a04*a11);
+  a02=(a02+a04);
+  a02=casadi_sq(a02);
+  a04=arg[0]? arg[0][4] : 0;
+  a07=casadi_sq(a04);
+  a03=arg[0]? arg[0][5] : 0;
+  a08=casadi_sq(a03);
+  a07=(a07+a08);
+  a02=casadi_fmax(a02,a07);
+  a07=sqrt(a02);
+  a07=(a09+a07);
+  a07=(a07-a11);
+  a08=(a00<a07);
+  a15=(a11*a09);
+  a11=(a11-a09);
+  a15=(a15/a11);
+  a15=sqrt(a15);
+  a10=(a10*a15);
+  a15=arg[1]? arg[1][29] : 0;
+  a15=casadi_sq(a15);
+  a15=(a05-a15);
+  a11=arg[1]? arg[1][28] : 0;
+  a15=(a15/a11);
+  a11=arg[1]? arg[1][31] : 0;
+  a11=casadi_sq(a11);
+  a11=(a05-a11);
+  a09=arg[1]? arg[1][30] : 0;
+  a11=(a11/a09);
+  a15=(a15+a11);
+  a10=(a10/a15);
+  a15=arg[2]? arg[2][1] : 0;
+  a15=casadi_fmax(a15,a13);
+  a01=(a01/a15);
+  a02=pow(a02,a14);
+  a04=(a02*a04);
+  a14=arg[0]? arg[0][10] : 0;
+  a04=(a04*a14);
+  a02=(a02*a03);
+  a03=arg[0]? arg[0][11] : 0;
+  a02=(a02*a03);
+  a04=(a04+a02);
+  a01=(a01*a04);
+  a05=(a05+a01);
+  a10=(a10*a05);
+  a12=casadi_fmax(a12,a07);
+  a12=pow(a12,a06);
+  a10=(a10*a12);
+  a08=(a08?a10:0);
+  a00=casadi_fmax(a00,a08);
+  if (res[0]!=0) res[0][1]=a00;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int normal_force(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f6(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int normal_force_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void normal_force_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void normal_force_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void normal_force_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int normal_force_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int normal_force_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real normal_force_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* normal_force_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "p";
+    case 2: return "v_imp";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* normal_force_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "f_n";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* normal_force_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s1;
+    case 2: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* normal_force_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int normal_force_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int normal_force_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* energy:(x[12],p[39])->(kinetic,gravity,contact,total) */
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27;
@@ -3809,7 +4014,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int energy_checkout(void) {
@@ -3888,7 +4093,7 @@ CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* end_effector:(x[12],udot[6],p[39])->(position[2],velocity[2],acceleration[2]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18;
   a00=arg[2]? arg[2][0] : 0;
@@ -4010,7 +4215,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int end_effector(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int end_effector_checkout(void) {
@@ -4089,7 +4294,7 @@ CASADI_SYMBOL_EXPORT int end_effector_work_bytes(casadi_int *sz_arg, casadi_int*
 }
 
 /* rk4_step:(x[12],tau_stages[2x3],h,p[39],v_imp[2])->(x_next[12]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+1, *rr, *w00=w+159, w01, w02, *w03=w+171, *w04=w+177, *w06=w+179, *w07=w+181, w08, *w09=w+193, *w10=w+205;
   const casadi_real **arg1=arg+5, *cr, *cs, *wr00, *wr05;
@@ -4147,7 +4352,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int rk4_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int rk4_step_checkout(void) {
@@ -4226,7 +4431,7 @@ CASADI_SYMBOL_EXPORT int rk4_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* radau_step:(x[12],tau_stages[2x3],h,p[39],v_imp[2])->(x_next[12],newton_increment) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real *qr_beta, *qr_r, *qr_v, *qr_w, **res1=res+2, *rr, *w00=w+564, *w01=w+576, w02, *w04=w+594, *w05=w+600, *w06=w+654;
   casadi_real *w07=w+978, *w09=w+980, *w10=w+982, *w11=w+1060, *w12=w+1096, w13, *w15=w+1420, *w16=w+1744, *w17=w+1780, *w18=w+1792, *w19=w+1794, *w20=w+1806;
@@ -4675,7 +4880,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int radau_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int radau_step_checkout(void) {

@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+d52c7f8f9500, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+357219581cfd, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: dd162636dab3937c23ad38439457e8da497304a42aa84cfad1c14eb277c2ad34
+ * input hash: ea6868caf848321cc9219722ff5701a7f3601fd2ee220aa622bd5bde06adf8c6
  * The deferred part of this model: compiled on the first call that needs it,
  * linked against the library of model.c. Functions, in CasADi's calling
  * convention (their slots are forward_dynamics' and its Jacobian's):

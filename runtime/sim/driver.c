@@ -20,9 +20,11 @@
  *   damping after the onset depends on the approach speed captured at it), and the approach
  *   speed d(delta)/dt is captured;
  * - separation (delta crosses 0 downwards while in contact): located, recorded;
- * - maximum penetration (d(delta)/dt crosses 0 downwards in contact) and peak normal force
- *   (dF_n/dt crosses 0 downwards, the derivative by a central difference along the dense
- *   output): located, recorded per phase.
+ * - maximum penetration (d(delta)/dt crosses 0 downwards in contact), located, and peak
+ *   normal force: the normal forces are sampled with the penetrations (the model's
+ *   normal_force, the contact law's f_n alone, where it has one; the step's ends come from the
+ *   quadrature rates and the step before), and a sampled maximum that can beat the phase's
+ *   peak so far is located by Brent's method on the dense output; recorded per phase.
  * The state is scaled: eccentricities in units of their joint's clearance, so one absolute
  * tolerance means the same for angles and micrometre play.
  *
@@ -97,6 +99,7 @@ typedef struct {
   jp_function f, jac, contact;
   jp_function wear;         /* eval NULL: no wear integrated */
   int wear_bins;            /* angular bins around each surface */
+  jp_function normal;       /* contact's f_n alone; eval NULL: taken from contact */
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -115,6 +118,7 @@ typedef struct {
   double *D;       /* (MAX_ORDER + 3) x N, row k = k-th difference */
   double *D_save;
   double *J, *LU; int *piv;
+  double *LT, *JqT;  /* L's columns (lu_lower_columns); Jq's columns (reduced Newton matrix) */
   /* Newton matrix I - c J of a second-order system, J = [0 D; Jq Jv] (scaled; D diagonal):
    * with du solved from the n x n K = I - c Jv - c^2 Jq D, dq = r_q + c D du (exact; an LU
    * of n instead of 2n rows, 8x fewer operations). reduced: J had that form at its last
@@ -126,10 +130,20 @@ typedef struct {
   double *y_pred, *psi, *d, *y_new, *f_buf, *dy, *scal, *err, *work_n;
   double *xs, *xdot;           /* unscaled state and its derivative */
   double *tau, *u_hold;
+  double tau_t;                /* the time tau holds the torques of, NAN: none */
+  double *tau_scene;           /* the scene's part of tau (without the held torques) */
+  int *torque_same;            /* per driven joint: an earlier one with the same torque, or -1 */
   double *v_imp, *flags;       /* per clearance joint */
   int *armed;                  /* penetration has been positive since the onset */
   int *rising;                 /* normal force rising at the end of the last step */
   double *tmp_y, *tmp_y2;
+  double *samples;             /* NS x nx: unscaled states at the scan's sample times */
+  /* Normal forces the scan need not compute again (see scan_events): fn_quad from the last
+   * quadrature rates, at time fn_quad_t; fn_carry, the last standing step's force samples at
+   * its end, time fn_carry_t. Each holds for the impact speeds of generation *_gen (v_gen
+   * counts the onsets, which change v_imp and with it the force). */
+  double *fn_quad, *fn_carry, fn_quad_t, fn_carry_t;
+  long fn_quad_gen, fn_carry_gen, v_gen;
   /* CasADi work */
   const double **arg; double **res; jp_int *iw; double *w;
   double *jac_sparse, *c_out; /* contact outputs: 8 x nc */
@@ -216,16 +230,23 @@ static double torque_table(const jp_config *c, int k, double t) {
   return vs[lo] + s * (vs[hi] - vs[lo]);
 }
 
-/* tau = scene torques at t + held torques; 0 if all finite, else 1 + index of the bad one. */
+/* tau = scene torques at t + held torques; 0 if all finite, else 1 + index of the bad one.
+ * Newton's iterations, the Jacobian and the quadratures ask for the same t in turn: tau is
+ * kept for the last t it was computed at (tau_t; NAN after a hold changes the torques). */
 static int torques_at(jp_sim *s, double t) {
   const jp_config *c = &s->c;
+  if (t == s->tau_t) return 0;
+  s->tau_t = NAN;
   for (int k = 0; k < c->ntau; ++k) {
-    int ok = 1;
-    double v = c->torque_kind[k] == 0 ? torque_program(c, k, t, &ok) : torque_table(c, k, t);
+    int ok = 1, same = s->torque_same[k];
+    double v = same >= 0 ? s->tau_scene[same]
+               : c->torque_kind[k] == 0 ? torque_program(c, k, t, &ok) : torque_table(c, k, t);
+    s->tau_scene[k] = v;
     v += s->u_hold[k];
     if (!ok || !isfinite(v)) return k + 1;
     s->tau[k] = v;
   }
+  s->tau_t = t;
   return 0;
 }
 
@@ -252,18 +273,30 @@ static int rhs(jp_sim *s, double t, const double *z, double *dz) {
   return all_finite(c->nx, dz) ? 0 : 1;
 }
 
-/* Contact outputs at unscaled state xs: c_out[k * nc + j], k in delta, delta_dot, v_t, f_n,
- * f_t, f_x, f_y, dissipation. */
-static void contact_at(jp_sim *s) {
+/* Contact outputs at unscaled state xs (contact_at: at s->xs): c_out[k * nc + j], k in delta,
+ * delta_dot, v_t, f_n, f_t, f_x, f_y, dissipation. */
+static void contact_of(jp_sim *s, const double *xs) {
   const jp_config *c = &s->c;
-  s->arg[0] = s->xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
+  s->arg[0] = xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
   for (int k = 0; k < 8; ++k) s->res[k] = s->c_out + k * c->nc;
   call(s, &c->contact);
 }
+static void contact_at(jp_sim *s) { contact_of(s, s->xs); }
 
-/* Quadrature integrands at scaled state z (torques already at t): drive power, then per joint
- * normal force, damping power, friction power; all in the order of the quadrature block. */
-static void quadrature_rates(jp_sim *s, const double *z, double *g) {
+/* The normal forces alone at unscaled state xs, into their place in c_out (the rest of c_out
+ * is left as it was when the model has a function for them, else is contact's too). */
+static void normal_of(jp_sim *s, const double *xs) {
+  const jp_config *c = &s->c;
+  if (!c->normal.eval) { contact_of(s, xs); return; }
+  s->arg[0] = xs; s->arg[1] = c->p; s->arg[2] = s->v_imp;
+  s->res[0] = s->c_out + 3 * c->nc;
+  call(s, &c->normal);
+}
+
+/* Quadrature integrands at time t and scaled state z (torques already at t): drive power, then
+ * per joint normal force, damping power, friction power; all in the order of the quadrature
+ * block. The normal forces are kept (fn_quad) for the event scan. */
+static void quadrature_rates(jp_sim *s, double t, const double *z, double *g) {
   const jp_config *c = &s->c;
   unscale(s, z);
   double power = 0.0;
@@ -280,6 +313,8 @@ static void quadrature_rates(jp_sim *s, const double *z, double *g) {
       g[2 + 3 * j] = diss - friction;
       g[3 + 3 * j] = friction;
     }
+    memcpy(s->fn_quad, s->c_out + 3 * nc, nc * sizeof(double));
+    s->fn_quad_t = t; s->fn_quad_gen = s->v_gen;
   }
 }
 
@@ -304,17 +339,49 @@ static int lu_factor(int n, double *a, int *piv) {
     if (big == 0.0) return 1;
     if (p != k) for (int j = 0; j < n; ++j) { double tmp = a[k * n + j]; a[k * n + j] = a[p * n + j]; a[p * n + j] = tmp; }
     double inv = 1.0 / a[k * n + k];
+    const double *pivot_row = a + k * n;
     for (int i = k + 1; i < n; ++i) {
-      double l = a[i * n + k] *= inv;
-      if (l != 0.0) for (int j = k + 1; j < n; ++j) a[i * n + j] -= l * a[k * n + j];
+      double *row = a + i * n;
+      double l = row[k] *= inv;
+      if (l != 0.0) for (int j = k + 1; j < n; ++j) row[j] -= l * pivot_row[j];
     }
   }
   return 0;
 }
 
-static void lu_solve(int n, const double *a, const int *piv, double *b) {
+/* The columns of L (the part of a below its diagonal) as rows of lt, for lu_solve. */
+static void lu_lower_columns(int n, const double *a, double *lt) {
+  for (int j = 0; j < n; ++j)
+    for (int i = j + 1; i < n; ++i) lt[j * n + i] = a[i * n + j];
+}
+
+/* b <- A^-1 b from lu_factor's a and piv, and lt from lu_lower_columns. The forward
+ * substitution runs column by column: each b[i] takes its terms in the order of the row-wise
+ * dot product (j ascending), so the result is the same to the bit, but the updates of
+ * different rows are independent (no chain of dependent additions) and contiguous in lt. */
+static void lu_solve(int n, const double *a, const double *lt, const int *piv, double *b) {
   for (int k = 0; k < n; ++k) { int p = piv[k]; if (p != k) { double tmp = b[k]; b[k] = b[p]; b[p] = tmp; } }
-  for (int i = 1; i < n; ++i) { double sum = b[i]; for (int j = 0; j < i; ++j) sum -= a[i * n + j] * b[j]; b[i] = sum; }
+  int j = 0;
+  for (; j + 4 <= n; j += 4) {
+    /* four columns per pass: b[j..j+3] final within the block first, then the rows below
+     * take the four terms in turn (fewer loads and stores of b) */
+    const double *c0 = lt + j * n, *c1 = c0 + n, *c2 = c1 + n, *c3 = c2 + n;
+    double b0 = b[j];
+    double b1 = b[j + 1] - c0[j + 1] * b0;
+    double b2 = b[j + 2] - c0[j + 2] * b0; b2 -= c1[j + 2] * b1;
+    double b3 = b[j + 3] - c0[j + 3] * b0; b3 -= c1[j + 3] * b1; b3 -= c2[j + 3] * b2;
+    b[j + 1] = b1; b[j + 2] = b2; b[j + 3] = b3;
+    for (int i = j + 4; i < n; ++i) {
+      double r = b[i];
+      r -= c0[i] * b0; r -= c1[i] * b1; r -= c2[i] * b2; r -= c3[i] * b3;
+      b[i] = r;
+    }
+  }
+  for (; j < n - 1; ++j) {
+    const double *col = lt + j * n;
+    double bj = b[j];
+    for (int i = j + 1; i < n; ++i) b[i] -= col[i] * bj;
+  }
   for (int i = n - 1; i >= 0; --i) { double sum = b[i]; for (int j = i + 1; j < n; ++j) sum -= a[i * n + j] * b[j]; b[i] = sum / a[i * n + i]; }
 }
 
@@ -357,27 +424,36 @@ static void change_d(jp_sim *s, double factor) {
     }
   /* D[:m] = RU^T D[:m] */
   double *tmp = s->work_n; /* needs m * N: work_n has (MAX_ORDER + 3) * N */
-  for (int i = 0; i < m; ++i)
-    for (int col = 0; col < N; ++col) {
-      double sum = 0.0;
-      for (int k = 0; k < m; ++k) sum += RU[k * m + i] * s->D[k * N + col];
-      tmp[i * N + col] = sum;
+  for (int i = 0; i < m; ++i) { /* row by row: each entry's terms in turn, k ascending */
+    double *out = tmp + i * N;
+    for (int col = 0; col < N; ++col) out[col] = 0.0;
+    for (int k = 0; k < m; ++k) {
+      const double *row = s->D + k * N;
+      double r = RU[k * m + i];
+      for (int col = 0; col < N; ++col) out[col] += r * row[col];
     }
+  }
   memcpy(s->D, tmp, (size_t)m * N * sizeof(double));
 }
 
-/* Dense output of the last step at time t into y (N values). */
-static void dense(const jp_sim *s, double t, double *y) {
+/* Dense output of the last step at time t into y: its first n values (n <= N; the state part
+ * alone is n = nx). The product p vanishes from the factor whose shift is t on (t at the end of
+ * the step, or at its start), and adding a zero term changes nothing: the loop stops there. */
+static void dense_first(const jp_sim *s, double t, double *y, int n) {
   int N = s->N, order = s->order;
-  memcpy(y, s->D, N * sizeof(double));
+  memcpy(y, s->D, n * sizeof(double));
   double p = 1.0;
   for (int k = 0; k < order; ++k) {
     double shift = s->t - s->h * k, denom = s->h * (1 + k);
     p *= (t - shift) / denom;
+    if (p == 0.0) break;
     const double *row = s->D + (k + 1) * N;
-    for (int i = 0; i < N; ++i) y[i] += p * row[i];
+    for (int i = 0; i < n; ++i) y[i] += p * row[i];
   }
 }
+
+/* Dense output of the last step at time t into y (N values). */
+static void dense(const jp_sim *s, double t, double *y) { dense_first(s, t, y, s->N); }
 
 static int jacobian(jp_sim *s, double t, const double *z) {
   const jp_config *c = &s->c;
@@ -406,6 +482,10 @@ static int jacobian(jp_sim *s, double t, const double *z) {
   for (int r = 0; r < n && s->reduced; ++r)
     for (int col = 0; col < nx; ++col)
       if (col != n + r && s->J[r * nx + col] != 0.0) { s->reduced = 0; break; }
+  /* Jq by columns, for newton_solve (once per Jacobian, not per factorisation) */
+  if (s->reduced)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) s->JqT[j * n + i] = s->J[(size_t)(n + i) * nx + j];
   return all_finite(nx * nx, s->J) ? 0 : 1;
 }
 
@@ -417,7 +497,9 @@ static int newton_factor(jp_sim *s, double c_coef) {
   if (!s->reduced) {
     for (int i = 0; i < nx * nx; ++i) s->LU[i] = -c_coef * s->J[i];
     for (int i = 0; i < nx; ++i) s->LU[i * nx + i] += 1.0;
-    return lu_factor(nx, s->LU, s->piv);
+    if (lu_factor(nx, s->LU, s->piv)) return 1;
+    lu_lower_columns(nx, s->LU, s->LT);
+    return 0;
   }
   s->n_lu_reduced++;
   for (int i = 0; i < n; ++i) {
@@ -426,21 +508,37 @@ static int newton_factor(jp_sim *s, double c_coef) {
       s->LU[i * n + j] = (i == j) - c_coef * jv[j]
                          - c_coef * c_coef * jq[j] * s->J[(size_t)j * nx + n + j];
   }
-  return lu_factor(n, s->LU, s->piv);
+  if (lu_factor(n, s->LU, s->piv)) return 1;
+  lu_lower_columns(n, s->LU, s->LT);
+  return 0;
 }
 
 /* b <- (I - c J)^-1 b with the factors of newton_factor. */
 static void newton_solve(jp_sim *s, double *b) {
   int nx = s->c.nx, n = nx / 2;
-  if (!s->reduced) { lu_solve(nx, s->LU, s->piv, b); return; }
+  if (!s->reduced) { lu_solve(nx, s->LU, s->LT, s->piv, b); return; }
   double c_coef = s->lu_c;
-  for (int i = 0; i < n; ++i) {
-    const double *jq = s->J + (size_t)(n + i) * nx;
-    double sum = b[n + i];
-    for (int j = 0; j < n; ++j) sum += c_coef * jq[j] * b[j];
-    s->rhs_u[i] = sum;
+  /* rhs_u = b_u + c Jq b_q, column by column: each row's terms in the order of its dot
+   * product (j ascending), the rows' updates independent */
+  double *u = s->rhs_u;
+  for (int i = 0; i < n; ++i) u[i] = b[n + i];
+  int j = 0;
+  for (; j + 4 <= n; j += 4) { /* four columns per pass: fewer loads and stores of u */
+    const double *c0 = s->JqT + (size_t)j * n, *c1 = c0 + n, *c2 = c1 + n, *c3 = c2 + n;
+    double b0 = b[j], b1 = b[j + 1], b2 = b[j + 2], b3 = b[j + 3];
+    for (int i = 0; i < n; ++i) {
+      double r = u[i];
+      r += c_coef * c0[i] * b0; r += c_coef * c1[i] * b1;
+      r += c_coef * c2[i] * b2; r += c_coef * c3[i] * b3;
+      u[i] = r;
+    }
   }
-  lu_solve(n, s->LU, s->piv, s->rhs_u);
+  for (; j < n; ++j) {
+    const double *col = s->JqT + (size_t)j * n;
+    double bj = b[j];
+    for (int i = 0; i < n; ++i) u[i] += c_coef * col[i] * bj;
+  }
+  lu_solve(n, s->LU, s->LT, s->piv, s->rhs_u);
   for (int i = 0; i < n; ++i) {
     b[n + i] = s->rhs_u[i];
     b[i] += c_coef * s->J[(size_t)i * nx + n + i] * s->rhs_u[i];
@@ -481,7 +579,11 @@ static int bdf_start(jp_sim *s, double t, const double *z, const double *quad, d
   if (t_bound > t) h = fmin(h, t_bound - t);
   /* quadrature rates at the start (torques are at t from the first rhs call) */
   rc = torques_at(s, t);
-  quadrature_rates(s, z, s->tmp_y2);
+  quadrature_rates(s, t, z, s->tmp_y2);
+  if (c->nc) {
+    memcpy(s->fn_carry, s->fn_quad, c->nc * sizeof(double));
+    s->fn_carry_t = t; s->fn_carry_gen = s->v_gen;
+  }
   for (int i = 0; i < nx; ++i) s->D[N + i] = f0[i] * h;
   for (int i = 0; i < s->nquad; ++i) s->D[N + nx + i] = s->tmp_y2[i] * h;
   s->t = t; s->h_abs = h; s->h = h; s->order = 1; s->n_equal_steps = 0;
@@ -537,17 +639,20 @@ static int bdf_step(jp_sim *s, double t_bound) {
       change_d(s, h / h_abs); h_abs = h; s->have_lu = 0;
     }
     int order = s->order;
-    for (int i = 0; i < N; ++i) {
-      double sum = 0.0;
-      for (int k = 0; k <= order; ++k) sum += s->D[k * N + i];
-      s->y_pred[i] = sum;
+    /* predictor and psi: sums over the differences, row by row (contiguous; each entry's
+     * terms in the same order, k ascending) */
+    for (int i = 0; i < N; ++i) s->y_pred[i] = 0.0 + s->D[i];
+    for (int k = 1; k <= order; ++k) {
+      const double *row = s->D + k * N;
+      for (int i = 0; i < N; ++i) s->y_pred[i] += row[i];
     }
     quad_scale(s, s->y_pred, s->scal);
-    for (int i = 0; i < N; ++i) {
-      double sum = 0.0;
-      for (int k = 1; k <= order; ++k) sum += s->D[k * N + i] * GAMMA[k];
-      s->psi[i] = sum / ALPHA[order];
+    for (int i = 0; i < N; ++i) s->psi[i] = 0.0;
+    for (int k = 1; k <= order; ++k) {
+      const double *row = s->D + k * N;
+      for (int i = 0; i < N; ++i) s->psi[i] += row[i] * GAMMA[k];
     }
+    for (int i = 0; i < N; ++i) s->psi[i] /= ALPHA[order];
     double c_coef = h / ALPHA[order];
     int converged = 0, iters = 0;
     for (;;) {
@@ -580,13 +685,15 @@ static int bdf_step(jp_sim *s, double t_bound) {
     }
     /* accepted: quadratures explicitly at the converged state */
     torques_at(s, t_new);
-    quadrature_rates(s, s->y_new, s->tmp_y2);
+    quadrature_rates(s, t_new, s->y_new, s->tmp_y2);
     for (int i = 0; i < nq; ++i) {
       double di = c_coef * s->tmp_y2[i] - s->psi[nx + i];
       s->d[nx + i] = di;
       s->y_new[nx + i] = s->y_pred[nx + i] + di;
     }
-    memcpy(s->D_save, s->D, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
+    /* rows 0..order+2 are all a step at this order reads or writes (those above are written
+     * before they are read, should the order rise): the rest need no copy for a redo */
+    memcpy(s->D_save, s->D, (size_t)(order + 3) * N * sizeof(double));
     s->t_old = s->t; s->h_abs_old = h_abs; s->order_old = order;
     s->n_equal_old = s->n_equal_steps;
     s->n_steps++;
@@ -651,7 +758,7 @@ enum { EV_DELTA = 0, EV_RATE = 1 };
 
 /* The event function `kind` of joint j at time t, on the dense output of the last step. */
 static double event_value(jp_sim *s, int kind, int j, double t) {
-  dense(s, t, s->tmp_y);
+  dense_first(s, t, s->tmp_y, s->c.nx);
   unscale(s, s->tmp_y);
   double delta, rate;
   gap(s, s->xs, j, &delta, &rate);
@@ -721,6 +828,7 @@ static void onset(jp_sim *s, int j, double t, const double *y /* scaled, N */) {
   double delta, rate;
   gap(s, s->xs, j, &delta, &rate);
   s->flags[j] = 1.0; s->armed[j] = delta > 0; s->v_imp[j] = rate; s->rising[j] = 1;
+  s->v_gen++;
   s->n_events++;
   if (new_phase(s, j, t, rate, s->xs)) return;
   phase_quadratures(s, s->phases + s->open_phase[j] * PH_FIELDS, y, j, -1.0);
@@ -753,29 +861,67 @@ static void note_peak(jp_sim *s, int j, int column, int time_column, double valu
  * cannot beat it (the force is resolved by the steps), so it is not refined. */
 #define PEAK_MARGIN 1e-2
 
-/* Normal force of every joint at time t on the dense output, into s->c_out. */
+/* Normal force of every joint at time t on the dense output, into s->c_out (f_n's part). */
 static void forces_at(jp_sim *s, double t) {
-  dense(s, t, s->tmp_y);
+  dense_first(s, t, s->tmp_y, s->c.nx);
   unscale(s, s->tmp_y);
-  contact_at(s);
+  normal_of(s, s->xs);
 }
 
-/* The largest normal force of joint j in [a, b] (golden-section search on the dense output,
- * to round-off in time): the force is unimodal there, the samples bracket its peak. */
+/* Normal force of joint j at time t on the dense output. */
+static double normal_force_at(jp_sim *s, int j, double t) {
+  forces_at(s, t);
+  return s->c_out[3 * s->c.nc + j];
+}
+
+/* The largest normal force of joint j in [a, b]: the force is unimodal there (the samples
+ * bracket its peak), and Brent's method (parabolic interpolation through the best three
+ * points, a golden-section step wherever the parabola would not shrink the bracket fast
+ * enough) locates it on the dense output. It stops when the peak's time is known to within
+ * 1e-9 of the bracket (or round-off): the value is flat in time there, fixed to round-off.
+ * Brent, "Algorithms for Minimization without Derivatives" (1973), ch. 5, on -F. */
 static double peak_force(jp_sim *s, int j, double a, double b, double *t_peak) {
-  const double g = 0.5 * (sqrt(5.0) - 1.0);
-  int nc = s->c.nc;
-  double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  forces_at(s, x1); double f1 = s->c_out[3 * nc + j];
-  forces_at(s, x2); double f2 = s->c_out[3 * nc + j];
-  /* the peak's value is flat in time: 1e-9 of the bracket fixes it to round-off */
-  double ttol = fmax(1e-9 * (b - a), 8 * 2.220446049250313e-16 * fmax(fabs(a), fabs(b)));
-  for (int it = 0; it < 120 && b - a > ttol; ++it) {
-    if (f1 >= f2) { b = x2; x2 = x1; f2 = f1; x1 = b - g * (b - a); forces_at(s, x1); f1 = s->c_out[3 * nc + j]; }
-    else { a = x1; x1 = x2; f1 = f2; x2 = a + g * (b - a); forces_at(s, x2); f2 = s->c_out[3 * nc + j]; }
+  const double golden = 0.5 * (3.0 - sqrt(5.0));
+  const double eps = 2.220446049250313e-16;
+  /* bracket at the end: b - a <= 4 tol, the golden search's stopping width */
+  double tol = 0.25 * fmax(1e-9 * (b - a), 8 * eps * fmax(fabs(a), fabs(b)));
+  double x = a + golden * (b - a), w = x, v = x;
+  double fx = -normal_force_at(s, j, x), fw = fx, fv = fx;
+  double d = 0.0, e = 0.0;
+  for (int it = 0; it < 120; ++it) {
+    double xm = 0.5 * (a + b), tol2 = 2.0 * tol;
+    if (fabs(x - xm) <= tol2 - 0.5 * (b - a)) break;
+    int parabolic = 0;
+    if (fabs(e) > tol) {
+      double r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), pn = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) pn = -pn;
+      q = fabs(q);
+      double e_before = e;
+      e = d;
+      /* the parabola's vertex, if it lies inside the bracket and the step is less than half
+       * the one before last (else the golden step) */
+      if (fabs(pn) < fabs(0.5 * q * e_before) && pn > q * (a - x) && pn < q * (b - x)) {
+        d = pn / q;
+        double u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = x < xm ? tol : -tol;
+        parabolic = 1;
+      }
+    }
+    if (!parabolic) { e = x >= xm ? a - x : b - x; d = golden * e; }
+    double u = fabs(d) >= tol ? x + d : x + (d > 0 ? tol : -tol);
+    double fu = -normal_force_at(s, j, u);
+    if (fu <= fx) {
+      if (u >= x) a = x; else b = x;
+      v = w; fv = fw; w = x; fw = fx; x = u; fx = fu;
+    } else {
+      if (u < x) a = u; else b = u;
+      if (fu <= fw || w == x) { v = w; fv = fw; w = u; fw = fu; }
+      else if (fu <= fv || v == x || v == w) { v = u; fv = fu; }
+    }
   }
-  if (f1 >= f2) { *t_peak = x1; return f1; }
-  *t_peak = x2; return f2;
+  *t_peak = x;
+  return -fx;
 }
 
 /* A step redone to land on an onset ends within the integration error of the located root
@@ -794,11 +940,14 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
   if (!nc) return 0;
   double ts[NS], dl[NS][MAX_JOINTS], rt[NS][MAX_JOINTS];
   double t0 = s->t - s->h;
+  int nx = c->nx;
+  /* the state part at each sample, kept (unscaled) for the force samples of pass 2 */
   for (int k = 0; k < NS; ++k) {
+    double *xk = s->samples + (size_t)k * nx;
     ts[k] = k == NS - 1 ? s->t : t0 + s->h * k / (NS - 1);
-    dense(s, ts[k], s->tmp_y);
-    unscale(s, s->tmp_y);
-    for (int j = 0; j < nc; ++j) gap(s, s->xs, j, &dl[k][j], &rt[k][j]);
+    dense_first(s, ts[k], s->tmp_y, nx);
+    for (int i = 0; i < nx; ++i) xk[i] = s->tmp_y[i] * c->scale[i];
+    for (int j = 0; j < nc; ++j) gap(s, xk, j, &dl[k][j], &rt[k][j]);
   }
   double landing = 1e-6 * s->h + 4 * 2.220446049250313e-16 * fabs(s->t);
   /* Pass 1: the earliest onset inside the step that is not at its end. */
@@ -824,15 +973,31 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
     *t_cut = earliest; *cut_joint = who;
     return earliest - t0 <= landing ? 3 : 1;
   }
-  /* Pass 2: record everything. Forces are sampled only while a joint is in contact. */
+  /* Pass 2: record everything. Forces are sampled only while a joint is in contact. The
+   * step's ends need no new evaluation: its end is the state the quadrature rates were taken
+   * at (fn_quad), its start the end of the step before (fn_carry), each equal to round-off
+   * to the dense output there and valid while no onset has changed an impact speed since. */
   int any = 0;
   for (int j = 0; j < nc; ++j) any |= s->flags[j] > 0.5;
   double fn[NS][MAX_JOINTS];
+  long gen = s->v_gen;
   if (any)
     for (int k = 0; k < NS; ++k) {
-      forces_at(s, ts[k]);
-      for (int j = 0; j < nc; ++j) fn[k][j] = s->c_out[3 * nc + j];
+      const double *known = NULL;
+      if (k == 0 && s->fn_carry_t == s->t_old && s->fn_carry_gen == gen) known = s->fn_carry;
+      if (k == NS - 1 && s->fn_quad_t == s->t && s->fn_quad_gen == gen) known = s->fn_quad;
+      if (!known) {
+        normal_of(s, s->samples + (size_t)k * nx);
+        known = s->c_out + 3 * nc;
+      }
+      for (int j = 0; j < nc; ++j) fn[k][j] = known[j];
     }
+  if (any) {
+    for (int j = 0; j < nc; ++j) s->fn_carry[j] = fn[NS - 1][j];
+    s->fn_carry_t = s->t; s->fn_carry_gen = gen;
+  } else {
+    s->fn_carry_t = NAN;
+  }
   for (int j = 0; j < nc; ++j) {
     int was_in_contact = s->flags[j] > 0.5;
     int k_end = NS - 1; /* last sample of the contact inside this step */
@@ -981,6 +1146,18 @@ static void wear_step(jp_sim *s) {
 
 /* ---- public interface ------------------------------------------------------------------------ */
 
+/* Whether driven joints a and b have the same torque definition (the same program, or the
+ * same table): a scene that drives every joint alike evaluates it once per time. */
+static int same_torque(const jp_config *c, int a, int b) {
+  if (c->torque_kind[a] != c->torque_kind[b] || c->torque_len[a] != c->torque_len[b]) return 0;
+  int n = c->torque_len[a], sa = c->torque_start[a], sb = c->torque_start[b];
+  if (c->torque_kind[a] == 0)
+    return memcmp(c->ops + sa, c->ops + sb, n * sizeof(int)) == 0
+           && memcmp(c->consts + sa, c->consts + sb, n * sizeof(double)) == 0;
+  return memcmp(c->table_t + sa, c->table_t + sb, n * sizeof(double)) == 0
+         && memcmp(c->table_v + sa, c->table_v + sb, n * sizeof(double)) == 0;
+}
+
 void jp_free(jp_sim *s);
 
 jp_sim *jp_create(const jp_config *config) {
@@ -989,6 +1166,7 @@ jp_sim *jp_create(const jp_config *config) {
   jp_sim *s = calloc(1, sizeof(jp_sim));
   if (!s) return NULL;
   s->c = *config;
+  s->tau_t = NAN;
   const jp_config *c = &s->c;
   int nx = c->nx, nc = c->nc;
   s->nquad = 1 + 3 * nc;
@@ -1000,6 +1178,8 @@ jp_sim *jp_create(const jp_config *config) {
   s->work_n = calloc(rows * N, sizeof(double));
   s->J = calloc((size_t)nx * nx, sizeof(double));
   s->LU = calloc((size_t)nx * nx, sizeof(double));
+  s->LT = calloc((size_t)nx * nx, sizeof(double));
+  s->JqT = calloc((size_t)nx * nx / 4 + 1, sizeof(double));
   s->piv = calloc(nx, sizeof(int));
   s->rhs_u = calloc(nx / 2 + 1, sizeof(double));
   double **vecs[] = {&s->y_pred, &s->psi, &s->d, &s->y_new, &s->f_buf, &s->dy, &s->scal,
@@ -1009,15 +1189,26 @@ jp_sim *jp_create(const jp_config *config) {
   s->xdot = calloc(nx, sizeof(double));
   s->tau = calloc(c->ntau + 1, sizeof(double));
   s->u_hold = calloc(c->ntau + 1, sizeof(double));
+  s->tau_scene = calloc(c->ntau + 1, sizeof(double));
+  s->torque_same = calloc(c->ntau + 1, sizeof(int));
+  for (int k = 0; k < c->ntau && s->torque_same; ++k) {
+    s->torque_same[k] = -1;
+    for (int m = 0; m < k && s->torque_same[k] < 0; ++m)
+      if (s->torque_same[m] < 0 && same_torque(c, m, k)) s->torque_same[k] = m;
+  }
   s->v_imp = calloc(nc + 1, sizeof(double));
   s->flags = calloc(nc + 1, sizeof(double));
   s->armed = calloc(nc + 1, sizeof(int));
   s->rising = calloc(nc + 1, sizeof(int));
   s->open_phase = calloc(nc + 1, sizeof(long));
   s->c_out = calloc(8 * (nc + 1), sizeof(double));
+  s->samples = calloc((size_t)NS * nx + 1, sizeof(double));
+  s->fn_quad = calloc(nc + 1, sizeof(double));
+  s->fn_carry = calloc(nc + 1, sizeof(double));
+  s->fn_quad_t = s->fn_carry_t = NAN;
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
-  const jp_function *fns[4] = {&c->f, &c->jac, &c->contact, &c->wear};
-  for (int k = 0; k < 4; ++k) {
+  const jp_function *fns[5] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal};
+  for (int k = 0; k < 5; ++k) {
     if (!fns[k]->eval) continue;
     if (fns[k]->sz_arg > sz_arg) sz_arg = fns[k]->sz_arg;
     if (fns[k]->sz_res > sz_res) sz_res = fns[k]->sz_res;
@@ -1030,10 +1221,12 @@ jp_sim *jp_create(const jp_config *config) {
   s->w = calloc(sz_w + 1, sizeof(double));
   jp_int nnz = c->jac.sparsity_out0[2 + c->jac.sparsity_out0[1]];
   s->jac_sparse = calloc(nnz + 1, sizeof(double));
-  if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->piv || !s->rhs_u ||
-      !s->tmp_y2 ||
-      !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->v_imp || !s->flags || !s->armed || !s->rising ||
-      !s->open_phase || !s->c_out || !s->arg || !s->res || !s->iw || !s->w || !s->jac_sparse) {
+  if (!s->D || !s->D_save || !s->work_n || !s->J || !s->LU || !s->LT || !s->JqT || !s->piv ||
+      !s->rhs_u || !s->tmp_y2 ||
+      !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->tau_scene || !s->torque_same ||
+      !s->v_imp || !s->flags || !s->armed || !s->rising ||
+      !s->open_phase || !s->c_out || !s->samples || !s->fn_quad || !s->fn_carry || !s->arg ||
+      !s->res || !s->iw || !s->w || !s->jac_sparse) {
     jp_free(s);
     return NULL;
   }
@@ -1052,10 +1245,12 @@ jp_sim *jp_create(const jp_config *config) {
 
 void jp_free(jp_sim *s) {
   if (!s) return;
-  void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->piv, s->rhs_u, s->y_pred,
+  void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->LT, s->JqT, s->piv, s->rhs_u,
+                  s->y_pred,
                   s->psi, s->d, s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
-                  s->xdot, s->tau, s->u_hold, s->v_imp, s->flags, s->armed, s->rising, s->open_phase,
-                  s->c_out, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
+                  s->xdot, s->tau, s->u_hold, s->tau_scene, s->torque_same, s->v_imp, s->flags,
+                  s->armed, s->rising, s->open_phase,
+                  s->c_out, s->samples, s->fn_quad, s->fn_carry, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
                   s->wear_out, s->wear_volume, s->wear_depth};
   for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
   free(s);
@@ -1067,7 +1262,8 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   const jp_config *c = &s->c;
   for (int i = 0; i < c->nx; ++i) s->D[i] = x0[i] / c->scale[i];
   for (int i = 0; i < s->nquad; ++i) s->D[c->nx + i] = 0.0;
-  s->t = t0; s->started = 0; s->status = JP_OK; s->n_phases = 0; s->landing_target = INFINITY;
+  s->t = t0; s->started = 0; s->status = JP_OK; s->tau_t = NAN;
+  s->fn_quad_t = s->fn_carry_t = NAN; s->n_phases = 0; s->landing_target = INFINITY;
   s->order_cap = c->max_order; s->cap_steps = 0; s->window_steps = 0; s->recent_failures = 0;
   for (int j = 0; j < c->nc; ++j) {
     s->flags[j] = 0.0; s->v_imp[j] = 0.0; s->armed[j] = 0; s->open_phase[j] = -1;
@@ -1096,7 +1292,7 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
 void jp_hold(jp_sim *s, const double *u) {
   int changed = 0;
   for (int k = 0; k < s->c.ntau; ++k) if (s->u_hold[k] != u[k]) { s->u_hold[k] = u[k]; changed = 1; }
-  if (changed) s->started = 0;
+  if (changed) s->started = 0, s->tau_t = NAN;
 }
 
 /* Integrate to t_end, writing outputs at the n_out times t_out (increasing, in (t, t_end]):
@@ -1132,7 +1328,7 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
     if (s->status) break;
     if (ev == 1 || ev == 3) {
       /* redo the step: to land on the onset, or from its start with the captured speed */
-      memcpy(s->D, s->D_save, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
+      memcpy(s->D, s->D_save, (size_t)(s->order_old + 3) * N * sizeof(double));
       s->t = s->t_old; s->h_abs = s->h_abs_old; s->order = s->order_old;
       s->n_equal_steps = s->n_equal_old; s->have_lu = 0; s->n_steps--;
       if (ev == 1) {
