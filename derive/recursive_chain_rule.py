@@ -203,7 +203,8 @@ def _window_function(model: SymbolicModel, kind: _WindowKind, law_pattern: ca.Sp
         # is the law's (the arguments equal those it was evaluated at), the derivative too.
         held = forces[w - 1] + ca.mtimes(law_jacobians[w - 1],
                                          arguments - law_values[w - 1])
-        contact[w] = tuple(ca.vertsplit(held))
+        fx, fy, ft = ca.vertsplit(held)
+        contact[w] = (fx, fy, ft)
     # The window as a structure of its own (its last link carries the payload).
     structure = SimpleNamespace(joints=("clearance",) * size, links=size,
                                 gravity=model.structure.gravity)
@@ -279,7 +280,7 @@ def _far_function(link_jacobian: ca.Sparsity, block: ca.Sparsity) -> ca.Function
 
 
 def state_jacobian(model: SymbolicModel, slots: dict[tuple[int, str], int],
-                   mx_inputs: tuple[Any, Any, Any, Any]) -> Any:
+                   mx_inputs: tuple[Any, ...]) -> Any:
     """d xdot / dx = [0 I; da/dx] of a chain of clearance joints (see :func:`applies`), as an
     MX expression of the MX inputs (x, tau, p, v_imp).
 

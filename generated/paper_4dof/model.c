@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+357219581cfd, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+be2a3db5d07f, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: ea6868caf848321cc9219722ff5701a7f3601fd2ee220aa622bd5bde06adf8c6
+ * input hash: c7b3dca456e47cd5c34c983c7429f4c498c81c2ae599da6d6e0aa92e1e25c9f9
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]
