@@ -117,6 +117,18 @@ def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
                              "least-squares fit, and its residual is weighed against it")
 
 
+def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
+                          ) -> None:
+    parser.add_argument(flag, dest="residual_by", choices=("free-run", "closed-loop"),
+                        default="free-run",
+                        help="how the network's residual weight is chosen on validation: "
+                             "free-run (its free-run loss over windows) or closed-loop (each "
+                             "candidate runs as the internal-model controller on the "
+                             "validation runs' motions; the lowest RMS acceleration error "
+                             "after settling wins; needs --validation 2 or more) (default "
+                             "%(default)s)")
+
+
 def lpv_base_setting(args: argparse.Namespace) -> bool:
     """--lpv-base, refused without --scheduling."""
     from jointplay.common.errors import DescriptionError

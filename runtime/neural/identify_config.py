@@ -42,6 +42,10 @@ class IdentifyConfig:
     # the scene's robot.
     clearances: tuple[float, ...] = ()
     payloads: tuple[float, ...] = ()
+    # How the residual weight is chosen on validation: "free-run" (the free-run loss over
+    # windows) or "closed-loop" (each candidate runs as the internal-model controller on the
+    # validation runs' motions: jointplay.neural.closed_loop_choice).
+    residual_by: str = "free-run"
     one_step_iterations: int = 60
     multi_step_iterations: int = 30
     window: int = 200  # samples per free-run training window
@@ -57,6 +61,13 @@ class IdentifyConfig:
         if self.lpv_base and not (self.scheduling and self.linear_path):
             raise DescriptionError("lpv_base", "needs the scheduling signals and the linear "
                                    "direct path (--scheduling, without --no-linear-path)")
+        if self.residual_by not in ("free-run", "closed-loop"):
+            raise DescriptionError("residual_by", "must be free-run or closed-loop, got "
+                                   f"{self.residual_by!r}")
+        if self.residual_by == "closed-loop" and self.n_validation < 2:
+            raise DescriptionError("residual_by", "closed-loop needs a validation run whose "
+                                   "motion is not the scene's own (the first validation run "
+                                   "drives the scene's torques): give --validation 2 or more")
         for name, values in (("clearances", self.clearances), ("payloads", self.payloads)):
             if not all(isinstance(v, (int, float)) and math.isfinite(v) and v >= 0
                        and (v > 0 or name == "payloads") for v in values):
