@@ -11,11 +11,13 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
+    add_base_fraction_argument,
     add_identify_data_arguments,
     add_iterations_argument,
     add_operating_range_arguments,
     add_residual_argument,
     add_scheduling_argument,
+    base_fraction_setting,
     check_duration,
     float_list,
     int_list,
@@ -67,6 +69,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="samples per free-run training window (default %(default)s)")
     add_scheduling_argument(p)
     add_residual_argument(p)
+    add_base_fraction_argument(p, "--base-fraction")
     add_operating_range_arguments(p)
     p.add_argument("--no-linear-path", action="store_true",
                    help="no linear direct path beside the hidden layers (the bare network)")
@@ -157,7 +160,8 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
         scheduling=args.scheduling, lpv_base=lpv_base_setting(args),
-        residual_by=args.residual_by, **operating_range(args))
+        residual_by=args.residual_by,
+        base_fraction=base_fraction_setting(args, "--base-fraction"), **operating_range(args))
 
 
 def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:

@@ -129,6 +129,23 @@ def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residu
                              "%(default)s)")
 
 
+def add_base_fraction_argument(parser: argparse.ArgumentParser, flag: str) -> None:
+    parser.add_argument(flag, dest="base_fraction", type=float, default=_D.base_fraction,
+                        help="peak of the excitation runs' base torques (multisines, steps, "
+                             "chirps), as a fraction of the torque limit: the size of the "
+                             "motions the model is identified on (default %(default)s)")
+
+
+def base_fraction_setting(args: argparse.Namespace, flag: str) -> float:
+    """The base torques' peak fraction, refused outside (0, 1]."""
+    from jointplay.common.errors import DescriptionError
+
+    value = float(args.base_fraction)
+    if not 0 < value <= 1:
+        raise DescriptionError(flag, f"must be above 0 and at most 1, got {value:g}")
+    return value
+
+
 def lpv_base_setting(args: argparse.Namespace) -> bool:
     """--lpv-base, refused without --scheduling."""
     from jointplay.common.errors import DescriptionError

@@ -17,12 +17,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
+    add_base_fraction_argument,
     add_identify_data_arguments,
     add_iterations_argument,
     add_operating_range_arguments,
     add_residual_argument,
     add_scheduling_argument,
     add_settings_arguments,
+    base_fraction_setting,
     float_list,
     int_list,
     iteration_counts,
@@ -90,6 +92,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_identify_data_arguments(p, study=True)
     add_scheduling_argument(p)
     add_residual_argument(p, "--identify-residual-by")
+    add_base_fraction_argument(p, "--identify-base-fraction")
     add_operating_range_arguments(p, prefix="identify-")
     p.add_argument("--identify-lags", default="2,2",
                    help="identify: output lags,input lags (default %(default)s)")
@@ -302,6 +305,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
                      "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
                      "window": window_setting(args), "residual_by": args.residual_by,
+                     "base_fraction": base_fraction_setting(args, "--identify-base-fraction"),
                      **lag_settings(args),
                      **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal)
