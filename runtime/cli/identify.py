@@ -26,6 +26,7 @@ from jointplay.cli.neural_args import (
     lpv_base_setting,
     neural_scene_argument,
     operating_range,
+    residual_setting,
     trajectory_counts,
 )
 from jointplay.common import limits as size_limits
@@ -160,7 +161,7 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
         scheduling=args.scheduling, lpv_base=lpv_base_setting(args),
-        residual_by=args.residual_by,
+        residual_by=residual_setting(args, "--residual-by", counts[1]),
         base_fraction=base_fraction_setting(args, "--base-fraction"), **operating_range(args))
 
 

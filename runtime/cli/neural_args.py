@@ -129,6 +129,18 @@ def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residu
                              "%(default)s)")
 
 
+def residual_setting(args: argparse.Namespace, flag: str, n_validation: int) -> str:
+    """--residual-by, refused as closed-loop without a validation run past the first (which
+    drives the scene's own torques, the motion the controller is tested on)."""
+    from jointplay.common.errors import DescriptionError
+
+    if args.residual_by == "closed-loop" and n_validation < 2:
+        raise DescriptionError(flag, "closed-loop needs a validation run whose motion is not "
+                                     "the scene's own (the first drives the scene's torques): "
+                                     "give --validation 2 or more")
+    return str(args.residual_by)
+
+
 def add_base_fraction_argument(parser: argparse.ArgumentParser, flag: str) -> None:
     parser.add_argument(flag, dest="base_fraction", type=float, default=_D.base_fraction,
                         help="peak of the excitation runs' base torques (multisines, steps, "

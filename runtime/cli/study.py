@@ -32,6 +32,7 @@ from jointplay.cli.neural_args import (
     lpv_base_setting,
     neural_scene_argument,
     operating_range,
+    residual_setting,
     settings_from_args,
     trajectory_counts,
 )
@@ -304,7 +305,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                      "duration": args.duration, "one_step_iterations": iters[0],
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
                      "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
-                     "window": window_setting(args), "residual_by": args.residual_by,
+                     "window": window_setting(args),
+                     "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),
                      "base_fraction": base_fraction_setting(args, "--identify-base-fraction"),
                      **lag_settings(args),
                      **operating_range(args, prefix="identify-")}
