@@ -114,3 +114,21 @@ def test_only_validation_motions_other_than_the_scene_are_run() -> None:
         IdentifyConfig(n_validation=1, residual_by="closed-loop")
     with pytest.raises(Exception, match="free-run or closed-loop"):
         IdentifyConfig(residual_by="loss")
+
+
+def test_the_report_says_what_chose_the_weight_and_what_was_saved(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    from jointplay.neural.evaluation import _closed_loop_lines
+
+    base, network = _linear(1), _linear(2)
+    res = {"free_run_loss_persistence": 1.0}
+    _stand_in(monkeypatch, base, lambda a: 1.0 if a is None else 2.0)
+    _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
+    text = _closed_loop_lines(choice.summary(), "LPV-ARX", "0: 0.5", res)
+    assert "chosen in closed loop" in text and "first" in text
+    assert "the ARX twin without the scheduling signals: the network does no work" in text
+    _stand_in(monkeypatch, base, lambda a: math.inf if a is None or a > 0.9 else 1.0 - a / 2)
+    _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
+    text = _closed_loop_lines(choice.summary(), "LPV-ARX", "0: 0.5", res)
+    assert "Saved: LPV-ARX + 0.75 x the residual" in text
+    assert "alpha=1: diverged" in text and "ARX twin: diverged" in text
