@@ -119,7 +119,9 @@ def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
 
 def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
                           ) -> None:
-    parser.add_argument(flag, dest="residual_by", choices=("free-run", "closed-loop"),
+    from jointplay.neural.identify_config import RESIDUAL_CRITERIA
+
+    parser.add_argument(flag, dest="residual_by", choices=RESIDUAL_CRITERIA,
                         default="free-run",
                         help="how the network's residual weight is chosen on validation: "
                              "free-run (its free-run loss over windows) or closed-loop (each "

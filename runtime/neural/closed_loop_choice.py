@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -32,9 +32,6 @@ import numpy as np
 from jointplay.neural.narx import Narx
 
 TWIN = "ARX twin"  # the candidate without scheduling signals
-# The criterion's names (IdentifyConfig.residual_by).
-FREE_RUN, CLOSED_LOOP = "free-run", "closed-loop"
-RESIDUAL_CRITERIA = (FREE_RUN, CLOSED_LOOP)
 
 
 @dataclass(frozen=True)
@@ -147,10 +144,4 @@ def _mean_log(values: Sequence[float]) -> float:
     return float(np.mean(np.log(values)))
 
 
-def with_alpha(choice: ClosedLoopChoice, selection: Any) -> Any:
-    """The free-run selection's record with the closed loop's weight in it."""
-    return replace(selection, alpha=choice.alpha)
-
-
-__all__ = ["CLOSED_LOOP", "FREE_RUN", "RESIDUAL_CRITERIA", "TWIN", "ClosedLoopChoice",
-           "choose_in_closed_loop", "label", "validation_motions", "with_alpha"]
+__all__ = ["TWIN", "ClosedLoopChoice", "choose_in_closed_loop", "label", "validation_motions"]

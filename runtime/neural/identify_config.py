@@ -8,6 +8,8 @@ from dataclasses import dataclass
 from jointplay.common.errors import DescriptionError
 
 MAX_SEED = 2**32 - 1
+# How the network's residual weight can be chosen on validation (IdentifyConfig.residual_by).
+RESIDUAL_CRITERIA = ("free-run", "closed-loop")
 
 
 @dataclass(frozen=True)
@@ -61,7 +63,7 @@ class IdentifyConfig:
         if self.lpv_base and not (self.scheduling and self.linear_path):
             raise DescriptionError("lpv_base", "needs the scheduling signals and the linear "
                                    "direct path (--scheduling, without --no-linear-path)")
-        if self.residual_by not in ("free-run", "closed-loop"):
+        if self.residual_by not in RESIDUAL_CRITERIA:
             raise DescriptionError("residual_by", "must be free-run or closed-loop, got "
                                    f"{self.residual_by!r}")
         if self.residual_by == "closed-loop" and self.n_validation < 2:
@@ -77,4 +79,4 @@ class IdentifyConfig:
 
 
 
-__all__ = ["IdentifyConfig"]
+__all__ = ["RESIDUAL_CRITERIA", "IdentifyConfig"]
