@@ -330,6 +330,14 @@ def _parser() -> argparse.ArgumentParser:
     (["control-study", "--out", "/tmp/x", "--lpv-base"], "--lpv-base"),
     (["control-study", "--out", "/tmp/x", "--identify-hidden", "0"], "--identify-hidden"),
     (["control-study", "--out", "/tmp/x", "--identify-window", "1"], "--identify-window"),
+    (["identify", "--out", "/tmp/x", "--residual-by", "closed-loop", "--validation", "1"],
+     "--residual-by"),
+    (["control-study", "--out", "/tmp/x", "--identify-residual-by", "closed-loop",
+      "--validation", "1"], "--identify-residual-by"),
+    (["identify", "--out", "/tmp/x", "--base-fraction", "0"], "--base-fraction"),
+    (["control-study", "--out", "/tmp/x", "--identify-base-fraction", "1.5"],
+     "--identify-base-fraction"),
+    (["control-study", "--out", "/tmp/x", "--identify-lags", "2"], "--identify-lags"),
 ])
 def test_commands_reject_bad_flags(argv: list[str], flag: str) -> None:
     """DescriptionError is what the command line turns into exit status 2."""

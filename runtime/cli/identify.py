@@ -11,10 +11,13 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
+    add_base_fraction_argument,
     add_identify_data_arguments,
     add_iterations_argument,
     add_operating_range_arguments,
+    add_residual_argument,
     add_scheduling_argument,
+    base_fraction_setting,
     check_duration,
     float_list,
     int_list,
@@ -23,6 +26,7 @@ from jointplay.cli.neural_args import (
     lpv_base_setting,
     neural_scene_argument,
     operating_range,
+    residual_setting,
     trajectory_counts,
 )
 from jointplay.common import limits as size_limits
@@ -65,6 +69,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--window", type=int, default=IdentifyConfig.window,
                    help="samples per free-run training window (default %(default)s)")
     add_scheduling_argument(p)
+    add_residual_argument(p)
+    add_base_fraction_argument(p, "--base-fraction")
     add_operating_range_arguments(p)
     p.add_argument("--no-linear-path", action="store_true",
                    help="no linear direct path beside the hidden layers (the bare network)")
@@ -154,7 +160,9 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         torque_limit=float_list(args.torque_limit, "--torque-limit", n),
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
-        scheduling=args.scheduling, lpv_base=lpv_base_setting(args), **operating_range(args))
+        scheduling=args.scheduling, lpv_base=lpv_base_setting(args),
+        residual_by=residual_setting(args, "--residual-by", counts[1]),
+        base_fraction=base_fraction_setting(args, "--base-fraction"), **operating_range(args))
 
 
 def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:

@@ -117,6 +117,49 @@ def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
                              "least-squares fit, and its residual is weighed against it")
 
 
+def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
+                          ) -> None:
+    from jointplay.neural.identify_config import RESIDUAL_CRITERIA
+
+    parser.add_argument(flag, dest="residual_by", choices=RESIDUAL_CRITERIA,
+                        default="free-run",
+                        help="how the network's residual weight is chosen on validation: "
+                             "free-run (its free-run loss over windows) or closed-loop (each "
+                             "candidate runs as the internal-model controller on the "
+                             "validation runs' motions; the lowest RMS acceleration error "
+                             "after settling wins; needs --validation 2 or more) (default "
+                             "%(default)s)")
+
+
+def residual_setting(args: argparse.Namespace, flag: str, n_validation: int) -> str:
+    """--residual-by, refused as closed-loop without a validation run past the first (which
+    drives the scene's own torques, the motion the controller is tested on)."""
+    from jointplay.common.errors import DescriptionError
+
+    if args.residual_by == "closed-loop" and n_validation < 2:
+        raise DescriptionError(flag, "closed-loop needs a validation run whose motion is not "
+                                     "the scene's own (the first drives the scene's torques): "
+                                     "give --validation 2 or more")
+    return str(args.residual_by)
+
+
+def add_base_fraction_argument(parser: argparse.ArgumentParser, flag: str) -> None:
+    parser.add_argument(flag, dest="base_fraction", type=float, default=_D.base_fraction,
+                        help="peak of the excitation runs' base torques (multisines, steps, "
+                             "chirps), as a fraction of the torque limit: the size of the "
+                             "motions the model is identified on (default %(default)s)")
+
+
+def base_fraction_setting(args: argparse.Namespace, flag: str) -> float:
+    """The base torques' peak fraction, refused outside (0, 1]."""
+    from jointplay.common.errors import DescriptionError
+
+    value = float(args.base_fraction)
+    if not 0 < value <= 1:
+        raise DescriptionError(flag, f"must be above 0 and at most 1, got {value:g}")
+    return value
+
+
 def lpv_base_setting(args: argparse.Namespace) -> bool:
     """--lpv-base, refused without --scheduling."""
     from jointplay.common.errors import DescriptionError

@@ -17,11 +17,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
+    add_base_fraction_argument,
     add_identify_data_arguments,
     add_iterations_argument,
     add_operating_range_arguments,
+    add_residual_argument,
     add_scheduling_argument,
     add_settings_arguments,
+    base_fraction_setting,
     float_list,
     int_list,
     iteration_counts,
@@ -29,6 +32,7 @@ from jointplay.cli.neural_args import (
     lpv_base_setting,
     neural_scene_argument,
     operating_range,
+    residual_setting,
     settings_from_args,
     trajectory_counts,
 )
@@ -88,7 +92,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="processes for the closed-loop runs (default %(default)s)")
     add_identify_data_arguments(p, study=True)
     add_scheduling_argument(p)
+    add_residual_argument(p, "--identify-residual-by")
+    add_base_fraction_argument(p, "--identify-base-fraction")
     add_operating_range_arguments(p, prefix="identify-")
+    p.add_argument("--identify-lags", default="2,2",
+                   help="identify: output lags,input lags (default %(default)s)")
     p.add_argument("--identify-hidden", default="13,14",
                    help="identify: hidden layer widths (default %(default)s)")
     p.add_argument("--identify-window", type=int, default=IdentifyConfig.window,
@@ -120,6 +128,14 @@ def hidden_widths(args: argparse.Namespace) -> tuple[int, ...]:
         raise DescriptionError("--identify-hidden", f"gives {len(hidden)} layers; at most "
                                f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
     return hidden
+
+
+def lag_settings(args: argparse.Namespace) -> dict[str, int]:
+    """--identify-lags, checked as identify checks --lags."""
+    from jointplay.common import limits as size_limits
+
+    lags = int_list(args.identify_lags, "--identify-lags", 2, high=size_limits.MAX_LAGS)
+    return {"output_lags": lags[0], "input_lags": lags[1]}
 
 
 def window_setting(args: argparse.Namespace) -> int:
@@ -290,6 +306,9 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
                      "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
                      "window": window_setting(args),
+                     "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),
+                     "base_fraction": base_fraction_setting(args, "--identify-base-fraction"),
+                     **lag_settings(args),
                      **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal)
     scenes = {c.name: case_scene(scene, c) for c in cases}

@@ -97,7 +97,14 @@ from jointplay.neural.trajectories import (
     collect,
     run_task,
 )
-from jointplay.neural.twin import Selection, Verdict, describe, judge, select_residual
+from jointplay.neural.twin import (
+    ALPHAS,
+    Selection,
+    Verdict,
+    describe,
+    judge,
+    select_residual,
+)
 
 DATASETS_FILE = "datasets.h5"
 METRICS_FILE = "metrics.json"
@@ -197,7 +204,7 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     seg_val = _segments(split["validation"], skip, names)
     model, selection = select_residual(trained, start, seg_val, config.window)
     dropped = None
-    if config.scheduling:
+    if config.scheduling and config.residual_by == "free-run":
         # The ARX twin (no scheduling signals) is a candidate too: where it is better on
         # validation than every blend, the scheduling signals did not help, and it is saved.
         from jointplay.neural.twin import window_loss, windows
@@ -209,13 +216,30 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
                        "best_blend_loss": selection.losses[selection.alpha]}
             model = replace(arx, context=trained.context)
             selection = replace(selection, alpha=0.0)
-    verdict = judge(model, start, selection, seg_val, config.window)
+    closed = None
+    if config.residual_by == "closed-loop":
+        from jointplay.neural.closed_loop_choice import (
+            choose_in_closed_loop,
+            validation_motions,
+        )
+
+        model, closed = choose_in_closed_loop(
+            trained, start, arx if config.scheduling else None,
+            validation_motions(scene, config, inner, limits), ALPHAS)
+        if closed.chosen == "ARX twin":
+            model = replace(arx, context=trained.context)
+        selection = replace(selection, alpha=closed.alpha)
+    # Chosen in closed loop, the model is no worse than the linear base there (it is a
+    # candidate), and it need not be in free run: the free-run loss is reported, not a bar.
+    verdict = judge(model, start, selection, seg_val, config.window,
+                    against_linear=closed is None)
     baselines, lpv = linear_baselines(model, arx, split, skip, config, inner, names, context)
     metrics: dict[str, Any] = {
         **_errors(model, arx, split, skip),
         "free_run_loss": baselines,
         "residual": {**describe(selection, verdict),
-                     **({"scheduling_dropped": dropped} if dropped else {})},
+                     **({"scheduling_dropped": dropped} if dropped else {}),
+                     **({"closed_loop": closed.summary()} if closed else {})},
         "outputs": list(names["output_names"]),
         "training_history": history,
         "seconds": {"simulate": t1 - t0, "train": t2 - t1},

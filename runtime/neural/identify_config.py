@@ -8,6 +8,8 @@ from dataclasses import dataclass
 from jointplay.common.errors import DescriptionError
 
 MAX_SEED = 2**32 - 1
+# How the network's residual weight can be chosen on validation (IdentifyConfig.residual_by).
+RESIDUAL_CRITERIA = ("free-run", "closed-loop")
 
 
 @dataclass(frozen=True)
@@ -42,6 +44,10 @@ class IdentifyConfig:
     # the scene's robot.
     clearances: tuple[float, ...] = ()
     payloads: tuple[float, ...] = ()
+    # How the residual weight is chosen on validation: "free-run" (the free-run loss over
+    # windows) or "closed-loop" (each candidate runs as the internal-model controller on the
+    # validation runs' motions: jointplay.neural.closed_loop_choice).
+    residual_by: str = "free-run"
     one_step_iterations: int = 60
     multi_step_iterations: int = 30
     window: int = 200  # samples per free-run training window
@@ -57,6 +63,13 @@ class IdentifyConfig:
         if self.lpv_base and not (self.scheduling and self.linear_path):
             raise DescriptionError("lpv_base", "needs the scheduling signals and the linear "
                                    "direct path (--scheduling, without --no-linear-path)")
+        if self.residual_by not in RESIDUAL_CRITERIA:
+            raise DescriptionError("residual_by", "must be free-run or closed-loop, got "
+                                   f"{self.residual_by!r}")
+        if self.residual_by == "closed-loop" and self.n_validation < 2:
+            raise DescriptionError("residual_by", "closed-loop needs a validation run whose "
+                                   "motion is not the scene's own (the first validation run "
+                                   "drives the scene's torques): give --validation 2 or more")
         for name, values in (("clearances", self.clearances), ("payloads", self.payloads)):
             if not all(isinstance(v, (int, float)) and math.isfinite(v) and v >= 0
                        and (v > 0 or name == "payloads") for v in values):
@@ -66,4 +79,4 @@ class IdentifyConfig:
 
 
 
-__all__ = ["IdentifyConfig"]
+__all__ = ["RESIDUAL_CRITERIA", "IdentifyConfig"]

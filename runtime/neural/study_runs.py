@@ -134,7 +134,8 @@ def _matches(narx: Any, scene: Any, seed: int, identify_args: dict[str, Any]) ->
 def _setting(training: dict[str, Any], key: str) -> Any:
     """A training setting of a model's context; settings added later take their default."""
     defaults: dict[str, Any] = {"scheduling": False, "lpv_base": False, "clearances": [],
-                                "payloads": []}
+                                "payloads": [], "residual_by": "free-run",
+                                "base_fraction": 0.5}
     return training.get(key, defaults.get(key))
 
 

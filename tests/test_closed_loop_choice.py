@@ -1,0 +1,163 @@
+"""The residual weight chosen in closed loop (identify --residual-by closed-loop): the
+candidate with the lowest RMS acceleration error after settling on the validation motions
+wins, ties go to the simpler model, a diverged run never wins, and only validation motions
+other than the scene's own are run. The closed-loop runs are replaced by a stand-in whose
+error is a known function of the candidate (the runs themselves are tested elsewhere)."""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace
+from typing import Any
+
+import numpy as np
+import pytest
+
+from jointplay.neural.closed_loop_choice import TWIN, choose_in_closed_loop, label
+from jointplay.neural.identify import IdentifyConfig, output_names
+from jointplay.neural.narx import Narx
+from jointplay.neural.twin import ALPHAS, blend
+
+
+def _linear(seed: int) -> Narx:
+    """A one-layer model of the plant's 10 outputs, 2 inputs, lags 2 and 2 (shapes only)."""
+    rng = np.random.default_rng(seed)
+    names, units = output_names((2, 3))
+    ny, nx = len(names), 2 * len(names) + 4
+    return Narx(weights=(0.1 * rng.standard_normal((ny, nx)),), biases=(np.zeros(ny),),
+                regressor_mean=np.zeros(nx), regressor_scale=np.ones(nx),
+                increment_mean=np.zeros(ny), increment_scale=np.ones(ny),
+                output_scale=np.ones(ny), output_lags=2, input_lags=2, sample_time=1e-3,
+                increment=(True,) * ny, output_names=names, output_units=units,
+                input_names=("v2", "v3"), input_units=("N m", "N m"))
+
+
+def _alpha_of(model: Narx, base: Narx) -> float | None:
+    """The blend's weight from its linear path ((1 - alpha) x the base's); None: the twin."""
+    if model.linear is None:
+        return None
+    return 1.0 - float(np.linalg.norm(model.linear) / np.linalg.norm(base.weights[0]))
+
+
+def _stand_in(monkeypatch: pytest.MonkeyPatch, base: Narx, error: Any) -> list[Any]:
+    """Closed-loop runs replaced: each candidate's RMS |Δa| after settling is
+    ``error(alpha)`` (None: the twin; infinity: the run diverged)."""
+    import jointplay.neural.comparison as comparison
+    import jointplay.neural.imc as imc
+
+    calls: list[Any] = []
+
+    def compare(scene: Any, model: Narx, settings: Any, **kw: Any) -> Any:
+        calls.append((scene, kw.get("controllers")))
+        if kw.get("controllers") == ("open loop",):
+            return SimpleNamespace(runs={"open loop": SimpleNamespace(impact_times=[])},
+                                   limit=1.0)
+        value = error(_alpha_of(model, base)) * (2.0 if scene.name == "second" else 1.0)
+        run = SimpleNamespace(diverged="bound" if math.isinf(value) else "")
+        return SimpleNamespace(runs={comparison.NEURAL: run},
+                               metrics={comparison.NEURAL: {"rms_acceleration_after": value}})
+
+    monkeypatch.setattr(comparison, "compare", compare)
+    monkeypatch.setattr(imc, "compile_controller", lambda *a, **k: None)
+    return calls
+
+
+def _motion(name: str) -> tuple[str, Any]:
+    return name, SimpleNamespace(name=name, run=SimpleNamespace(output_step=1e-3))
+
+
+def test_the_lowest_closed_loop_error_wins_and_a_diverged_run_never_does(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    base, network = _linear(1), _linear(2)
+    # Best at 0.5; the full network diverges; the twin is worse than every blend.
+    calls = _stand_in(monkeypatch, base, lambda a: 3.0 if a is None else
+                      math.inf if a > 0.9 else 1.0 + (a - 0.5) ** 2)
+    model, choice = choose_in_closed_loop(network, base, _linear(3),
+                                          [_motion("first"), _motion("second")], ALPHAS)
+    assert choice.chosen == label(0.5) and choice.alpha == 0.5
+    assert model.linear is not None
+    np.testing.assert_allclose(model.linear, blend(network, base, 0.5).linear, rtol=0,
+                               atol=0)
+    # the score is the geometric mean of the ratios to the base (alpha = 0) over the runs
+    assert choice.score[label(0.5)] == pytest.approx(1.0 / 1.25, rel=1e-12)
+    assert choice.score[label(0.0)] == 1.0 and math.isinf(choice.score[label(1.0)])
+    assert choice.rms[TWIN] == [3.0, 6.0]
+    assert choice.summary()["score_by_candidate"][label(1.0)] is None  # no infinity in JSON
+    # one open loop per motion, then every candidate on each
+    assert sum(c[1] == ("open loop",) for c in calls) == 2
+    assert len(calls) == 2 * (1 + 1 + len(ALPHAS))
+
+
+def test_ties_go_to_the_simpler_model(monkeypatch: pytest.MonkeyPatch) -> None:
+    base, network = _linear(1), _linear(2)
+    _stand_in(monkeypatch, base, lambda a: 1.0)
+    _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
+    assert choice.chosen == TWIN and choice.alpha == 0.0
+    _, choice = choose_in_closed_loop(network, base, None, [_motion("first")], ALPHAS)
+    assert choice.chosen == label(0.0)
+
+
+def test_only_validation_motions_other_than_the_scene_are_run() -> None:
+    from jointplay.neural.closed_loop_choice import validation_motions
+    from jointplay.neural.identify import default_limits, inner_loop_for
+    from jointplay.scene.definition import default_scene
+
+    scene = default_scene()
+    config = IdentifyConfig(duration=0.3, n_train=2, n_validation=3, n_test=1,
+                            residual_by="closed-loop", clearances=(3e-5, 1e-4))
+    motions = validation_motions(scene, config, inner_loop_for(scene, (), ()),
+                                 default_limits(scene))
+    # validation runs 0, 1, 2 drive the scene's torques, a multisine, steps
+    assert [d for d, _ in motions] == ["multisine (clearance 0.0001)", "steps (clearance 3e-05)"]
+    assert all(s.run.t_end == pytest.approx(0.3) for _, s in motions)
+    with pytest.raises(Exception, match="validation 2 or more"):
+        IdentifyConfig(n_validation=1, residual_by="closed-loop")
+    with pytest.raises(Exception, match="free-run or closed-loop"):
+        IdentifyConfig(residual_by="loss")
+
+
+def test_the_report_says_what_chose_the_weight_and_what_was_saved(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    from jointplay.neural.evaluation import _closed_loop_lines
+
+    base, network = _linear(1), _linear(2)
+    res = {"free_run_loss_persistence": 1.0}
+    _stand_in(monkeypatch, base, lambda a: 1.0 if a is None else 2.0)
+    _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
+    text = _closed_loop_lines(choice.summary(), "LPV-ARX", "0: 0.5", res)
+    assert "chosen in closed loop" in text and "first" in text
+    assert "the ARX twin without the scheduling signals: the network does no work" in text
+    _stand_in(monkeypatch, base, lambda a: math.inf if a is None or a > 0.9 else 1.0 - a / 2)
+    _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
+    text = _closed_loop_lines(choice.summary(), "LPV-ARX", "0: 0.5", res)
+    assert "Saved: LPV-ARX + 0.75 x the residual" in text
+    assert "alpha=1: diverged" in text and "ARX twin: diverged" in text
+
+
+@pytest.mark.slow
+def test_identify_runs_each_candidate_in_closed_loop(tmp_path: Any) -> None:
+    """End to end on the paper scene (tiny: 0.2 s runs, a 4-node network): every candidate
+    ran in closed loop on the one validation motion that is not the scene's, and the weight
+    saved is the one with the lowest error there (the model may still be refused)."""
+    pytest.importorskip("torch")
+    import contextlib
+    import json
+
+    from jointplay.neural.identify import ModelRejected, identify
+    from jointplay.scene.definition import default_scene
+
+    config = IdentifyConfig(duration=0.2, n_train=1, n_validation=2, n_test=1, hidden=(4,),
+                            one_step_iterations=2, multi_step_iterations=0, window=20,
+                            workers=1, scheduling=True, lpv_base=True,
+                            residual_by="closed-loop")
+    out = tmp_path / "model"
+    with contextlib.suppress(ModelRejected):  # refused or not, the choice is recorded
+        identify(default_scene(), out, config, quiet=True)
+    closed = json.loads((out / "metrics.json").read_text())["residual"]["closed_loop"]
+    assert closed["runs"] == ["multisine (scene robot)"]
+    rms = closed["rms_acceleration_after"]
+    assert set(rms) == {TWIN, *(label(a) for a in ALPHAS)}
+    finite = {k: v[0] for k, v in rms.items() if v[0] is not None}
+    assert finite and all(v > 0 for v in finite.values())
+    assert closed["chosen"] == min(finite, key=lambda k: (finite[k], list(rms).index(k)))
+    assert "chosen in closed loop" in (out / "report.md").read_text()
