@@ -176,20 +176,20 @@ def _scheduled_run(rng: np.random.Generator, n: int) -> Trajectory:
 
 
 def test_lpv_arx_sees_what_arx_cannot() -> None:
-    from jointplay.neural.identify import _segments, fit_arx, output_increments
+    from jointplay.neural.identify import output_increments
+    from jointplay.neural.linear_fit import fit_arx, model_scheduling, segments
     from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
     from jointplay.neural.lpv import window_loss as lpv_loss
-    from jointplay.neural.training import model_scheduling
     from jointplay.neural.twin import window_loss, windows
 
     rng = np.random.default_rng(6)
     train = [_scheduled_run(rng, 1500) for _ in range(3)]
     test = [_scheduled_run(rng, 1500)]
     names = _names()
-    arx = fit_arx(_segments(train, 0), names, 2, 2, 1e-3)
+    arx = fit_arx(segments(train, 0), names, 2, 2, 1e-3)
     lpv = fit_lpv_arx(scheduled_segments(train, 0, 2), 2, 2,
                       output_increments(names["output_names"]))
-    d, u, _ = windows(_segments(test, 0), 100, arx.history)
+    d, u, _ = windows(segments(test, 0), 100, arx.history)
     arx_loss = window_loss(arx, d, u, arx.output_scale)
     lpv_test = lpv_loss(lpv, scheduled_segments(test, 0, 2), 100, arx.output_scale)
     # The plant is exactly LPV in the input gain: the scheduled model is near exact in free run,
@@ -199,14 +199,14 @@ def test_lpv_arx_sees_what_arx_cannot() -> None:
     # The same model as the controller runs it (one linear layer and a bilinear part, the
     # scheduling signals computed from the reference and the feedforward) predicts the same.
     as_narx = lpv.as_narx(names, model_scheduling(names), 1e-3, arx.output_scale, {})
-    d, u, w = windows(_segments(test, 0, names), 100, arx.history)
+    d, u, w = windows(segments(test, 0, names), 100, arx.history)
     pred = as_narx.free_run(d[0], u[0], w[0])
     seg = scheduled_segments(test, 0, 2)[0]
     direct = lpv.free_run(*(a[None, : d.shape[1]] for a in seg))[0]
     assert np.max(np.abs(pred - direct)) <= 1e-12 * np.max(np.abs(direct))
     # An ARX model with the scheduling signals as further regressors cannot express a gain
     # that the configuration multiplies: it stays far from the LPV model.
-    sched_arx = fit_arx(_segments(train, 0, names), names, 2, 2, 1e-3,
+    sched_arx = fit_arx(segments(train, 0, names), names, 2, 2, 1e-3,
                         scheduling=model_scheduling(names))
     assert window_loss(sched_arx, d, u, arx.output_scale, w) > 1e3 * lpv_test
 
@@ -287,20 +287,21 @@ def test_network_on_an_lpv_arx_base_starts_at_the_lpv_fit_and_is_never_worse() -
     jointplay.neural.lpv's model), training keeps and exports a bilinear part, and the residual
     weighed against that base is never worse than it in free run on validation."""
     pytest.importorskip("torch")
-    from jointplay.neural.identify import _segments, fit_arx, output_increments
+    from jointplay.neural.identify import output_increments
+    from jointplay.neural.linear_fit import fit_arx, model_scheduling, segments
     from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
-    from jointplay.neural.training import model_scheduling, train_narx
+    from jointplay.neural.training import train_narx
     from jointplay.neural.twin import select_residual
 
     rng = np.random.default_rng(9)
     train = [_scheduled_run(rng, 300) for _ in range(2)]
     validation = [replace(_scheduled_run(rng, 300), split="validation")]
     names = _names()
-    base = fit_arx(_segments(train, 0, names), names, 2, 2, 1e-3,
+    base = fit_arx(segments(train, 0, names), names, 2, 2, 1e-3,
                    scheduling=model_scheduling(names), lpv=True)
     lpv = fit_lpv_arx(scheduled_segments(train, 0, 2), 2, 2,
                       output_increments(names["output_names"]))
-    d, u, w = _segments(validation, 0, names)[0]
+    d, u, w = segments(validation, 0, names)[0]
     phi = base.regressors(d, u, w)
     direct = lpv.predict(phi[:, : -base.n_scheduling], w[1:-1], d[1:-1])
     # The same least squares up to the ridge (1e-6 per sample), which here acts on
@@ -311,7 +312,7 @@ def test_network_on_an_lpv_arx_base_starts_at_the_lpv_fit_and_is_never_worse() -
     model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
     assert model.bilinear is not None and model.bilinear.shape == base.bilinear.shape
     assert history["export_check"][0] < 1e-9
-    _, selection = select_residual(model, base, _segments(validation, 0, names), 20)
+    _, selection = select_residual(model, base, segments(validation, 0, names), 20)
     assert selection.losses[selection.alpha] <= selection.arx_loss
     with pytest.raises(Exception, match="scheduling"):
         IdentifyConfig(lpv_base=True)

@@ -127,7 +127,8 @@ def load_twin(model_dir: Path, narx: Narx) -> Narx:
 
     if (model_dir / ARX_FILE).is_file():
         return load_narx(model_dir, filename=ARX_FILE)
-    from jointplay.neural.identify import _segments, fit_arx, read_datasets
+    from jointplay.neural.identify import read_datasets
+    from jointplay.neural.linear_fit import fit_arx, segments
 
     path = model_dir / "datasets.h5"
     if not path.is_file():
@@ -138,7 +139,7 @@ def load_twin(model_dir: Path, narx: Narx) -> Narx:
                         / narx.sample_time))
     names = {"output_names": narx.output_names, "output_units": narx.output_units,
              "input_names": narx.input_names, "input_units": narx.input_units}
-    arx = fit_arx(_segments([t for t in trajectories if t.split == "train"], skip), names,
+    arx = fit_arx(segments([t for t in trajectories if t.split == "train"], skip), names,
                   narx.output_lags, narx.input_lags, narx.sample_time)
     return replace(arx, context=narx.context)
 

@@ -71,6 +71,7 @@ from jointplay.neural.inner_loop import (
     reference_outputs,
     with_torques,
 )
+from jointplay.neural.linear_fit import Segment, fit_arx, model_scheduling, regress, segments
 from jointplay.neural.narx import (
     ARX_FILE,
     LPV_FILE,
@@ -80,14 +81,7 @@ from jointplay.neural.narx import (
     robot_identity,
     save_narx,
 )
-from jointplay.neural.training import (
-    Segment,
-    _regress,
-    _segments,
-    fit_arx,
-    model_scheduling,
-    train_narx,
-)
+from jointplay.neural.training import train_narx
 from jointplay.neural.trajectories import (
     SPLITS,
     TEST_FAMILIES,
@@ -187,7 +181,7 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     trained, history = train_narx(split["train"], split["validation"], config, names, dt,
                                   context, quiet)
     t2 = time.perf_counter()
-    arx = fit_arx(_segments(split["train"], skip), names, config.output_lags,
+    arx = fit_arx(segments(split["train"], skip), names, config.output_lags,
                   config.input_lags, dt)
     arx = replace(arx, context={**context, "model": "linear ARX twin (least squares)"})
     # The residual is weighed against the linear model on the network's own regressor (with
@@ -195,13 +189,13 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     # With lpv_base the linear model is the LPV-ARX fit in the network's normalisation:
     # LPV-ARX + alpha (network - LPV-ARX), never worse than it on validation.
     start = arx if not config.scheduling else replace(
-        fit_arx(_segments(split["train"], skip, names), names, config.output_lags,
+        fit_arx(segments(split["train"], skip, names), names, config.output_lags,
                 config.input_lags, dt, scheduling=model_scheduling(names),
                 lpv=config.lpv_base),
         context={**context, "model": ("LPV-ARX (input gain affine in the scheduling signals; "
                                       "least squares)" if config.lpv_base else
                                       "ARX with the scheduling signals (least squares)")})
-    seg_val = _segments(split["validation"], skip, names)
+    seg_val = segments(split["validation"], skip, names)
     model, selection = select_residual(trained, start, seg_val, config.window)
     dropped = None
     if config.scheduling and config.residual_by == "free-run":
@@ -267,8 +261,8 @@ def input_share(train: Sequence[Segment], validation: Sequence[Segment], config:
     validation runs that adding the input lags removes (0 or below: the input explains
     nothing that carries over to runs it was not fitted on)."""
     carry = np.asarray(output_increments(names["output_names"]), dtype=float)
-    x, t = _regress(train, config.output_lags, config.input_lags, carry)
-    xv, tv = _regress(validation, config.output_lags, config.input_lags, carry)
+    x, t = regress(train, config.output_lags, config.input_lags, carry)
+    xv, tv = regress(validation, config.output_lags, config.input_lags, carry)
 
     def residual(columns: slice) -> np.ndarray:
         z, zv = x[:, columns], xv[:, columns]
@@ -289,7 +283,7 @@ def data_warnings(train: list[Trajectory], validation: list[Trajectory], skip: i
     """What in the data makes the model untrustworthy: an input too small to identify, or
     trajectories too short for the free-run windows."""
     warnings = []
-    share = float(np.median(input_share(_segments(train, skip), _segments(validation, skip),
+    share = float(np.median(input_share(segments(train, skip), segments(validation, skip),
                                         config, names)))
     if share < MIN_INPUT_SHARE:
         rms = np.sqrt(np.mean(np.vstack([t.v[skip:] for t in train]) ** 2, axis=0))
@@ -329,7 +323,7 @@ def linear_baselines(model: Narx, arx: Narx, split: dict[str, list[Trajectory]],
                            "scheduling": "cos, sin of the ideal joint angles, ideal joint "
                                          "speeds, drive torques of the motion"}
     for part in ("validation", "test"):
-        segs = _segments(split[part], skip, names)
+        segs = segments(split[part], skip, names)
         d, u, w = windows(segs, config.window, model.history)
         out[part] = {"model": window_loss(model, d, u, model.output_scale, w),
                      "arx": window_loss(arx, d, u, model.output_scale, w),
@@ -393,7 +387,7 @@ def _store_datasets(out: Path, trajectories: list[Trajectory], names: dict[str, 
 
 def _training_range(train: list[Trajectory], skip: int, config: IdentifyConfig,
                     names: dict[str, Any]) -> dict[str, Any]:
-    x_train, _ = _regress(_segments(train, skip, names), config.output_lags, config.input_lags,
+    x_train, _ = regress(segments(train, skip, names), config.output_lags, config.input_lags,
                           np.asarray(output_increments(names["output_names"]), dtype=float))
     return {"regressor_min": x_train.min(0).tolist(), "regressor_max": x_train.max(0).tolist()}
 
