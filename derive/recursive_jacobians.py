@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import casadi as ca
 
-from jointplay.derive import recursive_chain_rule
+from jointplay.derive import ideal_derivatives, recursive_chain_rule
 from jointplay.derive.symbolic import SymbolicModel
 from jointplay.derive.to_casadi import emitted_function
 from jointplay.robot.structure import CLEARANCE_KINDS, MOVING_KINDS
@@ -54,6 +54,9 @@ STATE_COLUMNS_PER_PASS = 4
 # of it; else 2 or 1): each call reads the articulated factors once.
 SOLVE_COLUMNS_PER_CALL = 4
 OTHER_COLUMNS_PER_PASS = 1
+# Whether chains of ideal (and locked) joints take dID/dx in closed form (see
+# jointplay.derive.ideal_derivatives) rather than by AD of the RNEA (False: for comparison).
+IDEAL_DERIVATIVES_IN_CLOSED_FORM = True
 
 
 def differentiates_the_aba(structure: Any) -> bool:
@@ -147,6 +150,11 @@ class RecursiveJacobians:
         self.acceleration = acceleration
         self.direct = differentiates_the_aba(model.structure)
         self.model = model
+        # A chain of ideal (and locked) joints has dID/dx in closed form
+        # (jointplay.derive.ideal_derivatives): a few operations an entry instead of AD.
+        self.ideal_in_closed_form = (IDEAL_DERIVATIVES_IN_CLOSED_FORM
+                                     and ideal_derivatives.applies(model.structure))
+        self.ideal_arguments = (parameter, thetas, omegas)
         self.slots = slots
         self.chain_rule = uses_the_chain_rule(model.structure, model.n_coordinates)
         q, u, tau = inputs.q, inputs.u, inputs.tau
@@ -208,8 +216,11 @@ class RecursiveJacobians:
             return emitted_function("jac_state", [x, tau, p, v_imp], [jac_sx],
                              ["x", "tau", "p", "v_imp"], ["jac_xdot_x"])
         if n < LOOPED_STATE_JACOBIAN_FROM:
-            # dID/dx as straight-line code: AD skips what a column's seed does not reach.
-            d_residual = ca.jacobian(self.residual, x)
+            # dID/dx as straight-line code: in closed form for ideal chains, else AD, which
+            # skips what a column's seed does not reach.
+            d_residual = (ideal_derivatives.residual_state_jacobian(
+                self.model.structure, self.acc_sym, self.slots, *self.ideal_arguments, n)
+                if self.ideal_in_closed_form else ca.jacobian(self.residual, x))
             if self.held.numel():
                 d_residual = d_residual + ca.mtimes(ca.jacobian(self.residual, self.held),
                                                     d_forces)

@@ -378,3 +378,40 @@ def test_chain_rule_state_jacobian(k: int, monkeypatch: pytest.MonkeyPatch,
             compiled = ca.external("jac_state", str(library))
             _assert_close(np.asarray(compiled.call(args)[0].full()), actual,
                           "compiled chain rule jac_state")
+
+
+# Ideal chains, some with locked joints (at the base, inside, at the tip), with and without
+# gravity and drive.
+_IDEAL_CASES = {
+    1: (("ideal",), EFFECTS[0]),
+    3: (("locked", "ideal", "ideal"), EFFECTS[1]),
+    5: (("ideal", "ideal", "locked", "ideal", "locked"), EFFECTS[0]),
+    8: (("ideal",) * 3 + ("locked",) + ("ideal",) * 4, EFFECTS[4]),
+}
+
+
+@pytest.mark.parametrize("k", [1, 3, 5, pytest.param(8, marks=pytest.mark.slow)])
+def test_ideal_chain_derivatives_in_closed_form(k: int) -> None:
+    """A chain of ideal (and locked) joints takes dID/dx in closed form
+    (jointplay.derive.ideal_derivatives). The state Jacobian built on it must equal AD of the
+    recursion's forward dynamics (CasADi's own, straight-line) to 1e-12 of its largest
+    entry, on random states with moving joints at speed."""
+    from jointplay.derive import codegen, ideal_derivatives, recursive_jacobians
+    from jointplay.derive.symbolic import derive
+
+    kinds, effects = _IDEAL_CASES[k]
+    robot = _robot(kinds, effects, np.random.default_rng(0))
+    assert ideal_derivatives.applies(robot.structure())
+    assert recursive_jacobians.IDEAL_DERIVATIVES_IN_CLOSED_FORM
+    built, _ = codegen.build_functions(derive(robot.structure(), "recursive"))
+    functions = {fn.name(): fn for fn in built}
+    forward, jac = functions["forward_dynamics"], functions["jac_state"]
+    straight_line = forward.jacobian()
+    n = sum(1 for kind in kinds if kind == "ideal")
+    rng = np.random.default_rng(200 + k)
+    for _ in range(3):
+        inputs = _random_inputs(kinds, effects, rng)
+        args = [inputs[name] for name in forward.name_in()]
+        actual = np.asarray(jac.call(args)[0].full())
+        expected = np.asarray(straight_line.call([*args, np.zeros(2 * n)])[0].full())
+        _assert_close(actual, expected[:, :2 * n], f"closed-form dID/dx jac_state, k = {k}")

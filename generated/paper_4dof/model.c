@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+be2a3db5d07f, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+ca6663e4c815, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: c7b3dca456e47cd5c34c983c7429f4c498c81c2ae599da6d6e0aa92e1e25c9f9
+ * input hash: 03d49958f5db784e4798b823f99009b1ab410e1ae82658c1c3d761d97c2837eb
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

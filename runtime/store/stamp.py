@@ -14,10 +14,10 @@ from typing import Any
 
 from jointplay.robot import canonical_json
 
-_EMITTING_MODULES = ("codegen.py", "cylindrical.py", "deferred.py", "fixed_step.py", "laws.py",
-                     "lubrication.py", "recursive.py", "recursive_chain_rule.py",
-                     "recursive_jacobians.py", "slots.py", "symbolic.py", "to_casadi.py",
-                     "wear.py")
+_EMITTING_MODULES = ("codegen.py", "cylindrical.py", "deferred.py", "fixed_step.py",
+                     "ideal_derivatives.py", "laws.py", "lubrication.py", "recursive.py",
+                     "recursive_chain_rule.py", "recursive_jacobians.py", "slots.py",
+                     "symbolic.py", "to_casadi.py", "wear.py")
 
 
 def _generator_version() -> str:
