@@ -27,6 +27,8 @@ Markdown.
     python benchmarks/formulations.py --links 1-4,8,12 --pinocchio --out out/formulations
     python benchmarks/formulations.py --links 8,12,16 --structures clearance --no-paper \
         --closed-up-to 0 --pinocchio --chain-rule-from 1 --versus-straight-line --out DIR
+    python benchmarks/formulations.py --links 12,32 --structures ideal --no-paper \
+        --closed-up-to 0 --pinocchio --ideal-derivatives ad --out DIR
 """
 
 from __future__ import annotations
@@ -108,6 +110,9 @@ def run_case(spec: dict[str, Any]) -> dict[str, Any]:
         recursive_jacobians.LOOPED_STATE_JACOBIAN_FROM = spec["looped_from"]
     if spec.get("chain_rule_from") is not None:
         recursive_jacobians.CHAIN_RULE_FROM = spec["chain_rule_from"]
+    if spec.get("ideal_derivatives") is not None:
+        recursive_jacobians.IDEAL_DERIVATIVES_IN_CLOSED_FORM = \
+            spec["ideal_derivatives"] == "closed-form"
     if spec.get("state_jacobian", "auto") != "auto":
         forced = spec["state_jacobian"] == "aba"
         recursive_jacobians.differentiates_the_aba = lambda structure: forced
@@ -197,6 +202,11 @@ def main() -> int:
                         help="coordinates from which a chain of clearance joints takes the "
                              "state Jacobian by the chain rule (default: the generator's "
                              "CHAIN_RULE_FROM)")
+    parser.add_argument("--ideal-derivatives", choices=("closed-form", "ad"), default=None,
+                        help="dID/dx of chains of ideal (and locked) joints: in closed form "
+                             "(jointplay.derive.ideal_derivatives) or by AD of the RNEA, for "
+                             "comparison (default: the generator's "
+                             "IDEAL_DERIVATIVES_IN_CLOSED_FORM)")
     parser.add_argument("--versus-straight-line", action="store_true",
                         help="also build the recursion with the straight-line state Jacobian "
                              "(AD of the ABA, no chain rule) and time it in the same rounds")
@@ -225,6 +235,7 @@ def main() -> int:
                 "closed_up_to": args.closed_up_to, "rounds": args.rounds,
                 "looped_from": args.looped_from, "state_jacobian": args.state_jacobian,
                 "chain_rule_from": args.chain_rule_from,
+                "ideal_derivatives": args.ideal_derivatives,
                 "versus_straight_line": args.versus_straight_line,
                 "batch_s": args.batch_ms / 1000}
         try:

@@ -2,7 +2,8 @@
 (used by :mod:`jointplay.derive.codegen` for the recursive formulation): straight-line or
 looped columns, the chain rule through each link's pose and twist for long chains of
 clearance joints (:mod:`jointplay.derive.recursive_chain_rule`), AD of the ABA for short
-ones, -M^-1 dID/dy through the articulated factors otherwise."""
+ones, -M^-1 dID/dy through the articulated factors otherwise, with dID/dy of chains of ideal
+(and locked) joints in closed form (:mod:`jointplay.derive.ideal_derivatives`)."""
 
 from __future__ import annotations
 

@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+b9309d7d9710, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+199b4935d7d2, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: a7a55306dd8b27fdb73750bb522711dd921aa4ff4f253f55e0e3be278635c287
+ * input hash: 7fba8637884ad7bae2bad72db4862914376a4e43932004f24c7610ee621c7893
  * The deferred part of this model: compiled on the first call that needs it,
  * linked against the library of model.c. Functions, in CasADi's calling
  * convention (their slots are forward_dynamics' and its Jacobian's):
