@@ -112,8 +112,49 @@ def test_only_validation_motions_other_than_the_scene_are_run() -> None:
     assert all(s.run.t_end == pytest.approx(0.3) for _, s in motions)
     with pytest.raises(Exception, match="validation 2 or more"):
         IdentifyConfig(n_validation=1, residual_by="closed-loop")
-    with pytest.raises(Exception, match="free-run or closed-loop"):
+    with pytest.raises(Exception, match="free-run, closed-loop or closed-loop-scene"):
         IdentifyConfig(residual_by="loss")
+
+
+def test_scene_family_motions_are_the_scenes_torques_retimed_never_the_scene_run() -> None:
+    """--residual-by closed-loop-scene: the motions are the scene's own torques, every joint
+    alike, at a drawn amplitude, rate and time shift (numpy and CasADi agree), on the
+    scene's robot, seeded by the identification's seed."""
+    import casadi as ca
+
+    from jointplay.neural.closed_loop_choice import (
+        SCENE_FAMILY_MOTIONS,
+        SCENE_FAMILY_RATE,
+        SCENE_FAMILY_SCALE,
+        scene_family_motions,
+    )
+    from jointplay.scene.definition import default_scene
+
+    scene = default_scene()
+    config = IdentifyConfig(duration=0.5, seed=7, residual_by="closed-loop-scene",
+                            n_validation=1)
+    motions = scene_family_motions(scene, config)
+    assert len(motions) == SCENE_FAMILY_MOTIONS
+    t = np.linspace(0.0, 0.5, 101)
+    ts = ca.SX.sym("t")
+    for description, run in motions:
+        assert "scene's torques" in description and run.robot is scene.robot
+        assert run.run.t_end == pytest.approx(0.5)
+        first = run.torques[0]
+        scale, rate, shift = first.scale, first.rate, first.shift
+        assert SCENE_FAMILY_SCALE[0] <= scale <= SCENE_FAMILY_SCALE[1]
+        assert SCENE_FAMILY_RATE[0] <= rate <= SCENE_FAMILY_RATE[1]
+        assert 0 <= shift <= 0.25 * 0.5 and (scale, rate, shift) != (1.0, 1.0, 0.0)
+        for f, own in zip(run.torques, scene.torques, strict=True):
+            assert (f.scale, f.rate, f.shift) == (scale, rate, shift)
+            assert np.allclose(f.numpy(t), scale * own.numpy(rate * t + shift), rtol=0,
+                               atol=1e-12)
+            symbolic = ca.Function("f", [ts], [f.casadi(ts)])
+            assert float(symbolic(0.3)) == pytest.approx(float(f.numpy(0.3)), abs=1e-12)
+    again = scene_family_motions(scene, config)
+    assert [d for d, _ in again] == [d for d, _ in motions]
+    other = scene_family_motions(scene, IdentifyConfig(duration=0.5, seed=8))
+    assert [d for d, _ in other] != [d for d, _ in motions]
 
 
 def test_the_report_says_what_chose_the_weight_and_what_was_saved(

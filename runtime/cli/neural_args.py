@@ -127,8 +127,10 @@ def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residu
                              "free-run (its free-run loss over windows) or closed-loop (each "
                              "candidate runs as the internal-model controller on the "
                              "validation runs' motions; the lowest RMS acceleration error "
-                             "after settling wins; needs --validation 2 or more) (default "
-                             "%(default)s)")
+                             "after settling wins; needs --validation 2 or more) or "
+                             "closed-loop-scene (the same on two motions of the scene's own "
+                             "family: its torques at other amplitudes, rates and time "
+                             "shifts, seeded) (default %(default)s)")
 
 
 def residual_setting(args: argparse.Namespace, flag: str, n_validation: int) -> str:

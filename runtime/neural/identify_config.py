@@ -9,7 +9,7 @@ from jointplay.common.errors import DescriptionError
 
 MAX_SEED = 2**32 - 1
 # How the network's residual weight can be chosen on validation (IdentifyConfig.residual_by).
-RESIDUAL_CRITERIA = ("free-run", "closed-loop")
+RESIDUAL_CRITERIA = ("free-run", "closed-loop", "closed-loop-scene")
 
 
 @dataclass(frozen=True)
@@ -46,7 +46,9 @@ class IdentifyConfig:
     payloads: tuple[float, ...] = ()
     # How the residual weight is chosen on validation: "free-run" (the free-run loss over
     # windows) or "closed-loop" (each candidate runs as the internal-model controller on the
-    # validation runs' motions: jointplay.neural.closed_loop_choice).
+    # validation runs' motions: jointplay.neural.closed_loop_choice) or "closed-loop-scene"
+    # (the same, on motions of the scene's own drive-torque family: the scene's torques at
+    # other amplitudes, rates and time shifts, never the scene's run itself).
     residual_by: str = "free-run"
     one_step_iterations: int = 60
     multi_step_iterations: int = 30
@@ -64,7 +66,8 @@ class IdentifyConfig:
             raise DescriptionError("lpv_base", "needs the scheduling signals and the linear "
                                    "direct path (--scheduling, without --no-linear-path)")
         if self.residual_by not in RESIDUAL_CRITERIA:
-            raise DescriptionError("residual_by", "must be free-run or closed-loop, got "
+            raise DescriptionError("residual_by", "must be free-run, closed-loop or "
+                                   "closed-loop-scene, got "
                                    f"{self.residual_by!r}")
         if self.residual_by == "closed-loop" and self.n_validation < 2:
             raise DescriptionError("residual_by", "closed-loop needs a validation run whose "
