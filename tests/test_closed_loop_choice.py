@@ -7,6 +7,7 @@ error is a known function of the candidate (the runs themselves are tested elsew
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from types import SimpleNamespace
 from typing import Any
 
@@ -173,6 +174,10 @@ def test_the_report_says_what_chose_the_weight_and_what_was_saved(
     text = _closed_loop_lines(choice.summary(), "LPV-ARX", "0: 0.5", res)
     assert "Saved: LPV-ARX + 0.75 x the residual" in text
     assert "alpha=1: diverged" in text and "ARX twin: diverged" in text
+    assert "the validation runs' motions" in text
+    family = _closed_loop_lines(replace(choice, motions="scene family").summary(), "LPV-ARX",
+                                "0: 0.5", res)
+    assert "motions of the scene's own family" in family and "validation runs'" not in family
 
 
 @pytest.mark.slow
