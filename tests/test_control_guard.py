@@ -230,6 +230,7 @@ def with_bilinear(model: Narx, seed: int = 41) -> Narx:
                                   "linear model", "network, no fallback",
                                   "scheduled network with fallback",
                                   "network on an LPV-ARX base, with fallback",
+                                  "24 and 24 nodes, lags 3, on an LPV-ARX base",
                                   "LPV-ARX model"])
 def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
     """The compiled loop kernel against the CasADi definition of the step, on random states
@@ -242,6 +243,11 @@ def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
         "network on an LPV-ARX base, with fallback": (
             with_bilinear(with_scheduling(model)), twin, ControllerSettings(
                 horizon=4, tracked=("q2", "q3", "dq2"))),
+        # Layers wider than the 16 vector registers hold (spilled sums), three lags.
+        "24 and 24 nodes, lags 3, on an LPV-ARX base": (
+            with_bilinear(with_scheduling(random_narx(3, hidden=(24, 24), na=3, nb=3))),
+            linear_twin(random_narx(3, na=3, nb=3)), ControllerSettings(
+                horizon=5, tracked=("q2", "q3", "dq2"))),
         "LPV-ARX model": (with_bilinear(with_scheduling(twin)), None, ControllerSettings(
             horizon=5, tracked=("q2", "q3"))),
         "network with fallback": (model, twin, ControllerSettings(
