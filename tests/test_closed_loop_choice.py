@@ -156,6 +156,10 @@ def test_scene_family_motions_are_the_scenes_torques_retimed_never_the_scene_run
     assert [d for d, _ in again] == [d for d, _ in motions]
     other = scene_family_motions(scene, IdentifyConfig(duration=0.5, seed=8))
     assert [d for d, _ in other] != [d for d, _ in motions]
+    more = scene_family_motions(scene, replace(config, scene_motions=3))
+    assert [d for d, _ in more][:2] == [d for d, _ in motions] and len(more) == 3
+    with pytest.raises(Exception, match="scene_motions"):
+        IdentifyConfig(scene_motions=0)
 
 
 def test_the_report_says_what_chose_the_weight_and_what_was_saved(

@@ -133,6 +133,24 @@ def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residu
                              "shifts, seeded) (default %(default)s)")
 
 
+def add_scene_motions_argument(parser: argparse.ArgumentParser, flag: str) -> None:
+    parser.add_argument(flag, dest="scene_motions", type=int, default=_D.scene_motions,
+                        help="with closed-loop-scene: how many motions of the scene's family "
+                             "each candidate runs on (default %(default)s)")
+
+
+def scene_motions_setting(args: argparse.Namespace, flag: str) -> int:
+    """The number of scene-family motions, refused outside 1 to MAX_SCENE_MOTIONS."""
+    from jointplay.common.errors import DescriptionError
+    from jointplay.neural.identify_config import MAX_SCENE_MOTIONS
+
+    value = int(args.scene_motions)
+    if not 1 <= value <= MAX_SCENE_MOTIONS:
+        raise DescriptionError(flag, f"must be a whole number from 1 to {MAX_SCENE_MOTIONS}, "
+                                     f"got {value}")
+    return value
+
+
 def residual_setting(args: argparse.Namespace, flag: str, n_validation: int) -> str:
     """--residual-by, refused as closed-loop without a validation run past the first (which
     drives the scene's own torques, the motion the controller is tested on)."""

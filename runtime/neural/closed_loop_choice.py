@@ -86,9 +86,10 @@ def validation_motions(scene: Any, config: Any, inner: Any,
     return out
 
 
-# Motions of the scene's family the closed-loop choice runs (--residual-by closed-loop-scene):
-# each the scene's drive torques at one amplitude, rate and time shift drawn from the
-# identification's seed (a stream of its own, past the splits' 0-2).
+# Motions of the scene's family the closed-loop choice runs (--residual-by closed-loop-scene;
+# how many: IdentifyConfig.scene_motions, by default SCENE_FAMILY_MOTIONS): each the scene's
+# drive torques at one amplitude, rate and time shift drawn from the identification's seed (a
+# stream of its own, past the splits' 0-2).
 SCENE_FAMILY_MOTIONS = 2
 SCENE_FAMILY_SCALE = (0.75, 1.25)  # x the scene's torques
 SCENE_FAMILY_RATE = (0.75, 1.33)  # x the scene's time
@@ -96,7 +97,7 @@ SCENE_FAMILY_SHIFT = 0.25  # the largest time shift, x the run's duration
 
 
 def scene_family_motions(scene: Any, config: Any) -> list[tuple[str, Any]]:
-    """(description, scene) of :data:`SCENE_FAMILY_MOTIONS` motions like the scene's own:
+    """(description, scene) of ``config.scene_motions`` motions like the scene's own:
     its drive torques, all joints alike, times a scale, at a rate and shifted in time (each
     drawn uniformly from the ranges above), on the scene's robot. Motions of the size and
     shape the controller is judged on, where the validation runs' multisines are far harsher;
@@ -106,7 +107,7 @@ def scene_family_motions(scene: Any, config: Any) -> list[tuple[str, Any]]:
 
     run_scene = scene.with_run(t_end=config.duration)
     out = []
-    for i in range(SCENE_FAMILY_MOTIONS):
+    for i in range(config.scene_motions):
         rng = np.random.default_rng(np.random.SeedSequence([config.seed, 3, i]))
         scale = float(rng.uniform(*SCENE_FAMILY_SCALE))
         rate = float(rng.uniform(*SCENE_FAMILY_RATE))
