@@ -7,6 +7,7 @@ error is a known function of the candidate (the runs themselves are tested elsew
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from types import SimpleNamespace
 from typing import Any
 
@@ -112,8 +113,53 @@ def test_only_validation_motions_other_than_the_scene_are_run() -> None:
     assert all(s.run.t_end == pytest.approx(0.3) for _, s in motions)
     with pytest.raises(Exception, match="validation 2 or more"):
         IdentifyConfig(n_validation=1, residual_by="closed-loop")
-    with pytest.raises(Exception, match="free-run or closed-loop"):
+    with pytest.raises(Exception, match="free-run, closed-loop or closed-loop-scene"):
         IdentifyConfig(residual_by="loss")
+
+
+def test_scene_family_motions_are_the_scenes_torques_retimed_never_the_scene_run() -> None:
+    """--residual-by closed-loop-scene: the motions are the scene's own torques, every joint
+    alike, at a drawn amplitude, rate and time shift (numpy and CasADi agree), on the
+    scene's robot, seeded by the identification's seed."""
+    import casadi as ca
+
+    from jointplay.neural.closed_loop_choice import (
+        SCENE_FAMILY_MOTIONS,
+        SCENE_FAMILY_RATE,
+        SCENE_FAMILY_SCALE,
+        scene_family_motions,
+    )
+    from jointplay.scene.definition import default_scene
+
+    scene = default_scene()
+    config = IdentifyConfig(duration=0.5, seed=7, residual_by="closed-loop-scene",
+                            n_validation=1)
+    motions = scene_family_motions(scene, config)
+    assert len(motions) == SCENE_FAMILY_MOTIONS
+    t = np.linspace(0.0, 0.5, 101)
+    ts = ca.SX.sym("t")
+    for description, run in motions:
+        assert "scene's torques" in description and run.robot is scene.robot
+        assert run.run.t_end == pytest.approx(0.5)
+        first = run.torques[0]
+        scale, rate, shift = first.scale, first.rate, first.shift
+        assert SCENE_FAMILY_SCALE[0] <= scale <= SCENE_FAMILY_SCALE[1]
+        assert SCENE_FAMILY_RATE[0] <= rate <= SCENE_FAMILY_RATE[1]
+        assert 0 <= shift <= 0.25 * 0.5 and (scale, rate, shift) != (1.0, 1.0, 0.0)
+        for f, own in zip(run.torques, scene.torques, strict=True):
+            assert (f.scale, f.rate, f.shift) == (scale, rate, shift)
+            assert np.allclose(f.numpy(t), scale * own.numpy(rate * t + shift), rtol=0,
+                               atol=1e-12)
+            symbolic = ca.Function("f", [ts], [f.casadi(ts)])
+            assert float(symbolic(0.3)) == pytest.approx(float(f.numpy(0.3)), abs=1e-12)
+    again = scene_family_motions(scene, config)
+    assert [d for d, _ in again] == [d for d, _ in motions]
+    other = scene_family_motions(scene, IdentifyConfig(duration=0.5, seed=8))
+    assert [d for d, _ in other] != [d for d, _ in motions]
+    more = scene_family_motions(scene, replace(config, scene_motions=3))
+    assert [d for d, _ in more][:2] == [d for d, _ in motions] and len(more) == 3
+    with pytest.raises(Exception, match="scene_motions"):
+        IdentifyConfig(scene_motions=0)
 
 
 def test_the_report_says_what_chose_the_weight_and_what_was_saved(
@@ -132,6 +178,10 @@ def test_the_report_says_what_chose_the_weight_and_what_was_saved(
     text = _closed_loop_lines(choice.summary(), "LPV-ARX", "0: 0.5", res)
     assert "Saved: LPV-ARX + 0.75 x the residual" in text
     assert "alpha=1: diverged" in text and "ARX twin: diverged" in text
+    assert "the validation runs' motions" in text
+    family = _closed_loop_lines(replace(choice, motions="scene family").summary(), "LPV-ARX",
+                                "0: 0.5", res)
+    assert "motions of the scene's own family" in family and "validation runs'" not in family
 
 
 @pytest.mark.slow

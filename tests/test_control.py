@@ -338,6 +338,9 @@ def _parser() -> argparse.ArgumentParser:
     (["control-study", "--out", "/tmp/x", "--identify-base-fraction", "1.5"],
      "--identify-base-fraction"),
     (["control-study", "--out", "/tmp/x", "--identify-lags", "2"], "--identify-lags"),
+    (["identify", "--out", "/tmp/x", "--scene-motions", "0"], "--scene-motions"),
+    (["control-study", "--out", "/tmp/x", "--identify-scene-motions", "17"],
+     "--identify-scene-motions"),
 ])
 def test_commands_reject_bad_flags(argv: list[str], flag: str) -> None:
     """DescriptionError is what the command line turns into exit status 2."""

@@ -230,6 +230,7 @@ def with_bilinear(model: Narx, seed: int = 41) -> Narx:
                                   "linear model", "network, no fallback",
                                   "scheduled network with fallback",
                                   "network on an LPV-ARX base, with fallback",
+                                  "24 and 24 nodes, lags 3, on an LPV-ARX base",
                                   "LPV-ARX model"])
 def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
     """The compiled loop kernel against the CasADi definition of the step, on random states
@@ -242,6 +243,11 @@ def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
         "network on an LPV-ARX base, with fallback": (
             with_bilinear(with_scheduling(model)), twin, ControllerSettings(
                 horizon=4, tracked=("q2", "q3", "dq2"))),
+        # Layers wider than the 16 vector registers hold (spilled sums), three lags.
+        "24 and 24 nodes, lags 3, on an LPV-ARX base": (
+            with_bilinear(with_scheduling(random_narx(3, hidden=(24, 24), na=3, nb=3))),
+            linear_twin(random_narx(3, na=3, nb=3)), ControllerSettings(
+                horizon=5, tracked=("q2", "q3", "dq2"))),
         "LPV-ARX model": (with_bilinear(with_scheduling(twin)), None, ControllerSettings(
             horizon=5, tracked=("q2", "q3"))),
         "network with fallback": (model, twin, ControllerSettings(
@@ -269,3 +275,32 @@ def test_loop_kernel_equals_the_casadi_step(case: str) -> None:
         seen += compiled[-1]
     if settings.guard:
         assert seen[0] > 0 and seen[2] > 0  # distrust and letting go were both exercised
+
+
+def test_kernel_tanh_is_libm_tanh_to_a_few_ulp_and_saturates_and_keeps_nan() -> None:
+    """The loop kernel's four-lane tanh (exp by Cody-Waite reduction and a polynomial)
+    against numpy's tanh: within 3e-16 absolute from 1e-9 to 25 in both signs, exactly +-1
+    beyond 20, 0 at 0, NaN kept (the guard's finiteness check relies on it)."""
+    import ctypes
+
+    from jointplay.neural.imc import STEP_CFLAGS
+    from jointplay.neural.kernel_network import TANH
+    from jointplay.store.build import compile_source
+
+    source = TANH + """
+void tanh_array(const double* x, double* y, int n) {
+  int i;
+  for (i = 0; i + 4 <= n; i += 4) ST(y + i, jp_tanh4(LD(x + i)));
+}
+"""
+    library, _ = compile_source(source, cflags=STEP_CFLAGS)
+    fn = ctypes.CDLL(str(library)).tanh_array
+    magnitudes = np.concatenate([np.geomspace(1e-9, 25.0, 200_000), [0.0, 20.0, 20.5, 1e3]])
+    x = np.concatenate([magnitudes, -magnitudes, [np.nan, np.inf, -np.inf, np.nan]])
+    y = np.empty_like(x)
+    pointer = ctypes.POINTER(ctypes.c_double)
+    fn(x.ctypes.data_as(pointer), y.ctypes.data_as(pointer), ctypes.c_int(x.size))
+    finite = np.isfinite(x)
+    assert np.max(np.abs(y[finite] - np.tanh(x[finite]))) <= 3e-16
+    assert np.all(y[np.abs(x) >= 20] == np.sign(x[np.abs(x) >= 20]))
+    assert y[np.where(x == 0)[0][0]] == 0.0 and np.isnan(y[np.isnan(x)]).all()

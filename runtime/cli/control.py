@@ -210,8 +210,10 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
     settings, scene = ran_settings(job.settings, comparison), job.scene
     inner = job.narx.context["plant"]["inner_loop"]
     alpha = job.narx.context.get("training", {}).get("metrics", {}).get("residual_weight")
-    criterion = ("closed-loop" if job.narx.context.get("training", {}).get("residual_by")
-                 == "closed-loop" else "free-run")
+    criterion = {"closed-loop": "closed-loop error on the validation runs",
+                 "closed-loop-scene": "closed-loop error on motions of the scene's family"}.get(
+        job.narx.context.get("training", {}).get("residual_by", ""),
+        "free-run error on the validation runs")
     guard = (f"on (|v| <= {settings.trust_input:g} x training, range margin "
              f"{settings.trust_range:g}, mismatch <= {settings.trust_mismatch:g}, hold "
              f"{settings.fallback_hold})" if settings.guard else "OFF")
@@ -232,7 +234,7 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
         f"{list(job.pd_kp) or inner['kp']}, kd {list(job.pd_kd) or inner['kd']}; computed "
         f"torque omega {args.ct_omega:g} rad/s, zeta {args.ct_zeta:g}; network residual "
         f"weight {alpha if alpha is not None else 'not recorded'}"
-        + (f" (chosen by its {criterion} error on the validation runs)" if alpha is not None
+        + (f" (chosen by its {criterion})" if alpha is not None
            else "")
         + ("; the network's residual weight is 0: the neural IMC's model IS its ARX twin, "
            "its row is the ARX-IMC's with the guard, and the network does no work"

@@ -16,6 +16,7 @@ from jointplay.cli.neural_args import (
     add_iterations_argument,
     add_operating_range_arguments,
     add_residual_argument,
+    add_scene_motions_argument,
     add_scheduling_argument,
     base_fraction_setting,
     check_duration,
@@ -27,6 +28,7 @@ from jointplay.cli.neural_args import (
     neural_scene_argument,
     operating_range,
     residual_setting,
+    scene_motions_setting,
     trajectory_counts,
 )
 from jointplay.common import limits as size_limits
@@ -71,6 +73,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_scheduling_argument(p)
     add_residual_argument(p)
     add_base_fraction_argument(p, "--base-fraction")
+    add_scene_motions_argument(p, "--scene-motions")
     add_operating_range_arguments(p)
     p.add_argument("--no-linear-path", action="store_true",
                    help="no linear direct path beside the hidden layers (the bare network)")
@@ -162,7 +165,8 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
         scheduling=args.scheduling, lpv_base=lpv_base_setting(args),
         residual_by=residual_setting(args, "--residual-by", counts[1]),
-        base_fraction=base_fraction_setting(args, "--base-fraction"), **operating_range(args))
+        base_fraction=base_fraction_setting(args, "--base-fraction"),
+        scene_motions=scene_motions_setting(args, "--scene-motions"), **operating_range(args))
 
 
 def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:

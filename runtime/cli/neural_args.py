@@ -127,8 +127,28 @@ def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residu
                              "free-run (its free-run loss over windows) or closed-loop (each "
                              "candidate runs as the internal-model controller on the "
                              "validation runs' motions; the lowest RMS acceleration error "
-                             "after settling wins; needs --validation 2 or more) (default "
-                             "%(default)s)")
+                             "after settling wins; needs --validation 2 or more) or "
+                             "closed-loop-scene (the same on two motions of the scene's own "
+                             "family: its torques at other amplitudes, rates and time "
+                             "shifts, seeded) (default %(default)s)")
+
+
+def add_scene_motions_argument(parser: argparse.ArgumentParser, flag: str) -> None:
+    parser.add_argument(flag, dest="scene_motions", type=int, default=_D.scene_motions,
+                        help="with closed-loop-scene: how many motions of the scene's family "
+                             "each candidate runs on (default %(default)s)")
+
+
+def scene_motions_setting(args: argparse.Namespace, flag: str) -> int:
+    """The number of scene-family motions, refused outside 1 to MAX_SCENE_MOTIONS."""
+    from jointplay.common.errors import DescriptionError
+    from jointplay.neural.identify_config import MAX_SCENE_MOTIONS
+
+    value = int(args.scene_motions)
+    if not 1 <= value <= MAX_SCENE_MOTIONS:
+        raise DescriptionError(flag, f"must be a whole number from 1 to {MAX_SCENE_MOTIONS}, "
+                                     f"got {value}")
+    return value
 
 
 def residual_setting(args: argparse.Namespace, flag: str, n_validation: int) -> str:

@@ -22,6 +22,7 @@ from jointplay.cli.neural_args import (
     add_iterations_argument,
     add_operating_range_arguments,
     add_residual_argument,
+    add_scene_motions_argument,
     add_scheduling_argument,
     add_settings_arguments,
     base_fraction_setting,
@@ -33,6 +34,7 @@ from jointplay.cli.neural_args import (
     neural_scene_argument,
     operating_range,
     residual_setting,
+    scene_motions_setting,
     settings_from_args,
     trajectory_counts,
 )
@@ -94,6 +96,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_scheduling_argument(p)
     add_residual_argument(p, "--identify-residual-by")
     add_base_fraction_argument(p, "--identify-base-fraction")
+    add_scene_motions_argument(p, "--identify-scene-motions")
     add_operating_range_arguments(p, prefix="identify-")
     p.add_argument("--identify-lags", default="2,2",
                    help="identify: output lags,input lags (default %(default)s)")
@@ -308,6 +311,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                      "window": window_setting(args),
                      "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),
                      "base_fraction": base_fraction_setting(args, "--identify-base-fraction"),
+                     "scene_motions": scene_motions_setting(args,
+                                                            "--identify-scene-motions"),
                      **lag_settings(args),
                      **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal)

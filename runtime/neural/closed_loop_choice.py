@@ -11,7 +11,9 @@ end-effector acceleration error after settling is saved.
 
 Only validation data decide: the motions are the base torques of the validation
 trajectories, the scene's own torques left out (that motion is what a study tests the
-controller on), on the robot each validation run was simulated with; the controller runs
+controller on), on the robot each validation run was simulated with; or
+(``--residual-by closed-loop-scene``) motions of the scene's own family, its torques at
+other amplitudes, rates and time shifts (:func:`scene_family_motions`); the controller runs
 with the default settings (:class:`jointplay.neural.imc_settings.ControllerSettings`) and its
 step through CasADi (the same law as the compiled step, which is not built for each
 candidate). The score of a candidate is the geometric mean over the runs of its error
@@ -45,6 +47,7 @@ class ClosedLoopChoice:
     runs: list[str]  # each run's motion family and robot
     settle_s: float  # the "after settling" window's start, s (the latest over the runs)
     seconds: float
+    motions: str = "validation runs"  # or "scene family" (scene_family_motions)
 
     def summary(self) -> dict[str, Any]:
         return {"criterion": "RMS end-effector acceleration error after settling, in closed "
@@ -54,7 +57,8 @@ class ClosedLoopChoice:
                 "score_by_candidate": {k: _finite(v) for k, v in self.score.items()},
                 "rms_acceleration_after": {k: [_finite(x) for x in v]
                                            for k, v in self.rms.items()},
-                "runs": self.runs, "settle_s": self.settle_s, "seconds": self.seconds}
+                "runs": self.runs, "motions": self.motions, "settle_s": self.settle_s,
+                "seconds": self.seconds}
 
 
 def _finite(value: float) -> float | None:
@@ -79,6 +83,38 @@ def validation_motions(scene: Any, config: Any, inner: Any,
         robot = task.description.get("robot")
         where = ", ".join(f"{k} {v:g}" for k, v in robot.items()) if robot else "scene robot"
         out.append((f"{task.family} ({where})", task.scene))
+    return out
+
+
+# Motions of the scene's family the closed-loop choice runs (--residual-by closed-loop-scene;
+# how many: IdentifyConfig.scene_motions, by default SCENE_FAMILY_MOTIONS): each the scene's
+# drive torques at one amplitude, rate and time shift drawn from the identification's seed (a
+# stream of its own, past the splits' 0-2).
+SCENE_FAMILY_MOTIONS = 2
+SCENE_FAMILY_SCALE = (0.75, 1.25)  # x the scene's torques
+SCENE_FAMILY_RATE = (0.75, 1.33)  # x the scene's time
+SCENE_FAMILY_SHIFT = 0.25  # the largest time shift, x the run's duration
+
+
+def scene_family_motions(scene: Any, config: Any) -> list[tuple[str, Any]]:
+    """(description, scene) of ``config.scene_motions`` motions like the scene's own:
+    its drive torques, all joints alike, times a scale, at a rate and shifted in time (each
+    drawn uniformly from the ranges above), on the scene's robot. Motions of the size and
+    shape the controller is judged on, where the validation runs' multisines are far harsher;
+    the scene's run itself (scale 1, rate 1, no shift) has probability zero."""
+    from jointplay.neural.excitation import Retimed
+    from jointplay.neural.inner_loop import with_torques
+
+    run_scene = scene.with_run(t_end=config.duration)
+    out = []
+    for i in range(config.scene_motions):
+        rng = np.random.default_rng(np.random.SeedSequence([config.seed, 3, i]))
+        scale = float(rng.uniform(*SCENE_FAMILY_SCALE))
+        rate = float(rng.uniform(*SCENE_FAMILY_RATE))
+        shift = float(rng.uniform(0.0, SCENE_FAMILY_SHIFT * config.duration))
+        torques = [Retimed(f, scale, rate, shift) for f in scene.torques]
+        out.append((f"scene's torques x{scale:.3g} at {rate:.3g}x the rate, {shift:.3g} s on "
+                    "(scene robot)", with_torques(run_scene, torques)))
     return out
 
 
@@ -144,4 +180,5 @@ def _mean_log(values: Sequence[float]) -> float:
     return float(np.mean(np.log(values)))
 
 
-__all__ = ["TWIN", "ClosedLoopChoice", "choose_in_closed_loop", "label", "validation_motions"]
+__all__ = ["SCENE_FAMILY_MOTIONS", "TWIN", "ClosedLoopChoice", "choose_in_closed_loop", "label",
+           "scene_family_motions", "validation_motions"]

@@ -157,13 +157,15 @@ def _closed_loop_lines(closed: dict[str, Any], base: str, tried: str,
 
     scores = ", ".join(f"{k}: {ratio(v)}" for k, v in closed["score_by_candidate"].items())
     chosen = closed["chosen"]
+    motions = ("motions of the scene's own family" if closed.get("motions") == "scene family"
+               else "the validation runs' motions")
     what = ("the ARX twin without the scheduling signals: the network does no work"
             if chosen == "ARX twin" else
             f"the {base} model itself: the network does no work" if closed["alpha"] == 0
             else f"{base} + {closed['alpha']:g} x the residual")
     return (f"Network = {base} + alpha x (nonlinear residual), alpha chosen in closed loop: "
-            "each candidate ran as the internal-model controller (default settings) on the "
-            f"validation runs' motions ({'; '.join(closed['runs'])}), scored by its RMS "
+            "each candidate ran as the internal-model controller (default settings) on "
+            f"{motions} ({'; '.join(closed['runs'])}), scored by its RMS "
             "end-effector acceleration error after "
             f"{closed['settle_s'] * 1e3:.0f} ms, as a ratio to the {base} model's (geometric "
             f"mean over the runs): {scores}. Saved: {what}. Free-run validation loss by "

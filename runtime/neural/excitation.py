@@ -115,14 +115,38 @@ def step_torque(rng: np.random.Generator, peak: float, duration: float, hold_min
 
 
 
+@dataclass(frozen=True, eq=False)
+class Retimed:
+    """``scale * base(rate * t + shift)``: another torque's shape at another amplitude and
+    rate, shifted in time (a TimeFunction: numpy and CasADi)."""
+
+    base: TimeFunction
+    scale: float
+    rate: float
+    shift: float
+
+    def numpy(self, t: float | np.ndarray) -> np.ndarray:
+        times = np.asarray(t, dtype=float)
+        return np.asarray(self.scale * self.base.numpy(self.rate * times + self.shift),
+                          dtype=float)
+
+    def casadi(self, t: Any) -> Any:
+        return self.scale * self.base.casadi(self.rate * t + self.shift)
+
+    def describe(self) -> dict[str, Any]:
+        return {"kind": "retimed", "base": describe_torque(self.base), "scale": self.scale,
+                "rate": self.rate, "shift": self.shift}
+
+
 def describe_torque(f: TimeFunction) -> Any:
     """What a base torque was, for the datasets file (``jointplay control --test-cases`` drives
     the loop with it again)."""
-    if isinstance(f, (Multisine, Chirp)):
+    if isinstance(f, (Multisine, Chirp, Retimed)):
         return f.describe()
     if isinstance(f, TableColumn):
         return {"kind": "steps", "times": f.times.tolist(), "values": f.values.tolist()}
     return {"kind": "expression", "text": getattr(f, "text", repr(f))}
 
 
-__all__ = ["Chirp", "Multisine", "aprbs", "describe_torque", "random_multisine", "step_torque"]
+__all__ = ["Chirp", "Multisine", "Retimed", "aprbs", "describe_torque", "random_multisine",
+           "step_torque"]

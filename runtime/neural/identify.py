@@ -211,15 +211,20 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
             model = replace(arx, context=trained.context)
             selection = replace(selection, alpha=0.0)
     closed = None
-    if config.residual_by == "closed-loop":
+    if config.residual_by in ("closed-loop", "closed-loop-scene"):
         from jointplay.neural.closed_loop_choice import (
             choose_in_closed_loop,
+            scene_family_motions,
             validation_motions,
         )
 
+        motions = (scene_family_motions(scene, config)
+                   if config.residual_by == "closed-loop-scene"
+                   else validation_motions(scene, config, inner, limits))
         model, closed = choose_in_closed_loop(
-            trained, start, arx if config.scheduling else None,
-            validation_motions(scene, config, inner, limits), ALPHAS)
+            trained, start, arx if config.scheduling else None, motions, ALPHAS)
+        if config.residual_by == "closed-loop-scene":
+            closed = replace(closed, motions="scene family")
         if closed.chosen == "ARX twin":
             model = replace(arx, context=trained.context)
         selection = replace(selection, alpha=closed.alpha)

@@ -9,7 +9,8 @@ from jointplay.common.errors import DescriptionError
 
 MAX_SEED = 2**32 - 1
 # How the network's residual weight can be chosen on validation (IdentifyConfig.residual_by).
-RESIDUAL_CRITERIA = ("free-run", "closed-loop")
+RESIDUAL_CRITERIA = ("free-run", "closed-loop", "closed-loop-scene")
+MAX_SCENE_MOTIONS = 16  # each costs seven closed-loop runs per model
 
 
 @dataclass(frozen=True)
@@ -46,8 +47,12 @@ class IdentifyConfig:
     payloads: tuple[float, ...] = ()
     # How the residual weight is chosen on validation: "free-run" (the free-run loss over
     # windows) or "closed-loop" (each candidate runs as the internal-model controller on the
-    # validation runs' motions: jointplay.neural.closed_loop_choice).
+    # validation runs' motions: jointplay.neural.closed_loop_choice) or "closed-loop-scene"
+    # (the same, on motions of the scene's own drive-torque family: the scene's torques at
+    # other amplitudes, rates and time shifts, never the scene's run itself).
     residual_by: str = "free-run"
+    # Motions of the scene's family that "closed-loop-scene" runs each candidate on.
+    scene_motions: int = 2
     one_step_iterations: int = 60
     multi_step_iterations: int = 30
     window: int = 200  # samples per free-run training window
@@ -64,8 +69,13 @@ class IdentifyConfig:
             raise DescriptionError("lpv_base", "needs the scheduling signals and the linear "
                                    "direct path (--scheduling, without --no-linear-path)")
         if self.residual_by not in RESIDUAL_CRITERIA:
-            raise DescriptionError("residual_by", "must be free-run or closed-loop, got "
+            raise DescriptionError("residual_by", "must be free-run, closed-loop or "
+                                   "closed-loop-scene, got "
                                    f"{self.residual_by!r}")
+        if isinstance(self.scene_motions, bool) or not isinstance(self.scene_motions, int) \
+                or not 1 <= self.scene_motions <= MAX_SCENE_MOTIONS:
+            raise DescriptionError("scene_motions", "must be a whole number from 1 to "
+                                   f"{MAX_SCENE_MOTIONS}, got {self.scene_motions!r}")
         if self.residual_by == "closed-loop" and self.n_validation < 2:
             raise DescriptionError("residual_by", "closed-loop needs a validation run whose "
                                    "motion is not the scene's own (the first validation run "
@@ -79,4 +89,4 @@ class IdentifyConfig:
 
 
 
-__all__ = ["RESIDUAL_CRITERIA", "IdentifyConfig"]
+__all__ = ["MAX_SCENE_MOTIONS", "RESIDUAL_CRITERIA", "IdentifyConfig"]

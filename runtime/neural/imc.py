@@ -184,9 +184,9 @@ def compile_controller(model: Narx, settings: ControllerSettings, fallback: Narx
 
     ``kernel``: compile the loop kernel (jointplay.neural.imc_kernel) rather than CasADi's
     straight-line code for the same function (one Gauss-Newton iteration only); None: the
-    kernel except for an LPV-ARX model (one linear layer with a bilinear part), whose
-    straight-line code measured faster (3.26 and 3.32 against 3.69 and 3.65 µs, fastest
-    rounds of benchmarks/control_step.py, two runs)."""
+    kernel (for every model: since its layers run four outputs at a time in registers, the
+    LPV-ARX model's kernel costs about a third of its straight-line code,
+    benchmarks/control_step.py)."""
     from jointplay.store.build import compile_source
     from jointplay.store.model import FastFunction
 
@@ -196,7 +196,7 @@ def compile_controller(model: Narx, settings: ControllerSettings, fallback: Narx
     # The kernel runs networks, ARX and LPV-ARX models (with their scheduling signals and
     # bilinear parts).
     if kernel is None:
-        kernel = not (model.bilinear is not None and len(model.weights) == 1)
+        kernel = True
     if kernel and settings.iterations == 1 and not pair_gains(model, settings):
         from jointplay.neural.imc_kernel import kernel_library_source
 

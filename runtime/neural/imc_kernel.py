@@ -42,12 +42,14 @@ from jointplay.neural.narx import Narx
 def _branch(prefix: str, model: Narx, s: ControllerSettings, rows: list[int],
             scales: tuple[float, ...]) -> str:
     """C for one internal model's increment and trust:
-    ``{prefix}branch(hist, upast, v_prev, e_f, target, step) -> ok``."""
+    ``{prefix}branch(hist, upast, v_prev, w, g, e_f, target, step) -> ok`` (``g``: the
+    scheduled direct path, formed once per step by the kernel; unused without one)."""
     ny, nt = model.n_outputs, len(rows)
     lo, hi = training_box(model, s.trust_range)
     out = [_array(f"{prefix}LO", lo), _array(f"{prefix}HI", hi)]
     lines = [f"static int {prefix}branch(const double* hist, const double* upast, "
-             "const double* vp, const double* w, const double* ef, const double* target, "
+             "const double* vp, const double* w, const double* g, const double* ef, "
+             "const double* target, "
              "double* step) {",
              f"  double n0[{ny}], res[{nt}];",
              "  int i, j, k, ok = 1;"]
@@ -131,8 +133,7 @@ def _rollout_lines(prefix: str, model: Narx, d: int, nt: int) -> list[str]:
         f"  for (i = 0; i < {nu * nb * nu}; ++i) dus[i] = 0;",
         f"  for (k = 0; k < {nu}; ++k) dus[k * {nb * nu} + k] = 1;",
         *held,
-        *([f"  double g[{gain_size(model)}];", f"  {prefix}gain(w, g);"]
-          if gain_size(model) else []),
+        *([] if gain_size(model) else ["  (void) g;"]),
         f"  for (int t = 0; t < {d}; ++t) {{",
         f"    for (i = 0; i < {na * ny}; ++i) phi[i] = ys[i];",
         f"    for (i = 0; i < {nb * nu}; ++i) phi[{na * ny} + i] = us[i];",
@@ -322,17 +323,21 @@ static int {name}_kernel(const double** arg, double** res) {{
   const double *vp = upast;
   double hold = x[{x.o_hold}], episodes = x[{x.o_hold + 1}];
   int i, okm, okf = 0, use_main, use_back, at_bound = 0, at_limit = 0;
+  /* the scheduled direct paths, once per step (the signals are held over the horizon) */
+  double gm[{max(x.gain, 1)}], gf[{max(x.gainf, 1)}];
   w[0] = 0;
-{scheduling}  for (i = 0; i < {ny}; ++i) {{
+{scheduling}{"  m_gain(w, gm);" if x.gain else "  gm[0] = 0;"}
+{"  f_gain(w, gf);" if x.gainf else "  gf[0] = 0;"}
+  for (i = 0; i < {ny}; ++i) {{
     dev[i] = y[i] - r[i];
     ef[i] = {_c(b)} * x[{x.o_ef} + i] + {_c(1 - b)} * (dev[i] - hist[i]);
     {f"eff[i] = {_c(b)} * x[{x.o_eff} + i] + {_c(1 - b)} * (dev[i] - histf[i]);" if fb else
      "eff[i] = 0;"}
     target[i] = {_c(a_d)} * x[{x.o_yd} + i];
   }}
-  okm = m_branch(hist, upast, vp, w, ef, target, dvm);
+  okm = m_branch(hist, upast, vp, w, gm, ef, target, dvm);
   use_main = okm && hold <= 0;
-  {"if (!use_main) okf = f_branch(histf, upast, vp, w, eff, target, dvf);" if fb else ""}
+  {"if (!use_main) okf = f_branch(histf, upast, vp, w, gf, eff, target, dvf);" if fb else ""}
   use_back = !use_main && okf;
 """
 
@@ -354,11 +359,9 @@ def _kernel_limits(x: _Shape, s: ControllerSettings) -> str:
 
 
 def _eval_call(prefix: str, out: str, gain: int) -> str:
-    """One network's prediction (no tangent), its scheduled input gain first if it has one."""
-    if not gain:
-        return f"{prefix}_eval(phi, 0, {out}, 0, 0, 0);"
-    return (f"{{ double g[{gain}]; {prefix}_gain(w, g); "
-            f"{prefix}_eval(phi, 0, {out}, 0, 0, g); }}")
+    """One network's prediction (no tangent), with the scheduled input gain formed at the
+    step's start if it has one."""
+    return f"{prefix}_eval(phi, 0, {out}, 0, 0, {f'g{prefix}' if gain else '0'});"
 
 
 def _kernel_predictions(x: _Shape) -> str:
