@@ -56,6 +56,7 @@ from jointplay.neural.internal_model import (
 )
 from jointplay.neural.mismatch_filter import pair_gains
 from jointplay.neural.narx import Narx
+from jointplay.store.build import DEFAULT_CFLAGS
 
 
 def _vector_flags(cpuinfo: str = "/proc/cpuinfo") -> tuple[str, ...]:
@@ -77,9 +78,10 @@ def _vector_flags(cpuinfo: str = "/proc/cpuinfo") -> tuple[str, ...]:
 # column sums (2x faster than -O2 here), and with AVX2 and FMA faster again (3.7 us per
 # step, docs/control.md "Cost of the controller step"; FMA changes the last bit of a
 # product's rounding, and the kernel stays within 1e-12 of CasADi's step). CasADi's code
-# for iterations > 1 keeps the models' -O1: -O2 compiled it 2.5x longer for no gain.
+# for iterations > 1 keeps the models' flags (-O1, CasADi's helpers inlined: no flag that
+# reorders arithmetic): -O2 compiled it 2.5x longer for no gain.
 STEP_CFLAGS = ("-O3", "-fPIC", "-shared", "-fno-math-errno", *_vector_flags())
-SX_CFLAGS = ("-O1", "-fPIC", "-shared", "-fno-math-errno")
+SX_CFLAGS = DEFAULT_CFLAGS
 
 
 @dataclass
