@@ -48,11 +48,7 @@ from jointplay.derive.slots import (
     slot,
 )
 from jointplay.derive.symbolic import SymbolicModel, derive
-from jointplay.derive.to_casadi import (
-    RECIPROCAL_SQRT_FORMULATIONS,
-    SympyToCasadi,
-    emitted_function,
-)
+from jointplay.derive.to_casadi import SympyToCasadi, emitted_function
 from jointplay.robot import Robot
 from jointplay.robot.robotio import robot_to_toml
 from jointplay.store.formulation import formulation_for
@@ -157,8 +153,7 @@ def _converter(model: SymbolicModel, inputs: _Inputs) -> SympyToCasadi:
     leaves.update({s: inputs.u[i] for i, s in enumerate(model.u)})
     leaves.update({s: inputs.p[i] for i, s in enumerate(model.parameter_symbols)})
     leaves.update({s: inputs.tau[i] for i, s in enumerate(model.torques)})
-    return SympyToCasadi(
-        leaves, reciprocal_sqrt=model.formulation in RECIPROCAL_SQRT_FORMULATIONS)
+    return SympyToCasadi(leaves, formulation=model.formulation)
 
 
 def _contact_outputs(model: SymbolicModel, convert: SympyToCasadi, v_imp: Any
@@ -276,8 +271,7 @@ def _joint_converters(model: SymbolicModel, inputs: _Inputs, slots: dict[tuple[i
             template.impact_speed: inputs.v_imp[j]}
         leaves.update({symbol: parameter(f"joint{i}.{attribute}")
                        for attribute, symbol in template.joint_parameters.items()})
-        converters.append(SympyToCasadi(
-            leaves, reciprocal_sqrt=model.formulation in RECIPROCAL_SQRT_FORMULATIONS))
+        converters.append(SympyToCasadi(leaves, formulation=model.formulation))
     return converters
 
 

@@ -38,11 +38,7 @@ from typing import TYPE_CHECKING, Any
 
 import casadi as ca
 
-from jointplay.derive.to_casadi import (
-    RECIPROCAL_SQRT_FORMULATIONS,
-    SympyToCasadi,
-    emitted_function,
-)
+from jointplay.derive.to_casadi import SympyToCasadi, emitted_function
 from jointplay.robot.structure import CLEARANCE_KINDS, MOVING_KINDS
 
 if TYPE_CHECKING:
@@ -156,8 +152,7 @@ def _law_function(model: SymbolicModel) -> _LawFunction:
     leaves[template.impact_speed] = v_imp
     leaves.update({symbol: parameters(f"joint1.{attribute}")
                    for attribute, symbol in template.joint_parameters.items()})
-    convert = SympyToCasadi(
-        leaves, reciprocal_sqrt=model.formulation in RECIPROCAL_SQRT_FORMULATIONS)
+    convert = SympyToCasadi(leaves, formulation=model.formulation)
     law = template.law
     forces = ca.vertcat(convert(law.force_x), convert(law.force_y),
                         convert(law.friction_force))

@@ -40,7 +40,7 @@ def _children(node: sp.Basic) -> tuple[sp.Basic, ...]:
 
 
 # The formulations whose emitted C writes x^(-1/2) as 1 / sqrt(x) (SympyToCasadi's
-# ``reciprocal_sqrt``). The closed form joins once the paper robot's model and the figures
+# ``formulation``). The closed form joins once the paper robot's model and the figures
 # measured on it are regenerated, as with RECURSIVE_FROM_COORDINATES.
 RECIPROCAL_SQRT_FORMULATIONS = ("recursive",)
 
@@ -48,16 +48,16 @@ RECIPROCAL_SQRT_FORMULATIONS = ("recursive",)
 class SympyToCasadi:
     """Convert sympy expressions, given a map from leaf symbols (or applied functions) to SX.
 
-    ``reciprocal_sqrt`` emits x^(-1/2) as 1 / sqrt(x) instead of libm's general ``pow``: the
-    unit normal's 1/|e| in every contact evaluation, at a fraction of the cost. The two differ
-    by round-off only, but round-off moves a run's step sequence; so only the recursive
-    formulation takes it, and the closed form (the paper robot) keeps the C, and the figures
-    measured on it, that it has (see :data:`RECIPROCAL_SQRT_FORMULATIONS`)."""
+    For a ``formulation`` in :data:`RECIPROCAL_SQRT_FORMULATIONS` it emits x^(-1/2) as
+    1 / sqrt(x) instead of libm's general ``pow``: the unit normal's 1/|e| in every contact
+    evaluation, at a fraction of the cost. The two differ by round-off only, but round-off
+    moves a run's step sequence; so only the recursive formulation takes it, and the closed
+    form (the paper robot) keeps the C, and the figures measured on it, that it has."""
 
-    def __init__(self, leaves: Mapping[sp.Basic, Any], *, reciprocal_sqrt: bool = False
+    def __init__(self, leaves: Mapping[sp.Basic, Any], *, formulation: str = "closed"
                  ) -> None:
         self._cache: dict[sp.Basic, Any] = dict(leaves)
-        self._reciprocal_sqrt = reciprocal_sqrt
+        self._reciprocal_sqrt = formulation in RECIPROCAL_SQRT_FORMULATIONS
 
     def __call__(self, expr: Any) -> Any:
         if isinstance(expr, sp.MatrixBase):

@@ -415,3 +415,26 @@ def test_ideal_chain_derivatives_in_closed_form(k: int) -> None:
         actual = np.asarray(jac.call(args)[0].full())
         expected = np.asarray(straight_line.call([*args, np.zeros(2 * n)])[0].full())
         _assert_close(actual, expected[:, :2 * n], f"closed-form dID/dx jac_state, k = {k}")
+
+
+def test_reciprocal_sqrt_only_in_the_recursion() -> None:
+    """x^(-1/2) (the unit normal's 1/|e|) becomes 1/sqrt(x) in the recursive formulation's C
+    and stays pow in the closed form's (whose checked-in C and figures it would move); both
+    give the same value to within an ulp."""
+    import casadi as ca
+    import sympy as sp
+
+    from jointplay.derive.to_casadi import SympyToCasadi
+
+    x, x_sx = sp.Symbol("x", positive=True), ca.SX.sym("x")
+    values = {}
+    powers = {ca.OP_POW, ca.OP_CONSTPOW}
+    for formulation, expected, absent in (("recursive", {ca.OP_SQRT}, powers),
+                                          ("closed", powers, {ca.OP_SQRT})):
+        out = SympyToCasadi({x: x_sx}, formulation=formulation)(x ** sp.Rational(-1, 2))
+        fn = ca.Function("f", [x_sx], [out])
+        ops = {fn.instruction_id(k) for k in range(fn.n_instructions())}
+        assert ops & expected and not ops & absent, (formulation, ops)
+        values[formulation] = float(fn(2.0))
+    assert values["recursive"] == pytest.approx(values["closed"], rel=2.3e-16)
+    assert values["recursive"] == pytest.approx(2.0 ** -0.5, rel=2.3e-16)
