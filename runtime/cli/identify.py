@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_base_fraction_argument,
+    add_contact_argument,
     add_identify_data_arguments,
     add_iterations_argument,
     add_operating_range_arguments,
@@ -71,6 +72,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--window", type=int, default=IdentifyConfig.window,
                    help="samples per free-run training window (default %(default)s)")
     add_scheduling_argument(p)
+    add_contact_argument(p, "--contact-outputs")
     add_residual_argument(p)
     add_base_fraction_argument(p, "--base-fraction")
     add_scene_motions_argument(p, "--scene-motions")
@@ -164,6 +166,7 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
         scheduling=args.scheduling, lpv_base=lpv_base_setting(args),
+        contact_outputs=args.contact_outputs,
         residual_by=residual_setting(args, "--residual-by", counts[1]),
         base_fraction=base_fraction_setting(args, "--base-fraction"),
         scene_motions=scene_motions_setting(args, "--scene-motions"), **operating_range(args))
@@ -174,6 +177,10 @@ def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:
     the run at the trajectories' duration."""
     if not config.torque_limit:
         default_limits(scene)
+    if config.contact_outputs and not scene.robot.clearance_joints:
+        raise DescriptionError("--contact-outputs", "the scene's robot has no clearance "
+                               "joint, so there is no journal eccentricity to measure: drop "
+                               "the flag")
     try:
         scene.with_run(t_end=config.duration)
     except DescriptionError as err:

@@ -117,6 +117,13 @@ def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
                              "least-squares fit, and its residual is weighed against it")
 
 
+def add_contact_argument(parser: argparse.ArgumentParser, flag: str) -> None:
+    parser.add_argument(flag, dest="contact_outputs", action="store_true",
+                        help="the journals' eccentricities (ex, ey) at every clearance joint are "
+                             "measured outputs too (bearing displacement sensors): every model "
+                             "and controller sees the contact state")
+
+
 def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
                           ) -> None:
     from jointplay.neural.identify_config import RESIDUAL_CRITERIA

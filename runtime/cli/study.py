@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
     add_base_fraction_argument,
+    add_contact_argument,
     add_identify_data_arguments,
     add_iterations_argument,
     add_operating_range_arguments,
@@ -94,6 +95,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="processes for the closed-loop runs (default %(default)s)")
     add_identify_data_arguments(p, study=True)
     add_scheduling_argument(p)
+    add_contact_argument(p, "--identify-contact-outputs")
     add_residual_argument(p, "--identify-residual-by")
     add_base_fraction_argument(p, "--identify-base-fraction")
     add_scene_motions_argument(p, "--identify-scene-motions")
@@ -291,6 +293,10 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                                "--help); run it with --cases noise, or --undeclared-noise to "
                                "leave them untold; `jointplay control --measurement-noise` "
                                "runs one model under noise of your choice")
+    if args.contact_outputs and not scene.robot.clearance_joints:
+        raise DescriptionError("--identify-contact-outputs", "the scene's robot has no "
+                               "clearance joint, so there is no journal eccentricity to "
+                               "measure: drop the flag")
     if args.seeds < 1:
         raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
     if args.first_seed < 0:
@@ -307,6 +313,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
                      "duration": args.duration, "one_step_iterations": iters[0],
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
+                     "contact_outputs": args.contact_outputs,
                      "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
                      "window": window_setting(args),
                      "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),
@@ -315,7 +322,8 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                                                             "--identify-scene-motions"),
                      **lag_settings(args),
                      **operating_range(args, prefix="identify-")}
-    cases = case_list(scene, names, clearances, nominal)
+    cases = case_list(scene, names, clearances, nominal,
+                      scene.robot.clearance_joints if args.contact_outputs else ())
     scenes = {c.name: case_scene(scene, c) for c in cases}
     return StudyPlan(scene, out, cases, scenes, nominal, identify_args)
 

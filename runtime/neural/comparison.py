@@ -171,7 +171,7 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     compiled step's cost and its linearised loop's spectral radius (nominal, and along the
     run).
     """
-    from jointplay.neural.identify import ideal_reference, reference_outputs
+    from jointplay.neural.identify import contact_joints, ideal_reference, reference_outputs
     from jointplay.neural.plant import PLANT_TOLERANCE, SUBSTEPS, control_plant
     from jointplay.sim import load_scene_model
 
@@ -179,7 +179,10 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     # measure what that setting changes (benchmarks/control_plant.py).
     scene = control_plant(scene, plant_tolerance or PLANT_TOLERANCE)
     ideal = ideal_reference(scene)
-    reference = reference_outputs(ideal)
+    # A model that measures the journals' eccentricities: every controller's run measures
+    # them too (the baselines ignore them), so that all rows share one reference.
+    contact = contact_joints(narx.output_names)
+    reference = reference_outputs(ideal, contact)
     model = load_scene_model(scene)
     nj = len(scene.robot.moving_joints)
     names = [c for c in controllers if (arx is not None or c != LINEAR)
@@ -202,7 +205,7 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
         else:
             bound = open_loop_bound(runs["open loop"], reference, nj, divergence_factor)
         run = run_loop(scene, reference, law, name, model, limit=bound, conditions=conditions,
-                       substeps=SUBSTEPS)
+                       substeps=SUBSTEPS, contact=contact)
         _attach_log(run, log)
         runs[name] = run
         if not quiet:

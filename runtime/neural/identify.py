@@ -61,6 +61,8 @@ from jointplay.neural.inner_loop import (
     DEFAULT_KP,
     LIMIT_FACTOR,
     InnerLoop,
+    contact_index,
+    contact_joints,
     default_limits,
     ideal_reference,
     inner_loop_for,
@@ -89,6 +91,7 @@ from jointplay.neural.trajectories import (
     Trajectory,
     check_finite,
     collect,
+    measured_contact,
     run_task,
 )
 from jointplay.neural.twin import (
@@ -168,7 +171,7 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
     trajectories = collect(scene, config, inner, limits, quiet)
     check_finite(trajectories)
     t1 = time.perf_counter()
-    names = _signal_names(inner.joints)
+    names = _signal_names(inner.joints, measured_contact(scene, config))
     context = _context(scene, config, inner, limits)
     _store_datasets(out, trajectories, names, context, dt)
     split = {s: [t for t in trajectories if t.split == s] for s in SPLITS}
@@ -336,8 +339,8 @@ def linear_baselines(model: Narx, arx: Narx, split: dict[str, list[Trajectory]],
     return out, lpv
 
 
-def _signal_names(joints: tuple[int, ...]) -> dict[str, Any]:
-    names_out, units_out = output_names(joints)
+def _signal_names(joints: tuple[int, ...], contact: tuple[int, ...] = ()) -> dict[str, Any]:
+    names_out, units_out = output_names(joints, contact)
     names_in, units_in = input_names(joints)
     return {"output_names": names_out, "output_units": units_out, "input_names": names_in,
             "input_units": units_in}
@@ -445,6 +448,8 @@ __all__ = [
     "aprbs",
     "check_finite",
     "collect",
+    "contact_index",
+    "contact_joints",
     "data_warnings",
     "default_limits",
     "evaluate",

@@ -39,6 +39,11 @@ class IdentifyConfig:
     # in the scheduling signals, a bilinear part) rather than an ARX model, started at the
     # least-squares LPV-ARX fit, and its residual is weighed against that model.
     lpv_base: bool = False
+    # The journals' eccentricities (ex, ey) at every clearance joint are measured outputs
+    # as well (a bearing displacement sensor's signals): the contact state
+    # the deviation dynamics switch with, for every model identified (network, ARX twin,
+    # LPV-ARX) and every controller built on them.
+    contact_outputs: bool = False
     # The operating range the training and validation runs span: each run is simulated on
     # the robot with one of these radial clearances (m, every clearance joint) and payload
     # masses (kg), cycling through every pair; empty: the scene's own. The test runs stay on

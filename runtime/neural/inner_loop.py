@@ -38,13 +38,40 @@ class InnerLoop:
         return -np.asarray(self.kp) * deviation[:n] - np.asarray(self.kd) * deviation[n:2 * n]
 
 
-def output_names(joints: Sequence[int]) -> tuple[tuple[str, ...], tuple[str, ...]]:
-    """Names and units of the plant's outputs (deviations from the ideal robot)."""
+def output_names(joints: Sequence[int], contact: Sequence[int] = ()
+                 ) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """Names and units of the plant's outputs (deviations from the ideal robot).
+
+    ``contact``: clearance joints whose journal eccentricity (ex, ey: the journal centre's
+    offset from the bearing's, in the bearing's frame) is measured as well, a bearing
+    displacement sensor's signals. They come after the others, so that every other output
+    keeps its place; the ideal robot's are 0, so their deviation is the eccentricity. Their
+    rates are left out: one step ahead they are less predictable than persistence (NRMSE
+    1.2-6 on the paper robot's test runs, docs/control.md), and the lags carry the motion.
+    """
     names = [f"q{j}" for j in joints] + [f"dq{j}" for j in joints] + \
         ["tip_x", "tip_y", "tip_vx", "tip_vy", "tip_ax", "tip_ay"]
     units = ["rad"] * len(joints) + ["rad/s"] * len(joints) + \
         ["m", "m", "m/s", "m/s", "m/s^2", "m/s^2"]
+    names += [f"{a}{j}" for j in contact for a in ("ex", "ey")]
+    units += ["m"] * (2 * len(contact))
     return tuple(names), tuple(units)
+
+
+def contact_joints(names: Sequence[str]) -> tuple[int, ...]:
+    """The joints whose journal eccentricity is among the outputs ``names``."""
+    return tuple(int(n[2:]) for n in names if n.startswith("ex"))
+
+
+def contact_index(model: Any, contact: Sequence[int]) -> list[int]:
+    """The eccentricity coordinates of ``contact`` in a clearance model's state, in the
+    outputs' order; a joint without play in ``model`` is refused by name."""
+    missing = [j for j in contact if f"ex{j}" not in model.coordinates]
+    if missing:
+        raise DescriptionError("--model", f"the model measures the journal eccentricity of "
+                               f"joint(s) {missing}, which have no clearance in this robot: "
+                               "identify the model on this robot")
+    return [model.coordinates.index(f"{a}{j}") for j in contact for a in ("ex", "ey")]
 
 
 def output_increments(names: Sequence[str]) -> tuple[bool, ...]:
@@ -57,19 +84,24 @@ def input_names(joints: Sequence[int]) -> tuple[tuple[str, ...], tuple[str, ...]
     return tuple(f"v{j}" for j in joints), tuple("N m" for _ in joints)
 
 
-def measure(stepper: Any, angle_index: Sequence[int]) -> np.ndarray:
-    """The plant's outputs (absolute) at the stepper's current sample."""
+def measure(stepper: Any, angle_index: Sequence[int],
+            eccentricity_index: Sequence[int] = ()) -> np.ndarray:
+    """The plant's outputs (absolute) at the stepper's current sample; with
+    ``eccentricity_index`` (:func:`contact_index`) the journals' eccentricities after the
+    others."""
     x = stepper.x
     n = stepper.model.n_coordinates
     ee = stepper.end_effector()
+    e = list(eccentricity_index)
     return np.concatenate([x[list(angle_index)], x[[n + i for i in angle_index]],
-                           ee["position"], ee["velocity"], ee["acceleration"]])
+                           ee["position"], ee["velocity"], ee["acceleration"], x[e]])
 
 
-def reference_outputs(ideal: Any) -> np.ndarray:
-    """The same outputs for a simulated ideal-joint robot (rows: samples)."""
+def reference_outputs(ideal: Any, contact: Sequence[int] = ()) -> np.ndarray:
+    """The same outputs for a simulated ideal-joint robot (rows: samples); its journals sit
+    at their bearings' centres, so the eccentricity outputs of ``contact`` are 0."""
     return np.hstack([ideal.q, ideal.u, ideal.tip_position, ideal.tip_velocity,
-                      ideal.tip_acceleration])
+                      ideal.tip_acceleration, np.zeros((ideal.q.shape[0], 2 * len(contact)))])
 
 
 def default_limits(scene: Any) -> np.ndarray:
@@ -106,6 +138,7 @@ def ideal_reference(scene: Any, ideal_model: Any | None = None) -> Any:
     return simulate(scene.with_robot(ideal_counterpart(scene.robot)), model=model)
 
 
-__all__ = ["DEFAULT_KD", "DEFAULT_KP", "LIMIT_FACTOR", "InnerLoop", "default_limits",
-           "ideal_reference", "inner_loop_for", "input_names", "measure", "output_increments",
-           "output_names", "reference_outputs", "with_torques"]
+__all__ = ["DEFAULT_KD", "DEFAULT_KP", "LIMIT_FACTOR", "InnerLoop", "contact_index",
+           "contact_joints", "default_limits", "ideal_reference", "inner_loop_for",
+           "input_names", "measure", "output_increments", "output_names", "reference_outputs",
+           "with_torques"]

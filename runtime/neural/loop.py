@@ -82,18 +82,23 @@ NO_CONDITIONS = LoopConditions()  # the scene alone: no disturbance, noise or de
 
 def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
              clearance_model: Any | None = None, *, limit: float = math.inf,
-             conditions: LoopConditions = LoopConditions(), substeps: int = 1) -> Run:
+             conditions: LoopConditions = LoopConditions(), substeps: int = 1,
+             contact: Sequence[int] = ()) -> Run:
     """Step the scene's clearance robot with ``law(k, y)`` added to the scene's torques.
+
+    ``y`` holds the outputs of ``reference``'s columns: the plant's outputs, and after them
+    the journal eccentricities of the joints ``contact``.
 
     ``limit``: the run stops, marked diverged, once the end-effector position error exceeds
     it (m), as it does when the plant can no longer be integrated. ``substeps`` > 1 (``bdf``
     plants) also records the end effector's acceleration at that many points per sample."""
-    from jointplay.neural.identify import measure
+    from jointplay.neural.identify import contact_index, measure
     from jointplay.sim import Stepper
 
     stepper = Stepper(scene, model=clearance_model, substeps=substeps)
     joints = scene.robot.moving_joints
     index = [stepper.model.coordinates.index(f"q{j}") for j in joints]
+    eccentricity = contact_index(stepper.model, contact)
     n = scene.run.n_outputs
     dt = scene.run.output_step
     nj = len(joints)
@@ -108,7 +113,7 @@ def run_loop(scene: Any, reference: np.ndarray, law: Law, name: str,
     last = n
     start = time.perf_counter()
     for k in range(n + 1):
-        y[k] = measure(stepper, index)
+        y[k] = measure(stepper, index, eccentricity)
         error = float(np.linalg.norm(y[k, tip] - reference[k, tip]))
         if not np.all(np.isfinite(y[k])) or error > limit:
             diverged = (f"end-effector error {error:.3g} m at t = {k * dt:.3f} s exceeds the "

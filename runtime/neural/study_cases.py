@@ -17,8 +17,10 @@ from jointplay.neural.loop import LoopConditions
 CASES = ("scene", "slow", "fast", "offset", "disturbance", "noise", "delay")
 # Measurement noise, standard deviation per output kind: a 21-bit encoder's angle, its
 # 1 ms difference for speeds, and comparable figures for the end effector.
+# The journals' eccentricities (--contact-outputs): an eddy-current displacement sensor's
+# 0.1 µm.
 NOISE = {"q": 3e-6, "dq": 4e-3, "tip_x": 1e-6, "tip_y": 1e-6, "tip_vx": 1e-3, "tip_vy": 1e-3,
-         "tip_ax": 0.05, "tip_ay": 0.05}
+         "tip_ax": 0.05, "tip_ay": 0.05, "ex": 1e-7, "ey": 1e-7}
 
 
 @dataclass(frozen=True)
@@ -30,7 +32,9 @@ class Case:
 
 
 def case_list(scene: Any, names: Sequence[str], clearances: Sequence[float],
-              nominal: float) -> list[Case]:
+              nominal: float, contact: Sequence[int] = ()) -> list[Case]:
+    """The cases ``names``; ``contact``: the joints whose journal eccentricity the models
+    measure (the noise case puts noise on those sensors too)."""
     text = [scene.torque_text.get(f"joint{j}", "0") for j in scene.robot.moving_joints]
     t_end = scene.run.t_end
 
@@ -52,7 +56,7 @@ def case_list(scene: Any, names: Sequence[str], clearances: Sequence[float],
             cond = LoopConditions(disturbance=tuple(0.05 * p for p in peaks),
                                   disturbance_time=min(1.0, 0.5 * t_end))
         elif name == "noise":
-            cond = LoopConditions(noise=noise_levels(scene), seed=1)
+            cond = LoopConditions(noise=noise_levels(scene, contact), seed=1)
         elif name == "delay":
             cond = LoopConditions(delay=1)
         out.append(Case(name, nominal, torques, cond))
@@ -72,11 +76,11 @@ def _peaks(scene: Any) -> list[float]:
     return [float(np.max(np.abs(f.numpy(t)))) for f in scene.torques]
 
 
-def noise_levels(scene: Any) -> tuple[float, ...]:
+def noise_levels(scene: Any, contact: Sequence[int] = ()) -> tuple[float, ...]:
     from jointplay.neural.identify import output_names
 
-    names, _ = output_names(scene.robot.moving_joints)
-    return tuple(NOISE.get(n, NOISE["dq" if n.startswith("dq") else "q"]) for n in names)
+    names, _ = output_names(scene.robot.moving_joints, contact)
+    return tuple(NOISE[n.rstrip("0123456789")] for n in names)
 
 
 def declared(settings: ControllerSettings, scene: Any, case: Case) -> ControllerSettings:
@@ -87,7 +91,9 @@ def declared(settings: ControllerSettings, scene: Any, case: Case) -> Controller
         return settings
     from jointplay.neural.identify import output_names
 
-    names, _ = output_names(scene.robot.moving_joints)
+    contact = scene.robot.clearance_joints if len(case.conditions.noise) > len(
+        output_names(scene.robot.moving_joints)[0]) else ()
+    names, _ = output_names(scene.robot.moving_joints, contact)
     return replace(settings, measurement_noise=tuple(
         (n, float(std)) for n, std in zip(names, case.conditions.noise, strict=True) if std))
 

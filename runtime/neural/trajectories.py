@@ -30,6 +30,7 @@ from jointplay.neural.excitation import (
 from jointplay.neural.identify_config import IdentifyConfig
 from jointplay.neural.inner_loop import (
     InnerLoop,
+    contact_index,
     ideal_reference,
     measure,
     reference_outputs,
@@ -74,6 +75,7 @@ class _Task:
     v: np.ndarray
     inner: InnerLoop
     description: dict[str, Any]
+    contact: tuple[int, ...] = ()  # joints whose journal eccentricity is measured
 
 
 # ---- planning -----------------------------------------------------------------------------
@@ -108,6 +110,12 @@ def robot_variants(scene: Any, config: IdentifyConfig) -> list[tuple[dict[str, f
     return out
 
 
+def measured_contact(scene: Any, config: IdentifyConfig) -> tuple[int, ...]:
+    """The joints whose journal eccentricity the model measures: every clearance joint of
+    the scene's robot with ``config.contact_outputs``, else none."""
+    return tuple(scene.robot.clearance_joints) if config.contact_outputs else ()
+
+
 def _plan(scene: Any, config: IdentifyConfig, inner: InnerLoop,
           limits: np.ndarray) -> list[_Task]:
     """Every trajectory's excitation, drawn from one seeded generator per trajectory; the
@@ -133,7 +141,7 @@ def _plan(scene: Any, config: IdentifyConfig, inner: InnerLoop,
                 changed, robot_scene = variants[i % len(variants)]
                 description["robot"] = changed
             tasks.append(_Task(split, family, seed, with_torques(robot_scene, base), v, inner,
-                               description))
+                               description, measured_contact(scene, config)))
     return tasks
 
 
@@ -186,14 +194,15 @@ def run_task(task: _Task) -> Trajectory:
 
     clearance, ideal_model = _models(task.scene)
     ideal = ideal_reference(task.scene, ideal_model)
-    r = reference_outputs(ideal)
+    r = reference_outputs(ideal, task.contact)
     stepper = Stepper(task.scene, model=clearance)
     angle_index = [clearance.coordinates.index(f"q{j}") for j in task.inner.joints]
+    eccentricity = contact_index(clearance, task.contact)
     n = task.scene.run.n_outputs
     y = np.zeros_like(r)
     tau_inner = np.zeros((n + 1, len(task.inner.joints)))
     for k in range(n + 1):
-        y[k] = measure(stepper, angle_index)
+        y[k] = measure(stepper, angle_index, eccentricity)
         if k == n:
             break
         tau_inner[k] = task.inner.torque(y[k] - r[k])
