@@ -124,3 +124,16 @@ def test_controllers_run_on_a_model_that_measures_the_contact_state() -> None:
                     analyse=False)
     for name in ("open loop", "PD"):
         np.testing.assert_array_equal(result.runs[name].y[:, :10], plain.runs[name].y)
+
+
+def test_study_baselines_run_beside_models_that_measure_the_contact_state() -> None:
+    """The study runs its baselines once per case on a stand-in for the model (they need
+    only the inner loop's gains), beside internal models of either output set."""
+    from jointplay.neural.comparison import compare
+    from jointplay.neural.imc_settings import ControllerSettings
+    from jointplay.neural.study_runs import _dummy_model
+
+    scene = default_scene().with_run(t_end=0.05)
+    result = compare(scene, _dummy_model(scene), ControllerSettings(),
+                     controllers=("open loop", "PD"), analyse=False)
+    assert result.runs["PD"].y.shape == (scene.run.n_outputs + 1, 10)

@@ -93,7 +93,7 @@ def _dummy_model(scene: Any) -> Any:
     return SimpleNamespace(
         context={"plant": {"inner_loop": {"joints": joints, "kp": [DEFAULT_KP] * len(joints),
                                           "kd": [DEFAULT_KD] * len(joints)}}},
-        output_index=names.index)
+        output_index=names.index, output_names=names)
 
 
 def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[Any]:
