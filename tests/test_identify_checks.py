@@ -316,3 +316,40 @@ def test_network_on_an_lpv_arx_base_starts_at_the_lpv_fit_and_is_never_worse() -
     assert selection.losses[selection.alpha] <= selection.arx_loss
     with pytest.raises(Exception, match="scheduling"):
         IdentifyConfig(lpv_base=True)
+
+
+def test_linear_input_gain_keeps_the_torque_out_of_the_hidden_layers() -> None:
+    """--linear-input-gain: the hidden layers never see the input lags (exported as zero
+    weights, and torch's predictions match the export to 1e-9), so the model's response to
+    a change of the added torque is its linear part's alone, the direct path's and the
+    bilinear (LPV) part's, at every regressor; the other regressors still reach the
+    hidden layers, and the flag needs the linear path."""
+    pytest.importorskip("torch")
+    from jointplay.neural.training import train_narx
+
+    rng = np.random.default_rng(10)
+    train = [_scheduled_run(rng, 300) for _ in range(2)]
+    validation = [replace(_scheduled_run(rng, 300), split="validation")]
+    names = _names()
+    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
+                            multi_step_iterations=2, scheduling=True, lpv_base=True,
+                            linear_input_gain=True)
+    model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
+    assert history["export_check"][0] < 1e-9
+    ny, nu = 10, 2
+    first = model.weights[0]
+    inputs = slice(2 * ny, 2 * ny + 2 * nu)
+    assert not np.any(first[:, inputs])
+    assert np.all(np.abs(first[:, : 2 * ny]).max(axis=0) > 0)
+    # The prediction's change with the input lags equals the same change of the model with
+    # its hidden layers' output removed (the last layer's weights zeroed): the linear part.
+    linear_only = replace(model, weights=(*model.weights[:-1], np.zeros_like(model.weights[-1])))
+    phi = np.array([np.concatenate([rng.normal(model.regressor_mean, model.regressor_scale)])
+                    for _ in range(5)])
+    shifted = phi.copy()
+    shifted[:, inputs] += rng.normal(0, 1.0, (5, 2 * nu)) * model.regressor_scale[inputs]
+    np.testing.assert_allclose(model.predict(shifted) - model.predict(phi),
+                               linear_only.predict(shifted) - linear_only.predict(phi),
+                               rtol=0, atol=1e-12 * np.abs(model.predict(phi)).max())
+    with pytest.raises(Exception, match="linear direct path"):
+        IdentifyConfig(linear_input_gain=True, linear_path=False)

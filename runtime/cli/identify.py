@@ -15,6 +15,7 @@ from jointplay.cli.neural_args import (
     add_contact_argument,
     add_identify_data_arguments,
     add_iterations_argument,
+    add_linear_gain_argument,
     add_operating_range_arguments,
     add_residual_argument,
     add_scene_motions_argument,
@@ -73,6 +74,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="samples per free-run training window (default %(default)s)")
     add_scheduling_argument(p)
     add_contact_argument(p, "--contact-outputs")
+    add_linear_gain_argument(p, "--linear-input-gain")
     add_residual_argument(p)
     add_base_fraction_argument(p, "--base-fraction")
     add_scene_motions_argument(p, "--scene-motions")
@@ -166,7 +168,7 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
         scheduling=args.scheduling, lpv_base=lpv_base_setting(args),
-        contact_outputs=args.contact_outputs,
+        contact_outputs=args.contact_outputs, linear_input_gain=args.linear_input_gain,
         residual_by=residual_setting(args, "--residual-by", counts[1]),
         base_fraction=base_fraction_setting(args, "--base-fraction"),
         scene_motions=scene_motions_setting(args, "--scene-motions"), **operating_range(args))

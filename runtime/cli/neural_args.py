@@ -124,6 +124,13 @@ def add_contact_argument(parser: argparse.ArgumentParser, flag: str) -> None:
                              "and controller sees the contact state")
 
 
+def add_linear_gain_argument(parser: argparse.ArgumentParser, flag: str) -> None:
+    parser.add_argument(flag, dest="linear_input_gain", action="store_true",
+                        help="the network's hidden layers do not see the added torque: the "
+                             "model's input gain (what the controller inverts) is its linear "
+                             "part's, and the network corrects only the rest of the response")
+
+
 def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
                           ) -> None:
     from jointplay.neural.identify_config import RESIDUAL_CRITERIA

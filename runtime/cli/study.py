@@ -21,6 +21,7 @@ from jointplay.cli.neural_args import (
     add_contact_argument,
     add_identify_data_arguments,
     add_iterations_argument,
+    add_linear_gain_argument,
     add_operating_range_arguments,
     add_residual_argument,
     add_scene_motions_argument,
@@ -96,6 +97,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_identify_data_arguments(p, study=True)
     add_scheduling_argument(p)
     add_contact_argument(p, "--identify-contact-outputs")
+    add_linear_gain_argument(p, "--identify-linear-input-gain")
     add_residual_argument(p, "--identify-residual-by")
     add_base_fraction_argument(p, "--identify-base-fraction")
     add_scene_motions_argument(p, "--identify-scene-motions")
@@ -314,6 +316,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                      "duration": args.duration, "one_step_iterations": iters[0],
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
                      "contact_outputs": args.contact_outputs,
+                     "linear_input_gain": args.linear_input_gain,
                      "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
                      "window": window_setting(args),
                      "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),

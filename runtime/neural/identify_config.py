@@ -44,6 +44,12 @@ class IdentifyConfig:
     # the deviation dynamics switch with, for every model identified (network, ARX twin,
     # LPV-ARX) and every controller built on them.
     contact_outputs: bool = False
+    # The hidden layers do not see the added torque: the model's gain from it is its linear
+    # part's (the ARX or LPV-ARX fit, trained on), and the network corrects only the
+    # response to the outputs' history and the scheduling signals. The controller inverts
+    # that gain; a network's input gain, identified from small excitation, varies with the
+    # state where the linear model's does not.
+    linear_input_gain: bool = False
     # The operating range the training and validation runs span: each run is simulated on
     # the robot with one of these radial clearances (m, every clearance joint) and payload
     # masses (kg), cycling through every pair; empty: the scene's own. The test runs stay on
@@ -70,6 +76,10 @@ class IdentifyConfig:
                 or not 0 <= self.seed <= MAX_SEED:
             raise DescriptionError("seed", f"must be a whole number from 0 to {MAX_SEED} "
                                    f"(2**32 - 1), got {self.seed!r}")
+        if self.linear_input_gain and not self.linear_path:
+            raise DescriptionError("linear_input_gain", "needs the linear direct path (drop "
+                                   "--no-linear-path): without it the model has no input "
+                                   "gain")
         if self.lpv_base and not (self.scheduling and self.linear_path):
             raise DescriptionError("lpv_base", "needs the scheduling signals and the linear "
                                    "direct path (--scheduling, without --no-linear-path)")

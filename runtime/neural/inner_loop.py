@@ -46,8 +46,8 @@ def output_names(joints: Sequence[int], contact: Sequence[int] = ()
     offset from the bearing's, in the bearing's frame) is measured as well, a bearing
     displacement sensor's signals. They come after the others, so that every other output
     keeps its place; the ideal robot's are 0, so their deviation is the eccentricity. Their
-    rates are left out: one step ahead they are less predictable than persistence (NRMSE
-    1.2-6 on the paper robot's test runs, docs/control.md), and the lags carry the motion.
+    rates are left out: a journal's velocity jumps at every impact (one step ahead, a piloted
+    model with them predicted them worse than persistence); the lags carry the motion.
     """
     names = [f"q{j}" for j in joints] + [f"dq{j}" for j in joints] + \
         ["tip_x", "tip_y", "tip_vx", "tip_vy", "tip_ax", "tip_ay"]

@@ -136,7 +136,7 @@ def _setting(training: dict[str, Any], key: str) -> Any:
     defaults: dict[str, Any] = {"scheduling": False, "lpv_base": False, "clearances": [],
                                 "payloads": [], "residual_by": "free-run",
                                 "base_fraction": 0.5, "scene_motions": 2,
-                                "contact_outputs": False}
+                                "contact_outputs": False, "linear_input_gain": False}
     return training.get(key, defaults.get(key))
 
 

@@ -89,6 +89,17 @@ class _Network:
             width = h
         layers.append(torch.nn.Linear(width, self.ny, dtype=self.dtype))
         self.net = torch.nn.Sequential(*layers)
+        # linear_input_gain: the hidden layers do not see the input lags (their entries of
+        # the regressor are zeroed on the way in, their weights exported as 0), so the
+        # model's gain from the added torque is its linear part's alone.
+        self.hidden_mask: Any = None
+        if config.linear_input_gain:
+            mask = np.ones(data.x.shape[1])
+            first = config.output_lags * data.t.shape[1]
+            mask[first: data.x.shape[1] - len(data.scheduling)] = 0.0
+            self.hidden_mask = torch.tensor(mask, dtype=self.dtype)
+            with torch.no_grad():
+                self.net[0].weight.mul_(self.hidden_mask)
         self.direct = torch.nn.Linear(data.x.shape[1], self.ny, bias=False, dtype=self.dtype)
         # (weight, bias, bilinear part or None) of the linear fit
         self.linear_start: tuple[Any, Any, Any] | None = None
@@ -132,7 +143,8 @@ class _Network:
 
     def out(self, z: Any) -> Any:
         """Normalised increments (or values) from normalised regressors."""
-        h = self.net(z) + self.direct(z) if self.linear_path else self.net(z)
+        seen = z if self.hidden_mask is None else z * self.hidden_mask
+        h = self.net(seen) + self.direct(z) if self.linear_path else self.net(seen)
         if self.bilinear_shape is not None:
             start, n_u, n_s = self.bilinear_shape
             zu, w = z[..., start: start + n_u], z[..., z.shape[-1] - n_s:]
@@ -182,8 +194,10 @@ class _Network:
     def export(self, data: _Data, names: dict[str, Any], dt: float,
                context: dict[str, Any]) -> Narx:
         linear = [mod for mod in self.net if isinstance(mod, self.torch.nn.Linear)]
-        return Narx(weights=tuple(mod.weight.detach().numpy().astype(float).copy()
-                                  for mod in linear),
+        weights = [mod.weight.detach().numpy().astype(float).copy() for mod in linear]
+        if self.hidden_mask is not None:
+            weights[0] = weights[0] * self.hidden_mask.numpy()
+        return Narx(weights=tuple(weights),
                     biases=tuple(mod.bias.detach().numpy().astype(float).copy()
                                  for mod in linear),
                     regressor_mean=data.mu, regressor_scale=data.sigma,
