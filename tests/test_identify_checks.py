@@ -257,21 +257,33 @@ def test_training_runs_span_the_clearances_and_payloads_asked_for() -> None:
         IdentifyConfig(clearances=(-1e-6,))
 
 
+def _scheduled_runs(seed: int) -> tuple[list[Trajectory], list[Trajectory]]:
+    """Two training runs and one validation run with scheduling signals."""
+    rng = np.random.default_rng(seed)
+    train = [_scheduled_run(rng, 300) for _ in range(2)]
+    return train, [replace(_scheduled_run(rng, 300), split="validation")]
+
+
+def _train_small(train: list[Trajectory], validation: list[Trajectory],
+                 **flags: Any) -> tuple[Any, dict[str, Any]]:
+    """A network of 4 hidden nodes with the scheduling signals, a few iterations."""
+    from jointplay.neural.training import train_narx
+
+    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
+                            multi_step_iterations=2, scheduling=True, **flags)
+    return train_narx(train, validation, config, _names(), 1e-3, {}, quiet=True)
+
+
 def test_network_trained_with_scheduling_signals_exports_them() -> None:
     """--scheduling: the network's regressor ends with the scheduling signals, the exported
     model reproduces torch's predictions (train_narx checks to 1e-9) and its free run takes
     the signals from the runs' reference and feedforward."""
     pytest.importorskip("torch")
     from jointplay.neural.scheduling import scheduling_names, trajectory_scheduling
-    from jointplay.neural.training import train_narx
 
-    rng = np.random.default_rng(8)
-    train = [_scheduled_run(rng, 300) for _ in range(2)]
-    validation = [replace(_scheduled_run(rng, 300), split="validation")]
+    train, validation = _scheduled_runs(8)
     names = _names()
-    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
-                            multi_step_iterations=2, scheduling=True)
-    model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
+    model, history = _train_small(train, validation)
     assert model.scheduling == scheduling_names(JOINTS)
     assert model.n_regressor == 2 * 10 + 2 * 2 + 8
     assert history["export_check"][0] < 1e-9
@@ -290,12 +302,9 @@ def test_network_on_an_lpv_arx_base_starts_at_the_lpv_fit_and_is_never_worse() -
     from jointplay.neural.identify import output_increments
     from jointplay.neural.linear_fit import fit_arx, model_scheduling, segments
     from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
-    from jointplay.neural.training import train_narx
     from jointplay.neural.twin import select_residual
 
-    rng = np.random.default_rng(9)
-    train = [_scheduled_run(rng, 300) for _ in range(2)]
-    validation = [replace(_scheduled_run(rng, 300), split="validation")]
+    train, validation = _scheduled_runs(9)
     names = _names()
     base = fit_arx(segments(train, 0, names), names, 2, 2, 1e-3,
                    scheduling=model_scheduling(names), lpv=True)
@@ -307,9 +316,7 @@ def test_network_on_an_lpv_arx_base_starts_at_the_lpv_fit_and_is_never_worse() -
     # The same least squares up to the ridge (1e-6 per sample), which here acts on
     # normalised targets with their mean removed: equal to 1e-4 of the largest prediction.
     assert np.max(np.abs(base.predict(phi) - direct)) <= 1e-4 * np.max(np.abs(direct))
-    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
-                            multi_step_iterations=2, scheduling=True, lpv_base=True)
-    model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
+    model, history = _train_small(train, validation, lpv_base=True)
     assert model.bilinear is not None and model.bilinear.shape == base.bilinear.shape
     assert history["export_check"][0] < 1e-9
     _, selection = select_residual(model, base, segments(validation, 0, names), 20)
@@ -325,16 +332,9 @@ def test_linear_input_gain_keeps_the_torque_out_of_the_hidden_layers() -> None:
     bilinear (LPV) part's, at every regressor; the other regressors still reach the
     hidden layers, and the flag needs the linear path."""
     pytest.importorskip("torch")
-    from jointplay.neural.training import train_narx
-
-    rng = np.random.default_rng(10)
-    train = [_scheduled_run(rng, 300) for _ in range(2)]
-    validation = [replace(_scheduled_run(rng, 300), split="validation")]
-    names = _names()
-    config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
-                            multi_step_iterations=2, scheduling=True, lpv_base=True,
-                            linear_input_gain=True)
-    model, history = train_narx(train, validation, config, names, 1e-3, {}, quiet=True)
+    train, validation = _scheduled_runs(10)
+    rng = np.random.default_rng(11)
+    model, history = _train_small(train, validation, lpv_base=True, linear_input_gain=True)
     assert history["export_check"][0] < 1e-9
     ny, nu = 10, 2
     first = model.weights[0]
