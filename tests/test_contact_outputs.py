@@ -67,14 +67,21 @@ def test_eccentricities_are_measured_without_changing_the_run() -> None:
 
 
 def test_contact_outputs_need_a_clearance_joint() -> None:
-    from jointplay.cli.identify import check_scene_for
+    """identify and control-study refuse the flag on a robot without play, naming it."""
+    import argparse
+
+    from jointplay.cli.neural_args import contact_setting
     from jointplay.scene.definition import ideal_counterpart
 
     scene = default_scene()
     rigid = scene.with_robot(ideal_counterpart(scene.robot))
-    with pytest.raises(DescriptionError, match=r"--contact-outputs.*no clearance"):
-        check_scene_for(IdentifyConfig(contact_outputs=True), rigid)
-    check_scene_for(IdentifyConfig(contact_outputs=True), scene)
+    asked = argparse.Namespace(contact_outputs=True)
+    for flag in ("--contact-outputs", "--identify-contact-outputs"):
+        with pytest.raises(DescriptionError, match=r"no clearance joint") as err:
+            contact_setting(asked, rigid, flag)
+        assert err.value.field == flag
+    assert contact_setting(asked, scene, "--contact-outputs") is True
+    assert contact_setting(argparse.Namespace(contact_outputs=False), rigid, "x") is False
 
 
 def test_noise_case_covers_the_eccentricity_sensors() -> None:

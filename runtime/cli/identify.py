@@ -22,6 +22,7 @@ from jointplay.cli.neural_args import (
     add_scheduling_argument,
     base_fraction_setting,
     check_duration,
+    contact_setting,
     float_list,
     int_list,
     iteration_counts,
@@ -168,7 +169,8 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         one_step_iterations=iters[0], multi_step_iterations=iters[1],
         window=args.window, workers=args.workers, linear_path=not args.no_linear_path,
         scheduling=args.scheduling, lpv_base=lpv_base_setting(args),
-        contact_outputs=args.contact_outputs, linear_input_gain=args.linear_input_gain,
+        contact_outputs=contact_setting(args, scene, "--contact-outputs"),
+        linear_input_gain=args.linear_input_gain,
         residual_by=residual_setting(args, "--residual-by", counts[1]),
         base_fraction=base_fraction_setting(args, "--base-fraction"),
         scene_motions=scene_motions_setting(args, "--scene-motions"), **operating_range(args))
@@ -179,10 +181,6 @@ def check_scene_for(config: IdentifyConfig, scene: Scene) -> None:
     the run at the trajectories' duration."""
     if not config.torque_limit:
         default_limits(scene)
-    if config.contact_outputs and not scene.robot.clearance_joints:
-        raise DescriptionError("--contact-outputs", "the scene's robot has no clearance "
-                               "joint, so there is no journal eccentricity to measure: drop "
-                               "the flag")
     try:
         scene.with_run(t_end=config.duration)
     except DescriptionError as err:

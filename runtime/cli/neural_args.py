@@ -124,6 +124,14 @@ def add_contact_argument(parser: argparse.ArgumentParser, flag: str) -> None:
                              "and controller sees the contact state")
 
 
+def contact_setting(args: argparse.Namespace, scene: Any, flag: str) -> bool:
+    """The contact-outputs flag, refused on a robot without a clearance joint."""
+    if args.contact_outputs and not scene.robot.clearance_joints:
+        raise DescriptionError(flag, "the scene's robot has no clearance joint, so there is "
+                               "no journal eccentricity to measure: drop the flag")
+    return bool(args.contact_outputs)
+
+
 def add_linear_gain_argument(parser: argparse.ArgumentParser, flag: str) -> None:
     parser.add_argument(flag, dest="linear_input_gain", action="store_true",
                         help="the network's hidden layers do not see the added torque: the "

@@ -28,6 +28,7 @@ from jointplay.cli.neural_args import (
     add_scheduling_argument,
     add_settings_arguments,
     base_fraction_setting,
+    contact_setting,
     float_list,
     int_list,
     iteration_counts,
@@ -295,10 +296,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                                "--help); run it with --cases noise, or --undeclared-noise to "
                                "leave them untold; `jointplay control --measurement-noise` "
                                "runs one model under noise of your choice")
-    if args.contact_outputs and not scene.robot.clearance_joints:
-        raise DescriptionError("--identify-contact-outputs", "the scene's robot has no "
-                               "clearance joint, so there is no journal eccentricity to "
-                               "measure: drop the flag")
+    contact = contact_setting(args, scene, "--identify-contact-outputs")
     if args.seeds < 1:
         raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
     if args.first_seed < 0:
@@ -315,7 +313,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
                      "duration": args.duration, "one_step_iterations": iters[0],
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
-                     "contact_outputs": args.contact_outputs,
+                     "contact_outputs": contact,
                      "linear_input_gain": args.linear_input_gain,
                      "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
                      "window": window_setting(args),
@@ -326,7 +324,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                      **lag_settings(args),
                      **operating_range(args, prefix="identify-")}
     cases = case_list(scene, names, clearances, nominal,
-                      scene.robot.clearance_joints if args.contact_outputs else ())
+                      scene.robot.clearance_joints if contact else ())
     scenes = {c.name: case_scene(scene, c) for c in cases}
     return StudyPlan(scene, out, cases, scenes, nominal, identify_args)
 

@@ -39,10 +39,10 @@ class IdentifyConfig:
     # in the scheduling signals, a bilinear part) rather than an ARX model, started at the
     # least-squares LPV-ARX fit, and its residual is weighed against that model.
     lpv_base: bool = False
-    # The journals' eccentricities (ex, ey) at every clearance joint are measured outputs
-    # as well (a bearing displacement sensor's signals): the contact state
-    # the deviation dynamics switch with, for every model identified (network, ARX twin,
-    # LPV-ARX) and every controller built on them.
+    # The journals' eccentricities (ex, ey) at every clearance joint are measured outputs as
+    # well (a bearing displacement sensor's signals): the contact state the deviation
+    # dynamics switch with, for every model identified (network, ARX twin, LPV-ARX) and every
+    # controller built on them.
     contact_outputs: bool = False
     # The hidden layers do not see the added torque: the model's gain from it is its linear
     # part's (the ARX or LPV-ARX fit, trained on), and the network corrects only the

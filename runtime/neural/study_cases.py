@@ -29,6 +29,7 @@ class Case:
     clearance: float  # m, radial, of every clearance joint
     torques: tuple[str, ...]  # expressions per driven joint
     conditions: LoopConditions
+    contact: tuple[int, ...] = ()  # joints whose journal eccentricity the models measure
 
 
 def case_list(scene: Any, names: Sequence[str], clearances: Sequence[float],
@@ -59,10 +60,11 @@ def case_list(scene: Any, names: Sequence[str], clearances: Sequence[float],
             cond = LoopConditions(noise=noise_levels(scene, contact), seed=1)
         elif name == "delay":
             cond = LoopConditions(delay=1)
-        out.append(Case(name, nominal, torques, cond))
+        out.append(Case(name, nominal, torques, cond, tuple(contact)))
     for c in clearances:
         if not math.isclose(c, nominal, rel_tol=1e-9):
-            out.append(Case(f"clearance {c * 1e6:g} µm", c, tuple(text), LoopConditions()))
+            out.append(Case(f"clearance {c * 1e6:g} µm", c, tuple(text), LoopConditions(),
+                            tuple(contact)))
     return out
 
 
@@ -91,9 +93,7 @@ def declared(settings: ControllerSettings, scene: Any, case: Case) -> Controller
         return settings
     from jointplay.neural.identify import output_names
 
-    contact = scene.robot.clearance_joints if len(case.conditions.noise) > len(
-        output_names(scene.robot.moving_joints)[0]) else ()
-    names, _ = output_names(scene.robot.moving_joints, contact)
+    names, _ = output_names(scene.robot.moving_joints, case.contact)
     return replace(settings, measurement_noise=tuple(
         (n, float(std)) for n, std in zip(names, case.conditions.noise, strict=True) if std))
 
