@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.neural.identify_config import IdentifyConfig
+from jointplay.neural.inner_loop import contact_joints
 from jointplay.neural.narx import Narx, fit_percent, nrmse
 from jointplay.neural.trajectories import Trajectory
 
@@ -91,9 +92,13 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
         f"{model.input_lags} input lags) -> hidden {list(model.hidden)} (tanh)"
         f"{' + linear direct path' if model.linear is not None else ''}"
         f"{' + bilinear part (LPV-ARX input gain)' if model.bilinear is not None else ''} -> "
-        f"{model.n_outputs} outputs; sample time {model.sample_time:g} s.",
+        f"{model.n_outputs} outputs; sample time {model.sample_time:g} s."
+        + (" The hidden layers do not see the input lags: the input gain is the linear "
+           "part's." if config.linear_input_gain else ""),
         f"Plant: clearance robot under a joint PD (kp {inner['kp']}, kd {inner['kd']}) around "
-        "the ideal robot's motion; outputs are deviations from it.",
+        "the ideal robot's motion; outputs are deviations from it"
+        + (f", and the journal eccentricities of joints {list(contact_joints(model.output_names))}"
+           " (the ideal robot's are 0)." if contact_joints(model.output_names) else "."),
         f"Trajectories: {metrics['trajectories']} of {config.duration:g} s; test families "
         f"{metrics['test_families']} (fresh realisations; the chirp is never used in "
         "training). The first "
