@@ -100,9 +100,9 @@ def test_noise_case_covers_the_eccentricity_sensors() -> None:
 
 def test_controllers_run_on_a_model_that_measures_the_contact_state() -> None:
     """An ARX model of the 14 outputs, fitted to one run, as the internal model: every
-    controller runs to the end, the eccentricities recorded in each run are the plant's
-    (open loop: as in identification's measurement, the same motion without added torque),
-    and the baselines' runs do not depend on them being measured."""
+    controller runs to the end with all 14 outputs recorded, the open loop's eccentricity
+    reaches the bearing (beyond the 30 µm clearance), and the baselines' runs do not depend
+    on it being measured (their other outputs equal to the bit)."""
     from jointplay.neural.comparison import LINEAR, NEURAL, compare
     from jointplay.neural.identify import _context, _signal_names
     from jointplay.neural.imc_settings import ControllerSettings
