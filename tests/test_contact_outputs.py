@@ -66,6 +66,20 @@ def test_eccentricities_are_measured_without_changing_the_run() -> None:
         assert np.all(np.abs(radius[-50:] - clearance) < 1e-6)
 
 
+def test_a_model_measuring_a_joint_without_play_is_refused() -> None:
+    """A model that measures joint 3's journal, run on a robot whose joint 3 has no play:
+    refused by name before any step, not an index error deep in the loop."""
+    from types import SimpleNamespace
+
+    from jointplay.neural.identify import contact_index
+
+    with_play = SimpleNamespace(coordinates=["q2", "q3", "ex2", "ey2", "ex3", "ey3"])
+    assert contact_index(with_play, (3, 2)) == [4, 5, 2, 3]
+    without = SimpleNamespace(coordinates=["q2", "q3", "ex2", "ey2"])
+    with pytest.raises(DescriptionError, match=r"joint\(s\) \[3\], which have no clearance"):
+        contact_index(without, (2, 3))
+
+
 def test_contact_outputs_need_a_clearance_joint() -> None:
     """identify and control-study refuse the flag on a robot without play, naming it."""
     import argparse

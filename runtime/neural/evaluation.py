@@ -85,6 +85,7 @@ def metrics_table(metrics: dict[str, Any], outputs: Sequence[str], kind: str = "
 def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
                     config: IdentifyConfig) -> str:
     inner = model.context["plant"]["inner_loop"]
+    contact = list(contact_joints(model.output_names))
     lines = [
         f"# Identification of {scene.name}",
         "",
@@ -97,8 +98,8 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
            "part's." if config.linear_input_gain else ""),
         f"Plant: clearance robot under a joint PD (kp {inner['kp']}, kd {inner['kd']}) around "
         "the ideal robot's motion; outputs are deviations from it"
-        + (f", and the journal eccentricities of joints {list(contact_joints(model.output_names))}"
-           " (the ideal robot's are 0)." if contact_joints(model.output_names) else "."),
+        + (f", and the journal eccentricities of joints {contact} (the ideal robot's are 0)."
+           if contact else "."),
         f"Trajectories: {metrics['trajectories']} of {config.duration:g} s; test families "
         f"{metrics['test_families']} (fresh realisations; the chirp is never used in "
         "training). The first "
