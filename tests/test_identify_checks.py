@@ -257,6 +257,62 @@ def test_training_runs_span_the_clearances_and_payloads_asked_for() -> None:
         IdentifyConfig(clearances=(-1e-6,))
 
 
+def test_scene_family_base_motions_are_the_scenes_torques_retimed() -> None:
+    """--base-motions scene-family: the training and validation runs are driven by the
+    scene's torques, then by the scene's torques, every joint alike, at an amplitude, rate and
+    time shift drawn per run from the scene family's ranges (numpy as drawn); the test runs
+    keep their families, and the draws are not the closed-loop choice's motions."""
+    from jointplay.neural.closed_loop_choice import (
+        SCENE_FAMILY_RATE,
+        SCENE_FAMILY_SCALE,
+        scene_family_motions,
+    )
+    from jointplay.neural.excitation import Retimed
+    from jointplay.neural.identify import default_limits, inner_loop_for
+    from jointplay.neural.trajectories import TEST_FAMILIES, TRAIN_FAMILIES, _plan
+    from jointplay.scene.definition import default_scene
+
+    scene = default_scene()
+    inner = inner_loop_for(scene, (), ())
+    limits = default_limits(scene)
+    config = IdentifyConfig(n_train=5, n_validation=3, n_test=3, duration=0.5, seed=7,
+                            base_motions="scene-family")
+    tasks = _plan(scene, config, inner, limits)
+    families = [(t.split, t.family) for t in tasks]
+    assert families == ([("train", f) for f in ("scene", "scene-family", "scene-family",
+                                                 "scene", "scene-family")]
+                        + [("validation", f) for f in ("scene", "scene-family",
+                                                        "scene-family")]
+                        + [("test", f) for f in TEST_FAMILIES])
+    t = np.linspace(0.0, 0.5, 51)
+    draws = []
+    for task in tasks:
+        if task.family == "scene":
+            assert list(task.scene.torques) == list(scene.torques)
+        if task.family != "scene-family":
+            continue
+        first = task.scene.torques[0]
+        draw = (first.scale, first.rate, first.shift)
+        assert SCENE_FAMILY_SCALE[0] <= draw[0] <= SCENE_FAMILY_SCALE[1]
+        assert SCENE_FAMILY_RATE[0] <= draw[1] <= SCENE_FAMILY_RATE[1]
+        assert 0 <= draw[2] <= 0.25 * 0.5
+        for f, own in zip(task.scene.torques, scene.torques, strict=True):
+            assert isinstance(f, Retimed) and (f.scale, f.rate, f.shift) == draw
+            assert np.allclose(f.numpy(t), draw[0] * own.numpy(draw[1] * t + draw[2]),
+                               rtol=0, atol=1e-12)
+        assert task.description["base"][0]["kind"] == "retimed"
+        draws.append(draw)
+    assert len(set(draws)) == len(draws) == 5  # a draw per run
+    chosen_on = {(m.torques[0].scale, m.torques[0].rate, m.torques[0].shift)
+                 for _, m in scene_family_motions(scene, config)}
+    assert not chosen_on & set(draws)
+    mixed = _plan(scene, replace(config, base_motions="mixed"), inner, limits)
+    assert [t.family for t in mixed[:3]] == list(TRAIN_FAMILIES)
+    assert [t.family for t in mixed[-3:]] == list(TEST_FAMILIES)
+    with pytest.raises(Exception, match="mixed or scene-family"):
+        IdentifyConfig(base_motions="scene")
+
+
 def _scheduled_runs(seed: int) -> tuple[list[Trajectory], list[Trajectory]]:
     """Two training runs and one validation run with scheduling signals."""
     rng = np.random.default_rng(seed)

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_base_fraction_argument,
+    add_base_motions_argument,
     add_contact_argument,
     add_identify_data_arguments,
     add_iterations_argument,
@@ -78,6 +79,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_linear_gain_argument(p, "--linear-input-gain")
     add_residual_argument(p)
     add_base_fraction_argument(p, "--base-fraction")
+    add_base_motions_argument(p, "--base-motions")
     add_scene_motions_argument(p, "--scene-motions")
     add_operating_range_arguments(p)
     p.add_argument("--no-linear-path", action="store_true",
@@ -173,6 +175,7 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         linear_input_gain=args.linear_input_gain,
         residual_by=residual_setting(args, "--residual-by", counts[1]),
         base_fraction=base_fraction_setting(args, "--base-fraction"),
+        base_motions=args.base_motions,
         scene_motions=scene_motions_setting(args, "--scene-motions"), **operating_range(args))
 
 

@@ -192,6 +192,19 @@ def add_base_fraction_argument(parser: argparse.ArgumentParser, flag: str) -> No
                              "motions the model is identified on (default %(default)s)")
 
 
+def add_base_motions_argument(parser: argparse.ArgumentParser, flag: str) -> None:
+    from jointplay.neural.identify_config import BASE_MOTIONS
+
+    parser.add_argument(flag, dest="base_motions", choices=BASE_MOTIONS,
+                        default=_D.base_motions,
+                        help="what drives the training and validation runs' reference "
+                             "motions: mixed (the scene's torques, random multisines and "
+                             "steps in turn) or scene-family (the scene's torques, then the "
+                             "scene's torques at other amplitudes, rates and time shifts, "
+                             "seeded: the motions the controller is judged on); the test runs "
+                             "keep their families (default %(default)s)")
+
+
 def base_fraction_setting(args: argparse.Namespace, flag: str) -> float:
     """The base torques' peak fraction, refused outside (0, 1]."""
     from jointplay.common.errors import DescriptionError

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
     add_base_fraction_argument,
+    add_base_motions_argument,
     add_contact_argument,
     add_identify_data_arguments,
     add_iterations_argument,
@@ -101,6 +102,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     add_linear_gain_argument(p, "--identify-linear-input-gain")
     add_residual_argument(p, "--identify-residual-by")
     add_base_fraction_argument(p, "--identify-base-fraction")
+    add_base_motions_argument(p, "--identify-base-motions")
     add_scene_motions_argument(p, "--identify-scene-motions")
     add_operating_range_arguments(p, prefix="identify-")
     p.add_argument("--identify-lags", default="2,2",
@@ -319,6 +321,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
                      "window": window_setting(args),
                      "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),
                      "base_fraction": base_fraction_setting(args, "--identify-base-fraction"),
+                     "base_motions": args.base_motions,
                      "scene_motions": scene_motions_setting(args,
                                                             "--identify-scene-motions"),
                      **lag_settings(args),

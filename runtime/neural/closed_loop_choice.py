@@ -102,19 +102,17 @@ def scene_family_motions(scene: Any, config: Any) -> list[tuple[str, Any]]:
     drawn uniformly from the ranges above), on the scene's robot. Motions of the size and
     shape the controller is judged on, where the validation runs' multisines are far harsher;
     the scene's run itself (scale 1, rate 1, no shift) has probability zero."""
-    from jointplay.neural.excitation import Retimed
     from jointplay.neural.inner_loop import with_torques
+    from jointplay.neural.trajectories import scene_family_torques
 
     run_scene = scene.with_run(t_end=config.duration)
     out = []
     for i in range(config.scene_motions):
         rng = np.random.default_rng(np.random.SeedSequence([config.seed, 3, i]))
-        scale = float(rng.uniform(*SCENE_FAMILY_SCALE))
-        rate = float(rng.uniform(*SCENE_FAMILY_RATE))
-        shift = float(rng.uniform(0.0, SCENE_FAMILY_SHIFT * config.duration))
-        torques = [Retimed(f, scale, rate, shift) for f in scene.torques]
-        out.append((f"scene's torques x{scale:.3g} at {rate:.3g}x the rate, {shift:.3g} s on "
-                    "(scene robot)", with_torques(run_scene, torques)))
+        torques = scene_family_torques(rng, scene, config.duration)
+        f = torques[0]
+        out.append((f"scene's torques x{f.scale:.3g} at {f.rate:.3g}x the rate, {f.shift:.3g} s "
+                    "on (scene robot)", with_torques(run_scene, torques)))
     return out
 
 

@@ -102,8 +102,12 @@ def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
            if contact else "."),
         f"Trajectories: {metrics['trajectories']} of {config.duration:g} s; test families "
         f"{metrics['test_families']} (fresh realisations; the chirp is never used in "
-        "training). The first "
-        f"{config.transient:g} s of each (journals settling from e = 0) are left out.",
+        "training)"
+        + ("; the training and validation runs are driven by the scene's torques and by "
+           "the scene's torques at other amplitudes, rates and time shifts (--base-motions "
+           "scene-family)" if config.base_motions == "scene-family" else "")
+        + f". The first {config.transient:g} s of each (journals settling from e = 0) are "
+        "left out.",
         f"Time: simulate {metrics['seconds']['simulate']:.1f} s, train "
         f"{metrics['seconds']['train']:.1f} s.",
         "",

@@ -11,6 +11,8 @@ MAX_SEED = 2**32 - 1
 # How the network's residual weight can be chosen on validation (IdentifyConfig.residual_by).
 RESIDUAL_CRITERIA = ("free-run", "closed-loop", "closed-loop-scene")
 MAX_SCENE_MOTIONS = 16  # each costs seven closed-loop runs per model
+# What drives the training and validation runs' reference motions (IdentifyConfig.base_motions).
+BASE_MOTIONS = ("mixed", "scene-family")
 
 
 @dataclass(frozen=True)
@@ -29,6 +31,12 @@ class IdentifyConfig:
     kd: tuple[float, ...] = ()
     torque_limit: tuple[float, ...] = ()  # empty: LIMIT_FACTOR x the scene's peak torques
     base_fraction: float = 0.5  # peak of the base excitation torques, x the limit
+    # The training and validation runs' base motions: "mixed" (the scene's torques, random
+    # multisines and steps at base_fraction of the limit, in turn) or "scene-family" (the
+    # scene's torques, then the scene's torques at other amplitudes, rates and time shifts:
+    # the motions the controller is judged on, not 60x harsher ones). The test runs keep
+    # their families either way.
+    base_motions: str = "mixed"
     input_fraction: float = 0.03  # peak of the added-torque excitation, x the limit
     transient: float = 0.05  # s at the start of each trajectory left out (journals settling)
     linear_path: bool = True  # a linear direct path beside the hidden layers
@@ -87,6 +95,9 @@ class IdentifyConfig:
             raise DescriptionError("residual_by", "must be free-run, closed-loop or "
                                    "closed-loop-scene, got "
                                    f"{self.residual_by!r}")
+        if self.base_motions not in BASE_MOTIONS:
+            raise DescriptionError("base_motions", "must be mixed or scene-family, got "
+                                   f"{self.base_motions!r}")
         if isinstance(self.scene_motions, bool) or not isinstance(self.scene_motions, int) \
                 or not 1 <= self.scene_motions <= MAX_SCENE_MOTIONS:
             raise DescriptionError("scene_motions", "must be a whole number from 1 to "
@@ -104,4 +115,4 @@ class IdentifyConfig:
 
 
 
-__all__ = ["MAX_SCENE_MOTIONS", "RESIDUAL_CRITERIA", "IdentifyConfig"]
+__all__ = ["BASE_MOTIONS", "MAX_SCENE_MOTIONS", "RESIDUAL_CRITERIA", "IdentifyConfig"]

@@ -135,7 +135,8 @@ def _setting(training: dict[str, Any], key: str) -> Any:
     """A training setting of a model's context; settings added later take their default."""
     defaults: dict[str, Any] = {"scheduling": False, "lpv_base": False, "clearances": [],
                                 "payloads": [], "residual_by": "free-run",
-                                "base_fraction": 0.5, "scene_motions": 2,
+                                "base_fraction": 0.5, "base_motions": "mixed",
+                                "scene_motions": 2,
                                 "contact_outputs": False, "linear_input_gain": False}
     return training.get(key, defaults.get(key))
 

@@ -22,6 +22,7 @@ from jointplay.common import interrupts
 from jointplay.common.errors import DescriptionError
 from jointplay.neural.excitation import (
     Chirp,
+    Retimed,
     aprbs,
     describe_torque,
     random_multisine,
@@ -40,6 +41,7 @@ from jointplay.scene.expressions import TimeFunction
 
 SPLITS = ("train", "validation", "test")
 TRAIN_FAMILIES = ("scene", "multisine", "steps")
+SCENE_FAMILY = ("scene", "scene-family", "scene-family")  # base_motions "scene-family"
 TEST_FAMILIES = ("chirp", "multisine", "steps")
 ARRAYS = ("t", "y", "r", "v", "tau_base", "tau_inner")  # a trajectory's sampled signals
 
@@ -125,7 +127,8 @@ def _plan(scene: Any, config: IdentifyConfig, inner: InnerLoop,
     tasks: list[_Task] = []
     counts = {"train": config.n_train, "validation": config.n_validation, "test": config.n_test}
     for s_index, split in enumerate(SPLITS):
-        families = TEST_FAMILIES if split == "test" else TRAIN_FAMILIES
+        families = (TEST_FAMILIES if split == "test" else
+                    SCENE_FAMILY if config.base_motions == "scene-family" else TRAIN_FAMILIES)
         for i in range(counts[split]):
             seed = int(np.random.SeedSequence([config.seed, s_index, i]).generate_state(1)[0])
             rng = np.random.default_rng(seed)
@@ -151,6 +154,8 @@ def _base_torques(rng: np.random.Generator, family: str, split: str, scene: Any,
     """The feedforward of one trajectory: it drives the ideal robot to the reference."""
     if family == "scene":
         return list(scene.torques)
+    if family == "scene-family":
+        return list(scene_family_torques(rng, scene, config.duration))
     if family == "multisine":
         band = (0.2, 4.0) if split == "test" else (0.2, 3.0)
         return [random_multisine(rng, config.base_fraction * lim, *band, config.duration)
@@ -160,6 +165,23 @@ def _base_torques(rng: np.random.Generator, family: str, split: str, scene: Any,
                             f"joint{j}") for lim, j in zip(limits, inner.joints, strict=True)]
     return [Chirp(0.6 * config.base_fraction * lim, 0.2, 3.0, config.duration,
                   float(rng.uniform(0, 2 * np.pi))) for lim in limits]
+
+
+def scene_family_torques(rng: np.random.Generator, scene: Any,
+                         duration: float) -> list[Retimed]:
+    """The scene's drive torques, every joint alike, times a scale, at a rate and shifted in
+    time, each drawn uniformly from the ranges of the scene's family (SCENE_FAMILY_SCALE,
+    _RATE, _SHIFT): a motion of the size and shape the controller is judged on."""
+    from jointplay.neural.closed_loop_choice import (
+        SCENE_FAMILY_RATE,
+        SCENE_FAMILY_SCALE,
+        SCENE_FAMILY_SHIFT,
+    )
+
+    scale = float(rng.uniform(*SCENE_FAMILY_SCALE))
+    rate = float(rng.uniform(*SCENE_FAMILY_RATE))
+    shift = float(rng.uniform(0.0, SCENE_FAMILY_SHIFT * duration))
+    return [Retimed(f, scale, rate, shift) for f in scene.torques]
 
 
 def _added_torque(rng: np.random.Generator, n: int, dt: float, config: IdentifyConfig,
