@@ -6,6 +6,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
+import pytest
 from test_control import random_narx
 from test_control_guard import linear_twin
 
@@ -73,3 +74,43 @@ def test_outer_loop_waits_then_starts_from_the_measured_history() -> None:
     for lag, k in enumerate((3, 2)):
         expected = np.clip(measured[k] - reference[k], lo[:ny], hi[:ny])
         assert np.array_equal(start[lag * ny:(lag + 1) * ny], expected)
+
+
+def test_acceleration_split_adds_in_squares_to_the_rms_after_the_transient() -> None:
+    """RMS |Δa| after the transient = sqrt(sample-mean part² + within-sample part²); an
+    error constant over each period has no within-sample part, and a zigzag of zero mean
+    inside each period no sample-mean part; a run without dense output gives NaN."""
+    from jointplay.neural.loop import Run
+    from jointplay.neural.metrics import SPLIT_METRICS, run_metrics
+
+    rng = np.random.default_rng(3)
+    n, nj, transient = 40, 2, 7
+    y = np.zeros((n + 1, 2 * nj + 6))
+    reference = np.zeros_like(y)
+    t = np.arange(n + 1) * 1e-3
+    dense_t = (np.arange(n * SUBSTEPS) + 1) * 1e-3 / SUBSTEPS
+    dense_reference = rng.normal(size=(n * SUBSTEPS + 1, 2))
+
+    def metrics(error: np.ndarray) -> dict[str, float]:
+        run = Run("r", t, y, np.zeros((n + 1, nj)), np.zeros((n + 1, nj)), 0, 0.0,
+                  dense_t=dense_t, dense_acceleration=dense_reference[1:] + error)
+        return run_metrics(run, reference, nj, transient, dense_reference)
+
+    mean_key, within_key = SPLIT_METRICS
+    mixed = metrics(rng.normal(size=(n * SUBSTEPS, 2)))
+    assert np.hypot(mixed[mean_key], mixed[within_key]) == pytest.approx(
+        mixed["rms_acceleration_after"], rel=1e-12)
+    assert mixed[mean_key] > 0 and mixed[within_key] > 0
+    level = np.repeat(rng.normal(size=(n, 2)), SUBSTEPS, axis=0)
+    flat = metrics(level)
+    assert flat[within_key] == pytest.approx(0.0, abs=1e-14)
+    assert flat[mean_key] == pytest.approx(
+        np.sqrt(np.mean(np.sum(level[transient * SUBSTEPS:] ** 2, axis=1))), rel=1e-12)
+    zigzag = np.tile(np.where(np.arange(SUBSTEPS) % 2 == 0, 1.0, -1.0)[:, None] * [3.0, 4.0],
+                     (n, 1))
+    inside = metrics(zigzag)
+    assert inside[mean_key] == pytest.approx(0.0, abs=1e-14)
+    assert inside[within_key] == pytest.approx(5.0, rel=1e-12)
+    plain = run_metrics(Run("r", t, y, np.zeros((n + 1, nj)), np.zeros((n + 1, nj)), 0, 0.0),
+                        reference, nj, transient)
+    assert all(np.isnan(plain[k]) for k in SPLIT_METRICS)

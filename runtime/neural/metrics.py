@@ -33,6 +33,30 @@ def dense_acceleration_error(run: Run, dense_reference: np.ndarray) -> np.ndarra
     return np.linalg.norm(run.dense_acceleration - dense_reference[1: n + 1], axis=1)
 
 
+# RMS |Δa| after the transient split in two (from the dense acceleration; NaN without it): the
+# error's mean over each sample period, and what is left of it within the periods. The two
+# add in squares to the RMS. The sample-mean part is what the sampled outputs carry (about
+# the tip velocity error's change over each period / T); the within-sample part is the
+# acceleration's profile inside the periods, which no model of the sampled outputs predicts
+# and a torque held over the period changes only through its steps.
+SPLIT_METRICS = ("rms_acceleration_after_sample_mean", "rms_acceleration_after_within_sample")
+
+
+def acceleration_split(run: Run, dense_reference: np.ndarray, substeps: int,
+                       transient: int) -> dict[str, float]:
+    """:data:`SPLIT_METRICS` of a run that recorded its acceleration between samples: the
+    (x, y) error at the dense points of each sample period after ``transient`` samples, its
+    mean over the period, and the rest."""
+    n = run.dense_t.size
+    e = run.dense_acceleration - dense_reference[1: n + 1]
+    periods = e[: (n // substeps) * substeps].reshape(-1, substeps, 2)
+    if periods.shape[0] > transient:  # as the RMS after the transient: all of a short run
+        periods = periods[transient:]
+    mean = periods.mean(axis=1, keepdims=True)
+    return {SPLIT_METRICS[0]: float(np.sqrt(np.mean(np.sum(mean[:, 0] ** 2, axis=-1)))),
+            SPLIT_METRICS[1]: float(np.sqrt(np.mean(np.sum((periods - mean) ** 2, axis=-1))))}
+
+
 def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int,
                 dense_reference: np.ndarray | None = None) -> dict[str, float]:
     """Maxima and RMS of the end-effector errors (whole run and after ``transient`` samples),
@@ -44,6 +68,7 @@ def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int,
     err = tip_errors(run, reference, nj)
     out: dict[str, float] = {}
     dense = dense_reference is not None and run.dense_t.size > 0
+    out.update(dict.fromkeys(SPLIT_METRICS, float("nan")))
     for k, e in err.items():
         if k == "acceleration" and dense:
             assert dense_reference is not None
@@ -51,6 +76,7 @@ def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int,
             after_k = transient * substeps  # the first point after the transient's end
             e = dense_acceleration_error(run, dense_reference)
             after = e[after_k:] if e.size > after_k else e
+            out.update(acceleration_split(run, dense_reference, substeps, transient))
         else:
             after = e[transient:] if e.size > transient else e
         out[f"max_{k}"] = float(np.max(e))

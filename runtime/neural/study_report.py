@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.neural.comparison import LINEAR, LPV, MODEL_BASED, NEURAL
-from jointplay.neural.metrics import WORSE_MARGIN
+from jointplay.neural.metrics import SPLIT_METRICS, WORSE_MARGIN
 from jointplay.neural.study_cases import Case
 from jointplay.neural.study_runs import BASELINES, GOAL_METRICS, JUDGED, REPORTED
 
@@ -133,6 +133,39 @@ def ratio_goals(rows: list[dict[str, Any]], cases: list[Case]) -> list[str]:
                              f"median {med:.3f}, worst seed {worst:.3f} (goal "
                              f"{'<' if strict else '<='} {goal:g} on the worst seed: "
                              f"{'met' if met else 'NOT met'})")
+        lines += split_lines(rows, c)
+    return lines
+
+
+def split_lines(rows: list[dict[str, Any]], case: Case) -> list[str]:
+    """RMS |Δa| after settling split into its sample-mean and within-sample parts
+    (jointplay.neural.metrics.SPLIT_METRICS) for the internal-model controllers: medians, and
+    how far the neural IMC's within-sample part alone sits against ARX-IMC's whole error."""
+    mean_key, within_key = SPLIT_METRICS
+    by = {name: {r["seed"]: r for r in rows if r["case"] == case.name
+                 and r["controller"] == name and np.isfinite(r.get(within_key, np.nan))}
+          for name in MODEL_BASED}
+    if not all(by.values()):
+        return []
+    parts = ", ".join(f"{name} {np.median([r[within_key] for r in by[name].values()]):.3g}"
+                      for name in MODEL_BASED)
+    lines = [f"- {case.name}: RMS |Δa| after settling within the sample periods (the "
+             f"acceleration's profile inside each period, which no model of the sampled "
+             f"outputs predicts), median m/s²: {parts}"]
+    seeds = [s for s in by[NEURAL] if s in by[LINEAR] and by[LINEAR][s][
+        "rms_acceleration_after"] > 0]
+    if seeds:
+        floor = [by[NEURAL][s][within_key] / by[LINEAR][s]["rms_acceleration_after"]
+                 for s in seeds]
+        means = [by[NEURAL][s][mean_key] / by[LINEAR][s][mean_key] for s in seeds
+                 if by[LINEAR][s][mean_key] > 0]
+        lines.append(f"- {case.name}: the neural IMC's within-sample part alone is "
+                     f"{np.median(floor):.3f} (median), {max(floor):.3f} (worst seed) of "
+                     "ARX-IMC's RMS |Δa| after settling: the lowest ratio the neural IMC could "
+                     "reach with that part as it is"
+                     + (f"; on the sample-mean part, neural IMC / ARX-IMC is median "
+                        f"{np.median(means):.3f}, worst seed {max(means):.3f}" if means
+                        else ""))
     return lines
 
 

@@ -11,6 +11,7 @@ from typing import Any
 from jointplay.neural.comparison import DIVERGENCE_FACTOR, MODEL_BASED, compare, open_loop_bound
 from jointplay.neural.control import load_lpv, load_twin
 from jointplay.neural.loop_accuracy import accuracy_columns, check_tolerance, loop_accuracy
+from jointplay.neural.metrics import SPLIT_METRICS
 from jointplay.neural.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_identity
 
 BASELINES = ("open loop", "PD", "computed torque")
@@ -19,8 +20,8 @@ GOAL_METRICS = (("max_position", "max |Δp| [m]"),
                 ("rms_acceleration_after", "RMS |Δa| after settling [m/s²]"))
 # The metrics judged against the open loop and PD ("worse than no control" is counted).
 JUDGED = (*(k for k, _ in GOAL_METRICS), "max_velocity", "max_acceleration_after")
-REPORTED = (*JUDGED, "diverged", "guard_episodes", "fallback_samples", "input_bound_samples",
-            "settle_s")
+REPORTED = (*JUDGED, *SPLIT_METRICS, "diverged", "guard_episodes", "fallback_samples",
+            "input_bound_samples", "settle_s")
 
 
 STUDY_JOBS: list[Any] = []  # filled before the pool forks: workers read their job by index
