@@ -155,5 +155,6 @@ def metrics_table(metrics: dict[str, dict[str, float]], transient_s: float) -> s
     return "\n".join(lines)
 
 
-__all__ = ["GUARD_METRICS", "METRICS", "REPORTED", "WORSE_MARGIN", "dense_acceleration_error",
-           "metrics_table", "run_metrics", "tip_errors", "worse_lines", "worse_than_baselines"]
+__all__ = ["GUARD_METRICS", "METRICS", "REPORTED", "SPLIT_METRICS", "WORSE_MARGIN",
+           "acceleration_split", "dense_acceleration_error", "metrics_table", "run_metrics",
+           "tip_errors", "worse_lines", "worse_than_baselines"]
