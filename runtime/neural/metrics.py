@@ -29,8 +29,12 @@ GUARD_METRICS = {"guard_episodes": "episodes", "distrusted_samples": "model_dist
 def dense_acceleration_error(run: Run, dense_reference: np.ndarray) -> np.ndarray:
     """|end-effector acceleration error| at the run's dense points; ``dense_reference`` is the
     reference's acceleration on the same grid from t = 0 (row i at i T / SUBSTEPS)."""
-    n = run.dense_t.size
-    return np.linalg.norm(run.dense_acceleration - dense_reference[1: n + 1], axis=1)
+    return np.linalg.norm(_dense_error(run, dense_reference), axis=1)
+
+
+def _dense_error(run: Run, dense_reference: np.ndarray) -> np.ndarray:
+    """The (x, y) end-effector acceleration error at the run's dense points."""
+    return run.dense_acceleration - dense_reference[1: run.dense_t.size + 1]
 
 
 # RMS |Δa| after the transient split in two (from the dense acceleration; NaN without it): the
@@ -42,14 +46,12 @@ def dense_acceleration_error(run: Run, dense_reference: np.ndarray) -> np.ndarra
 SPLIT_METRICS = ("rms_acceleration_after_sample_mean", "rms_acceleration_after_within_sample")
 
 
-def acceleration_split(run: Run, dense_reference: np.ndarray, substeps: int,
-                       transient: int) -> dict[str, float]:
-    """:data:`SPLIT_METRICS` of a run that recorded its acceleration between samples: the
-    (x, y) error at the dense points of each sample period after ``transient`` samples, its
-    mean over the period, and the rest."""
-    n = run.dense_t.size
-    e = run.dense_acceleration - dense_reference[1: n + 1]
-    periods = e[: (n // substeps) * substeps].reshape(-1, substeps, 2)
+def acceleration_split(error: np.ndarray, substeps: int, transient: int) -> dict[str, float]:
+    """:data:`SPLIT_METRICS` of the (x, y) acceleration error at a run's dense points
+    (``substeps`` per sample period): over the periods after ``transient`` samples, the
+    error's mean over each period, and the rest."""
+    n = error.shape[0]
+    periods = error[: (n // substeps) * substeps].reshape(-1, substeps, 2)
     if periods.shape[0] > transient:  # as the RMS after the transient: all of a short run
         periods = periods[transient:]
     mean = periods.mean(axis=1, keepdims=True)
@@ -74,9 +76,10 @@ def run_metrics(run: Run, reference: np.ndarray, nj: int, transient: int,
             assert dense_reference is not None
             substeps = round(run.dense_t.size / max(1, run.y.shape[0] - 1))
             after_k = transient * substeps  # the first point after the transient's end
-            e = dense_acceleration_error(run, dense_reference)
+            vectors = _dense_error(run, dense_reference)
+            e = np.linalg.norm(vectors, axis=1)
             after = e[after_k:] if e.size > after_k else e
-            out.update(acceleration_split(run, dense_reference, substeps, transient))
+            out.update(acceleration_split(vectors, substeps, transient))
         else:
             after = e[transient:] if e.size > transient else e
         out[f"max_{k}"] = float(np.max(e))
