@@ -125,10 +125,9 @@ def test_scene_family_motions_are_the_scenes_torques_retimed_never_the_scene_run
 
     from jointplay.neural.closed_loop_choice import (
         SCENE_FAMILY_MOTIONS,
-        SCENE_FAMILY_RATE,
-        SCENE_FAMILY_SCALE,
         scene_family_motions,
     )
+    from jointplay.neural.trajectories import SCENE_FAMILY_RATE, SCENE_FAMILY_SCALE
     from jointplay.scene.definition import default_scene
 
     scene = default_scene()

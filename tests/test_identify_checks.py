@@ -262,14 +262,16 @@ def test_scene_family_base_motions_are_the_scenes_torques_retimed() -> None:
     scene's torques, then by the scene's torques, every joint alike, at an amplitude, rate and
     time shift drawn per run from the scene family's ranges (numpy as drawn); the test runs
     keep their families, and the draws are not the closed-loop choice's motions."""
-    from jointplay.neural.closed_loop_choice import (
-        SCENE_FAMILY_RATE,
-        SCENE_FAMILY_SCALE,
-        scene_family_motions,
-    )
+    from jointplay.neural.closed_loop_choice import scene_family_motions
     from jointplay.neural.excitation import Retimed
     from jointplay.neural.identify import default_limits, inner_loop_for
-    from jointplay.neural.trajectories import TEST_FAMILIES, TRAIN_FAMILIES, _plan
+    from jointplay.neural.trajectories import (
+        SCENE_FAMILY_RATE,
+        SCENE_FAMILY_SCALE,
+        TEST_FAMILIES,
+        TRAIN_FAMILIES,
+        _plan,
+    )
     from jointplay.scene.definition import default_scene
 
     scene = default_scene()

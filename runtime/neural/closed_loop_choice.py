@@ -88,12 +88,10 @@ def validation_motions(scene: Any, config: Any, inner: Any,
 
 # Motions of the scene's family the closed-loop choice runs (--residual-by closed-loop-scene;
 # how many: IdentifyConfig.scene_motions, by default SCENE_FAMILY_MOTIONS): each the scene's
-# drive torques at one amplitude, rate and time shift drawn from the identification's seed (a
+# drive torques at one amplitude, rate and time shift
+# (jointplay.neural.trajectories.scene_family_torques) drawn from the identification's seed (a
 # stream of its own, past the splits' 0-2).
 SCENE_FAMILY_MOTIONS = 2
-SCENE_FAMILY_SCALE = (0.75, 1.25)  # x the scene's torques
-SCENE_FAMILY_RATE = (0.75, 1.33)  # x the scene's time
-SCENE_FAMILY_SHIFT = 0.25  # the largest time shift, x the run's duration
 
 
 def scene_family_motions(scene: Any, config: Any) -> list[tuple[str, Any]]:

@@ -41,7 +41,13 @@ from jointplay.scene.expressions import TimeFunction
 
 SPLITS = ("train", "validation", "test")
 TRAIN_FAMILIES = ("scene", "multisine", "steps")
-SCENE_FAMILY = ("scene", "scene-family", "scene-family")  # base_motions "scene-family"
+SCENE_TRAIN_FAMILIES = ("scene", "scene-family", "scene-family")  # base_motions "scene-family"
+# The scene's family: its drive torques times a scale, at a rate and shifted in time, each
+# drawn uniformly (training runs with base_motions "scene-family", and the closed-loop
+# choice's motions: jointplay.neural.closed_loop_choice.scene_family_motions).
+SCENE_FAMILY_SCALE = (0.75, 1.25)  # x the scene's torques
+SCENE_FAMILY_RATE = (0.75, 1.33)  # x the scene's time
+SCENE_FAMILY_SHIFT = 0.25  # the largest time shift, x the run's duration
 TEST_FAMILIES = ("chirp", "multisine", "steps")
 ARRAYS = ("t", "y", "r", "v", "tau_base", "tau_inner")  # a trajectory's sampled signals
 
@@ -128,7 +134,8 @@ def _plan(scene: Any, config: IdentifyConfig, inner: InnerLoop,
     counts = {"train": config.n_train, "validation": config.n_validation, "test": config.n_test}
     for s_index, split in enumerate(SPLITS):
         families = (TEST_FAMILIES if split == "test" else
-                    SCENE_FAMILY if config.base_motions == "scene-family" else TRAIN_FAMILIES)
+                    SCENE_TRAIN_FAMILIES if config.base_motions == "scene-family"
+                    else TRAIN_FAMILIES)
         for i in range(counts[split]):
             seed = int(np.random.SeedSequence([config.seed, s_index, i]).generate_state(1)[0])
             rng = np.random.default_rng(seed)
@@ -172,12 +179,6 @@ def scene_family_torques(rng: np.random.Generator, scene: Any,
     """The scene's drive torques, every joint alike, times a scale, at a rate and shifted in
     time, each drawn uniformly from the ranges of the scene's family (SCENE_FAMILY_SCALE,
     _RATE, _SHIFT): a motion of the size and shape the controller is judged on."""
-    from jointplay.neural.closed_loop_choice import (
-        SCENE_FAMILY_RATE,
-        SCENE_FAMILY_SCALE,
-        SCENE_FAMILY_SHIFT,
-    )
-
     scale = float(rng.uniform(*SCENE_FAMILY_SCALE))
     rate = float(rng.uniform(*SCENE_FAMILY_RATE))
     shift = float(rng.uniform(0.0, SCENE_FAMILY_SHIFT * duration))
@@ -294,5 +295,6 @@ def check_finite(trajectories: Sequence[Trajectory]) -> None:
                     "scene's torques and limits")
 
 
-__all__ = ["ARRAYS", "SPLITS", "TEST_FAMILIES", "TRAIN_FAMILIES", "Trajectory", "check_finite",
-           "collect", "run_task"]
+__all__ = ["ARRAYS", "SCENE_FAMILY_RATE", "SCENE_FAMILY_SCALE", "SCENE_FAMILY_SHIFT",
+           "SCENE_TRAIN_FAMILIES", "SPLITS", "TEST_FAMILIES", "TRAIN_FAMILIES", "Trajectory",
+           "check_finite", "collect", "run_task", "scene_family_torques"]
