@@ -315,6 +315,36 @@ def test_scene_family_base_motions_are_the_scenes_torques_retimed() -> None:
         IdentifyConfig(base_motions="scene")
 
 
+def test_control_study_hands_its_identification_flags_to_identify(tmp_path: Any) -> None:
+    """control-study's --identify-* flags (and --train, --scheduling, --lpv-base) reach the
+    identification of every model unchanged, and their defaults are identify's own."""
+    from jointplay.cli import make_parser
+    from jointplay.cli.study import study_plan
+
+    out = str(tmp_path / "study")
+    plan = study_plan(make_parser().parse_args([
+        "control-study", "--out", out, "--train", "24", "--validation", "2", "--test", "2",
+        "--duration", "2.0", "--identify-iterations", "40,20", "--scheduling", "--lpv-base",
+        "--identify-residual-by", "closed-loop-scene", "--identify-hidden", "24,24",
+        "--identify-linear-input-gain", "--identify-base-motions", "scene-family",
+        "--identify-scene-motions", "3", "--identify-lags", "3,1", "--identify-window", "50",
+        "--identify-base-fraction", "0.2"]))
+    config = IdentifyConfig(**plan.identify_args)
+    assert (config.n_train, config.n_validation, config.n_test, config.duration) == (
+        24, 2, 2, 2.0)
+    assert (config.one_step_iterations, config.multi_step_iterations) == (40, 20)
+    assert config.scheduling and config.lpv_base and config.linear_input_gain
+    assert (config.residual_by, config.base_motions, config.scene_motions) == (
+        "closed-loop-scene", "scene-family", 3)
+    assert (config.hidden, config.output_lags, config.input_lags, config.window,
+            config.base_fraction) == ((24, 24), 3, 1, 50, 0.2)
+    default = IdentifyConfig(**study_plan(make_parser().parse_args(
+        ["control-study", "--out", out])).identify_args)
+    assert (default.base_motions, default.residual_by, default.linear_input_gain,
+            default.scheduling, default.lpv_base) == (
+        IdentifyConfig.base_motions, IdentifyConfig.residual_by, False, False, False)
+
+
 def _scheduled_runs(seed: int) -> tuple[list[Trajectory], list[Trajectory]]:
     """Two training runs and one validation run with scheduling signals."""
     rng = np.random.default_rng(seed)
