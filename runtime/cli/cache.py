@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import os
+from pathlib import Path
 from typing import Any
 
 _WHERE = ("the cache is $JOINTPLAY_CACHE, else $XDG_CACHE_HOME/jointplay, else "
@@ -45,6 +46,7 @@ def cmd_cache(args: argparse.Namespace) -> int:
         if listed:
             print("\n".join(cache.table(listed)))
         total = sum(e.size for e in listed)
+        _report_foreign(cache.foreign(root))
         print(f"{len(listed)} entries, {cache.format_size(total)}")
         return 0
     if args.action == "clear":
@@ -61,7 +63,15 @@ def cmd_cache(args: argparse.Namespace) -> int:
               f"last used {cache.format_age(entry.age())} ago)")
     for entry in busy:
         print(f"kept {entry.path}: in use by a running build")
+    _report_foreign(cache.foreign(root))
     left = cache.entries(root)
     print(f"removed {len(removed)} entries, {cache.format_size(sum(e.size for e in removed))}; "
           f"{len(left)} left, {cache.format_size(sum(e.size for e in left))} ({root})")
     return 0
+
+
+def _report_foreign(paths: list[Path]) -> None:
+    from jointplay.store.build import OWNER_NAME
+
+    for path in paths:
+        print(f"not jointplay's, left: {path} (no {OWNER_NAME} file, or a link)")

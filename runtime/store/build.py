@@ -47,6 +47,10 @@ DEFAULT_CFLAGS: tuple[str, ...] = ("-O1", "-fPIC", "-shared", "-fno-math-errno",
                                    "-finline-small-functions", "-fno-semantic-interposition")
 LIBRARY_NAME = "model.so"
 MARKER_NAME = "complete.json"
+OWNER_NAME = ".jointplay-entry"
+"""The file that makes a cache folder jointplay's: written when jointplay creates an entry (a
+build or a derived model), it is what `jointplay cache clear|prune` requires before removing
+anything; a folder without it, or a link, is never touched."""
 
 
 def cache_root() -> Path:
@@ -185,6 +189,47 @@ def cache_error(path: Path, err: OSError | FileError) -> FileError:
                      "JOINTPLAY_CACHE to a writable folder")
 
 
+def is_owned(folder: Path) -> bool:
+    """Whether ``folder`` is a cache entry jointplay made: a real folder (not a link) that
+    holds jointplay's owner file (a regular file, not a link)."""
+    import stat
+
+    try:
+        return stat.S_ISDIR(os.lstat(folder).st_mode) and \
+            stat.S_ISREG(os.lstat(folder / OWNER_NAME).st_mode)
+    except OSError:
+        return False
+
+
+def claim_entry(folder: Path) -> None:
+    """Mark ``folder`` as jointplay's (call it holding the folder's lock, having made or
+    rewritten what is in it)."""
+    if not is_owned(folder):
+        (folder / OWNER_NAME).write_text("a jointplay cache entry: `jointplay cache clear` "
+                                         "may remove this folder\n", encoding="utf-8")
+
+
+class LibraryGone(BuildError):
+    """A library a build links against was removed before the build could hold it."""
+
+
+@contextlib.contextmanager
+def hold_libraries(libraries: tuple[str, ...]) -> Iterator[None]:
+    """Hold the cache entries of ``libraries`` (shared locks) while a build links against
+    them: `jointplay cache clear|prune` takes an entry's lock exclusively without waiting, so
+    it keeps them. Raises :class:`LibraryGone` if one was removed before it could be held."""
+    with contextlib.ExitStack() as stack:
+        for library in map(Path, libraries):
+            try:
+                lock = stack.enter_context(open(library.parent / ".lock", "a"))
+            except FileNotFoundError:
+                raise LibraryGone(f"{library} was removed") from None
+            fcntl.flock(lock, fcntl.LOCK_SH)
+            if not _entry_is_complete(library.parent):
+                raise LibraryGone(f"{library} was removed")
+        yield
+
+
 def discard_entry(entry: Path) -> None:
     """Mark a build entry incomplete, so the next :func:`compile_source` rebuilds it."""
     (entry / MARKER_NAME).unlink(missing_ok=True)
@@ -262,6 +307,7 @@ def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path,
             if _entry_is_complete(entry):  # another process finished it while we waited
                 return library, 0.0
             remove_temporaries(entry)  # no other build of this entry runs: all left over
+            claim_entry(entry)
             for stale in (entry / MARKER_NAME, library):
                 stale.unlink(missing_ok=True)
             c_file = entry / "model.c"
@@ -271,7 +317,8 @@ def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path,
                 announce()
             t0 = time.perf_counter()
             try:
-                _compile(cc, cflags, c_file, tmp_lib, libraries)
+                with hold_libraries(libraries):
+                    _compile(cc, cflags, c_file, tmp_lib, libraries)
             except BaseException:  # failed or interrupted: no half-written library left
                 tmp_lib.unlink(missing_ok=True)
                 raise
@@ -298,6 +345,7 @@ def _discard_failed(entry: Path, fresh: bool) -> None:
         for name in (MARKER_NAME, LIBRARY_NAME, "model.c"):
             (entry / name).unlink(missing_ok=True)
         if fresh:
+            (entry / OWNER_NAME).unlink(missing_ok=True)
             (entry / ".lock").unlink(missing_ok=True)
             entry.rmdir()
 

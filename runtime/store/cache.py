@@ -4,7 +4,13 @@ Two kinds of entry live under the cache root (:func:`jointplay.store.build.cache
 ``models/<input hash>/``, generated C of a robot derived on demand, and ``build/<key>/``, a
 compiled library. An entry's age is the time since it was last used (a build's marker is
 touched at every load; a model folder when it is found). An entry whose lock another process
-holds is being built or repaired right now: it is listed, never removed.
+holds is being built or repaired right now, or linked against by a build: it is listed, never
+removed.
+
+A folder is an entry only if jointplay made it: it carries jointplay's owner file
+(:data:`jointplay.store.build.OWNER_NAME`). Anything else found there (a folder without it, a
+link, a file) is reported and left alone: `clear` and `prune` never follow a link and never
+remove, or write into, what jointplay did not create.
 """
 
 from __future__ import annotations
@@ -13,13 +19,21 @@ import contextlib
 import os
 import re
 import shutil
+import stat
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
+from fractions import Fraction
 from pathlib import Path
 
 from jointplay.common.errors import DescriptionError
-from jointplay.store.build import MARKER_NAME, cache_root, entry_lock, remove_temporaries
+from jointplay.store.build import (
+    MARKER_NAME,
+    cache_root,
+    entry_lock,
+    is_owned,
+    remove_temporaries,
+)
 
 KINDS = ("models", "build")
 _MODEL_LINE = re.compile(r"^ \* model: (\S+)$", re.MULTILINE)
@@ -74,13 +88,25 @@ def _last_used(folder: Path, kind: str) -> float:
     return 0.0
 
 
+def _kind_folder(root: Path, kind: str) -> Path | None:
+    """``root/kind`` if it is a real folder (a link there is not followed)."""
+    folder = root / kind
+    try:
+        return folder if stat.S_ISDIR(os.lstat(folder).st_mode) else None
+    except OSError:
+        return None
+
+
 def entries(root: Path | None = None) -> list[CacheEntry]:
-    """Every entry of the cache, least recently used first."""
+    """Every entry of the cache jointplay made, least recently used first."""
     root = root or cache_root()
     found = []
     for kind in KINDS:
+        parent = _kind_folder(root, kind)
+        if parent is None:
+            continue
         try:
-            folders = sorted(p for p in (root / kind).iterdir() if p.is_dir())
+            folders = sorted(p for p in parent.iterdir() if is_owned(p))
         except OSError:
             continue
         for folder in folders:
@@ -89,9 +115,29 @@ def entries(root: Path | None = None) -> list[CacheEntry]:
     return sorted(found, key=lambda e: (e.last_used, e.kind, e.key))
 
 
+def foreign(root: Path | None = None) -> list[Path]:
+    """What lies where entries live but is not jointplay's (no owner file, a link, a file,
+    or ``build``/``models`` itself a link): never removed."""
+    root = root or cache_root()
+    found = []
+    for kind in KINDS:
+        path = root / kind
+        if not os.path.lexists(path):
+            continue
+        parent = _kind_folder(root, kind)
+        if parent is None:
+            found.append(path)
+            continue
+        with contextlib.suppress(OSError):
+            found.extend(sorted(p for p in parent.iterdir() if not is_owned(p)))
+    return found
+
+
 def remove(entry: CacheEntry) -> bool:
-    """Remove one entry unless another process holds its lock (building or repairing it).
-    Returns whether it was removed."""
+    """Remove one entry unless another process holds its lock (building or repairing it,
+    or linking against it). Returns whether it was removed."""
+    if not is_owned(entry.path):  # replaced by a link, say, since it was listed
+        return False
     try:
         with entry_lock(entry.path, blocking=False) as held:
             if not held:
@@ -138,16 +184,20 @@ def prune(root: Path | None = None, *, older_than: float | None = None,
 
 # ---- sizes and ages, read and written ------------------------------------------------------
 
+# A size is read exactly; beyond this many digits it is not a size but a mistake.
+_MAX_SIZE_DIGITS = 4000
 _UNITS = {"": 1, "k": 1 << 10, "m": 1 << 20, "g": 1 << 30, "t": 1 << 40}
 _TIMES = {"s": 1.0, "m": 60.0, "h": 3600.0, "d": 86400.0, "w": 604800.0}
 
 
 def parse_size(text: str, flag: str = "--max-size") -> int:
-    """``"500M"``, ``"2G"``, ``"1.5GiB"``, ``"0"`` (bytes without a unit) to bytes."""
+    """``"500M"``, ``"2G"``, ``"1.5GiB"``, ``"0"`` (bytes without a unit) to bytes, exactly
+    (a size of any number of digits means what it says: a cache smaller than it is kept)."""
     match = re.fullmatch(r"\s*([0-9]*\.?[0-9]+)\s*([kKmMgGtT]?)(?:i?[bB])?\s*", text)
-    if not match:
-        raise DescriptionError(flag, f"expects a size like 500M or 2G, got {text!r}")
-    return int(float(match.group(1)) * _UNITS[match.group(2).lower()])
+    if not match or len(match.group(1)) > _MAX_SIZE_DIGITS:
+        raise DescriptionError(flag, f"expects a size like 500M or 2G, got {text[:40]!r}"
+                               + ("..." if len(text) > 40 else ""))
+    return int(Fraction(match.group(1)) * _UNITS[match.group(2).lower()])
 
 
 def parse_age(text: str, flag: str = "--older-than") -> float:
@@ -184,5 +234,5 @@ def table(listed: Sequence[CacheEntry], now: float | None = None) -> list[str]:
     return lines
 
 
-__all__ = ["CacheEntry", "clear", "entries", "format_age", "format_size", "parse_age",
+__all__ = ["CacheEntry", "clear", "entries", "foreign", "format_age", "format_size", "parse_age",
            "parse_size", "prune", "remove", "table"]

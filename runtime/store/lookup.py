@@ -17,7 +17,13 @@ import numpy as np
 from jointplay import generated
 from jointplay.common.errors import FileError, GeneratedCodeError
 from jointplay.robot import Robot
-from jointplay.store.build import cache_error, cache_root, entry_lock, remove_temporaries
+from jointplay.store.build import (
+    cache_error,
+    cache_root,
+    claim_entry,
+    entry_lock,
+    remove_temporaries,
+)
 from jointplay.store.formulation import formulation_for
 from jointplay.store.model import Model, check_generated, load_model, note
 from jointplay.store.stamp import provenance
@@ -75,6 +81,7 @@ def _regenerate(robot: Robot, folder: Path) -> None:
             if damage is None:
                 return
             remove_temporaries(folder)  # under the lock: left by killed runs
+            claim_entry(folder)  # jointplay writes it: `jointplay cache clear` may remove it
             if not (folder / "layout.json").exists() and not (folder / "model.c").exists():
                 damage = "absent"
             if damage != "absent":

@@ -19,7 +19,7 @@ import numpy as np
 
 from jointplay.common.errors import GeneratedCodeError
 from jointplay.robot.structure import Structure
-from jointplay.store.build import DEFAULT_CFLAGS, compile_source
+from jointplay.store.build import DEFAULT_CFLAGS, LibraryGone, compile_source
 from jointplay.store.layout import Layout
 
 SOURCE_NAME = "model.c"
@@ -208,8 +208,18 @@ class Model:
                   f"({', '.join(self.layout.deferred[:2])}, ...: not needed to integrate; "
                   "once, then cached)", file=sys.stderr, flush=True)
 
-        return compile_source(deferred, self.cflags, libraries=(str(self.library),),
-                              announce=announce)
+        # The build holds the eager library (a shared lock) while it links against it; one
+        # removed (`jointplay cache clear`) before it was held is compiled again.
+        for attempt in range(3):
+            try:
+                return compile_source(deferred, self.cflags, libraries=(str(self.library),),
+                                      announce=announce)
+            except LibraryGone:
+                if attempt == 2:
+                    raise
+                self.library, seconds = compile_source(source, self.cflags)
+                self.compile_seconds += seconds
+        raise AssertionError("unreachable")
 
     # ---- parameters ------------------------------------------------------------------------
     def parameter_vector(self, values: Mapping[str, float] | Sequence[float] | None = None,
