@@ -33,8 +33,9 @@ def _tree(folder: Path) -> list[str]:
 
 # ---- the cache owns only what it made --------------------------------------------------------
 
-def test_clear_leaves_folders_jointplay_did_not_make(tmp_path: Path, capsys: pytest.CaptureFixture[str],
-                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+def test_clear_leaves_folders_jointplay_did_not_make(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
     root = tmp_path / "P"
     package = root / "build" / "lib" / "pkg"
     package.mkdir(parents=True)
@@ -84,9 +85,9 @@ def test_clear_and_prune_never_follow_links(tmp_path: Path, action: list[str],
     assert f"not jointplay's, left: {root / 'models'}" in out
 
 
-def test_prune_with_a_size_of_400_digits_keeps_everything(tmp_path: Path,
-                                                          capsys: pytest.CaptureFixture[str],
-                                                          monkeypatch: pytest.MonkeyPatch) -> None:
+def test_prune_with_a_size_of_400_digits_keeps_everything(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
     root = tmp_path / "c"
     ours, _ = compile_source(TINY, cache=root)
     monkeypatch.setenv("JOINTPLAY_CACHE", str(root))
