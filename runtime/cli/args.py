@@ -5,12 +5,13 @@ status. Every check runs before any work and names the flag it refuses."""
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
 import os
 import shlex
 import sys
 import traceback
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -73,6 +74,37 @@ def scene_from_args(args: argparse.Namespace) -> Scene:
     from jointplay.scene.definition import default_scene, load_scene
 
     return load_scene(args.scene) if args.scene else default_scene()
+
+
+def plausibility_argument(parser: argparse.ArgumentParser) -> None:
+    from jointplay.scene.definition import PLAUSIBILITY
+
+    parser.add_argument("--plausibility", choices=PLAUSIBILITY,
+                        help="override run.plausibility: what a run that leaves the physical "
+                             "domain (a journal through its bearing, an energy balance that "
+                             "does not close) does: stop with exit 1 (default), warn and keep "
+                             "the result marked, or check nothing")
+
+
+@contextlib.contextmanager
+def warn_plausibility() -> Iterator[None]:
+    """Within: a run kept with ``run.plausibility = "warn"`` prints its one warning line as
+    ``jointplay: warning: ...`` (not Python's warning format)."""
+    import warnings
+
+    from jointplay.sim.plausibility import PlausibilityWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", PlausibilityWarning)
+        try:
+            yield
+        finally:
+            for warning in caught:
+                if issubclass(warning.category, PlausibilityWarning):
+                    print(f"jointplay: warning: {warning.message}", file=sys.stderr)
+                else:
+                    warnings.showwarning(warning.message, warning.category,
+                                         warning.filename, warning.lineno)
 
 
 def run_flag(field: str) -> str:

@@ -10,7 +10,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from jointplay.cli.args import check_writable_dir, run_flag, scene_argument, scene_from_args
+from jointplay.cli.args import (
+    check_writable_dir,
+    plausibility_argument,
+    run_flag,
+    scene_argument,
+    scene_from_args,
+)
 from jointplay.cli.summary import summary
 from jointplay.common.errors import DescriptionError, SimulationError
 from jointplay.common.hints import did_you_mean
@@ -27,7 +33,8 @@ VERIFY_BUDGET_S = 5.0
 CHECK_COST_RATIO = 3.0
 
 # Run settings --set may change (also --integrator, --t-end, ... for the common ones).
-_RUN_NUMBERS = ("t_end", "output_step", "rtol", "atol", "step", "max_steps", "integrator")
+_RUN_NUMBERS = ("t_end", "output_step", "rtol", "atol", "step", "max_steps", "integrator",
+                "plausibility")
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
@@ -51,6 +58,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                        help="write an animation of the arm, each journal's orbit magnified in "
                             "an inset (mp4 needs ffmpeg)")
     p_sim.add_argument("--t-end", type=float, help="override run.t_end (s)")
+    plausibility_argument(p_sim)
     p_sim.add_argument("--set", action="append", metavar="NAME=VALUE",
                        help="override a robot parameter, e.g. --set friction.mu=0.1 "
                             "(repeatable; never recompiles), or a run setting, e.g. --set "
@@ -68,6 +76,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def cmd_simulate(args: argparse.Namespace) -> int:
+    from jointplay.cli.args import warn_plausibility
     from jointplay.sim import load_scene_model, simulate
 
     # Everything is validated before anything is derived, compiled or written.
@@ -78,7 +87,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     if not quiet:
         print(f"scene {scene.name}: model {model.name} ready in "
               f"{time.perf_counter() - t0:.2f} s ({', '.join(model.coordinates)})")
-    result = simulate(scene, model=model, compare_ideal=args.compare_ideal, quiet=quiet)
+    with warn_plausibility():
+        result = simulate(scene, model=model, compare_ideal=args.compare_ideal, quiet=quiet)
     result = _checked(result, scene, model, args.verify, quiet)
     written = _write(result, args, plan, quiet)
     if not quiet:
@@ -119,7 +129,8 @@ def _scene(args: argparse.Namespace) -> tuple[Scene, OutputPlan]:
     scene = scene_from_args(args)
     changes = {k: v for k, v in (("integrator", args.integrator), ("rtol", args.rtol),
                                  ("atol", args.atol), ("t_end", args.t_end),
-                                 ("step", args.step), ("output_step", args.output_step))
+                                 ("step", args.step), ("output_step", args.output_step),
+                                 ("plausibility", args.plausibility))
                if v is not None}
     if changes:
         try:
@@ -264,7 +275,7 @@ def _run_overrides(overrides: dict[str, Any]) -> dict[str, Any]:
             raise DescriptionError(f"--set {name}", "is not a run setting; these are "
                                    f"run.{', run.'.join(_RUN_NUMBERS)}"
                                    + did_you_mean(name, [f"run.{k}" for k in _RUN_NUMBERS]))
-        if key == "integrator":  # the one setting that is a name, not a number
+        if key in ("integrator", "plausibility"):  # the settings that are names
             changes[key] = value
             continue
         number = _number(name, value)

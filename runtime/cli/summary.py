@@ -92,6 +92,9 @@ def summary(result: Any) -> str:
         f"(drive work {result.energy['drive_work'][-1]:.4g} J, dissipated "
         f"{result.energy['dissipated'][-1]:.4g} J)",
     ]
+    if getattr(result, "implausible", None):
+        lines.append("  IMPLAUSIBLE (kept with plausibility = warn): the contact laws do not "
+                     "describe this run; see the warning above")
     if result.accuracy is not None:
         lines += result.accuracy.lines()
     lines += contact_lines(result)

@@ -154,6 +154,14 @@ class SimulationResult:
     def n_samples(self) -> int:
         return int(self.t.size)
 
+    @property
+    def implausible(self) -> str | None:
+        """Why this run is not physically plausible (a journal through its bearing, an energy
+        balance that does not close), where it was kept with ``run.plausibility = "warn"``;
+        None where every check passed or none ran (``"off"``)."""
+        text = self.metadata.get("implausible")
+        return str(text) if text else None
+
     # --- The fields SciPy's solve_ivp returns, for code written against it. A run that cannot
     # go on raises SimulationError (time, joint, cause) instead of returning, so a result in
     # hand always reached its end: status 0, success True.

@@ -28,7 +28,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
@@ -52,9 +52,15 @@ from jointplay.scene.torques import (
 
 INTEGRATORS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
 ADAPTIVE: tuple[str, ...] = ("bdf", "cvodes", "idas")
+PLAUSIBILITY: tuple[str, ...] = ("stop", "warn", "off")
+"""What a run does when it leaves the physical domain (a journal driven through its bearing,
+an energy balance that no longer closes): stop with an error (the default), warn and return
+the result marked as implausible, or check nothing (:mod:`jointplay.sim.plausibility`)."""
+Plausibility = Literal["stop", "warn", "off"]
 
 _TOP_KEYS = ("name", "description", "robot", "constants", "torques", "initial", "run")
-_RUN_KEYS = ("t_end", "output_step", "integrator", "rtol", "atol", "step", "max_steps")
+_RUN_KEYS = ("t_end", "output_step", "integrator", "rtol", "atol", "step", "max_steps",
+             "plausibility")
 
 
 @dataclass(frozen=True)
@@ -69,6 +75,9 @@ class RunSettings:
     residual <= 0.1 % of the dissipated energy; see the README, "What accuracy costs").
     ``step`` is the fixed step of ``rk4`` and ``radau`` (it must
     divide ``output_step``). ``max_steps`` bounds the work between two outputs.
+    ``plausibility`` is what a run that leaves the physical domain does: ``"stop"`` (raise
+    :class:`~jointplay.SimulationError`), ``"warn"`` (one warning; the result is returned,
+    marked in ``result.implausible``) or ``"off"`` (see :data:`PLAUSIBILITY`).
     """
 
     t_end: float = 2.0
@@ -78,6 +87,7 @@ class RunSettings:
     atol: float = 3e-7
     step: float = 1e-5
     max_steps: int = 200_000
+    plausibility: Plausibility = "stop"
 
     def __post_init__(self) -> None:
         # Built from a file, flags or the API alike, the settings are checked here, once.
@@ -235,6 +245,11 @@ def _validate_run(run: RunSettings, source: str | None) -> None:
                 raise _error(f"run.{name}", f"must be at most {high:g}, got {value:g}", source)
             if value < low:
                 raise _error(f"run.{name}", f"must be at least {low:g}, got {value:g}", source)
+    with problems.check():
+        if not isinstance(run.plausibility, str) or run.plausibility not in PLAUSIBILITY:
+            hint = did_you_mean(str(run.plausibility), PLAUSIBILITY)
+            raise _error("run.plausibility", f"must be one of {', '.join(PLAUSIBILITY)}, got "
+                         f"{run.plausibility!r}{hint}", source)
     with problems.check():
         if not isinstance(run.integrator, str) or run.integrator not in INTEGRATORS:
             hint = did_you_mean(str(run.integrator), INTEGRATORS)

@@ -19,14 +19,20 @@ import numpy as np
 
 from jointplay.common.errors import SimulationError
 from jointplay.results.records import Impacts, SimulationResult
-from jointplay.scene.definition import ADAPTIVE, Scene, ideal_counterpart
+from jointplay.scene.definition import ADAPTIVE, Plausibility, Scene, ideal_counterpart
 from jointplay.sim.assemble import _assemble, _mapped
 from jointplay.sim.bdf import native_integrator, run_bdf, torque_fields
 from jointplay.sim.casadi_methods import _AdaptiveIntegrator, _resolve_interval, _run_adaptive
 from jointplay.sim.events import _EventState
 from jointplay.sim.fixed import _run_fixed
 from jointplay.sim.native import raise_for_status
-from jointplay.sim.plausibility import PenetrationWatch, check_result, singular_torque
+from jointplay.sim.plausibility import (
+    PenetrationWatch,
+    PlausibilityWarning,
+    check_result,
+    implausible,
+    singular_torque,
+)
 from jointplay.sim.problem import (
     _Accumulated,
     _initial_state,
@@ -52,7 +58,8 @@ METHODS: dict[str, Method] = {"bdf": run_bdf, "cvodes": _run_adaptive, "idas": _
 def simulate(scene: Scene, *, model: Model | None = None,
              parameters: Mapping[str, float] | Sequence[float] | None = None,
              compare_ideal: bool = False, quiet: bool = True,
-             verify: bool = False) -> SimulationResult:
+             verify: bool = False, plausibility: Plausibility | None = None
+             ) -> SimulationResult:
     """Simulate ``scene`` and return every output as numpy arrays.
 
     ``parameters`` overrides numbers of the scene's robot by name (``{"friction.mu": 0.1}``)
@@ -63,9 +70,18 @@ def simulate(scene: Scene, *, model: Model | None = None,
     energy residuals, the agreement horizon of the impact sequence and which impacts are
     tolerance-sensitive); it costs that second run. Raises :class:`SimulationError` with the
     time, the joint and the cause when the integration cannot go on.
+
+    ``plausibility`` (default: the scene's ``run.plausibility``, itself ``"stop"`` unless
+    set) is what a run that leaves the physical domain does (a journal driven through its
+    bearing, at an output sample or at a located deepest point of a contact phase; an energy
+    balance that no longer closes): ``"stop"`` raises :class:`SimulationError`; ``"warn"``
+    issues one :class:`~jointplay.sim.plausibility.PlausibilityWarning` and returns the result
+    with ``result.implausible`` saying why; ``"off"`` checks neither.
     """
     from tqdm import tqdm
 
+    if plausibility is not None:
+        scene = scene.with_run(plausibility=plausibility)
     model = model or load_scene_model(scene)
     p = _parameter_vector(model, scene, parameters)
     ideal_result = None
@@ -77,7 +93,8 @@ def simulate(scene: Scene, *, model: Model | None = None,
             ideal_params = {k: v for k, v in parameters.items()
                             if k in ideal_model.parameters}
         ideal_result = simulate(ideal_scene, model=ideal_model,
-                                parameters=ideal_params, quiet=quiet)
+                                parameters=ideal_params, quiet=quiet,
+                                plausibility=plausibility)
     pr = _Problem(model, scene, p)
     run = scene.run
     if model.structure.wear is not None and run.integrator != "bdf":
@@ -110,7 +127,8 @@ def simulate(scene: Scene, *, model: Model | None = None,
     wall = time.perf_counter() - start
     counts: dict[str, Any] = dict(stats.counts)
     result = _assemble(pr, traj, t, counts, wall, ideal_result, phases)
-    check_result(result, pr)
+    watch.check_impacts(result.impacts)  # every located deepest point, whatever the outputs
+    result = implausible(watch.findings + check_result(result, pr), pr, result)
     if verify:
         result = with_accuracy(result, scene, model=model, parameters=parameters, quiet=quiet)
     # Last: the dense output is attached to this very object (a dataclass replace drops it).
@@ -139,10 +157,14 @@ def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None
 
     from jointplay.results.accuracy import compare_runs
 
+    import warnings
+
     tighter = tighter_settings(scene)
     model = model or load_scene_model(scene)
-    check = simulate(scene.with_run(**tighter), model=model, parameters=parameters,
-                     quiet=quiet)
+    with warnings.catch_warnings():  # the run itself has said whether it is plausible
+        warnings.simplefilter("ignore", PlausibilityWarning)
+        check = simulate(scene.with_run(**tighter), model=model, parameters=parameters,
+                         quiet=quiet)
     run = scene.run
     adaptive = run.integrator in ADAPTIVE
     accuracy = compare_runs(result, check,

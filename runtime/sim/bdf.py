@@ -109,6 +109,9 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
             per_joint = values[:, nx + 1:].reshape(upto - done, pr.nc, 3)
             traj.dissipated[rows] = per_joint[:, :, 1:].sum(axis=(1, 2))
         traj.v_imp[rows] = v_out
+        if pr.nc and hasattr(progress, "check_located"):  # the phases' deepest points so far
+            located = integ.phases()
+            progress.check_located(located[:, 0], located[:, 7], located[:, 8])
         progress.update(upto - done)
         done = upto
     _add_counts(stats, integ)

@@ -8,11 +8,23 @@ derived for and the numbers mean nothing, although the integrator succeeds. Such
 with a :class:`~jointplay.common.errors.SimulationError` naming the joint, the time and the
 input most likely at fault (exit 1 on the command line); nothing is written.
 The bounds are :data:`jointplay.common.limits.MAX_PENETRATION_FRACTION` and
-:data:`jointplay.common.limits.MAX_ENERGY_RESIDUAL` (the README lists them).
+:data:`jointplay.common.limits.MAX_ENERGY_RESIDUAL`.
+
+The penetration is read where it is largest, not only at the output samples: the compiled
+``bdf`` locates each contact phase's deepest point (where the penetration rate is zero) and
+every located maximum is checked, after each stretch of the run and on the final table; the
+output samples are checked too (the other methods locate no maximum). So the output step,
+which never changes the integration, never changes the verdict.
+
+``run.plausibility`` (:data:`jointplay.scene.definition.PLAUSIBILITY`) makes the two physical
+checks a setting: ``"stop"`` (the default) raises, ``"warn"`` lets the run finish, warns once
+(:class:`PlausibilityWarning`) and marks the result (``result.implausible``, kept in the
+results file), ``"off"`` checks neither. Numbers that are not finite always stop the run.
 """
 
 from __future__ import annotations
 
+import warnings
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -21,7 +33,7 @@ from jointplay.common import limits
 from jointplay.common.errors import SimulationError
 
 if TYPE_CHECKING:
-    from jointplay.results.records import SimulationResult
+    from jointplay.results.records import Impacts, SimulationResult
     from jointplay.sim.problem import _Problem, _Trajectory
 
 # Below this (J) an energy residual is rounding, whatever the run's energies: a robot at rest
@@ -29,12 +41,18 @@ if TYPE_CHECKING:
 ENERGY_RESIDUAL_FLOOR = 1.0e-6
 
 
+class PlausibilityWarning(UserWarning):
+    """A run left the physical domain and was kept because ``run.plausibility = "warn"``."""
+
+
 def likely_input(pr: _Problem) -> str:
     """The inputs most likely to have driven a run out of the physical domain."""
+    from jointplay.scene.definition import RunSettings
+
     run = pr.scene.run
     if run.integrator in ("bdf", "cvodes", "idas") and (run.rtol >= 1e-2 or run.atol >= 1.0):
         return (f"the tolerances (run.rtol = {run.rtol:g}, run.atol = {run.atol:g}; the "
-                "defaults are 1e-6 and 1e-5)")
+                f"defaults are {RunSettings.rtol:g} and {RunSettings.atol:g})")
     if run.integrator not in ("bdf", "cvodes", "idas"):
         return (f"the fixed step first: reduce run.step (now {run.step:g} s) or use an "
                 "adaptive integrator; else the initial speeds or the drive torques")
@@ -49,12 +67,17 @@ def likely_input(pr: _Problem) -> str:
 
 class PenetrationWatch:
     """Wraps a run's progress bar: each time the integration reports new output samples, their
-    penetrations are checked against the contact law's domain before the run goes on."""
+    penetrations are checked against the contact law's domain before the run goes on; the
+    located maxima of the contact phases are checked with :meth:`check_located`. With
+    ``run.plausibility = "warn"`` the first finding is kept in ``findings`` and the run goes
+    on; with ``"off"`` nothing is checked."""
 
     def __init__(self, progress: Any, pr: _Problem, traj: _Trajectory) -> None:
         self.progress = progress
         self.pr = pr
         self.traj = traj
+        self.mode = pr.scene.run.plausibility
+        self.findings: list[str] = []
         self.checked = 0  # output samples 1..checked are checked
         model = pr.model
         self.columns = [(model.coordinates.index(f"ex{j}"), model.coordinates.index(f"ey{j}"))
@@ -73,27 +96,90 @@ class PenetrationWatch:
         return self.progress.update(n)
 
     def check(self, rows: slice) -> None:
+        """The output samples ``rows`` of the trajectory."""
+        if self.mode == "off" or self.findings:
+            return
         x = self.traj.x[rows]
         for k, (ix, iy) in enumerate(self.columns):
             delta = np.hypot(x[:, ix], x[:, iy]) - self.clearance[k]
             over = delta > self.limit[k]
             if over.any():
                 i = int(np.argmax(over))
-                t = (rows.start + i) * self.pr.scene.run.output_step
-                joint = int(self.pr.model.clearance_joints[k])
-                radius = self.journal_radius[k]
-                raise SimulationError(
-                    t, f"the journal has penetrated its bearing by {delta[i] * 1e3:.3g} mm "
-                    f"({100 * delta[i] / radius:.3g} % of its {radius * 1e3:.3g} mm radius), "
-                    f"beyond the {100 * limits.MAX_PENETRATION_FRACTION:g} % the contact law "
-                    "describes: no real joint reaches this state; check "
-                    f"{likely_input(self.pr)}", joint)
+                self._found(k, float(delta[i]), (rows.start + i) * self.pr.scene.run.output_step,
+                            "at an output sample")
+                return
+
+    def check_located(self, column: np.ndarray, penetration: np.ndarray,
+                      time: np.ndarray) -> None:
+        """Located maxima of contact phases: the 0-based clearance ``column`` of each, its
+        largest penetration (m) and when (s). NaN (not located) is skipped."""
+        if self.mode == "off" or self.findings or not self.columns:
+            return
+        column = np.asarray(column, dtype=int)
+        with np.errstate(invalid="ignore"):
+            over = np.asarray(penetration, dtype=float) > self.limit[column]
+        if over.any():
+            rows = np.flatnonzero(over)
+            i = int(rows[np.argmin(np.asarray(time, dtype=float)[rows])])
+            self._found(int(column[i]), float(penetration[i]), float(time[i]),
+                        "located: the deepest point of a contact phase")
+
+    def check_impacts(self, impacts: Impacts) -> None:
+        """The located maxima of a run's contact-phase table (1-based joint numbers)."""
+        if len(impacts) == 0:
+            return
+        joints = list(self.pr.model.clearance_joints)
+        column = np.array([joints.index(int(j)) for j in impacts.joint], dtype=int)
+        self.check_located(column, impacts.max_penetration, impacts.max_penetration_time)
+
+    def _found(self, k: int, delta: float, t: float, where: str) -> None:
+        joint = int(self.pr.model.clearance_joints[k])
+        radius = self.journal_radius[k]
+        error = SimulationError(
+            t, f"the journal has penetrated its bearing by {delta * 1e3:.3g} mm "
+            f"({100 * delta / radius:.3g} % of its {radius * 1e3:.3g} mm radius; {where}), "
+            f"beyond the {100 * limits.MAX_PENETRATION_FRACTION:g} % the contact law "
+            "describes: no real joint reaches this state; check "
+            f"{likely_input(self.pr)}", joint)
+        if self.mode == "stop":
+            raise error
+        self.findings.append(finding(error))
 
 
-def check_result(result: SimulationResult, pr: _Problem) -> None:
-    """The energy balance closes and every per-sample quantity (and the wear) is finite."""
+def check_result(result: SimulationResult, pr: _Problem) -> list[str]:
+    """Every per-sample quantity (and the wear) is finite, and the energy balance closes.
+    Returns what is implausible where ``run.plausibility`` is ``"warn"`` (raises where it is
+    ``"stop"``; the balance is not checked where it is ``"off"``)."""
     _check_finite(result)
-    _check_energy(result, pr)
+    mode = pr.scene.run.plausibility
+    if mode == "off":
+        return []
+    try:
+        _check_energy(result, pr)
+    except SimulationError as err:
+        if mode == "stop":
+            raise
+        return [finding(err)]
+    return []
+
+
+def finding(error: SimulationError) -> str:
+    """What a stop would have said, for a run that goes on: where, and why."""
+    where = f" at joint {error.joint}" if error.joint is not None else ""
+    return f"at t = {error.time:.9g} s{where}: {error.cause}"
+
+
+def implausible(findings: list[str], pr: _Problem, result: SimulationResult
+                ) -> SimulationResult:
+    """The result marked with what was found implausible (``run.plausibility = "warn"``),
+    after one warning line; unchanged where nothing was found."""
+    if not findings:
+        return result
+    text = "; ".join(findings)
+    warnings.warn(f"implausible run kept (run.plausibility = \"warn\"): {text}",
+                  PlausibilityWarning, stacklevel=3)
+    result.metadata["implausible"] = text
+    return result
 
 
 def _check_finite(result: SimulationResult) -> None:

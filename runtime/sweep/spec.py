@@ -169,7 +169,9 @@ def _scene_fingerprint(scene: Scene) -> dict[str, Any]:
         "torques": torques,
         "initial": {k: _hex(v) for k, v in sorted(scene.initial.items())},
         "run": {f.name: (_hex(getattr(run, f.name)) if isinstance(getattr(run, f.name), float)
-                         else getattr(run, f.name)) for f in fields(run)},
+                         else getattr(run, f.name)) for f in fields(run)
+                # the default stop leaves the keys of earlier sweeps as they were
+                if not (f.name == "plausibility" and run.plausibility == "stop")},
     }
     if scene.journals != "centred":  # the resting start (centred keys stay as they were)
         out["journals"] = scene.journals
