@@ -4,6 +4,7 @@ tolerances (adaptive) or steps (fixed), and for the scene's own settings."""
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -29,6 +30,7 @@ from jointplay.bench.measure import (
 from jointplay.bench.report import heading, markdown_table, write_report
 from jointplay.common.figures import figure, save
 from jointplay.scene.definition import ADAPTIVE
+from jointplay.sim.plausibility import PlausibilityWarning
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -53,6 +55,7 @@ WP_COLUMNS: list[tuple[str, str, str]] = [
     ("atol", "atol", "{:.0e}"),
     ("step", "step s", "{:.2e}"),
     ("status", "status", "{}"),
+    ("implausible", "implausible (kept: warn)", "{}"),
     *CPU_COLUMNS,
     *TIP_ERROR_COLUMNS,
     ("energy_fraction", "energy res / dissipated", "{:.2%}"),
@@ -64,7 +67,8 @@ WP_COLUMNS: list[tuple[str, str, str]] = [
     ("impacts", "impacts", "{}"),
 ]
 WP_CSV_KEYS: list[str] = [
-    "stiffness", "config", "method", "rtol", "atol", "step", "status", "failure", "repeats",
+    "stiffness", "config", "method", "rtol", "atol", "step", "status", "implausible", "failure",
+    "repeats",
     *TIMING_KEYS, *ERROR_KEYS, "energy_residual", "energy_dissipated", "energy_fraction",
     "working_accuracy", *COUNT_KEYS]
 
@@ -83,14 +87,18 @@ class WorkPrecision:
 def sweep_configurations(scene: Scene, methods: Sequence[str], rtols: Sequence[float],
                          steps: Sequence[float], atols: Sequence[float] = ()) -> list[Scene]:
     """One scene per (method, tolerance or step), in table order: adaptive methods with
-    atol = rtol, or with every rtol paired with every one of ``atols``."""
+    atol = rtol, or with every rtol paired with every one of ``atols``. A loose setting may
+    leave the physical domain: each is run with ``plausibility = "warn"``, so its row is
+    kept and marked (``implausible``) instead of lost."""
     out = []
     for method in methods:
         if method in ADAPTIVE:
             pairs = [(r, a) for r in rtols for a in atols] if atols else [(r, r) for r in rtols]
-            out += [scene.with_run(integrator=method, rtol=r, atol=a) for r, a in pairs]
+            out += [scene.with_run(integrator=method, rtol=r, atol=a, plausibility="warn")
+                    for r, a in pairs]
         else:
-            out += [scene.with_run(integrator=method, step=h) for h in steps]
+            out += [scene.with_run(integrator=method, step=h, plausibility="warn")
+                    for h in steps]
     return out
 
 
@@ -107,7 +115,9 @@ def work_precision(scene: Scene, model: Model, *, methods: Sequence[str] = DEFAU
     configs = [(c, "sweep") for c in sweep_configurations(scene, methods, rtols, steps, atols)]
     configs.append((scene, "scene settings"))
     rows: list[dict[str, Any]] = []
-    with tqdm(configs, unit="run", disable=quiet, leave=False, dynamic_ncols=True) as bar:
+    with tqdm(configs, unit="run", disable=quiet, leave=False, dynamic_ncols=True) as bar, \
+            warnings.catch_warnings():
+        warnings.simplefilter("ignore", PlausibilityWarning)  # the rows are marked instead
         for config, kind in bar:
             bar.set_description(run_label(config))
             timed = timed_runs(config, model, repeats)
@@ -131,11 +141,13 @@ def _row(config: Scene, kind: str, timed: Timed, reference: Reference) -> dict[s
         "failure": timed.failure or "",
         **timing_columns(timed, run.t_end),
     }
+    row["implausible"] = "yes" if timed.result is not None and timed.result.implausible \
+        else ""
     if timed.result is not None:
         row.update(all_errors(timed.result, reference.result))
         row.update(_energy_columns(timed.result))
         row["working_accuracy"] = "yes" if (
-            row["err_position"] <= WORKING_TIP_ERROR
+            row["err_position"] <= WORKING_TIP_ERROR and not row["implausible"]
             and row["energy_fraction"] <= WORKING_ENERGY_FRACTION) else "no"
     else:
         row.update(dict.fromkeys(ERROR_KEYS, math.nan))

@@ -153,11 +153,10 @@ def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None
     """``result`` (a run of ``scene`` with ``parameters``) with its accuracy statement, from
     a second run at tolerances 10x tighter: what ``simulate(..., verify=True)`` does, for a
     run already made (the CLI decides after the first run whether the check is affordable)."""
+    import warnings
     from dataclasses import replace
 
     from jointplay.results.accuracy import compare_runs
-
-    import warnings
 
     tighter = tighter_settings(scene)
     model = model or load_scene_model(scene)
