@@ -158,3 +158,158 @@ def test_clear_during_a_build_keeps_the_library_it_links_against(tmp_path: Path)
     removed, busy = cache.clear(root)
     assert busy == [] and not eager.exists()
     assert build_key(TINY) in {e.key for e in removed}
+
+
+# ---- the penetration stop reads the located deepest points -----------------------------------
+
+def _paper(tmp: Path, **replace: str) -> Path:
+    from test_probes import paper_scene
+
+    return paper_scene(tmp, **replace)
+
+
+SPIN3 = {"q3 = 0.0": "q3 = 0.0\ndq3 = 800.0", "t_end = 2.0 ": "t_end = 0.05 "}
+
+
+@pytest.mark.parametrize("output_step", ["0.01", "0.001"])
+def test_penetration_stop_does_not_depend_on_the_output_step(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], output_step: str) -> None:
+    """dq3 = 800 rad/s drives joint 3's journal 0.33 mm (3.3 % of its radius) into its
+    bearing between two 10 ms samples: the stop reads the located deepest point, so the
+    verdict and the time it names are the same at either output step; nothing is written."""
+    scene = _paper(tmp_path, **SPIN3)
+    out = tmp_path / "run.h5"
+    code = main(["simulate", str(scene), "--output-step", output_step, "--out", str(out),
+                 "--no-verify", "--quiet"])
+    err = capsys.readouterr().err
+    check_contract(code, err)
+    assert code == 1, err
+    assert "at t = 0.000127" in err and "at joint 3" in err, err
+    assert "located: the deepest point of a contact phase" in err, err
+    assert not out.exists() and list(tmp_path.iterdir()) == [scene]
+
+
+def test_penetration_stop_at_the_default_output_step(tmp_path: Path,
+                                                      capsys: pytest.CaptureFixture[str]) -> None:
+    scene = _paper(tmp_path, **{"q3 = 0.0": "q3 = 0.0\ndq2 = 500.0"})
+    code = main(["simulate", str(scene), "--out", str(tmp_path / "run.h5"), "--no-verify",
+                 "--quiet"])
+    err = capsys.readouterr().err
+    check_contract(code, err)
+    assert code == 1 and "penetrated its bearing" in err and "located" in err, err
+    assert not (tmp_path / "run.h5").exists()
+
+
+# ---- the plausibility stop as a setting ------------------------------------------------------
+
+def test_plausibility_warn_keeps_the_run_marked(tmp_path: Path,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    """--plausibility warn: exit 0, one warning line naming what the stop would have said,
+    the summary and the results file say the run is implausible."""
+    import jointplay
+
+    scene = _paper(tmp_path, **SPIN3)
+    out = tmp_path / "run.h5"
+    code = main(["simulate", str(scene), "--output-step", "0.01", "--out", str(out),
+                 "--no-verify", "--plausibility", "warn"])
+    captured = capsys.readouterr()
+    check_contract(code, captured.err)
+    assert code == 0, captured.err
+    warned = [line for line in captured.err.splitlines() if "warning" in line]
+    assert len(warned) == 1 and warned[0].startswith("jointplay: warning: implausible run "
+                                                     "kept"), captured.err
+    assert "penetrated its bearing" in warned[0] and "at joint 3" in warned[0]
+    assert "IMPLAUSIBLE" in captured.out
+    back = jointplay.read(out)
+    assert back.implausible is not None and "penetrated its bearing" in back.implausible
+    # off: no check, no warning, no mark
+    out.unlink()
+    code = main(["simulate", str(scene), "--output-step", "0.01", "--out", str(out),
+                 "--no-verify", "--quiet", "--set", "run.plausibility=off"])
+    err = capsys.readouterr().err
+    check_contract(code, err)
+    assert code == 0 and err == "", err
+    assert jointplay.read(out).implausible is None
+
+
+def test_plausibility_in_the_scene_is_validated(tmp_path: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    from test_probes import bad_input
+
+    scene = _paper(tmp_path, **{"integrator = \"bdf\"":
+                                "integrator = \"bdf\"\nplausibility = \"warnn\""})
+    bad_input(capsys, ["simulate", str(scene)], "run.plausibility", "stop, warn, off",
+              "'warn'")
+    bad_input(capsys, ["simulate", "--set", "run.plausibility=maybe"],
+              "--set run.plausibility", "stop, warn, off")
+    with pytest.raises(SystemExit) as refused:  # argparse's own refusal of a choice
+        main(["simulate", "--plausibility", "sometimes"])
+    assert refused.value.code == 2
+    assert "--plausibility: invalid choice" in capsys.readouterr().err
+
+
+def test_energy_balance_check_follows_the_setting() -> None:
+    """At rtol 1e-3 the paper scene's energy balance stops closing (1 % of its largest
+    energy): the default raises, warn returns the result with one warning, off is silent.
+    A warned result is otherwise the very run the stop would have refused."""
+    import warnings
+
+    import numpy as np
+
+    import jointplay
+    from jointplay.sim.plausibility import PlausibilityWarning
+
+    scene = jointplay.default_scene().with_run(rtol=1e-3)
+    with pytest.raises(jointplay.SimulationError, match="energy balance no longer closes"):
+        jointplay.simulate(scene)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        warned = jointplay.simulate(scene, plausibility="warn")
+    assert [w.category for w in caught] == [PlausibilityWarning]
+    assert warned.implausible is not None
+    assert "energy balance no longer closes" in warned.implausible
+    assert warned.metadata["run"]["plausibility"] == "warn"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        off = jointplay.simulate(scene.with_run(plausibility="off"))
+    assert off.implausible is None
+    np.testing.assert_array_equal(off.q, warned.q)
+
+
+def test_tolerance_hint_quotes_the_defaults() -> None:
+    import jointplay
+    from jointplay.scene.definition import RunSettings
+
+    scene = jointplay.default_scene().with_run(rtol=1e-2, atol=1.0)
+    with pytest.raises(jointplay.SimulationError) as caught:
+        jointplay.simulate(scene)
+    text = str(caught.value)
+    assert f"the defaults are {RunSettings.rtol:g} and {RunSettings.atol:g}" in text, text
+
+
+# ---- a missing extra names exactly what is missing ---------------------------------------------
+
+@pytest.mark.parametrize(("absent", "call", "named"), [
+    (("pandas",), "to_pandas", "pandas"),
+    (("xarray",), "to_xarray", "xarray"),
+    (("xarray", "pandas"), "to_xarray", "xarray, pandas"),
+])
+def test_missing_extra_names_exactly_the_missing(monkeypatch: pytest.MonkeyPatch,
+                                                 absent: tuple[str, ...], call: str,
+                                                 named: str) -> None:
+    import jointplay
+    from jointplay.common.extras import MissingExtra
+
+    import pandas
+
+    result = jointplay.simulate(jointplay.default_scene().with_run(t_end=0.01))
+    for module in absent:
+        monkeypatch.setitem(sys.modules, module, None)
+    target = result.impacts if call == "to_pandas" else result
+    with pytest.raises(MissingExtra) as caught:
+        getattr(target, call)()
+    assert f"{call}() needs {named}, not installed" in str(caught.value)
+    if call == "to_pandas":  # without xarray, pandas alone is enough
+        monkeypatch.setitem(sys.modules, "pandas", pandas)
+        monkeypatch.setitem(sys.modules, "xarray", None)
+        assert len(result.impacts.to_pandas()) == len(result.impacts)

@@ -30,10 +30,11 @@ class MissingExtra(JointplayError, ImportError):
                          f"pip install 'jointplay[{extra}]'")
 
 
-def missing_modules(extra: str) -> tuple[str, ...]:
-    """The modules of ``extra`` that cannot be imported here (none: the extra is there)."""
+def missing_modules(extra: str, modules: tuple[str, ...] | None = None) -> tuple[str, ...]:
+    """The modules of ``extra`` (or only ``modules`` of it, where a function needs just those)
+    that cannot be imported here (none: they are there)."""
     missing = []
-    for module in EXTRAS[extra]:
+    for module in EXTRAS[extra] if modules is None else modules:
         try:
             found = find_spec(module) is not None
         except (ImportError, ValueError):  # a broken install counts as missing
@@ -43,10 +44,14 @@ def missing_modules(extra: str) -> tuple[str, ...]:
     return tuple(missing)
 
 
-def require(extra: str, what: str) -> None:
-    """Raise :class:`MissingExtra` unless every module of ``extra`` is installed; ``what``
-    says who needs it (``"jointplay identify"``, ``"result.to_xarray()"``)."""
-    missing = missing_modules(extra)
+def require(extra: str, what: str, modules: tuple[str, ...] | None = None) -> None:
+    """Raise :class:`MissingExtra` unless every module ``what`` needs is installed: those of
+    ``extra``, or only ``modules`` of it (``result.impacts.to_pandas()`` needs pandas, not
+    xarray). ``what`` says who needs them (``"jointplay identify"``, ``"to_xarray()"``); the
+    message names exactly the modules missing."""
+    if modules is not None and not set(modules) <= set(EXTRAS[extra]):
+        raise ValueError(f"{modules} are not all modules of the extra {extra!r}")
+    missing = missing_modules(extra, modules)
     if missing:
         raise MissingExtra(extra, what, missing)
 

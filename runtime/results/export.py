@@ -94,7 +94,7 @@ def impacts_frame(impacts: Impacts) -> Any:
     """
     from jointplay.common.extras import require
 
-    require("xarray", "to_pandas()")
+    require("xarray", "to_pandas()", modules=("pandas",))
     import pandas as pd
 
     columns: dict[str, np.ndarray] = {}
