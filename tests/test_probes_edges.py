@@ -297,10 +297,10 @@ def test_tolerance_hint_quotes_the_defaults() -> None:
 def test_missing_extra_names_exactly_the_missing(monkeypatch: pytest.MonkeyPatch,
                                                  absent: tuple[str, ...], call: str,
                                                  named: str) -> None:
+    import pandas
+
     import jointplay
     from jointplay.common.extras import MissingExtra
-
-    import pandas
 
     result = jointplay.simulate(jointplay.default_scene().with_run(t_end=0.01))
     for module in absent:
