@@ -75,6 +75,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     with interrupts.installed():
         try:
+            refuse_empty_values(parser, args)
             code = int(args.func(args))
             interrupts.raise_if_interrupted()  # one that a library swallowed still counts
             return code
@@ -85,6 +86,31 @@ def main(argv: list[str] | None = None) -> int:
             if interrupts.interrupted():
                 return interrupted(args)
             return report_error(err, args)
+
+
+def refuse_empty_values(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:
+    """An empty value given to an argument whose default is not empty (``--out ''``, a scene
+    ``''``) is a mistake, not a request for the default or for nothing: refused (exit 2)."""
+    from jointplay.common.errors import DescriptionError
+
+    for action in _actions(parser, args):
+        if getattr(args, action.dest, None) == "" and action.default != "":
+            name = action.option_strings[-1] if action.option_strings else action.dest
+            raise DescriptionError(name, "is empty; give a value (a file or folder name)")
+
+
+def _actions(parser: argparse.ArgumentParser, args: argparse.Namespace
+             ) -> list[argparse.Action]:
+    """Every argument of ``parser`` and of the subcommand ``args`` chose, at any depth."""
+    found = []
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            chosen = action.choices.get(getattr(args, action.dest, None) or "")
+            if chosen is not None:
+                found += _actions(chosen, args)
+        else:
+            found.append(action)
+    return found
 
 
 __all__ = ["EXIT_BAD_INPUT", "contact_lines", "main", "make_parser", "summary"]

@@ -77,10 +77,14 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def cmd_simulate(args: argparse.Namespace) -> int:
     from jointplay.cli.args import warn_plausibility
-    from jointplay.sim import load_scene_model, simulate
+    from jointplay.sim import can_check_accuracy, load_scene_model, simulate
 
     # Everything is validated before anything is derived, compiled or written.
     scene, plan = _scene(args)
+    if args.verify and not can_check_accuracy(scene):
+        raise DescriptionError("--verify", "the run's settings are at their limits "
+                               "(run.rtol, run.atol or run.step): no tighter run can check "
+                               "its accuracy; drop --verify")
     quiet = args.quiet
     t0 = time.perf_counter()
     model = load_scene_model(scene)
@@ -102,9 +106,14 @@ def _checked(result: SimulationResult, scene: Scene, model: Any, verify: bool | 
              quiet: bool) -> SimulationResult:
     """The result with its accuracy statement, unless skipped (``--no-verify``) or, without
     ``--verify``, too expensive: then the reason is printed."""
-    from jointplay.sim import with_accuracy
+    from jointplay.sim import can_check_accuracy, tighter_note, with_accuracy
 
     if verify is False:
+        return result
+    if not can_check_accuracy(scene):
+        if not quiet:
+            print("accuracy not checked: the run's settings are at their limits, so no "
+                  "tighter run can check it")
         return result
     estimate = CHECK_COST_RATIO * float(result.stats["wall_time_s"])
     if verify is None and estimate > VERIFY_BUDGET_S:
@@ -116,6 +125,9 @@ def _checked(result: SimulationResult, scene: Scene, model: Any, verify: bool | 
     if not quiet:
         print(f"checking accuracy: the same run at tolerances 10x tighter (about "
               f"{estimate:.1f} s; --no-verify skips it)")
+    note = tighter_note(scene)
+    if note and not quiet:
+        print(f"  note: {note}")
     try:
         return with_accuracy(result, scene, model=model, quiet=quiet)
     except SimulationError as err:  # the run itself is fine: keep it, say what is not known

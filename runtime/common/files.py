@@ -41,6 +41,22 @@ def temp_tag() -> str:
     return f"j{_HOST}p{os.getpid()}"
 
 
+NAME_MAX = 255
+"""Bytes of one file name (Linux, macOS and Windows file systems alike)."""
+# Above this many bytes a target's name is replaced, in its temporary names, by a hash: the
+# temporary name adds about 40 bytes, and must never be longer than a legal name (255).
+_LONG_NAME_BYTES = 180
+
+
+def temp_stem(name: str) -> str:
+    """How the temporary files of the target ``name`` begin (after the dot): the name itself,
+    or, for a long one, a short hash of it, so that no legal name fails for its temporary."""
+    raw = os.fsencode(name)
+    if len(raw) <= _LONG_NAME_BYTES:
+        return name
+    return "h" + hashlib.sha256(raw).hexdigest()[:24]
+
+
 def _errno(err: OSError) -> int:
     """The error number, also where h5py hides it in its message (0 if none)."""
     if err.errno:
@@ -81,7 +97,7 @@ def atomic_path(path: str | Path, suffix: str = ".part") -> Iterator[Path]:
     """
     path = Path(path)
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{temp_tag()}.", suffix=suffix,
+        fd, tmp = tempfile.mkstemp(prefix=f".{temp_stem(path.name)}.{temp_tag()}.", suffix=suffix,
                                    dir=path.parent)
     except OSError as err:
         raise file_error(path, err) from None
@@ -210,7 +226,8 @@ def _set_aside(path: Path) -> Path | None:
     so that the file can be put back; where links are not supported, the file is moved."""
     if not path.exists():
         return None
-    aside = path.with_name(f".{path.name}.{temp_tag()}.old{os.urandom(4).hex()}.part")
+    aside = path.with_name(f".{temp_stem(path.name)}.{temp_tag()}.old{os.urandom(4).hex()}"
+                           ".part")
     try:
         os.link(path, aside)
     except OSError:
@@ -341,12 +358,18 @@ class OutputPlan:
     inputs: list[PlannedInput] = field(default_factory=list)
 
     def file(self, flag: str, path: str | Path, derived: str = "") -> Path:
+        """A file the command writes. Refused at once (exit 2): an empty name, ``-``
+        (standard output: the outputs are binary or several files), a name ending in ``/``
+        (a folder, as Unix tools read it, where a file is written) and a name that is not
+        UTF-8 (it could not be reported or kept in the results)."""
+        check_output_name(flag, path, "file")
         self.outputs.append(PlannedOutput(flag, Path(path), "file", derived))
         return Path(path)
 
     def folder(self, flag: str, path: str | Path, derived: str = "", pattern: str = "*"
                ) -> Path:
         """A folder the command fills with files named like ``pattern`` (at any depth)."""
+        check_output_name(flag, path, "folder")
         self.outputs.append(PlannedOutput(flag, Path(path), "folder", derived, pattern))
         return Path(path)
 
@@ -361,6 +384,11 @@ class OutputPlan:
     def check(self) -> None:
         from jointplay.common.errors import DescriptionError
 
+        for output in self.outputs:  # under a file, nothing can be made: found now
+            blocker = _file_above(output.path)
+            if blocker is not None:
+                raise DescriptionError(output.flag, f"{output.path} lies under {blocker}, "
+                                       "which is a file, not a folder; write elsewhere")
         files = [o for o in self.outputs if o.kind == "file"]
         folders = [o for o in self.outputs if o.kind == "folder"]
         for i, a in enumerate(files):
@@ -400,6 +428,46 @@ class OutputPlan:
                                            "elsewhere")
 
 
+def check_output_name(flag: str, path: str | Path, kind: str = "file") -> None:
+    """Refuse (exit 2, naming ``flag``) an output name no write could honour: empty, ``-``,
+    a file name ending in ``/`` (that names a folder), or one that is not UTF-8."""
+    from jointplay.common.errors import DescriptionError
+
+    text = os.fspath(path)
+    if text == "":
+        raise DescriptionError(flag, f"is empty; give the name of a {kind} to write")
+    if text == "-":
+        raise DescriptionError(flag, f"'-' (standard output) is not supported; give the "
+                               f"name of a {kind} to write")
+    if kind == "file" and text.endswith(("/", os.sep)):
+        raise DescriptionError(flag, f"{text!r} ends in '/', which names a folder; give a "
+                               f"file name (e.g. {text.rstrip('/' + os.sep) or '.'}/NAME)")
+    name = os.fsencode(Path(text).name)
+    if len(name) > NAME_MAX:
+        raise DescriptionError(flag, f"the name {Path(text).name[:40]!r}... is {len(name)} "
+                               f"bytes; a file system takes at most {NAME_MAX}: give a "
+                               "shorter name")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        shown = text.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
+        raise DescriptionError(flag, f"the name {shown!r} is not valid UTF-8; give a name in "
+                               "UTF-8") from None
+
+
+def _file_above(path: Path) -> Path | None:
+    """The nearest existing ancestor of ``path`` when it is not a folder (else None)."""
+    for ancestor in path.parents:
+        try:
+            mode = os.stat(ancestor).st_mode
+        except FileNotFoundError:
+            continue
+        except OSError:
+            return None  # unreadable: the write that follows reports it
+        return None if stat.S_ISDIR(mode) else ancestor
+    return None
+
+
 def _alive(pid: int) -> bool:
     try:
         os.kill(pid, 0)
@@ -426,7 +494,7 @@ def sweep_stale(folder: str | Path, name: str | None = None) -> int:
     ``name`` limits the sweep to the temporaries of one target file. Returns how many were
     removed; a folder that cannot be listed is left alone (the write that follows reports it).
     """
-    prefix = f".{name}." if name else "."
+    prefix = f".{temp_stem(name)}." if name else "."
     removed = 0
     now = time.time()
     try:

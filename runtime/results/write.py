@@ -72,7 +72,7 @@ def check_output_path(path: str | Path, flag: str = "--out",
     existing ``path`` must be a regular file, and it must not be one of ``inputs`` (the scene
     it was made from). Temporary files of earlier runs that died writing ``path`` are removed.
     """
-    from jointplay.common.files import describe_os_error, sweep_stale, temp_tag
+    from jointplay.common.files import describe_os_error, sweep_stale, temp_stem, temp_tag
 
     path = Path(path)
     if path.is_dir():
@@ -90,7 +90,8 @@ def check_output_path(path: str | Path, flag: str = "--out",
     if not os.access(parent, os.W_OK | os.X_OK):
         raise DescriptionError(flag, f"cannot write to {parent}: permission denied", None)
     try:
-        fd, probe = tempfile.mkstemp(prefix=f".{path.name}.{temp_tag()}.", suffix=".part",
+        fd, probe = tempfile.mkstemp(prefix=f".{temp_stem(path.name)}.{temp_tag()}.",
+                                     suffix=".part",
                                      dir=parent)
         os.close(fd)
         os.unlink(probe)

@@ -44,7 +44,9 @@ from jointplay.sim.problem import (
 )
 from jointplay.store.model import Model
 
-__all__ = ["METHODS", "Stepper", "load_scene_model", "simulate", "tighter_settings",
+__all__ = ["METHODS", "Stepper", "can_check_accuracy", "load_scene_model", "simulate",
+           "tighter_note",
+           "tighter_settings",
            "with_accuracy"]
 
 # One interface for every integration method: (problem, x0, trajectory to fill, statistics,
@@ -82,6 +84,12 @@ def simulate(scene: Scene, *, model: Model | None = None,
 
     if plausibility is not None:
         scene = scene.with_run(plausibility=plausibility)
+    if verify and not can_check_accuracy(scene):
+        from jointplay.common.errors import DescriptionError
+
+        raise DescriptionError("verify", "the run's settings are at their limits (run.rtol, "
+                               "run.atol or run.step): no tighter run can check its "
+                               "accuracy; use verify=False")
     model = model or load_scene_model(scene)
     p = _parameter_vector(model, scene, parameters)
     ideal_result = None
@@ -138,13 +146,47 @@ def simulate(scene: Scene, *, model: Model | None = None,
 
 
 def tighter_settings(scene: Scene) -> dict[str, float]:
-    """The run settings of the accuracy check: tolerances (or the fixed step) 10x tighter."""
+    """The run settings of the accuracy check: tolerances (or the fixed step) 10x tighter,
+    clamped to the limits a run may have (:data:`~jointplay.common.limits.MIN_RTOL`,
+    ``MIN_ATOL``, ``MIN_STEP``, ``MAX_FIXED_STEPS``; :func:`tighter_note` says when), so the
+    check of any valid run is itself a valid run."""
+    from jointplay.common import limits
     from jointplay.results.accuracy import TIGHTER
 
     run = scene.run
     if run.integrator in ADAPTIVE:
-        return {"rtol": run.rtol / TIGHTER, "atol": run.atol / TIGHTER}
-    return {"step": run.step / TIGHTER}
+        return {"rtol": max(run.rtol / TIGHTER, limits.MIN_RTOL),
+                "atol": max(run.atol / TIGHTER, limits.MIN_ATOL)}
+    # A step that still divides the output step: the most steps per output up to 10x the
+    # run's, within the smallest step and the most steps a run may take.
+    per_output = run.steps_per_output
+    smallest = max(limits.MIN_STEP, run.t_end / limits.MAX_FIXED_STEPS)
+    most = max(per_output, math.floor(run.output_step / smallest * (1 + 1e-12)))
+    return {"step": run.output_step / min(per_output * round(TIGHTER), most)}
+
+
+def can_check_accuracy(scene: Scene) -> bool:
+    """Whether the accuracy check's settings differ from the run's: not where every one is
+    at its limit already (rk4 at the smallest step, say), where the check would repeat the
+    run and estimate nothing."""
+    run = scene.run
+    return any(value != getattr(run, name) for name, value in tighter_settings(scene).items())
+
+
+def tighter_note(scene: Scene) -> str | None:
+    """Why the accuracy check's settings are less than 10x tighter (a limit), or None."""
+    from jointplay.results.accuracy import TIGHTER
+
+    run = scene.run
+    tighter = tighter_settings(scene)
+    names = ("rtol", "atol") if run.integrator in ADAPTIVE else ("step",)
+    clamped = [f"run.{name} {tighter[name]:g} (not {getattr(run, name) / TIGHTER:g})"
+               for name in names
+               if not math.isclose(tighter[name] * TIGHTER, getattr(run, name), rel_tol=1e-9)]
+    if not clamped:
+        return None
+    return (f"the check's {', '.join(clamped)} is clamped to the limits a run may have, so "
+            "it is less than 10x tighter and its error estimates are less certain")
 
 
 def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None = None,
