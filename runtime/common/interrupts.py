@@ -68,8 +68,15 @@ def installed() -> Iterator[None]:
     try:
         yield
     finally:
+        # First of all, a press from here on is only recorded: were the handler still ours
+        # once "installed" is dropped, a press as the command finishes would raise a
+        # KeyboardInterrupt out of the command line, a traceback.
+        signal.signal(signal.SIGINT, _record_only)
+        unreported = sys.exc_info()[0] is KeyboardInterrupt  # raised past the command
         _state["installed"] = 0
         if _state["interrupted"] and _is_program():
+            if unreported:
+                os.write(2, b"jointplay: interrupted\n")
             # The command is over and cleaned up: a press while the interpreter shuts down
             # must not end it otherwise (Python resets its own handlers to the default then,
             # which would report death by SIGINT; "ignore" it keeps). Even so, a sweep's
@@ -82,6 +89,11 @@ def installed() -> Iterator[None]:
                 sys.stdout.flush()
                 sys.stderr.flush()
             os._exit(_state["status"])
+        elif _is_program():
+            # The command has finished: a press from now on (the interpreter shutting down,
+            # which resets Python-level handlers to the default and so would die by SIGINT)
+            # is ignored, and the command's own status stands.
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
         else:
             signal.signal(signal.SIGINT, previous[0])
         signal.signal(signal.SIGTERM, previous[1])

@@ -88,6 +88,10 @@ PHYSICAL_RANGES: dict[str, tuple[float, float, str, str]] = {
 }
 MIN_RADIAL_CLEARANCE = 1.0e-9
 """m, bearing_radius - journal_radius of a joint with play (a nanometre)."""
+MIN_RESTITUTION = 1.0e-3
+"""contact.restitution, the least: the damping of the Flores and Gonthier laws grows as
+1/restitution (1e-300 would collapse the step at the first impact); measured coefficients of
+metal impacts are above 0.1."""
 
 # ---- stops during a run (exit 1) ----------------------------------------------------------
 MAX_PENETRATION_FRACTION = 0.02

@@ -80,8 +80,15 @@ def plausible(field_name: str, value: float, kind: str) -> None:
 
 
 def finite(field_name: str, value: float) -> None:
-    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
-        raise DescriptionError(field_name, f"must be a finite number, got {value!r}")
+    try:  # an integer beyond float64 (10**400) is no finite float either
+        number = float(value) if isinstance(value, (int, float)) else math.nan
+    except OverflowError:
+        number = math.inf
+    if not isinstance(value, (int, float)) or isinstance(value, bool) \
+            or not math.isfinite(number):
+        shown = repr(value)
+        shown = shown if len(shown) <= 40 else f"{shown[:20]}... ({len(shown)} characters)"
+        raise DescriptionError(field_name, f"must be a finite number, got {shown}")
 
 
 def number(value: Any, where: str) -> float:

@@ -313,13 +313,68 @@ def unknown_parameter(name: str, robot: Robot) -> DescriptionError:
         return DescriptionError(name, "is an initial value, not a robot parameter: set it in "
                                 "the scene's [initial] table (in Python: "
                                 f"scene.with_initial({name}=...))")
-    known = [p.name for p in robot.parameters()]
+    known = [p.name for p in robot.parameters()] + clearance_aliases(robot)
+    match = CLEARANCE_ALIAS.fullmatch(name)
+    if match:
+        joints = ", ".join(map(str, robot.clearance_joints)) or "none"
+        return DescriptionError(name, f"joint {match.group(1)} has no clearance (joints with "
+                                f"clearance: {joints})" + did_you_mean(name, known))
     return DescriptionError(name, "is not a parameter of this model"
                             + did_you_mean(name, known))
 
 
+CLEARANCE_ALIAS = re.compile(r"joint(\d+)\.clearance")
+"""``jointN.clearance``: the radial clearance of joint N (bearing_radius - journal_radius),
+a name accepted wherever parameters are set by name; setting it moves the journal radius and
+holds the bearing radius (or the bearing radius given beside it)."""
+
+
+def clearance_aliases(robot: Robot) -> list[str]:
+    """The ``jointN.clearance`` names of ``robot``'s joints with play."""
+    return [f"joint{j}.clearance" for j in robot.clearance_joints]
+
+
+def resolve_aliases(robot: Robot, values: Mapping[str, Any]) -> dict[str, Any]:
+    """``values`` with every ``jointN.clearance`` replaced by the journal radius it means
+    (``bearing_radius - clearance``, the bearing radius given beside it or ``robot``'s).
+    Raises :class:`DescriptionError` for an alias beside its own journal radius."""
+    out = {k: v for k, v in values.items() if not CLEARANCE_ALIAS.fullmatch(str(k))}
+    for name, value in values.items():
+        match = CLEARANCE_ALIAS.fullmatch(str(name))
+        if not match or name not in clearance_aliases(robot):
+            if match:
+                out[name] = value  # refused below as unknown, with the joints that have play
+            continue
+        j = int(match.group(1))
+        if f"joint{j}.journal_radius" in values:
+            raise DescriptionError(name, f"sets joint{j}.journal_radius, which is also given: "
+                                   "give one of them")
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise DescriptionError(name, f"must be a number, got {value!r}")
+        bearing = values.get(f"joint{j}.bearing_radius", robot.joints[j - 1].bearing_radius)
+        out[f"joint{j}.journal_radius"] = float(bearing) - float(value)
+    return out
+
+
 def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
-    """A copy of ``robot`` with named parameters changed (structure unchanged)."""
+    """A copy of ``robot`` with named parameters changed (structure unchanged); the
+    ``jointN.clearance`` aliases are accepted (:data:`CLEARANCE_ALIAS`)."""
+    derived = {f"joint{m.group(1)}.journal_radius": str(name) for name in values
+               if (m := CLEARANCE_ALIAS.fullmatch(str(name)))}
+    values = resolve_aliases(robot, values)
+    try:
+        return _with_parameters(robot, values)
+    except DescriptionError as err:
+        if not derived:
+            raise
+        problems = [DescriptionError(derived[parameter_name(e.field)], "leaves "
+                                     f"{parameter_name(e.field)} (bearing_radius - clearance)"
+                                     f" that {e.message}", e.source)
+                    if parameter_name(e.field) in derived else e for e in err.problems]
+        raise combined(problems) from None
+
+
+def _with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
     known = {p.name: p for p in robot.parameters()}
     links = [vars(link).copy() for link in robot.links]
     joints = [vars(j).copy() for j in robot.joints]

@@ -12,7 +12,7 @@ import math
 from typing import TYPE_CHECKING
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.limits import MIN_RADIAL_CLEARANCE
+from jointplay.common.limits import MIN_RADIAL_CLEARANCE, MIN_RESTITUTION
 from jointplay.common.validation import Problems, finite, plausible, positive
 from jointplay.robot.description import (
     CONTACT_LAWS,
@@ -186,9 +186,10 @@ def _validate_contact(robot: Robot) -> None:
         plausible("contact.exponent", c.exponent, "contact.exponent")
     with problems.check():
         finite("contact.restitution", c.restitution)
-        if not 0.0 < c.restitution <= 1.0:
+        if not MIN_RESTITUTION <= c.restitution <= 1.0:
             raise DescriptionError("contact.restitution",
-                                   f"must be in (0, 1], got {c.restitution}")
+                                   f"must be from {MIN_RESTITUTION:g} to 1, got "
+                                   f"{c.restitution:g}")
     with problems.check():
         positive("contact.impact_speed_floor", c.impact_speed_floor)
         plausible("contact.impact_speed_floor", c.impact_speed_floor,

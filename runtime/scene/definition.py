@@ -144,6 +144,8 @@ class Scene:
                 object.__setattr__(self, "initial", validate_initial(self.initial, self.robot))
         with problems.check():
             _check_journals(self.journals, self.initial, None)
+            if isinstance(self.robot, Robot):
+                _check_resting(self.journals, self.robot)
         problems.raise_any(self.source)
 
     def with_run(self, **changes: Any) -> Scene:
@@ -211,6 +213,22 @@ class Scene:
         """The same scene starting with the journals ``"centred"`` or ``"resting"``."""
         _check_journals(journals, self.initial, self.source)
         return replace(self, journals=journals)
+
+
+def _check_resting(journals: str, robot: Robot) -> None:
+    """"resting" is solved at run time (the static equilibrium: each journal carries the
+    weight beyond it, the drives hold the arm): what it needs is checked now, before any
+    model is compiled."""
+    if journals != "resting" or not any(j.has_clearance for j in robot.joints):
+        return
+    if not robot.drive:
+        raise _error("initial.journals", "\"resting\" holds the arm still with its drive "
+                     "torques: enable [robot.drive], or start the journals \"centred\" or at "
+                     "given eccentricities", None)
+    if not robot.gravity.enabled or not any(robot.gravity.vector):
+        raise _error("initial.journals", "\"resting\" rests each journal on its bearing "
+                     "under gravity: enable [robot.gravity], or start the journals "
+                     "\"centred\" or at given eccentricities", None)
 
 
 def ideal_counterpart(robot: Robot) -> Robot:

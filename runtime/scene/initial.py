@@ -22,9 +22,15 @@ def _error(field_name: str, message: str, source: str | None) -> DescriptionErro
 
 
 def finite_number(value: Any, where: str, source: str | None) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise _error(where, f"must be a finite number in SI units, got {value!r}", source)
-    return float(value)
+    try:  # an integer beyond float64 (10**400) is no finite float either
+        number = float(value) if isinstance(value, (int, float)) else math.nan
+    except OverflowError:
+        number = math.inf
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(number):
+        shown = repr(value)
+        shown = shown if len(shown) <= 40 else f"{shown[:20]}... ({len(shown)} characters)"
+        raise _error(where, f"must be a finite number in SI units, got {shown}", source)
+    return number
 
 
 def coordinate_names(robot: Robot) -> list[str]:
@@ -92,10 +98,13 @@ def validate_initial(values: Any, robot: Robot) -> dict[str, float]:
         if joint.has_clearance:
             with problems.check():
                 ex, ey = out.get(f"ex{j}", 0.0), out.get(f"ey{j}", 0.0)
-                if math.hypot(ex, ey) > 2 * (joint.bearing_radius - joint.journal_radius):
+                clearance = joint.bearing_radius - joint.journal_radius
+                # Inside means |e| <= c: beyond it the journal starts in the wall (rounding
+                # of a value written as c itself is allowed).
+                if math.hypot(ex, ey) > clearance * (1 + 1e-9):
                     raise _error(f"initial.ex{j}", "the journal must start inside its bearing: "
-                                 f"|e| <= 2 x the radial clearance "
-                                 f"({joint.bearing_radius - joint.journal_radius:g} m)", None)
+                                 f"|e| = {math.hypot(ex, ey):g} m, at most the radial "
+                                 f"clearance ({clearance:g} m)", None)
     problems.raise_any()
     return out
 

@@ -14,6 +14,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
+from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.expressions import TIME, Symbolic, _as_casadi
 
@@ -109,6 +110,13 @@ def _read_rows(path: Path, expected: str, fail: _Fail) -> list[tuple[int, list[s
     if not path.is_file():
         what = "is not a file" if path.exists() else "file not found"
         raise fail(f"{what}; {expected}")
+    try:  # the limit is checked before a byte is read
+        size = path.stat().st_size
+    except OSError as error:
+        raise fail(f"cannot be read ({error}); {expected}") from None
+    if size > limits.MAX_TABLE_BYTES:
+        raise fail(f"is {size} bytes; a torque table may have at most "
+                   f"{limits.MAX_TABLE_BYTES} ({limits.MAX_TABLE_BYTES >> 20} MiB)")
     rows: list[tuple[int, list[str]]] = []
     try:
         with path.open(newline="", encoding="utf-8-sig") as handle:

@@ -51,21 +51,48 @@ def static_equilibrium(model: object, p: np.ndarray, x0: np.ndarray,
         jx, jt = np.asarray(blocks["x"])[n:], np.asarray(blocks["tau"])[n:]
         return np.hstack([jx[:, ecc], jt])
 
-    # Start: the holding torques with every journal centred, then each journal moved to its
-    # bearing wall (plus a micrometre's hundredth) in the direction it accelerates.
-    e = np.zeros(len(ecc))
-    jt = jac(e, np.zeros(ntau))[:, len(ecc):]
-    tau = np.linalg.lstsq(jt, -residual(e, np.zeros(ntau)), rcond=None)[0]
-    fall = residual(e, tau)
-    for i, j in enumerate(joints):
-        a = fall[[ecc[2 * i], ecc[2 * i + 1]]]
-        norm = float(np.hypot(*a))
-        direction = a / norm if norm > 0 else np.array([0.0, -1.0])
-        e[2 * i: 2 * i + 2] = (clearances[j] + 1e-8) * direction
+    # Start: at rest, each joint carries the weight of everything beyond it and nothing else
+    # (the drive torques are moments), so each journal rests against its bearing in the
+    # direction of gravity; the penetration that carries the weight is found on a log scale
+    # (the contact law is far too stiff for Newton to find it from the wall), then Newton
+    # polishes every unknown together, the holding torques included.
+    names = list(model.parameters)  # type: ignore[attr-defined]
+    gravity = np.array([p[names.index("gravity.x")], p[names.index("gravity.y")]]) \
+        if "gravity.x" in names else np.array([0.0, -1.0])
+    down = gravity / np.hypot(*gravity) if np.hypot(*gravity) > 0 else np.array([0.0, -1.0])
+    tau = np.zeros(ntau)
+
+    def held(e: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        jt = jac(e, np.zeros(ntau))[:, len(ecc):]
+        t = np.linalg.lstsq(jt, -residual(e, np.zeros(ntau)), rcond=None)[0]
+        return t, residual(e, t)
+
+    depths = np.full(len(joints), 1e-8)
+    grid = np.geomspace(1e-13, 1e-3, 41)
+
+    def placed(d: np.ndarray) -> np.ndarray:
+        return np.concatenate([(clearances[j] + d[i]) * down for i, j in enumerate(joints)])
+
+    for _ in range(2):  # each joint's depth in turn, the others held (twice over)
+        for i in range(len(joints)):
+            rows = [ecc[2 * i], ecc[2 * i + 1]]
+            sizes = []
+            for depth in grid:
+                d = depths.copy()
+                d[i] = depth
+                with np.errstate(all="ignore"):
+                    _, r_try = held(placed(d))
+                size = float(np.linalg.norm(r_try[rows]))
+                sizes.append(size if np.isfinite(size) else np.inf)
+            depths[i] = grid[int(np.argmin(sizes))]
+    e = placed(depths)
+    with np.errstate(all="ignore"):
+        tau, _ = held(e)
     r = residual(e, tau)
+    scale = float(np.hypot(*gravity))  # accelerations are measured against gravity's
     for _ in range(MAX_ITERATIONS):
         size = float(np.max(np.abs(r)))
-        if size < TOLERANCE:
+        if size < TOLERANCE * max(1.0, scale):
             return _state(x, ecc, e), tau
         step = np.linalg.lstsq(jac(e, tau), -r, rcond=None)[0]
         lam = 1.0

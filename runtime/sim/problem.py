@@ -170,6 +170,16 @@ def _parameter_vector(model: Model, scene: Scene,
     if parameters is None:
         return defaults
     if isinstance(parameters, Mapping):
+        from jointplay.robot.description import CLEARANCE_ALIAS, resolve_aliases
+
+        aliases = {str(k): v for k, v in parameters.items() if CLEARANCE_ALIAS.fullmatch(str(k))}
+        try:
+            parameters = resolve_aliases(scene.robot, parameters)
+        except DescriptionError as err:
+            raise err.with_source("parameters") from None
+        # the journal radii the aliases set are checked under the aliases' names
+        derived = {f"joint{CLEARANCE_ALIAS.fullmatch(k).group(1)}.journal_radius"  # type: ignore[union-attr]
+                   for k in aliases}
         problems = Problems()
         vec = defaults.copy()
         values: dict[str, float] = {}
@@ -181,20 +191,46 @@ def _parameter_vector(model: Model, scene: Scene,
                     raise unknown_parameter(str(name), scene.robot)
                 values[name] = vec[model.parameters.index(name)] = _as_number(value, name)
         with problems.check():
-            check_parameters(scene, values)
+            check_parameters(scene, {**{k: v for k, v in values.items() if k not in derived},
+                                     **aliases})
         problems.raise_any("parameters")
         check_law_ranges(model, vec)
         return vec
-    vec = model.parameter_vector(parameters)
+    vec = _whole_vector(model, parameters)
     check_parameters(scene, dict(zip(model.parameters, vec.tolist(), strict=True)))
     check_law_ranges(model, vec)
+    return vec
+
+
+def _whole_vector(model: Model, parameters: Any) -> np.ndarray:
+    """A whole parameter vector given as a sequence: one finite number per parameter."""
+    try:
+        vec = np.asarray(parameters, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise DescriptionError("parameters", "must be a mapping of parameter names to numbers "
+                               "or a sequence of numbers, one per parameter") from None
+    if vec.ndim != 1 or vec.size != len(model.parameters):
+        first = ", ".join(model.parameters[:3])
+        raise DescriptionError("parameters", f"has {vec.size} numbers; the model has "
+                               f"{len(model.parameters)} parameters ({first}, ...: "
+                               "model.parameters): give one per parameter, or a mapping of "
+                               "names to numbers")
+    bad = ~np.isfinite(vec)
+    if bad.any():
+        name = model.parameters[int(np.argmax(bad))]
+        raise DescriptionError(f"parameters[{int(np.argmax(bad))}]", f"({name}) must be a "
+                               f"finite number, got {vec[bad][0]}")
     return vec
 
 
 def _as_number(value: Any, name: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
         raise DescriptionError(name, f"must be a number, got {value!r}")
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:  # an integer beyond float64 (10**400)
+        raise DescriptionError(name, f"must be a finite number, got an integer of "
+                               f"{len(str(abs(int(value))))} digits") from None
 
 
 def check_parameters(scene: Scene, values: Mapping[str, float]) -> None:
@@ -202,9 +238,9 @@ def check_parameters(scene: Scene, values: Mapping[str, float]) -> None:
     parameter name (``link1.length``); the eccentricities of ``[initial]`` must still start
     inside the bearing the new radii make."""
     from jointplay.robot import with_parameters
-    from jointplay.robot.description import parameter_name
+    from jointplay.robot.description import clearance_aliases, parameter_name
 
-    known = {p.name for p in scene.robot.parameters()}
+    known = {p.name for p in scene.robot.parameters()} | set(clearance_aliases(scene.robot))
     robot_values = {k: float(v) for k, v in values.items() if k in known}
     try:
         robot = with_parameters(scene.robot, robot_values)

@@ -144,9 +144,9 @@ def _check_initial(scene: Scene, robot: Robot, index: int, source: str | None) -
         joint = robot.joints[j - 1]
         e = math.hypot(scene.initial.get(f"ex{j}", 0.0), scene.initial.get(f"ey{j}", 0.0))
         c = joint.bearing_radius - joint.journal_radius
-        if e > 2 * c:
+        if e > c * (1 + 1e-9):
             raise _error("parameters", f"case {index}: the initial eccentricity of joint {j} "
-                         f"({e:g} m) exceeds twice its radial clearance ({c:g} m)", source)
+                         f"({e:g} m) exceeds its radial clearance ({c:g} m)", source)
 
 
 def _hex(value: float) -> str:
