@@ -406,3 +406,122 @@ def test_accuracy_check_impossible_at_the_limits_is_refused_before_the_run(
     scene = jointplay.default_scene().with_run(rtol=1e-14, atol=1e-20)
     with pytest.raises(jointplay.DescriptionError, match="verify"):
         jointplay.simulate(scene, verify=True)
+
+
+# ---- tracebacks and statuses ------------------------------------------------------------------
+
+def test_huge_numbers_and_short_vectors_are_named() -> None:
+    import jointplay
+    from jointplay.common.errors import DescriptionError
+
+    scene = jointplay.default_scene().with_run(t_end=0.01)
+    with pytest.raises(DescriptionError, match=r"initial\.q2: must be a finite number"):
+        scene.with_initial(q2=10**400)
+    with pytest.raises(DescriptionError, match=r"parameters: has 2 numbers; the model has"):
+        jointplay.simulate(scene, parameters=[1.0, 2.0])
+    with pytest.raises(DescriptionError, match=r"friction\.mu: must be a finite number"):
+        jointplay.simulate(scene, parameters={"friction.mu": 10**400})
+
+
+def test_restitution_range_and_eccentricity_within_the_clearance(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    import jointplay
+    from jointplay.common.errors import DescriptionError
+    from jointplay.common.limits import MIN_RESTITUTION
+    from test_probes import bad_input
+
+    bad_input(capsys, ["simulate", "--set", "contact.restitution=1e-300"],
+              "--set contact.restitution", f"from {MIN_RESTITUTION:g} to 1")
+    scene = jointplay.default_scene()
+    joint = scene.robot.joints[1]
+    c = joint.bearing_radius - joint.journal_radius
+    assert scene.with_initial(ex2=c).initial["ex2"] == c  # on the wall: inside
+    with pytest.raises(DescriptionError, match="must start inside its bearing"):
+        scene.with_initial(ex2=1.5 * c)  # 15 um into the wall
+
+
+def test_clearance_is_a_parameter_alias(capsys: pytest.CaptureFixture[str]) -> None:
+    """jointN.clearance sets the radial clearance with the bearing radius held, through
+    --set and the API alike; a joint without play and a typo are named."""
+    import jointplay
+    from test_probes import bad_input
+
+    scene = jointplay.default_scene().with_run(t_end=0.01)
+    result = jointplay.simulate(scene, parameters={"joint2.clearance": 2e-5})
+    bearing = scene.robot.joints[1].bearing_radius
+    assert result.radial_clearance[0] == pytest.approx(2e-5, rel=1e-9)
+    index = result.parameter_names.index("joint2.journal_radius")
+    assert result.parameters[index] == bearing - 2e-5
+    assert main(["simulate", "--t-end", "0.01", "--no-verify", "--quiet", "--set",
+                 "joint2.clearance=2e-5"]) == 0
+    bad_input(capsys, ["simulate", "--set", "joint2.clearanc=2e-5"], "--set joint2.clearanc",
+              "did you mean 'joint2.clearance'")
+    bad_input(capsys, ["simulate", "--set", "joint1.clearance=2e-5"], "--set joint1.clearance",
+              "has no clearance")
+    bad_input(capsys, ["simulate", "--set", "joint2.clearance=0.02"], "--set joint2.clearance",
+              "journal_radius")
+
+
+@pytest.mark.parametrize(("q2", "q3", "payload"), [(-1.5707963267948966, 0.0, 2.0),
+                                                   (-1.5707963267948966, 1.0, 2.0),
+                                                   (0.3, 0.0, 2.0), (-2.0, 0.5, 2.0)])
+def test_resting_journals_are_solved_in_any_pose(q2: float, q3: float, payload: float) -> None:
+    """Each journal rests where its contact force carries the weight beyond it: every
+    acceleration of the state found is below the solver's tolerance, and the journal sits
+    against its bearing in the direction of gravity (a few micrometres of the 30 um play
+    plus a sub-micrometre elastic penetration)."""
+    import numpy as np
+
+    import jointplay
+    from jointplay.sim.equilibrium import TOLERANCE, static_equilibrium
+    from jointplay.sim.problem import _parameter_vector
+
+    scene = jointplay.default_scene().with_initial(q2=q2, q3=q3)
+    model = jointplay.load_scene_model(scene)
+    p = _parameter_vector(model, scene, {"payload.mass": payload})
+    x0 = np.zeros(model.n_state)
+    x0[:2] = q2, q3
+    clearances = {j: 3e-5 for j in model.clearance_joints}
+    x, tau = static_equilibrium(model, p, x0, clearances)
+    accelerations = np.asarray(model.forward_dynamics(x, tau, p)).ravel()[model.n_coordinates:]
+    assert np.max(np.abs(accelerations)) < TOLERANCE * 9.81
+    for k in range(len(model.clearance_joints)):
+        ex, ey = x[2 + 2 * k], x[3 + 2 * k]
+        assert abs(ex) < 1e-12 and 0.0 < -ey - 3e-5 < 1e-6
+
+
+def test_resting_without_a_drive_is_refused_before_compiling() -> None:
+    from dataclasses import replace
+
+    import jointplay
+    from jointplay.common.errors import DescriptionError
+
+    scene = jointplay.default_scene()
+    robot = replace(scene.robot, drive=False)
+    undriven = replace(scene, robot=robot, torques=(), torque_text={})
+    with pytest.raises(DescriptionError, match=r"initial\.journals: \"resting\" holds the arm"):
+        undriven.with_journals("resting")
+
+
+def test_ctrl_c_as_a_command_finishes_is_never_a_traceback(tmp_path: Path) -> None:
+    """SIGINT at moments spread over the end of a short command (its last 30 % and the
+    interpreter's shutdown): exit 0 (it had finished) or 130 with its one line; never a
+    traceback, never death by the signal."""
+    import signal
+    import time
+
+    argv = [sys.executable, "-m", "jointplay.cli", "cache", "list"]
+    env = {**os.environ, "JOINTPLAY_CACHE": str(tmp_path / "c")}
+    start = time.perf_counter()
+    subprocess.run(argv, env=env, capture_output=True, check=True)
+    duration = time.perf_counter() - start
+    for fraction in (0.7, 0.8, 0.9, 0.95, 1.0, 1.05):
+        proc = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True)
+        time.sleep(duration * fraction)
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=120)
+        assert "Traceback" not in err, err
+        assert proc.returncode in (0, 130), (fraction, proc.returncode, err)
+        if proc.returncode == 130:
+            assert err.strip().endswith("jointplay: interrupted"), err
