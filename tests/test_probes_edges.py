@@ -425,10 +425,11 @@ def test_huge_numbers_and_short_vectors_are_named() -> None:
 
 def test_restitution_range_and_eccentricity_within_the_clearance(
         capsys: pytest.CaptureFixture[str]) -> None:
+    from test_probes import bad_input
+
     import jointplay
     from jointplay.common.errors import DescriptionError
     from jointplay.common.limits import MIN_RESTITUTION
-    from test_probes import bad_input
 
     bad_input(capsys, ["simulate", "--set", "contact.restitution=1e-300"],
               "--set contact.restitution", f"from {MIN_RESTITUTION:g} to 1")
@@ -443,8 +444,9 @@ def test_restitution_range_and_eccentricity_within_the_clearance(
 def test_clearance_is_a_parameter_alias(capsys: pytest.CaptureFixture[str]) -> None:
     """jointN.clearance sets the radial clearance with the bearing radius held, through
     --set and the API alike; a joint without play and a typo are named."""
-    import jointplay
     from test_probes import bad_input
+
+    import jointplay
 
     scene = jointplay.default_scene().with_run(t_end=0.01)
     result = jointplay.simulate(scene, parameters={"joint2.clearance": 2e-5})
