@@ -37,7 +37,7 @@ from typing import Any
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
 RUN_LANGS = ("python", "sh", "console")
 _FENCE = re.compile(r"^(?:<!-- docs: (?P<mark>[^>]*?) -->\n)?```(?P<lang>[\w-]*)\n"
                     r"(?P<body>.*?)^```\s*$", re.M | re.S)
