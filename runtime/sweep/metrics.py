@@ -43,7 +43,7 @@ def metric_columns(clearance_joints: Sequence[int], wear: bool = False
             ("max_acceleration_error", "float"), ("rms_position_error", "float")]
     for name, kind in CONTACT_METRICS:
         cols += [(name, kind)] + [(f"{name}_joint{j}", kind) for j in clearance_joints]
-    cols += [("peak_note", "str"), ("energy_dissipated", "float"),
+    cols += [("peak_note", "str"), ("implausible", "str"), ("energy_dissipated", "float"),
              ("energy_balance_error", "float")]
     cols += [(name, "int") for name in ("steps", "rhs_evaluations", "jacobian_evaluations",
                                         "error_test_failures", "integrator_calls", "events")]
@@ -79,6 +79,8 @@ def case_metrics(result: SimulationResult, ideal: SimulationResult) -> dict[str,
     for name in ("steps", "rhs_evaluations", "jacobian_evaluations", "error_test_failures",
                  "integrator_calls", "events"):
         out[name] = int(result.stats.get(name, 0))
+    # a case kept with run.plausibility = "warn" though it left the physical domain: why
+    out["implausible"] = result.implausible
     return out
 
 
