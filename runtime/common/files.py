@@ -28,6 +28,7 @@ from typing import Any
 
 from jointplay.common import interrupts
 from jointplay.common.errors import FileError
+from jointplay.common.names import check_output_name, file_above, temp_stem
 
 STALE_AGE_S = 24 * 3600.0
 """A temporary file of another host (or of no known process) is stale after a day."""
@@ -39,22 +40,6 @@ _TAG = re.compile(r"\.j([0-9a-f]{6})p(\d+)\.[^.]*\.part(\.[A-Za-z0-9]+)?$")
 def temp_tag() -> str:
     """This process's mark in temporary names: ``j<host hash>p<pid>``."""
     return f"j{_HOST}p{os.getpid()}"
-
-
-NAME_MAX = 255
-"""Bytes of one file name (Linux, macOS and Windows file systems alike)."""
-# Above this many bytes a target's name is replaced, in its temporary names, by a hash: the
-# temporary name adds about 40 bytes, and must never be longer than a legal name (255).
-_LONG_NAME_BYTES = 180
-
-
-def temp_stem(name: str) -> str:
-    """How the temporary files of the target ``name`` begin (after the dot): the name itself,
-    or, for a long one, a short hash of it, so that no legal name fails for its temporary."""
-    raw = os.fsencode(name)
-    if len(raw) <= _LONG_NAME_BYTES:
-        return name
-    return "h" + hashlib.sha256(raw).hexdigest()[:24]
 
 
 def _errno(err: OSError) -> int:
@@ -385,7 +370,7 @@ class OutputPlan:
         from jointplay.common.errors import DescriptionError
 
         for output in self.outputs:  # under a file, nothing can be made: found now
-            blocker = _file_above(output.path)
+            blocker = file_above(output.path)
             if blocker is not None:
                 raise DescriptionError(output.flag, f"{output.path} lies under {blocker}, "
                                        "which is a file, not a folder; write elsewhere")
@@ -426,46 +411,6 @@ class OutputPlan:
                     raise DescriptionError(f.flag, f"{f.describe()} would hold the input "
                                            f"{inp.flag} {inp.path} among its files; write "
                                            "elsewhere")
-
-
-def check_output_name(flag: str, path: str | Path, kind: str = "file") -> None:
-    """Refuse (exit 2, naming ``flag``) an output name no write could honour: empty, ``-``,
-    a file name ending in ``/`` (that names a folder), or one that is not UTF-8."""
-    from jointplay.common.errors import DescriptionError
-
-    text = os.fspath(path)
-    if text == "":
-        raise DescriptionError(flag, f"is empty; give the name of a {kind} to write")
-    if text == "-":
-        raise DescriptionError(flag, f"'-' (standard output) is not supported; give the "
-                               f"name of a {kind} to write")
-    if kind == "file" and text.endswith(("/", os.sep)):
-        raise DescriptionError(flag, f"{text!r} ends in '/', which names a folder; give a "
-                               f"file name (e.g. {text.rstrip('/' + os.sep) or '.'}/NAME)")
-    name = os.fsencode(Path(text).name)
-    if len(name) > NAME_MAX:
-        raise DescriptionError(flag, f"the name {Path(text).name[:40]!r}... is {len(name)} "
-                               f"bytes; a file system takes at most {NAME_MAX}: give a "
-                               "shorter name")
-    try:
-        text.encode("utf-8")
-    except UnicodeEncodeError:
-        shown = text.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
-        raise DescriptionError(flag, f"the name {shown!r} is not valid UTF-8; give a name in "
-                               "UTF-8") from None
-
-
-def _file_above(path: Path) -> Path | None:
-    """The nearest existing ancestor of ``path`` when it is not a folder (else None)."""
-    for ancestor in path.parents:
-        try:
-            mode = os.stat(ancestor).st_mode
-        except FileNotFoundError:
-            continue
-        except OSError:
-            return None  # unreadable: the write that follows reports it
-        return None if stat.S_ISDIR(mode) else ancestor
-    return None
 
 
 def _alive(pid: int) -> bool:

@@ -72,7 +72,8 @@ def check_output_path(path: str | Path, flag: str = "--out",
     existing ``path`` must be a regular file, and it must not be one of ``inputs`` (the scene
     it was made from). Temporary files of earlier runs that died writing ``path`` are removed.
     """
-    from jointplay.common.files import describe_os_error, sweep_stale, temp_stem, temp_tag
+    from jointplay.common.files import describe_os_error, sweep_stale, temp_tag
+    from jointplay.common.names import temp_stem
 
     path = Path(path)
     if path.is_dir():
