@@ -220,6 +220,8 @@ def hold_libraries(libraries: tuple[str, ...]) -> Iterator[None]:
     it keeps them. Raises :class:`LibraryGone` if one was removed before it could be held."""
     with contextlib.ExitStack() as stack:
         for library in map(Path, libraries):
+            if not is_owned(library.parent):  # not a cache entry: nothing there to hold
+                continue
             try:
                 lock = stack.enter_context(open(library.parent / ".lock", "a"))
             except FileNotFoundError:
