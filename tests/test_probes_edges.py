@@ -435,3 +435,38 @@ def test_ctrl_c_as_a_command_finishes_is_never_a_traceback(tmp_path: Path) -> No
         assert proc.returncode in (0, 130), (fraction, proc.returncode, err)
         if proc.returncode == 130:
             assert err.strip().endswith("jointplay: interrupted"), err
+
+
+def test_resting_too_deep_is_refused_before_compiling_and_the_estimate_is_the_solution(
+        ) -> None:
+    """A payload of 1e5 kg would rest joint 2's journal 233 um into its bearing (2.3 % of its
+    radius): refused when the scene is made, before any model exists. The closed-form Hertz
+    estimate behind the refusal agrees with the Newton solution of the static equilibrium
+    to 0.1 % at 1e4 kg, where the run is allowed."""
+    import numpy as np
+
+    import jointplay
+    from jointplay.common.errors import DescriptionError
+    from jointplay.robot import with_parameters
+    from jointplay.sim.equilibrium import static_equilibrium
+    from jointplay.sim.problem import _parameter_vector
+
+    scene = jointplay.default_scene()
+    heavy = with_parameters(scene.robot, {"payload.mass": 1e5})
+    with pytest.raises(DescriptionError, match=r"joint 2's journal would rest 232\.\d um"):
+        scene.with_robot(heavy).with_journals("resting")
+    kept = scene.with_run(plausibility="warn").with_robot(heavy).with_journals("resting")
+    assert kept.journals == "resting"
+    model = jointplay.load_scene_model(scene)
+    p = _parameter_vector(model, scene, {"payload.mass": 1e4})
+    x0 = np.zeros(model.n_state)
+    x0[0] = -np.pi
+    joint = scene.robot.joints[1]
+    c = joint.bearing_radius - joint.journal_radius
+    x, _ = static_equilibrium(model, p, x0, {2: c, 3: c})
+    solved = -x[3] - c  # joint 2 rests straight down
+    links = scene.robot.links[1:]
+    weight = 9.81 * (sum(link.mass for link in links) + 1e4)
+    soft = 2 * (1 - joint.bearing_nu ** 2) / joint.bearing_E
+    stiffness = 4 / (3 * soft) * np.sqrt(joint.bearing_radius * joint.journal_radius / c)
+    assert solved == pytest.approx((weight / stiffness) ** (1 / 1.5), rel=1e-3)
