@@ -20,7 +20,8 @@ SHORT = ["simulate", "--t-end", "0.01", "--no-verify", "--quiet"]
 
 
 @pytest.mark.parametrize(("flag", "under"), [("--out", "x.h5"), ("--plot", "figs"),
-                                             ("--csv", "x.csv"), ("--animate", "x.gif")])
+                                             ("--csv", "x.csv"), ("--animate", "x.gif"),
+                                             ("--out", "deeper/x.h5")])
 def test_an_output_under_a_file_is_refused_before_the_run(
         tmp_path: Path, capsys: pytest.CaptureFixture[str], flag: str, under: str) -> None:
     blocker = tmp_path / "a.h5"
@@ -94,3 +95,11 @@ def test_accuracy_check_impossible_at_the_limits_is_refused_before_the_run(
     scene = jointplay.default_scene().with_run(rtol=1e-14, atol=1e-20)
     with pytest.raises(jointplay.DescriptionError, match="verify"):
         jointplay.simulate(scene, verify=True)
+
+
+def test_derive_under_a_file_is_refused_before_deriving(tmp_path: Path,
+                                                        capsys: pytest.CaptureFixture[str]
+                                                        ) -> None:
+    blocker = tmp_path / "a.h5"
+    blocker.write_bytes(b"x")
+    bad_input(capsys, ["derive", "--out", str(blocker / "model")], "--out", "which is a file")

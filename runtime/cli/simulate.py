@@ -41,7 +41,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p_sim = subparsers.add_parser("simulate",
                                   help="simulate a scene (default: the paper's example)")
     scene_argument(p_sim)
-    p_sim.add_argument("--out", help="write the results to this HDF5 file (atomically)")
+    p_sim.add_argument("--out", help="write the results to this HDF5 file (atomically; a file "
+                                     "name: not '-', not ending in '/')")
     p_sim.add_argument("--csv", help="also write a flat CSV table")
     p_sim.add_argument("--plot", help="write PNG figures into this folder")
     p_sim.add_argument("--compare-ideal", action="store_true",

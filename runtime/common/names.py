@@ -56,7 +56,7 @@ def file_above(path: Path) -> Path | None:
     for ancestor in path.parents:
         try:
             mode = os.stat(ancestor).st_mode
-        except FileNotFoundError:
+        except (FileNotFoundError, NotADirectoryError):  # absent, or under a file: higher up
             continue
         except OSError:
             return None  # unreadable: the write that follows reports it
