@@ -470,3 +470,23 @@ def test_resting_too_deep_is_refused_before_compiling_and_the_estimate_is_the_so
     soft = 2 * (1 - joint.bearing_nu ** 2) / joint.bearing_E
     stiffness = 4 / (3 * soft) * np.sqrt(joint.bearing_radius * joint.journal_radius / c)
     assert solved == pytest.approx((weight / stiffness) ** (1 / 1.5), rel=1e-3)
+
+
+def test_a_sweep_keeps_and_marks_implausible_cases(tmp_path: Path) -> None:
+    """A sweep with [run] plausibility = "warn": a case driven through its bearing is an ok
+    row marked in the implausible column, the plausible one is unmarked."""
+    from jointplay.sweep import load_sweep, run_sweep
+
+    scene = _paper(tmp_path, **{"t_end = 2.0 ": "t_end = 0.01 "})
+    sweep_file = tmp_path / "sweep.toml"
+    sweep_file.write_text(f'scene = "{scene.name}"\n[run]\nplausibility = "warn"\n'
+                          '[parameters."payload.mass"]\nvalues = [2.0, 1e5]\n',
+                          encoding="utf-8")
+    sweep = load_sweep(sweep_file)
+    result = run_sweep(sweep, tmp_path / "out", workers=0, plots=False)
+    import pyarrow.parquet as pq
+
+    table = pq.read_table(result.path).to_pylist()
+    marks = {row["payload.mass"]: (row["status"], row["implausible"]) for row in table}
+    assert marks[2.0] == ("ok", None)
+    assert marks[1e5][0] == "ok" and "penetrated its bearing" in marks[1e5][1]

@@ -36,7 +36,8 @@ def read_row(out: Path, key: str) -> dict[str, Any] | None:
 
 
 _INT_METRICS = frozenset(name for name, kind in metric_columns(()) if kind == "int")
-_TEXT_FIELDS = ("error", "error_type", "error_stage", "worker", "series", "peak_note")
+_TEXT_FIELDS = ("error", "error_type", "error_stage", "worker", "series", "peak_note",
+                "implausible")
 
 
 def _is_number(value: Any, integer: bool = False) -> bool:

@@ -96,7 +96,7 @@ def _run_overrides(raw: Any, scene: Scene, source: str | None) -> Scene:
     check_keys(raw, RUN_KEYS, "run", source)
     changes: dict[str, Any] = {}
     for key, value in raw.items():
-        if key == "integrator":
+        if key in ("integrator", "plausibility"):  # names, checked by RunSettings
             changes[key] = value
         elif key == "max_steps":
             changes[key] = _integer(value, "run.max_steps", source, 1, limits.MAX_MAX_STEPS)
