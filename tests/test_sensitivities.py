@@ -2,11 +2,12 @@
 
 Checked against closed forms (a journal in free flight: its position's derivative with
 respect to gravity, and its first contact time's with respect to gravity and the clearance)
-and against central differences of whole runs: the differences at rtol = atol = 1e-12, their
-step h = 1e-3 relative (the noise of a run at that tolerance is ~1e-10 relative, and
-eps^(1/3) of it is ~5e-4), checked for stability against h / 2; both runs with the same
-settings (the state is the same with or without sensitivities). Agreement is normwise: the
-largest difference over the samples (or impacts) over the largest central difference.
+and against central differences of whole runs (jointplay.sim.sensitivity_check): the
+differences at rtol = atol = 1e-13, their step h = 1e-3 relative (the noise of a run at that
+tolerance is ~1e-10 relative, and its cube root ~5e-4; measured, h = 3e-3 was worse by
+truncation and 1e-4 by noise), checked for stability against h / 2; the sensitivities from a
+run at the same settings. Agreement is normwise: the largest difference over the samples (or
+impacts) over the largest central difference; the state and the tip between impacts.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from sim_fixtures import make_scene, pin_in_bearing
 from jointplay.common.errors import DescriptionError
 from jointplay.results.sensitivities import Sensitivities
 from jointplay.sim import simulate
+from jointplay.sim.sensitivity_check import compare_with_differences, parameter_value
 
 SCENES = Path(__file__).resolve().parents[1] / "scenes"
 TIGHT = {"rtol": 1e-13, "atol": 1e-13}
@@ -36,69 +38,6 @@ def _falling_pin(t_end: float = 0.012, **robot: Any) -> Any:
     table = pin_in_bearing(restitution=0.8, **robot)
     table["gravity"] = {"enabled": True, "vector": [0.0, -9.81]}
     return make_scene(table, t_end=t_end, output_step=1e-4, **TIGHT)
-
-
-def _value(result: Any, name: str) -> float:
-    p = dict(zip(result.parameter_names, result.parameters, strict=True))
-    if name.endswith(".clearance"):
-        joint = name.split(".")[0]
-        return float(p[f"{joint}.bearing_radius"] - p[f"{joint}.journal_radius"])
-    return float(p[name])
-
-
-def _outputs(result: Any) -> dict[str, np.ndarray]:
-    return {"state": np.hstack([result.q, result.u]), "tip": result.tip_position,
-            "velocity": result.tip_velocity, "times": result.impacts.time,
-            "peaks": result.impacts.peak_force}
-
-
-def _in_contact(result: Any) -> np.ndarray:
-    """The samples inside some contact phase of ``result`` (onset to separation)."""
-    impacts = result.impacts
-    end = np.where(np.isfinite(impacts.separation_time), impacts.separation_time, np.inf)
-    t = result.t[:, None]
-    return np.any((t >= impacts.time[None, :]) & (t <= end[None, :]), axis=1)
-
-
-def _central(scene: Any, name: str, value: float, h: float
-             ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """Central differences of every output, and the samples in contact in either run."""
-    plus = simulate(scene, parameters={name: value + h})
-    minus = simulate(scene, parameters={name: value - h})
-    assert np.array_equal(plus.impacts.joint, minus.impacts.joint), \
-        "the impact sequence changed"
-    a, b = _outputs(plus), _outputs(minus)
-    return {k: (a[k] - b[k]) / (2 * h) for k in a}, _in_contact(plus) | _in_contact(minus)
-
-
-def _normwise(a: np.ndarray, b: np.ndarray) -> float:
-    return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
-
-
-def _compare(scene: Any, names: tuple[str, ...], relative_step: float = 1e-3
-             ) -> dict[str, dict[str, float]]:
-    """Normwise disagreement of each output's sensitivity with central differences, per name,
-    and the differences' own instability (h against h / 2) beside it. The state and the tip
-    are compared between impacts: at the samples outside every contact phase of the three
-    runs (inside one, a difference straddles the moved onset or separation)."""
-    result = simulate(scene, sensitivities=names)
-    sens = result.sensitivities
-    analytic = {"state": sens.state, "tip": sens.tip_position, "velocity": sens.tip_velocity,
-                "times": sens.impact_times, "peaks": sens.impact_peaks}
-    report = {}
-    for k, name in enumerate(names):
-        value = _value(result, name)
-        h = relative_step * abs(value)
-        fd, contact = _central(scene, name, value, h)
-        fd_half, contact_half = _central(scene, name, value, h / 2)
-        free = ~(contact | contact_half | _in_contact(result))
-        row = {}
-        for key, reference in fd.items():
-            rows = free if key in ("state", "tip", "velocity") else slice(None)
-            row[key] = _normwise(analytic[key][rows, ..., k], reference[rows])
-            row[f"{key}_stability"] = _normwise(fd_half[key][rows], reference[rows])
-        report[name] = row
-    return report
 
 
 def test_state_is_the_same_with_sensitivities() -> None:
@@ -151,7 +90,7 @@ def test_single_clearance_joint_against_central_differences() -> None:
     scene = _falling_pin()
     names = ("gravity.y", "joint1.clearance", "link1.mass", "contact.restitution",
              "joint1.bearing_E")
-    report = _compare(scene, names)
+    report = compare_with_differences(scene, names)
     for name, row in report.items():
         for key in ("state", "tip", "velocity"):
             _check(name, row, key, BETWEEN_IMPACTS)
@@ -168,7 +107,7 @@ def test_paper_scene_against_central_differences() -> None:
         t_end=0.005, output_step=2.5e-4, **TIGHT)
     names = ("joint2.clearance", "friction.mu", "payload.mass", "link3.length",
              "joint3.bearing_E")
-    report = _compare(scene, names)
+    report = compare_with_differences(scene, names)
     for name, row in report.items():
         # Friction moves the tip by less than 1e-9 m per unit mu in these 5 ms: its central
         # difference is noise there (4e-4 from h to h / 2); its state and tip velocity are not.
@@ -224,3 +163,27 @@ def test_result_object() -> None:
     data = sens.to_dict()
     assert data["names"] == ["gravity.y", "link1.mass"]
     assert np.array_equal(np.asarray(data["impact_times"]), sens.impact_times)
+
+
+def test_resting_journals_start_with_their_equilibrium_derivative() -> None:
+    """Journals resting in their bearings start where the accelerations vanish, which
+    depends on the parameters: d x0 / d p (implicit function theorem) against central
+    differences of the equilibrium itself (h = 1e-4 relative; its residual is 1e-9). The
+    weights are left out: at this hanging pose the equilibrium search fails for a payload or
+    a gravity moved by 1e-4 (the search, not the derivative)."""
+    import jointplay
+
+    scene = jointplay.load_scene(SCENES / "paper_4dof.toml").with_journals("resting") \
+        .with_run(t_end=1e-3, output_step=1e-3)
+    names = ("joint2.clearance", "joint3.clearance", "joint3.bearing_E")
+    sens = simulate(scene, sensitivities=names).sensitivities
+    base = simulate(scene.with_run(t_end=1e-3))
+    for k, name in enumerate(names):
+        value = parameter_value(base, name)
+        h = 1e-4 * value
+        plus = simulate(scene, parameters={name: value + h})
+        minus = simulate(scene, parameters={name: value - h})
+        fd = (np.hstack([plus.q, plus.u])[0] - np.hstack([minus.q, minus.u])[0]) / (2 * h)
+        assert np.max(np.abs(fd)) > 0
+        np.testing.assert_allclose(sens.state[0, :, k], fd, rtol=0,
+                                   atol=1e-5 * np.max(np.abs(fd)), err_msg=name)
