@@ -38,9 +38,10 @@ RELATIVE_STEP = 1e-5
 PEAK_STEP = 3e-3
 
 
-def sensitivity_inputs(pr: _Problem, names: Sequence[str], x0: np.ndarray
-                       ) -> SensitivityInputs:
-    """The named parameters' directions, their clearance changes and d x0 / d p."""
+def sensitivity_inputs(pr: _Problem, names: Sequence[str], x0: np.ndarray,
+                       error_control: bool = False) -> SensitivityInputs:
+    """The named parameters' directions, their clearance changes, d x0 / d p, and their
+    sizes (for the error test, with ``error_control``)."""
     from jointplay.robot.derived import parameter_directions
 
     model = pr.model
@@ -54,7 +55,16 @@ def sensitivity_inputs(pr: _Problem, names: Sequence[str], x0: np.ndarray
                            - d[slot("joint", j, "journal_radius")]
                            for j in model.clearance_joints] for d in directions])
     clearance = clearance.reshape(len(names), len(model.clearance_joints))
-    return SensitivityInputs(directions, clearance, _initial_sensitivity(pr, directions, x0))
+    # A parameter's size: its value (the clearance, for jointN.clearance), 1 where it is 0.
+    clearances = np.array([pr.p[slot("joint", j, "bearing_radius")]
+                           - pr.p[slot("joint", j, "journal_radius")]
+                           for j in model.clearance_joints])
+    values = np.array([pr.p[model.parameters.index(name)] if name in model.parameters
+                       else float(np.sum(dc * clearances))
+                       for name, dc in zip(names, clearance, strict=True)])
+    sizes = np.where(np.abs(values) > 0, np.abs(values), 1.0)
+    return SensitivityInputs(directions, clearance, _initial_sensitivity(pr, directions, x0),
+                             sizes, error_control)
 
 
 def _initial_sensitivity(pr: _Problem, directions: np.ndarray, x0: np.ndarray) -> np.ndarray:

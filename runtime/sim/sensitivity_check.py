@@ -71,19 +71,21 @@ def _normwise(a: np.ndarray, b: np.ndarray) -> float:
 def compare_with_differences(scene: Scene, names: Sequence[str], *,
                              relative_step: float = 1e-3,
                              reference: Scene | None = None,
-                             parameters: Mapping[str, float] | None = None
-                             ) -> dict[str, dict[str, Any]]:
+                             parameters: Mapping[str, float] | None = None,
+                             error_control: bool = False) -> dict[str, dict[str, Any]]:
     """Per name: each output's normwise disagreement with central differences (``state``,
     ``tip``, ``velocity``, ``times``, ``peaks``), and beside each (``..._stability``) the
     differences' change from h to h / 2; h = ``relative_step`` times the parameter's value.
     The differences run ``reference`` (default ``scene``: give the same scene at tighter
-    tolerances to check the sensitivities of a run at its own); ``parameters`` as in
-    ``simulate``. Raises SimulationError where a step changes the sequence of impacts."""
+    tolerances to check the sensitivities of a run at its own); ``parameters`` and
+    ``error_control`` (``sensitivity_error_control``) as in ``simulate``. Raises
+    SimulationError where a step changes the sequence of impacts."""
     from jointplay.sim import simulate
 
     base = dict(parameters or {})
     reference = reference or scene
-    result = simulate(scene, parameters=base or None, sensitivities=names)
+    result = simulate(scene, parameters=base or None, sensitivities=names,
+                      sensitivity_error_control=error_control)
     sens = result.sensitivities
     assert sens is not None
     analytic = {"state": sens.state, "tip": sens.tip_position, "velocity": sens.tip_velocity,
