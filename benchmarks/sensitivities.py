@@ -1,17 +1,19 @@
 """What sensitivities cost and how accurate they are, on the paper scene.
 
 Cost: the scene (``jointplay.default_scene()``, 2 s at its own tolerances unless
-``--t-end``) run with 0, 1, 3 and 6 sensitivities side by side, each ``--repeats`` times:
-median CPU seconds of the whole ``simulate`` call (``time.process_time``: integration, the
-derived outputs and, with sensitivities, the tip's and peaks'), min and max, and the ratio to
-the run without. The integration's steps are the same in every row (the state does not
-change); the last column counts the Jacobians the sensitivities take.
+``--t-end``) run with 0, 1, 3 and 6 sensitivities side by side, outside the error test and in
+it (``sensitivity_error_control``), each ``--repeats`` times: median CPU seconds of the whole
+``simulate`` call (``time.process_time``: integration, the derived outputs and, with
+sensitivities, the tip's and peaks'), min and max, and the ratio to the run without. Outside
+the error test the steps are those of the run without; the last column counts the Jacobians
+the sensitivities take.
 
-Accuracy (``--accuracy``): the sensitivities of runs at several tolerances against central
-differences of runs at rtol = atol = 1e-13 (jointplay.sim.sensitivity_check; h = 1e-3 of each
-parameter, the differences' own uncertainty, h against h / 2, in brackets), normwise, the
-state and the tip between impacts, on the scene's first 5 ms (four impacts of the two
-joints) and on a journal falling in its bearing (three impacts).
+Accuracy (``--accuracy``): the sensitivities of runs at several tolerances, outside the error
+test and in it, against central differences of runs at rtol = atol = 1e-13
+(jointplay.sim.sensitivity_check; h = 1e-3 of each parameter; the differences' own
+uncertainty, h against h / 2, in brackets), normwise, the state and the tip between impacts,
+the largest over the parameters (``--detail``: each), on the scene's first 5 ms (five
+impacts of the two joints) and on a journal falling in its bearing (three impacts).
 
     python benchmarks/sensitivities.py --repeats 5
     python benchmarks/sensitivities.py --accuracy
@@ -52,24 +54,27 @@ def cost(scene: Scene, repeats: int) -> None:
                        sensitivities=NAMES)  # the model and its parameter Jacobian, once
     print(f"Paper scene, {scene.run.t_end:g} s at rtol {scene.run.rtol:g}, atol "
           f"{scene.run.atol:g}; {machine()}\n")
-    print("| sensitivities | CPU s (median) | min | max | ratio | steps | impacts | "
-          "sensitivity Jacobians |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| sensitivities | in the error test | CPU s (median) | min | max | ratio | steps "
+          "| impacts | sensitivity Jacobians |")
+    print("|---|---|---|---|---|---|---|---|---|")
     base = None
-    for count in COUNTS:
-        names = NAMES[:count] or None
-        times, result = [], None
-        for _ in range(repeats):
-            start = time.process_time()
-            result = jointplay.simulate(scene, sensitivities=names)
-            times.append(time.process_time() - start)
-        assert result is not None
-        median = statistics.median(times)
-        base = base or median
-        label = ", ".join(NAMES[:count]) if count else "none"
-        print(f"| {count} ({label}) | {median:.3f} | {min(times):.3f} | {max(times):.3f} | "
-              f"{median / base:.2f} | {result.stats['steps']} | {len(result.impacts)} | "
-              f"{result.stats.get('sensitivity_jacobians', 0)} |")
+    for control in (False, True):
+        for count in COUNTS if not control else COUNTS[1:]:
+            names = NAMES[:count] or None
+            times, result = [], None
+            for _ in range(repeats):
+                start = time.process_time()
+                result = jointplay.simulate(scene, sensitivities=names,
+                                            sensitivity_error_control=control)
+                times.append(time.process_time() - start)
+            assert result is not None
+            median = statistics.median(times)
+            base = base or median
+            label = ", ".join(NAMES[:count]) if count else "none"
+            print(f"| {count} ({label}) | {'yes' if control else 'no'} | {median:.3f} | "
+                  f"{min(times):.3f} | {max(times):.3f} | {median / base:.2f} | "
+                  f"{result.stats['steps']} | {len(result.impacts)} | "
+                  f"{result.stats.get('sensitivity_jacobians', 0)} |")
 
 
 def falling_journal(tolerance: float) -> Scene:
@@ -93,25 +98,39 @@ def falling_journal(tolerance: float) -> Scene:
                            source="benchmark")
 
 
-def accuracy(tolerances: list[float]) -> None:
+def accuracy(tolerances: list[float], detail: bool) -> None:
     from jointplay.sim.sensitivity_check import OUTPUTS, compare_with_differences
 
     paper = jointplay.default_scene().with_run(t_end=0.005, output_step=2.5e-4)
     cases = [("paper scene, first 5 ms", PAPER_NAMES,
               lambda tol: paper.with_run(rtol=tol, atol=tol)),
              ("falling journal, 12 ms", PIN_NAMES, falling_journal)]
-    print(f"Central differences at rtol = atol = {REFERENCE_TOLERANCE:g}; {machine()}\n")
+    print(f"Central differences at rtol = atol = {REFERENCE_TOLERANCE:g}; {machine()}")
     for title, names, make in cases:
         reference = make(REFERENCE_TOLERANCE)
+        summary = []
         for tol in tolerances:
-            report = compare_with_differences(make(tol), names, reference=reference)
-            print(f"\n{title}, sensitivities at rtol = atol = {tol:g} "
-                  f"({next(iter(report.values()))['impacts']} impacts)\n")
-            print("| parameter | " + " | ".join(OUTPUTS) + " |")
-            print("|---|" + "---|" * len(OUTPUTS))
-            for name, row in report.items():
-                cells = [f"{row[k]:.1e} ({row[k + '_stability']:.0e})" for k in OUTPUTS]
-                print(f"| {name} | " + " | ".join(cells) + " |")
+            for control in (False, True):
+                report = compare_with_differences(make(tol), names, reference=reference,
+                                                  error_control=control)
+                worst = {k: max(row[k] for row in report.values()) for k in OUTPUTS}
+                noise = {k: max(row[k + "_stability"] for row in report.values())
+                         for k in OUTPUTS}
+                summary.append((tol, control, worst, noise))
+                if detail:
+                    print(f"\n{title}, rtol = atol = {tol:g}, in the error test: {control}\n")
+                    print("| parameter | " + " | ".join(OUTPUTS) + " |")
+                    print("|---|" + "---|" * len(OUTPUTS))
+                    for name, row in report.items():
+                        cells = [f"{row[k]:.1e} ({row[k + '_stability']:.0e})"
+                                 for k in OUTPUTS]
+                        print(f"| {name} | " + " | ".join(cells) + " |")
+        print(f"\n{title} ({', '.join(names)}): the largest over the parameters\n")
+        print("| rtol = atol | in the error test | " + " | ".join(OUTPUTS) + " |")
+        print("|---|---|" + "---|" * len(OUTPUTS))
+        for tol, control, worst, noise in summary:
+            cells = [f"{worst[k]:.1e} ({noise[k]:.0e})" for k in OUTPUTS]
+            print(f"| {tol:g} | {'yes' if control else 'no'} | " + " | ".join(cells) + " |")
 
 
 def main() -> None:
@@ -120,11 +139,13 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=5, help="runs per row")
     parser.add_argument("--accuracy", action="store_true",
                         help="the accuracy tables instead of the cost table")
-    parser.add_argument("--tolerances", default="1e-13,1e-10,2e-6",
+    parser.add_argument("--detail", action="store_true",
+                        help="with --accuracy: a table per parameter too")
+    parser.add_argument("--tolerances", default="1e-12,1e-10,1e-8,2e-6",
                         help="tolerances of the runs checked by --accuracy (comma-separated)")
     args = parser.parse_args()
     if args.accuracy:
-        accuracy([float(t) for t in args.tolerances.split(",")])
+        accuracy([float(t) for t in args.tolerances.split(",")], args.detail)
         return
     scene = jointplay.default_scene()
     if args.t_end is not None:

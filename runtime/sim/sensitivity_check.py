@@ -64,8 +64,14 @@ def _central(scene: Scene, base: Mapping[str, float], name: str, value: float, h
 
 
 def _normwise(a: np.ndarray, b: np.ndarray) -> float:
-    scale = float(np.max(np.abs(b))) if b.size else 0.0
-    return float(np.max(np.abs(a - b)) / scale) if scale > 0 else float("nan")
+    """max |a - b| / max |b|; where b is all zero (the parameter moves nothing): 0 if a is
+    too, else inf."""
+    if not b.size:
+        return 0.0
+    scale = float(np.max(np.abs(b)))
+    if scale == 0:
+        return 0.0 if not np.any(a) else float("inf")
+    return float(np.max(np.abs(a - b)) / scale)
 
 
 def compare_with_differences(scene: Scene, names: Sequence[str], *,
