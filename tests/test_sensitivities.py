@@ -22,6 +22,7 @@ from sim_fixtures import make_scene, pin_in_bearing
 
 from jointplay.common.errors import DescriptionError
 from jointplay.results.sensitivities import Sensitivities
+from jointplay.robot import with_parameters
 from jointplay.sim import simulate
 from jointplay.sim.sensitivity_check import compare_with_differences, parameter_value
 
@@ -150,6 +151,12 @@ def test_clearance_is_a_settable_parameter() -> None:
     with pytest.raises(DescriptionError, match=r"joint1\.journal_radius"):
         simulate(scene, parameters={"joint1.clearance": 40e-6,
                                     "joint1.journal_radius": 9.9e-3})
+    with pytest.raises(DescriptionError, match=r"joint1\.clearance: must be a radial"):
+        simulate(scene, parameters={"joint1.clearance": -1e-6})
+    robot = with_parameters(scene.robot, {"joint1.clearance": 40e-6})
+    joint = robot.joints[0]
+    assert joint.bearing_radius - joint.journal_radius == pytest.approx(40e-6, rel=1e-9)
+    assert joint.bearing_radius == scene.robot.joints[0].bearing_radius
 
 
 @pytest.mark.parametrize(("names", "match"), [
