@@ -143,6 +143,33 @@ def test_error_control_makes_them_follow_the_tolerances() -> None:
             _check(name, row, key, EVENTS)
 
 
+def test_sliding_with_friction_against_central_differences() -> None:
+    """A journal set on its bearing's wall and sent sliding along it (2 cm/s, mu = 0.1):
+    one contact phase, persistent, the friction ramp crossed as the sliding reverses; the
+    state's derivative with respect to the friction coefficient and the bearing's modulus
+    after the onset, against central differences (h = 1e-3 relative, checked against h / 2)."""
+    table = pin_in_bearing(restitution=0.8, mu=0.1)
+    table["gravity"] = {"enabled": True, "vector": [0.0, -9.81]}
+    scene = make_scene(table, t_end=0.03, output_step=1e-4, initial={"ey1": -0.999 * 30e-6,
+                                                                      "dex1": 0.02}, **TIGHT)
+    names = ("friction.mu", "joint1.bearing_E")
+    result = simulate(scene, sensitivities=names)
+    assert len(result.impacts) == 1 and not result.impacts.separated[0]
+    after = result.t > 2e-3
+    for k, name in enumerate(names):
+        value = parameter_value(result, name)
+        fd = []
+        for h in (1e-3 * value, 5e-4 * value):
+            plus = simulate(scene, parameters={name: value + h})
+            minus = simulate(scene, parameters={name: value - h})
+            fd.append((np.hstack([plus.q, plus.u]) - np.hstack([minus.q, minus.u]))[after]
+                      / (2 * h))
+        scale = np.max(np.abs(fd[0]))
+        assert np.max(np.abs(fd[1] - fd[0])) < BETWEEN_IMPACTS * scale, name
+        error = np.max(np.abs(result.sensitivities.state[after, :, k] - fd[0]))
+        assert error < BETWEEN_IMPACTS * scale, (name, error / scale)
+
+
 def test_clearance_is_a_settable_parameter() -> None:
     scene = _falling_pin(t_end=4e-3)
     by_clearance = simulate(scene, parameters={"joint1.clearance": 40e-6})

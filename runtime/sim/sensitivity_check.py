@@ -65,9 +65,10 @@ def _central(scene: Scene, base: Mapping[str, float], name: str, value: float, h
 
 def _normwise(a: np.ndarray, b: np.ndarray) -> float:
     """max |a - b| / max |b|; where b is all zero (the parameter moves nothing): 0 if a is
-    too, else inf."""
+    too, else inf; NaN when there is nothing to compare (no impacts, or every sample in
+    contact)."""
     if not b.size:
-        return 0.0
+        return float("nan")
     scale = float(np.max(np.abs(b)))
     if scale == 0:
         return 0.0 if not np.any(a) else float("inf")
