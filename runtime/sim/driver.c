@@ -28,6 +28,10 @@
  * The state is scaled: eccentricities in units of their joint's clearance, so one absolute
  * tolerance means the same for angles and micrometre play.
  *
+ * Forward sensitivities (only when a run asks for them): d state / d parameter integrated
+ * beside the state by the staggered direct method and carried through every onset (see
+ * "forward sensitivities" below).
+ *
  * Wear (only for a model with a generated `wear` function): Archard's volume rate and its
  * spread over the bearing's and the journal's surfaces are integrated over every step that
  * stands, by Gauss-Legendre quadrature on the dense output in time and exactly over each
@@ -177,7 +181,7 @@ typedef struct {
   /* sensitivities: columns sens_col.. of D hold ns blocks of nx (scaled, like the state);
    * Js / LUs / LTs / pivs the Jacobian at the step's end and its Newton matrix; bz the
    * scaled forcing (ns x nx); v_sens d v_imp / d parameter (nc x ns); phase_sens one record
-   * of PS values per phase (see PS_* below) */
+   * of sens_record values per phase (see sens_record_size) */
   int sens_col, sens_record;
   double *Js, *LUs, *LTs; int *pivs;
   double *bz, *fp_sparse, *fv_sparse, *v_sens, *sens_tmp, *f_minus, *f_plus;
@@ -586,7 +590,8 @@ static void quad_scale(jp_sim *s, const double *y, double *scal) {
  * step's end solves the same BDF formula, with f_x and f_p at the converged state and its own
  * Newton matrix I - c f_x (exact in one solve; the state's LU may hold a stale Jacobian).
  * S rides in D beside the state (so the dense output, step changes and redone steps carry
- * it) but outside the error test: the state's steps are those of a run without it. At a
+ * it), by default outside the error test: the state's steps are those of a run without it
+ * (with sens_errcon, in it: see sens_norm). At a
  * contact onset (an event g = |e| - c(p) = 0 at tau) the event time moves by
  * dtau/dp = -(g_x S + g_p) / (g_x f), S jumps by (f- - f+) dtau/dp (Hiskens and Pai, IEEE
  * TCAS-I 47, 2000), and the captured approach speed's derivative, d(delta_dot(x(tau)))/dp,
@@ -960,7 +965,8 @@ static void bdf_adapt(jp_sim *s) {
   if (order > 1) {
     for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order - 1] * s->D[order * N + i];
     norms[0] = rms(nx, s->err, s->scal);
-    if (sens) norms[0] = fmax(norms[0], sens_norm(s, ERRCONST[order - 1], s->D + order * N, s->D));
+    if (sens)
+      norms[0] = fmax(norms[0], sens_norm(s, ERRCONST[order - 1], s->D + order * N, s->D));
   }
   if (order < s->order_cap) {
     for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order + 1] * s->D[(order + 2) * N + i];
