@@ -78,8 +78,13 @@ def simulate(scene: Scene, *, model: Model | None = None,
     """
     from tqdm import tqdm
 
+    names = _sensitivity_names(sensitivities, scene.run.integrator)
     model = model or load_scene_model(scene)
     p = _parameter_vector(model, scene, parameters)
+    if names:  # every name checked before any work
+        from jointplay.robot.derived import parameter_directions
+
+        parameter_directions(names, model.parameters, scene.robot)
     ideal_result = None
     if compare_ideal:
         ideal_scene = scene.with_robot(ideal_counterpart(scene.robot))
@@ -92,7 +97,6 @@ def simulate(scene: Scene, *, model: Model | None = None,
                                 parameters=ideal_params, quiet=quiet)
     pr = _Problem(model, scene, p)
     run = scene.run
-    names = _sensitivity_names(sensitivities, run.integrator)
     if model.structure.wear is not None and run.integrator != "bdf":
         from jointplay.common.errors import DescriptionError
 
