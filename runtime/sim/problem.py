@@ -100,6 +100,8 @@ class _Problem:
         run = scene.run
         self.gap_tolerance = EVENT_GAP_FRACTION * run.atol * np.asarray(clearances, dtype=float)
         self.event_time_tolerance = EVENT_TIME_FRACTION * run.rtol * RATE_SCALE_TIME
+        # Forward sensitivities to integrate beside the state (bdf only), or None.
+        self.sensitivity: Any = None
 
     def tau(self, t: np.ndarray | float) -> np.ndarray:
         """Drive torques at times t: shape (len(t), ntau)."""
@@ -138,6 +140,9 @@ class _Trajectory:
     dissipated: np.ndarray
     impacts: list[tuple[float, int, float, float, float]] = field(default_factory=list)
     wear: Any = None  # jointplay.results.wear.WearProfile, from a method that integrates it
+    # With sensitivities: d x / d p at the samples (n_t, nx, ns) and the phases' records
+    sensitivity: Any = None
+    phase_sensitivity: Any = None
 
 
 def _initial_state(model: Model, scene: Scene, p: np.ndarray | None = None) -> np.ndarray:
