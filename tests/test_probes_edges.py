@@ -369,7 +369,7 @@ def test_clearance_is_a_parameter_alias(capsys: pytest.CaptureFixture[str]) -> N
     bad_input(capsys, ["simulate", "--set", "joint1.clearance=2e-5"], "--set joint1.clearance",
               "has no clearance")
     bad_input(capsys, ["simulate", "--set", "joint2.clearance=0.02"], "--set joint2.clearance",
-              "journal_radius")
+              "between 0 and the bearing radius")
 
 
 @pytest.mark.parametrize(("q2", "q3", "payload"), [(-1.5707963267948966, 0.0, 2.0),

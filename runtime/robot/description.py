@@ -352,6 +352,10 @@ def resolve_aliases(robot: Robot, values: Mapping[str, Any]) -> dict[str, Any]:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise DescriptionError(name, f"must be a number, got {value!r}")
         bearing = values.get(f"joint{j}.bearing_radius", robot.joints[j - 1].bearing_radius)
+        if not 0 < float(value) < float(bearing):
+            raise DescriptionError(name, f"must be a radial clearance between 0 and the bearing "
+                                   f"radius ({float(bearing):g} m), got {value!r}; use kind = "
+                                   "\"ideal\" for no play")
         out[f"joint{j}.journal_radius"] = float(bearing) - float(value)
     return out
 
