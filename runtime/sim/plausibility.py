@@ -110,7 +110,8 @@ def _check_finite(result: SimulationResult) -> None:
             i = int(np.argmax(bad.any(axis=1)))
             raise SimulationError(float(result.t[i]), f"{name} is not finite from here on; "
                                   "the inputs drive the model outside the range of float64 "
-                                  "numbers (see the README's plausible ranges)")
+                                  "numbers (see the plausible ranges in "
+                                  "docs/reference/limits-and-errors.md)")
     wear = result.wear
     if wear is not None:
         for name in ("bearing_depth", "journal_depth", "volume"):
