@@ -90,9 +90,13 @@ def _section(parser: argparse.ArgumentParser, title: str, summary: str, level: i
 def command_reference() -> str:
     """The page's Markdown: one section per command, from ``jointplay.cli.make_parser()``."""
     from jointplay.cli import make_parser
+    from jointplay.cli.args import add_debug_flag
 
     parser = make_parser()
-    lines = [INTRO]
+    add_debug_flag(parser)  # as jointplay.cli.main does, on every command
+    lines = [INTRO, "## `jointplay`", "",
+             "The program's own options; `--debug` is taken by every command too.", ""]
+    lines += ["| argument | default | meaning |", "|---|---|---|", *_argument_rows(parser), ""]
     for name, child in _subparsers(parser).items():
         lines += _section(child, f"jointplay {name}", _help_of(parser, name), 2)
     return "\n".join(lines)

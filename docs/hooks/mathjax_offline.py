@@ -26,7 +26,8 @@ def mathjax_folder() -> Path:
         raise PluginError("MathJax is not installed: pip install -e '.[docs]'")
     folder = Path(next(iter(spec.submodule_search_locations))) / "static" / "mathjax"
     if not (folder / "es5" / "tex-svg-full.js").is_file():
-        raise PluginError(f"{folder}: no es5/tex-svg-full.js; reinstall with pip install -e '.[docs]'")
+        raise PluginError(f"{folder}: no es5/tex-svg-full.js; "
+                          "reinstall it with pip install -e '.[docs]'")
     return folder
 
 
