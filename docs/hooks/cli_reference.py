@@ -59,13 +59,13 @@ def _argument_rows(parser: argparse.ArgumentParser) -> list[str]:
         else:
             name = f"`{action.metavar if isinstance(action.metavar, str) else action.dest}`"
         default = ""
-        if action.default not in (None, False, argparse.SUPPRESS) and action.nargs != 0:
+        if action.default not in (None, False, "", [], argparse.SUPPRESS) and action.nargs != 0:
             default = f"`{action.default}`"
         help_text = (action.help or "") % {"default": action.default, "prog": parser.prog} \
             if action.help and "%(" in action.help else (action.help or "")
         if action.choices and not isinstance(action.choices, dict):
             help_text += " (one of: " + ", ".join(f"`{c}`" for c in action.choices) + ")"
-        rows.append(f"| {name} | {default} | {_escape(help_text)} |")
+        rows.append(f"| {name} | {default} | {_escape(help_text.strip())} |")
     return rows
 
 
