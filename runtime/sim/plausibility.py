@@ -8,7 +8,8 @@ derived for and the numbers mean nothing, although the integrator succeeds. Such
 with a :class:`~jointplay.common.errors.SimulationError` naming the joint, the time and the
 input most likely at fault (exit 1 on the command line); nothing is written.
 The bounds are :data:`jointplay.common.limits.MAX_PENETRATION_FRACTION` and
-:data:`jointplay.common.limits.MAX_ENERGY_RESIDUAL` (the README lists them).
+:data:`jointplay.common.limits.MAX_ENERGY_RESIDUAL` (docs/reference/limits-and-errors.md lists
+them).
 """
 
 from __future__ import annotations
