@@ -260,3 +260,13 @@ def test_pages_render_their_math_and_figures_in_chromium(site: Path, tmp_path: P
             assert images >= 1 and math >= 1, (page, seen)
     api = (site / "reference" / "api" / "index.html").read_text(encoding="utf-8")
     assert api.count('class="doc doc-object') >= 40, "the API reference has its entries"
+
+
+def test_site_home_shows_the_readme_commands() -> None:
+    """The home page repeats the README's two commands (shown, not run): they stay the same."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    home = (DOCS / "index.md").read_text(encoding="utf-8")
+    commands = re.findall(r"<!-- docs: ci -->\n```sh\n(?:#.*\n)*(.+)\n```", readme)
+    assert len(commands) == 2, "the README's first screen has two commands"
+    for command in commands:
+        assert command in home, f"docs/index.md does not show the README's `{command}`"
