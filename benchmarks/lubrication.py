@@ -3,7 +3,8 @@
 Runs the paper scene (dry joints, scenes/paper_4dof.toml) and the same arm with lubricated
 joints (scenes/paper_4dof_lubricated.toml: short bearing, 10 mm long, 0.04 Pa s), both with
 Archard wear integrated and against the ideal-joint arm; writes a figure, a polar plot of the
-dry arm's wear, and a table (CSV and Markdown) of the numbers the README quotes.
+dry arm's wear, and a table (CSV and Markdown) of the numbers docs/results/lubrication-and-wear.md
+quotes.
 
     python benchmarks/lubrication.py --out out/bench/lubrication
 """

@@ -1,5 +1,6 @@
-"""How far the built-in scenes stay from the run-time stops (README, "Limits, interrupts and
-errors"): the largest penetration as a fraction of the journal radius, and the largest energy
+"""How far the built-in scenes stay from the run-time stops (docs/reference/
+limits-and-errors.md): the largest penetration as a fraction of the journal radius, and the largest
+energy
 balance residual as a fraction of the run's largest energy, per scene and integrator, beside
 the bounds (``jointplay.common.limits.MAX_PENETRATION_FRACTION``, ``MAX_ENERGY_RESIDUAL``).
 

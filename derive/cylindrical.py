@@ -6,8 +6,8 @@ the ones the clearance-joint literature uses for that conformal line contact. Wh
 stiffer depends on the length: on the default joint (10 mm steel bearing, 0.03 mm clearance)
 with a 20 mm journal, Hertz's force is 4 % of Johnson's at d = 10 nm, 21 % at 1 um and 27 % at
 3 um (Liu's 7 %, 35 %, 44 %): Hertz is the softest law there, not the stiffest (measured with
-``tests/test_cylindrical.py``'s reference formulas; README, "Contact laws for a pin in a
-hole"). With the radial clearance c = Rb - Rj,
+``tests/test_cylindrical.py``'s reference formulas; docs/explanation/models.md, "Contact laws
+for a pin in a hole"). With the radial clearance c = Rb - Rj,
 the composite modulus E* = 1 / ((1 - nu_b^2)/E_b + (1 - nu_j^2)/E_j) and the penetration
 d = |e| - c > 0:
 

@@ -340,10 +340,10 @@ def test_elastic_runs_conserve_energy(kind: str) -> None:
 
 
 def test_the_stated_ratios_to_johnson_on_the_default_joint() -> None:
-    """The README's and derive/cylindrical.py's statements, recomputed from the independent
-    formulas: on the default joint (c = 30 um, 20 mm journal) Hertz's force is 4 %, 21 % and
-    27 % of Johnson's at 10 nm, 1 um and 3 um (Liu's 7 %, 35 %, 44 %), and Pereira's 0.59,
-    0.85 and 1.08-1.10 of it at 10 nm, 100 nm and 1-3 um."""
+    """The statements of docs/results/contact-laws.md and derive/cylindrical.py, recomputed
+    from the independent formulas: on the default joint (c = 30 um, 20 mm journal) Hertz's
+    force is 4 %, 21 % and 27 % of Johnson's at 10 nm, 1 um and 3 um (Liu's 7 %, 35 %, 44 %),
+    and Pereira's 0.59, 0.85 and 1.08-1.10 of it at 10 nm, 100 nm and 1-3 um."""
     c, rb = 30e-6, 10e-3
     hertz = 4 / 3 * E_STAR * math.sqrt(rb * (rb - c) / c)
 

@@ -1,4 +1,4 @@
-"""Docs that run: every Python and shell example in README.md and docs/*.md is executed here.
+"""Docs that run: every Python and shell example in README.md and docs/**/*.md is executed here.
 
 The fences say what a block is:
 
@@ -53,8 +53,13 @@ class Block:
     mark: str
 
     @property
+    def name(self) -> str:
+        """The file's path in the checkout (docs/ has several index.md, accuracy.md, ...)."""
+        return self.path.relative_to(ROOT).as_posix()
+
+    @property
     def id(self) -> str:
-        return f"{self.path.name}:{self.line}"
+        return f"{self.name}:{self.line}"
 
 
 def blocks(path: Path) -> list[Block]:
@@ -88,11 +93,11 @@ def scratch_root(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def _scratch(block: Block, root: Path) -> tuple[Path, dict[str, Any]]:
     """One folder and one Python namespace per documentation file."""
     if block.path not in _SCRATCH:
-        folder = root / block.path.stem
+        folder = root / block.name.removesuffix(".md").replace("/", "__")
         folder.mkdir()
         for name in ("scenes", "generated"):
             (folder / name).symlink_to(ROOT / name)
-        _SCRATCH[block.path] = (folder, {"__name__": f"docs_{block.path.stem}"})
+        _SCRATCH[block.path] = (folder, {"__name__": f"docs_{folder.name}"})
     return _SCRATCH[block.path]
 
 

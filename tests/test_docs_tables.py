@@ -1,5 +1,6 @@
-"""The README's tables of exit statuses and limits say what the code does: each documented
-number is checked against the constant the table names beside it."""
+"""The documentation's tables of exit statuses and limits (docs/reference/limits-and-errors.md)
+say what the code does: each documented number is checked against the constant the table
+names beside it."""
 
 from __future__ import annotations
 
@@ -11,9 +12,8 @@ import pytest
 
 from jointplay.common import limits
 
-README = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
-_SECTION = README[README.index("## Limits, interrupts and errors"):]
-_SECTION = _SECTION[:_SECTION.index("\n## ", 10)]
+_PAGE = Path(__file__).resolve().parents[1] / "docs" / "reference" / "limits-and-errors.md"
+_SECTION = _PAGE.read_text(encoding="utf-8")
 
 
 def table(header: str) -> list[list[str]]:

@@ -168,9 +168,9 @@ def test_documented_ranges_refuse_values_no_robot_has(tmp_path: Path,
     assert all(low <= high for low, high, _, _ in PHYSICAL_RANGES.values())
 
 
-def test_readme_lists_every_physical_range() -> None:
-    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text(encoding="utf-8")
-    section = readme.split("## Limits, interrupts and errors", 1)[1].split("\n## ", 1)[0]
+def test_docs_list_every_physical_range() -> None:
+    page = Path(__file__).resolve().parent.parent / "docs" / "reference" / "limits-and-errors.md"
+    section = page.read_text(encoding="utf-8")
     for kind, (low, high, unit, _) in PHYSICAL_RANGES.items():
         row = f"| `{kind}` | {low:g} | {high:g} | {unit} |"
         assert row in section, row

@@ -44,7 +44,7 @@ QUICK_STEPS: tuple[float, ...] = (2e-5, 1e-5)
 # The project's working accuracy: a run meets it with a tip position error of at most
 # WORKING_TIP_ERROR (m) against the reference and an energy balance residual of at most
 # WORKING_ENERGY_FRACTION of the energy that contact dissipated. The scene defaults are the
-# cheapest setting found that meets it (``--atols`` shows the choice; see the README).
+# cheapest setting found that meets it (``--atols`` shows the choice; see docs/results/accuracy.md).
 WORKING_TIP_ERROR = 1e-5
 WORKING_ENERGY_FRACTION = 1e-3
 

@@ -23,7 +23,7 @@ if TYPE_CHECKING:
     from jointplay.common.files import OutputPlan
     from jointplay.scene.definition import Scene
 
-# Exit statuses (README, "Limits, interrupts and errors"; tests/test_docs_tables.py checks the
+# Exit statuses (docs/reference/limits-and-errors.md; tests/test_docs_tables.py checks the
 # table there against these, jointplay.common.interrupts's and jointplay.neural.control's).
 EXIT_OK = 0
 EXIT_FAILURE = 1

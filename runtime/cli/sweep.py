@@ -71,7 +71,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
         description="Run every case of a sweep file on a Dask cluster (a local one by "
                     "default). Finished cases are kept in OUT/cases/ and skipped when the "
                     "same sweep runs again; the table is OUT/sweep.parquet.")
-    parser.add_argument("sweep", help="sweep file (TOML); see docs/sweeps.md")
+    parser.add_argument("sweep", help="sweep file (TOML); see docs/how-to/sweep.md")
     parser.add_argument("--out", required=True, help="folder for the table, case files, "
                                                      "plots and series")
     parser.add_argument("--scheduler", metavar="ADDRESS",

@@ -1,7 +1,8 @@
 """Every size a user gives, and the limit it is checked against at validation (exit 2).
 
 The limits keep a run's memory and time bounded and its numbers meaningful in float64; they
-are far beyond what a study of a clearance robot needs. The README lists them ("Limits").
+are far beyond what a study of a clearance robot needs. docs/reference/limits-and-errors.md lists
+them.
 """
 
 from __future__ import annotations

@@ -75,8 +75,8 @@ def plausible(field_name: str, value: float, kind: str) -> None:
     if not low <= value <= high:
         units = f" {unit}" if unit else ""
         raise DescriptionError(field_name, f"{value:g}{units} is outside the range a real "
-                               f"robot's {what} has ({low:g} to {high:g}{units}); see the "
-                               "README, \"Limits, interrupts and errors\"")
+                               f"robot's {what} has ({low:g} to {high:g}{units}); see "
+                               "docs/reference/limits-and-errors.md")
 
 
 def finite(field_name: str, value: float) -> None:

@@ -3,7 +3,7 @@
 The free-run loss that :func:`jointplay.neural.twin.select_residual` minimises does not
 predict the controller: on seeds 1 and 2 of the paper scene the network fitted the validation
 runs better in free run than its linear base in 13 of 16 models and won in closed loop in 4
-(docs/control.md). Here each candidate internal model, the blends
+(docs/explanation/controller.md). Here each candidate internal model, the blends
 ``base + alpha (network - base)`` at :data:`jointplay.neural.twin.ALPHAS` (and the ARX twin
 without scheduling signals, where the network has them), runs as the internal-model
 controller on the validation runs' motions, and the candidate with the lowest RMS

@@ -76,7 +76,7 @@ def _vector_flags(cpuinfo: str = "/proc/cpuinfo") -> tuple[str, ...]:
 
 # The loop kernel is a few kilobytes: -O3 compiles it in about a second and vectorises its
 # column sums (2x faster than -O2 here), and with AVX2 and FMA faster again (3.7 us per
-# step, docs/control.md "Cost of the controller step"; FMA changes the last bit of a
+# step, docs/results/control-closed-loop.md; FMA changes the last bit of a
 # product's rounding, and the kernel stays within 1e-12 of CasADi's step). CasADi's code
 # for iterations > 1 keeps the models' flags (-O1, CasADi's helpers inlined: no flag that
 # reorders arithmetic): -O2 compiled it 2.5x longer for no gain.

@@ -18,11 +18,11 @@ class ControllerSettings:
     horizon: int = 5  # d: samples ahead the prediction is matched (5: the horizon every
     # study case was measured with; on the default scene the network tracks a little better
     # at 1, 3 and 4 over 10 seeds and worse at 10, but at 1 it rings at 10 µm clearance:
-    # docs/control.md)
+    # docs/explanation/controller.md)
     regularisation: float = 1e-3  # lam, in units of the scaled outputs per (N m)^2
     setpoint_filter: float = 0.9  # a: the target leaves the deviation measured at
     # engagement over about 10 samples instead of at once (median RMS |Δa| over 10 seeds,
-    # offset case 1.31e-3 -> 1.23e-3, scene 9.97e-4 -> 9.61e-4; docs/control.md)
+    # offset case 1.31e-3 -> 1.23e-3, scene 9.97e-4 -> 9.61e-4; docs/explanation/controller.md)
     mismatch_filter: float = 0.9  # b
     tracked: tuple[str, ...] = ()  # outputs in C; default: see default_tracked
     scales: tuple[float, ...] = ()  # error of each tracked output that counts as 1
@@ -39,7 +39,7 @@ class ControllerSettings:
     # left out (the journals falling from the centred start and bouncing, which no joint
     # torque prevents; engaging at its end, the IMC meets the decaying bounce: offset case,
     # median RMS |Δa| 2.11e-3 against 1.23e-3; engaging at 0 the worst of 10 seeds is 4.4x
-    # worse on the scene; docs/control.md).
+    # worse on the scene; docs/explanation/controller.md).
     engage: float | None = None
     # The sensors' noise, (output name, standard deviation in its unit) per noisy output;
     # when given, the horizon is chosen for it (jointplay.neural.noise_tuning): the shortest
@@ -50,7 +50,7 @@ class ControllerSettings:
     # the sample) the worst seed was within 10 % of PD on all three goal metrics: 1.06x its
     # position, 1.08x its velocity and 1.095x its RMS acceleration error. 0.075 gave 1.00x,
     # 1.00x and 1.098x; 0.08 let the acceleration reach 1.108x, 0.06 the position 1.20x;
-    # docs/control.md, "Measurement noise".
+    # docs/results/control-closed-loop.md, "Measurement noise".
     noise_budget: float = 0.07
 
 
@@ -70,7 +70,8 @@ def default_tracked(narx: Narx, horizon: int) -> tuple[str, ...]:
             or names[: narx.n_inputs]
     # The axis along which the tip moved most in the training data (driven by the same
     # torques). Choosing it from the network's own d-step gain, as before, picked the axis
-    # along the arm for two of ten seeds at d = 5, and those loops failed (docs/control.md).
+    # along the arm for two of ten seeds at d = 5, and those loops failed
+    # (docs/explanation/controller.md).
     del horizon
     axis = max("xy", key=lambda a: float(narx.output_scale[narx.output_index(f"tip_{a}")]))
     out = [f"tip_{axis}", f"tip_v{axis}"]

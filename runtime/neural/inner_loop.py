@@ -18,7 +18,7 @@ from jointplay.scene.expressions import TimeFunction
 # Inner-loop defaults. The derivative gain is bounded by the journal: out of contact a link
 # turns about its own centre of mass (link 2's inertia about it is 1/90 of the pinned arm's
 # about joint 2), and a sampled derivative gain from about 20 N m s/rad on joint 2 makes the
-# loop ring and the journals chatter (655 impacts at 37, 27 at 5; docs/control.md).
+# loop ring and the journals chatter (655 impacts at 37, 27 at 5; docs/explanation/controller.md).
 DEFAULT_KP = 200.0  # N m/rad
 DEFAULT_KD = 5.0  # N m s/rad
 # Torque limit of each actuator, as a multiple of the scene's peak torque on that joint.

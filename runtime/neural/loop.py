@@ -156,7 +156,7 @@ def imc_law(ctrl: Controller, reference: np.ndarray, tau_ff: np.ndarray,
     alone, within the actuator limits); it then starts its internal models from the last
     measured deviations. The models were identified without that start-up (the journals
     falling from the centred start onto their bearings), and acting on it with them drove v
-    to 0.42 N m and left the journals bouncing well past it (docs/control.md)."""
+    to 0.42 N m and left the journals bouncing well past it (docs/explanation/controller.md)."""
     state: list[np.ndarray] = []
     s = ctrl.settings
     engage = round((s.engage or 0.0) / ctrl.model.sample_time)

@@ -3,7 +3,8 @@
 
 The model itself (its equations, evaluation and checksum) is in jointplay.neural.narx_model;
 its names are importable from here as well. The file format is described in
-``docs/control.md``; every number is written with ``repr`` precision, so a load gives back the
+``docs/reference/model-files.md``; every number is written with ``repr`` precision, so a load gives
+back the
 trained float64 weights exactly, and a checksum over the content catches edits and corruption.
 """
 

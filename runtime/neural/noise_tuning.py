@@ -18,7 +18,8 @@ With a perfect internal model the mismatch is the noise alone, so this is what t
 adds to the noise, not to the clearance's effect. The step predicted is the one that will
 run, with the pairwise mismatch filter of declared noise (jointplay.neural.mismatch_filter).
 
-How far to trust the prediction (docs/control.md, "Measurement noise"): at horizon 20, over
+How far to trust the prediction (docs/results/control-closed-loop.md, "Measurement noise"): at
+horizon 20, over
 the study's 10 seed models, the predicted ratio ranges 1.066-1.092 and the measured one
 (closed loop on the clearance robot, the study's noise case) 1.081-1.094; the measurement
 depends little on the seed, the prediction more, through each twin's fit. It ranks horizons

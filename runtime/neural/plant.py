@@ -3,7 +3,8 @@
 The control metrics compare the clearance robot with the ideal one to fractions of a
 micrometre and of a milli-g. At the scenes' former default tolerances (rtol 1e-6, atol 1e-5) the
 integrator's own error is larger than that: PD's RMS acceleration error after 50 ms is 2.8x
-its converged value and its largest position error 1.4x (docs/control.md, "The plant"). So
+its converged value and its largest position error 1.4x (docs/results/control-closed-loop.md, "The
+plant's tolerance"). So
 ``identify``, ``control`` and ``control-study`` integrate the plant (and the ideal robot it is
 compared with) with the ``bdf`` integrator at PLANT_TOLERANCE (unless the scene already asks
 for less): one setting for every controller and every comparison. ``bdf`` also gives the state

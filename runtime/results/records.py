@@ -48,7 +48,7 @@ class Impacts:
     integrator's dense output), never read off the output samples. ``time``, ``joint``,
     ``speed`` and ``eccentricity`` describe the onset; the rest (see :data:`PHASE_FIELDS`)
     describe the phase. Runs with a fixed-step method fill only the onset columns (the rest
-    NaN); see the README.
+    NaN); see docs/reference/results-file.md.
     """
 
     time: np.ndarray  # (m,) s, onset of contact located by event detection

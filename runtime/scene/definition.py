@@ -6,7 +6,7 @@ compiled, and never executed: torque expressions go through the restricted parse
 file, the field and what is allowed.
 
     name = "two_link"
-    [robot]                  # a robot description (see README), or robot = "robot.toml"
+    [robot]                  # a robot (docs/reference/robot-file.md), or robot = "robot.toml"
     ...
     [constants]              # named numbers usable in the expressions below
     A = 4.0
@@ -72,7 +72,7 @@ class RunSettings:
     clearance for eccentricities, and of the clearance per millisecond for their rates), so
     one number serves both. The defaults are the cheapest setting measured to meet the
     project's working accuracy on the default scene (tip error <= 1e-5 m, energy balance
-    residual <= 0.1 % of the dissipated energy; see the README, "What accuracy costs").
+    residual <= 0.1 % of the dissipated energy; see docs/results/accuracy.md).
     ``step`` is the fixed step of ``rk4`` and ``radau`` (it must
     divide ``output_step``). ``max_steps`` bounds the work between two outputs.
     ``plausibility`` is what a run that leaves the physical domain does: ``"stop"`` (raise

@@ -8,7 +8,8 @@ derived for and the numbers mean nothing, although the integrator succeeds. Such
 with a :class:`~jointplay.common.errors.SimulationError` naming the joint, the time and the
 input most likely at fault (exit 1 on the command line); nothing is written.
 The bounds are :data:`jointplay.common.limits.MAX_PENETRATION_FRACTION` and
-:data:`jointplay.common.limits.MAX_ENERGY_RESIDUAL`.
+:data:`jointplay.common.limits.MAX_ENERGY_RESIDUAL` (docs/reference/limits-and-errors.md lists
+them).
 
 The penetration is read where it is largest, not only at the output samples: the compiled
 ``bdf`` locates each contact phase's deepest point (where the penetration rate is zero) and
@@ -196,7 +197,8 @@ def _check_finite(result: SimulationResult) -> None:
             i = int(np.argmax(bad.any(axis=1)))
             raise SimulationError(float(result.t[i]), f"{name} is not finite from here on; "
                                   "the inputs drive the model outside the range of float64 "
-                                  "numbers (see the README's plausible ranges)")
+                                  "numbers (see the plausible ranges in "
+                                  "docs/reference/limits-and-errors.md)")
     wear = result.wear
     if wear is not None:
         for name in ("bearing_depth", "journal_depth", "volume"):

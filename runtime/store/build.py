@@ -36,13 +36,14 @@ from jointplay.common.errors import BuildError, FileError
 from jointplay.common.files import atomic_write_text
 
 # -O1: on CasADi's straight-line C, -O2 compiled 1.3-1.4x longer for 5-30 % faster calls at
-# 4 links, -O3 no faster than -O2 (README, "Build times"); compile time is what grows with the
+# 4 links, -O3 no faster than -O2 (docs/results/build-times.md); compile time is what grows with the
 # link count. -fno-math-errno lets sqrt/pow inline. CasADi emits its helpers (sq, fmax, ...)
 # as exported functions, which in a -fPIC library may be interposed and so are never inlined,
 # at any level: -fno-semantic-interposition with -finline-small-functions inlines them, for
 # 0.82x the 12-link clearance chain's forward dynamics per call at about the same compile
-# time and the same results to the bit (no flag here reorders arithmetic; README, "Inlined
-# helpers and 1/sqrt").
+# time and the same results to the bit (no flag here reorders arithmetic;
+# docs/results/build-times.md,
+# "Inlined helpers and 1/sqrt").
 DEFAULT_CFLAGS: tuple[str, ...] = ("-O1", "-fPIC", "-shared", "-fno-math-errno",
                                    "-finline-small-functions", "-fno-semantic-interposition")
 LIBRARY_NAME = "model.so"

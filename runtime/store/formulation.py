@@ -10,7 +10,8 @@
   Jacobian) in the coordinates, where the closed form's grow faster.
 
 ``auto`` (the default) takes the recursion from :data:`RECURSIVE_FROM_COORDINATES`
-coordinates on. The latest measurement (README, "Which formulation a model is emitted with")
+coordinates on. The latest measurement (docs/results/build-times.md, "Which formulation a model is
+emitted with")
 has the recursion as cheap or cheaper from 2 coordinates on in most cases, the paper robot
 included; the threshold stays above the paper robot until its checked-in model and the
 figures measured on it are regenerated with the recursion;

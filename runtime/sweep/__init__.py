@@ -1,7 +1,7 @@
 """Parameter sweeps: one compiled model, many parameter vectors, run on a Dask cluster.
 
 A sweep file (TOML, data only, never executed) names a base scene and the numbers to vary;
-see ``docs/sweeps.md`` for the format. Everything is validated before any work starts, and a
+see ``docs/how-to/sweep.md`` for the format. Everything is validated before any work starts, and a
 sweep never changes the model's structure, so the model is compiled once (here, in the parent
 process) and every worker loads it from the compile cache.
 
