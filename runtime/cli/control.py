@@ -1,5 +1,5 @@
 """``jointplay control``: validate, compile, run every controller against the ideal robot's
-motion, report and plot (the loops themselves: :mod:`jointplay.neural.control`).
+motion, report and plot (the loops themselves: :mod:`jointplay.neural.study.control_run`).
 
 Exit status 3 when any controller (PD and computed torque included) diverged."""
 
@@ -22,7 +22,12 @@ from jointplay.cli.neural_args import (
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
-from jointplay.neural.control import (
+from jointplay.neural.control.imc import ControllerSettings
+from jointplay.neural.control.loop import NO_CONDITIONS, LoopConditions
+from jointplay.neural.control.metrics import WORSE_MARGIN, worse_lines
+from jointplay.neural.control.noise_tuning import noise_vector
+from jointplay.neural.model.narx import MODEL_FILE, Narx, check_robot, load_narx
+from jointplay.neural.study.control_run import (
     DIVERGENCE_FACTOR,
     EXIT_DIVERGED,
     LINEAR,
@@ -37,11 +42,6 @@ from jointplay.neural.control import (
     verdict,
     write_runs,
 )
-from jointplay.neural.imc import ControllerSettings
-from jointplay.neural.loop import NO_CONDITIONS, LoopConditions
-from jointplay.neural.metrics import WORSE_MARGIN, worse_lines
-from jointplay.neural.narx import MODEL_FILE, Narx, check_robot, load_narx
-from jointplay.neural.noise_tuning import noise_vector
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -408,7 +408,7 @@ def _write_each(args: argparse.Namespace, job: ControlJob, comparison: Compariso
                 text: str) -> list[str]:
     written = []
     if args.plot:
-        from jointplay.neural.control_plots import plot_comparison
+        from jointplay.neural.study.control_plots import plot_comparison
 
         plot = Path(args.plot)
         written += [str(p) for p in plot_comparison(comparison, job.scene, plot)]

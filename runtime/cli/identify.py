@@ -1,5 +1,5 @@
 """``jointplay identify``: validate every flag, then simulate the excitation runs, train the
-network and write the model folder (the work itself: :mod:`jointplay.neural.identify`)."""
+network and write the model folder (the work itself: :mod:`jointplay.neural.identify.pipeline`)."""
 
 from __future__ import annotations
 
@@ -37,7 +37,8 @@ from jointplay.cli.neural_args import (
 )
 from jointplay.common import limits as size_limits
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.identify import (
+from jointplay.neural.identify.config import MAX_SEED
+from jointplay.neural.identify.pipeline import (
     DEFAULT_KD,
     DEFAULT_KP,
     LIMIT_FACTOR,
@@ -45,9 +46,8 @@ from jointplay.neural.identify import (
     IdentifyConfig,
     ModelRejected,
     default_limits,
-    identify,
 )
-from jointplay.neural.identify_config import MAX_SEED
+from jointplay.neural.study.closed_loop_choice import identify_model
 
 if TYPE_CHECKING:
     from jointplay.common.files import OutputPlan
@@ -111,7 +111,7 @@ def cmd_identify(args: argparse.Namespace) -> int:
     check_scene_for(config, scene)
     started = time.perf_counter()
     try:
-        metrics = identify(scene, out, config, quiet=args.quiet)
+        metrics = identify_model(scene, out, config, quiet=args.quiet)
     except ModelRejected:
         if not args.quiet:
             print((out / REPORT_FILE).read_text(encoding="utf-8"))
@@ -129,8 +129,13 @@ def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
     """The model folder's files and the scene's: refused when one is the other (exit 2)."""
     from jointplay.cli.args import plan_scene_inputs
     from jointplay.common.files import OutputPlan
-    from jointplay.neural.identify import ARX_FILE, DATASETS_FILE, METRICS_FILE, REJECTED_FILE
-    from jointplay.neural.narx import MODEL_FILE
+    from jointplay.neural.identify.pipeline import (
+        ARX_FILE,
+        DATASETS_FILE,
+        METRICS_FILE,
+        REJECTED_FILE,
+    )
+    from jointplay.neural.model.narx import MODEL_FILE
 
     plan = OutputPlan()
     plan_scene_inputs(plan, scene)

@@ -11,11 +11,11 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.common import limits as size_limits
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.identify import IdentifyConfig
-from jointplay.neural.imc import ControllerSettings, resolve_settings
+from jointplay.neural.control.imc import ControllerSettings, resolve_settings
+from jointplay.neural.identify.pipeline import IdentifyConfig
 
 if TYPE_CHECKING:
-    from jointplay.neural.narx import Narx
+    from jointplay.neural.model.narx import Narx
     from jointplay.scene.definition import Scene
 
 
@@ -141,7 +141,7 @@ def add_linear_gain_argument(parser: argparse.ArgumentParser, flag: str) -> None
 
 def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
                           ) -> None:
-    from jointplay.neural.identify_config import RESIDUAL_CRITERIA
+    from jointplay.neural.identify.config import RESIDUAL_CRITERIA
 
     parser.add_argument(flag, dest="residual_by", choices=RESIDUAL_CRITERIA,
                         default="free-run",
@@ -164,7 +164,7 @@ def add_scene_motions_argument(parser: argparse.ArgumentParser, flag: str) -> No
 def scene_motions_setting(args: argparse.Namespace, flag: str) -> int:
     """The number of scene-family motions, refused outside 1 to MAX_SCENE_MOTIONS."""
     from jointplay.common.errors import DescriptionError
-    from jointplay.neural.identify_config import MAX_SCENE_MOTIONS
+    from jointplay.neural.identify.config import MAX_SCENE_MOTIONS
 
     value = int(args.scene_motions)
     if not 1 <= value <= MAX_SCENE_MOTIONS:
@@ -193,7 +193,7 @@ def add_base_fraction_argument(parser: argparse.ArgumentParser, flag: str) -> No
 
 
 def add_base_motions_argument(parser: argparse.ArgumentParser, flag: str) -> None:
-    from jointplay.neural.identify_config import BASE_MOTIONS
+    from jointplay.neural.identify.config import BASE_MOTIONS
 
     parser.add_argument(flag, dest="base_motions", choices=BASE_MOTIONS,
                         default=_D.base_motions,

@@ -1,5 +1,6 @@
 """``jointplay control-study``: the controllers over training seeds, trajectories and
-clearances, the median and the worst seed (the study itself: :mod:`jointplay.neural.study`).
+clearances, the median and the worst seed (the study itself:
+:mod:`jointplay.neural.study.control_study`).
 
 Exit status 3 when an internal-model run diverged."""
 
@@ -44,13 +45,13 @@ from jointplay.cli.neural_args import (
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
-from jointplay.neural.control import MODEL_BASED, load_lpv, load_twin
-from jointplay.neural.identify_config import IdentifyConfig
-from jointplay.neural.imc import ControllerSettings
-from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
-from jointplay.neural.metrics import WORSE_MARGIN
-from jointplay.neural.narx import load_narx
-from jointplay.neural.study import (
+from jointplay.neural.control.imc import ControllerSettings
+from jointplay.neural.control.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
+from jointplay.neural.control.metrics import WORSE_MARGIN
+from jointplay.neural.identify.config import IdentifyConfig
+from jointplay.neural.model.narx import load_narx
+from jointplay.neural.study.control_run import MODEL_BASED, load_lpv, load_twin
+from jointplay.neural.study.control_study import (
     CASES,
     REPORTED,
     Case,
@@ -64,8 +65,8 @@ from jointplay.neural.study import (
     summarise,
     summary_table,
 )
-from jointplay.neural.study_report import ratio_goals, worse_lines
-from jointplay.neural.study_runs import JUDGED, STUDY_JOBS, pool_map
+from jointplay.neural.study.report import ratio_goals, worse_lines
+from jointplay.neural.study.runs import JUDGED, STUDY_JOBS, pool_map
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -266,7 +267,8 @@ def noise_note(rows: list[dict[str, Any]], undeclared: bool) -> list[str]:
                 "(--undeclared-noise).", ""]
     horizons = sorted({int(r["horizon"]) for r in noisy})
     lines = ["Noise case: the internal-model controllers were told the sensors' noise and "
-             f"chose horizon {', '.join(map(str, horizons))} (jointplay.neural.noise_tuning)."]
+             f"chose horizon {', '.join(map(str, horizons))} "
+             "(jointplay.neural.control.noise_tuning)."]
     pd = [r for r in rows if r["case"] == "noise" and r["controller"] == "PD"]
     if pd:
         base = pd[0]["rms_acceleration_after"]
@@ -365,7 +367,7 @@ def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, li
 def compile_all(models: dict[float, list[Path]], settings: ControllerSettings) -> None:
     """Compile every controller once, before the workers fork (they then load it from the
     cache instead of compiling it twice at the same time)."""
-    from jointplay.neural.imc import compile_controller
+    from jointplay.neural.control.imc import compile_controller
 
     for paths in models.values():
         for path in paths:
