@@ -317,7 +317,7 @@ def test_scene_family_base_motions_are_the_scenes_torques_retimed() -> None:
 
 def test_control_study_hands_its_identification_flags_to_identify(tmp_path: Any) -> None:
     """control-study's --identify-* flags (and --train, --scheduling, --lpv-base) reach the
-    identification of every model unchanged, and their defaults are identify's own."""
+    identification of every model unchanged, and their defaults are the settings' preset."""
     from jointplay.cli import make_parser
     from jointplay.cli.study import study_plan
 
@@ -338,11 +338,12 @@ def test_control_study_hands_its_identification_flags_to_identify(tmp_path: Any)
         "closed-loop-scene", "scene-family", 3)
     assert (config.hidden, config.output_lags, config.input_lags, config.window,
             config.base_fraction) == ((24, 24), 3, 1, 50, 0.2)
-    default = IdentifyConfig(**study_plan(make_parser().parse_args(
-        ["control-study", "--out", out])).identify_args)
-    assert (default.base_motions, default.residual_by, default.linear_input_gain,
-            default.scheduling, default.lpv_base) == (
-        IdentifyConfig.base_motions, IdentifyConfig.residual_by, False, False, False)
+    from jointplay.neural.study.settings import preset_settings
+
+    for preset in ("paper", "best"):
+        default = IdentifyConfig(**study_plan(make_parser().parse_args(
+            ["control-study", "--out", out, "--preset", preset])).identify_args)
+        assert default == replace(preset_settings(preset).identify, seed=0, workers=0)
 
 
 def _scheduled_runs(seed: int) -> tuple[list[Trajectory], list[Trajectory]]:

@@ -116,7 +116,7 @@ def test_control_study_verify_writes_the_accuracy_per_run(
     shutil.copytree(folder, out / "models" / f"{size * 1e6:g}um" / f"seed{seed}")
     assert main(["control-study", str(scene_file), "--out", str(out), "--seeds", "1",
                  "--first-seed", str(seed), "--cases", "scene", "--workers", "1", "--quiet",
-                 "--verify"]) in (0, 3)
+                 "--verify", "--preset", "paper"]) in (0, 3)
     with (out / "study.csv").open() as fh:
         rows = list(csv.DictReader(fh))
     stored = json.loads((out / "study.json").read_text())["rows"]

@@ -14,10 +14,14 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
+    CONTROL_FLAGS,
     add_settings_arguments,
+    add_settings_file_arguments,
+    fill_from_settings,
     float_list,
-    load_control_scene,
     neural_scene_argument,
+    scene_and_settings,
+    settings_defaults,
     settings_from_args,
 )
 from jointplay.common.errors import DescriptionError
@@ -42,6 +46,7 @@ from jointplay.neural.study.control_run import (
     verdict,
     write_runs,
 )
+from jointplay.neural.study.settings import SETTINGS_FILE, settings_toml
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -82,6 +87,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="also run PD and both internal-model controllers on the model's stored "
                         "test excitations")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
+    add_settings_file_arguments(p)
+    settings_defaults(p, CONTROL_FLAGS)
     p.set_defaults(func=cmd_control)
     return p
 
@@ -99,6 +106,7 @@ class ControlJob:
     pd_kp: tuple[float, ...]
     pd_kd: tuple[float, ...]
     cases: list[tuple[str, Any]]
+    record: str  # the resolved settings, as settings.toml (written under --plot)
 
 
 def cmd_control(args: argparse.Namespace) -> int:
@@ -150,7 +158,8 @@ def cmd_control(args: argparse.Namespace) -> int:
 
 def control_job(args: argparse.Namespace) -> ControlJob:
     """Load the scene, the model and its twin; check every flag; prepare the outputs."""
-    scene = load_control_scene(args.scene, args.quiet)
+    scene, resolved, scene_file = scene_and_settings(args)
+    fill_from_settings(args, resolved, CONTROL_FLAGS)
     output_plan(args, scene)  # outputs meeting each other or an input: refused first
     model_dir = Path(args.model)
     narx = load_narx(model_dir)
@@ -169,7 +178,9 @@ def control_job(args: argparse.Namespace) -> ControlJob:
 
         check_output_path(args.out, "--out")
     cases = test_case_scenes(model_dir, scene) if args.test_cases else []
-    return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases)
+    record = settings_toml(replace(resolved, control=settings_from_args(args, None)),
+                           scene_file, "jointplay control settings.toml --model MODEL_DIR")
+    return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases, record)
 
 
 def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
@@ -413,7 +424,8 @@ def _write_each(args: argparse.Namespace, job: ControlJob, comparison: Compariso
         plot = Path(args.plot)
         written += [str(p) for p in plot_comparison(comparison, job.scene, plot)]
         atomic_write_text(plot / "control.md", text.strip() + "\n")
-        written.append(str(plot / "control.md"))
+        atomic_write_text(plot / SETTINGS_FILE, job.record)
+        written += [str(plot / "control.md"), str(plot / SETTINGS_FILE)]
     if args.out:
         write_runs(Path(args.out), comparison,
                    {"settings": asdict(job.settings), "scene": job.scene.name,
