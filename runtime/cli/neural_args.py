@@ -239,8 +239,8 @@ _CONTROL_TABLE: tuple[tuple[str, str, str, str, Any], ...] = (
      "noise, NAME=STD per measured output in its unit, e.g. q2=3e-6,dq2=4e-3,tip_vx=1e-3: "
      "every controller measures through it (control-study: see its noise case), and the "
      "internal-model controllers choose their horizon for it (the shortest whose predicted "
-     "RMS tip acceleration from the noise is within 1 + --noise-budget of the inner loop's "
-     "alone)", str),
+     "RMS tip acceleration from the noise is within 1 + the noise budget of the inner "
+     "loop's alone)", str),
     ("--noise-budget", "noise_budget", "control.noise_budget", "with --measurement-noise: "
      "the increase of the noise's RMS tip acceleration over the inner loop's alone that the "
      "outer loop may add", float),

@@ -138,7 +138,7 @@ def checked(where: str, key: Key, value: Any) -> Any:
         if not isinstance(value, dict):
             raise DescriptionError(where, "must be a table of output name = standard "
                                    f"deviation, e.g. {{ q2 = 3e-6 }}, got {value!r}")
-        return tuple((str(name), checked(f"{where}.{name}", Key("float", 0.0), std))
+        return tuple((str(name), _noise_std(f"{where}.{name}", std))
                      for name, std in value.items())
     if key.kind == "bool":
         if not isinstance(value, bool):
@@ -154,6 +154,15 @@ def checked(where: str, key: Key, value: Any) -> Any:
     number = _number(where, key, value)
     _in_range(where, key, number)
     return number
+
+
+def _noise_std(where: str, value: Any) -> float:
+    try:
+        std: float = checked(where, Key("float", 0.0), value)
+    except DescriptionError as err:
+        raise DescriptionError(where, f"{err.message}: give NAME=STD pairs, STD >= 0 in the "
+                               "output's unit") from None
+    return std
 
 
 def _number(where: str, key: Key, value: Any) -> float | int:
@@ -210,7 +219,7 @@ def _noise_pairs(where: str, text: str) -> dict[str, Any]:
         name, sep, value = item.partition("=")
         if not sep or not name.strip():
             raise DescriptionError(where, f"{item!r}: give NAME=STD pairs, e.g. "
-                                   "q2=3e-6,dq2=4e-3")
+                                   "q2=3e-6,dq2=4e-3 (STD >= 0, in the output's unit)")
         out[name.strip()] = _scalar(value.strip())
     return out
 
