@@ -112,11 +112,13 @@ def apply_flags(args: argparse.Namespace, settings: Settings, flags: FlagKeys
     problems.raise_any()
     changed = {}
     for section, table in values.items():
+        def name(field: str, section: str = section) -> str:
+            return given.get(f"{section}.{field}", f"{section}.{field}")
+
         try:  # the checks across keys (IdentifyConfig's), named by the flag when one gave it
             changed[section] = replace(getattr(settings, section), **table)
         except DescriptionError as err:
-            raise err.renamed(lambda field, s=section: given.get(
-                f"{s}.{field}", f"{s}.{field}")) from None
+            raise err.renamed(name) from None
     return replace(settings, **changed), given
 
 
