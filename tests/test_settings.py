@@ -125,6 +125,22 @@ def test_set_overrides_are_checked_by_the_same_schema() -> None:
     assert settings.study.cases == ("scene", "noise") and settings.study.clearances == ()
 
 
+def test_the_command_line_reports_file_set_and_flag_problems_at_once(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("torch")
+    from jointplay.cli import main
+
+    study = tmp_path / "study.toml"
+    study.write_text('[identify]\nwindow = 1\n', encoding="utf-8")
+    out = tmp_path / "model"
+    assert main(["identify", str(study), "--out", str(out), "--set", "identify.hiden=3",
+                 "--hidden", "0", "--lags", "2"]) == 2
+    err = capsys.readouterr().err
+    for named in ("identify.window:", "--set: 'identify.hiden=3'", "--hidden:", "--lags:"):
+        assert named in err, err
+    assert "4 problems" in err and not out.exists()
+
+
 def test_paper_is_the_dataclasses_defaults_and_best_the_measured_setting() -> None:
     paper = preset_settings("paper")
     assert paper == Settings("paper", IdentifyConfig(), ControllerSettings(), StudySettings())

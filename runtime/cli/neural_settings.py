@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import FlagKeys, load_control_scene
-from jointplay.common.errors import DescriptionError
+from jointplay.common.errors import DescriptionError, combined
 from jointplay.neural.control.imc import ControllerSettings, resolve_settings
 from jointplay.neural.study.settings_schema import SCHEMA
 
@@ -66,7 +66,10 @@ def scene_and_settings(args: argparse.Namespace, flags: FlagKeys
     naming its scene, or None (the paper scene)."""
     from jointplay.common.validation import read_toml
     from jointplay.neural.study.settings import (
+        DEFAULT_PRESET,
+        PRESETS,
         is_settings_document,
+        preset_settings,
         read_settings_file,
         resolve_settings,
         settings_tables,
@@ -74,17 +77,25 @@ def scene_and_settings(args: argparse.Namespace, flags: FlagKeys
 
     path = Path(args.scene) if args.scene else None
     scene_file: Path | None = path
-    if path is None:
-        settings = resolve_settings({}, preset=args.preset, overrides=args.overrides)
-    else:
-        data, _ = read_toml(path, "scene or settings")
-        if is_settings_document(data):
+    data, _ = read_toml(path, "scene or settings") if path is not None else ({}, "")
+    found: DescriptionError | None = None
+    try:
+        if path is not None and is_settings_document(data):
             settings, scene_file = read_settings_file(path, preset=args.preset,
                                                       overrides=args.overrides)
         else:
             settings = resolve_settings(settings_tables(data), preset=args.preset,
-                                        overrides=args.overrides, source=str(path))
-    settings, given = apply_flags(args, settings, flags)
+                                        overrides=args.overrides,
+                                        source=str(path) if path else None)
+    except DescriptionError as err:  # the flags are checked too: every problem at once
+        found = err
+        settings = preset_settings(args.preset if args.preset in PRESETS else DEFAULT_PRESET)
+    try:
+        settings, given = apply_flags(args, settings, flags)
+    except DescriptionError as err:
+        raise combined([found, err] if found else [err]) from None
+    if found is not None:
+        raise found
     scene = load_control_scene(str(scene_file) if scene_file else None, args.quiet)
     return scene, settings, scene_file.resolve() if scene_file else None, given
 
