@@ -1,4 +1,5 @@
-"""The outer loop's horizon chosen for declared sensor noise (jointplay.neural.noise_tuning).
+"""The outer loop's horizon chosen for declared sensor noise
+(jointplay.neural.control.noise_tuning).
 
 The prediction (the stationary RMS of the twin's acceleration outputs, from the impulse
 response of the loop linearised at rest) is checked against the same loop stepped with
@@ -8,7 +9,6 @@ untold controller and PD (slow, on the session's identified model); bad input by
 
 from __future__ import annotations
 
-import argparse
 from dataclasses import replace
 from pathlib import Path
 
@@ -16,13 +16,11 @@ import numpy as np
 import pytest
 
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.control import NEURAL, ControllerSettings, compare
-from jointplay.neural.imc_settings import resolve_settings
-from jointplay.neural.imc_step import build_step
-from jointplay.neural.internal_model import _inner_gains
-from jointplay.neural.loop import LoopConditions
-from jointplay.neural.narx import Narx
-from jointplay.neural.noise_tuning import (
+from jointplay.neural.control.imc_settings import resolve_settings
+from jointplay.neural.control.imc_step import build_step
+from jointplay.neural.control.internal_model import _inner_gains
+from jointplay.neural.control.loop import LoopConditions
+from jointplay.neural.control.noise_tuning import (
     HORIZONS,
     NoiseTuning,
     _predicted_rms,
@@ -30,7 +28,9 @@ from jointplay.neural.noise_tuning import (
     noise_vector,
     tune_to_noise,
 )
-from jointplay.neural.study_cases import NOISE, Case, declared
+from jointplay.neural.model.narx import Narx
+from jointplay.neural.study.cases import NOISE, Case, declared
+from jointplay.neural.study.control_run import NEURAL, ControllerSettings, compare
 
 STUDY_NOISE = {"q2": NOISE["q"], "q3": NOISE["q"], "dq2": NOISE["dq"], "dq3": NOISE["dq"],
                **{k: v for k, v in NOISE.items() if k.startswith("tip")}}
@@ -174,11 +174,12 @@ def test_noise_flags_are_checked_by_name() -> None:
 
 
 def test_study_refuses_its_own_noise_flag_and_declares_the_case_noise() -> None:
+    from jointplay.cli import make_parser
     from jointplay.cli.study import study_plan
     from jointplay.scene.definition import default_scene
 
-    args = argparse.Namespace(measurement_noise="dq2=1e-3", scene=None, quiet=True,
-                              out="unused", seeds=1)
+    args = make_parser().parse_args(["control-study", "--measurement-noise", "dq2=1e-3",
+                                     "--quiet", "--out", "unused", "--seeds", "1"])
     with pytest.raises(DescriptionError, match=r"--measurement-noise.*noise case"):
         study_plan(args)
     scene = default_scene()
@@ -220,7 +221,7 @@ def test_pairwise_filter_reduces_to_the_first_order_one_without_the_position() -
     study's noise the position dominates the speed's estimate."""
     from test_control import random_narx
 
-    from jointplay.neural.mismatch_filter import pair_gains, position_of
+    from jointplay.neural.control.mismatch_filter import pair_gains, position_of
 
     assert [position_of(n) for n in ("dq7", "tip_vy", "q7", "tip_ax")] == \
         ["q7", "tip_y", None, None]
@@ -249,7 +250,7 @@ def test_pairwise_filter_follows_a_ramp_without_lag() -> None:
     steady-state filter's fixed point is the signal itself, so its error dies out."""
     from test_control import random_narx
 
-    from jointplay.neural.mismatch_filter import pair_gains
+    from jointplay.neural.control.mismatch_filter import pair_gains
 
     model = random_narx(6)
     settings = resolve_settings(model, ControllerSettings(
@@ -267,8 +268,8 @@ def test_pairwise_filter_follows_a_ramp_without_lag() -> None:
 def test_declared_noise_steps_run_as_casadi_code() -> None:
     from test_control import random_narx
 
-    from jointplay.neural.imc import compile_controller
-    from jointplay.neural.imc_kernel import kernel_source
+    from jointplay.neural.control.imc import compile_controller
+    from jointplay.neural.control.imc_kernel import kernel_source
 
     model = random_narx(7)
     settings = resolve_settings(model, ControllerSettings(

@@ -10,9 +10,9 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from jointplay.neural.comparison import RELEASE_GAP, engagement_end, release_end, settling
-from jointplay.neural.loop import LoopConditions, Run
-from jointplay.neural.metrics import WORSE_MARGIN, worse_lines, worse_than_baselines
+from jointplay.neural.control.loop import LoopConditions, Run
+from jointplay.neural.control.metrics import WORSE_MARGIN, worse_lines, worse_than_baselines
+from jointplay.neural.study.comparison import RELEASE_GAP, engagement_end, release_end, settling
 
 
 def _run(impacts: list[float]) -> Run:
@@ -82,8 +82,8 @@ def test_control_repeats_what_identify_warned_about(tmp_path: Path) -> None:
 def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
         monkeypatch: pytest.MonkeyPatch) -> None:
     import jointplay.cli.control as control_cli
-    from jointplay.neural.comparison import Settling
-    from jointplay.neural.imc import ControllerSettings
+    from jointplay.neural.control.imc import ControllerSettings
+    from jointplay.neural.study.comparison import Settling
 
     after = {"max_velocity_after": 1.0, "max_acceleration_after": 1.0,
              "rms_acceleration_after": 1.0}
@@ -125,9 +125,9 @@ def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
 def test_study_sets_the_network_against_both_linear_controllers() -> None:
     """The study's goal lines: the network's RMS acceleration error after settling over
     ARX-IMC's (goal 0.75) and over LPV-ARX-IMC's (goal: below 1), median and worst seed."""
-    from jointplay.neural.comparison import LINEAR, LPV, NEURAL
-    from jointplay.neural.study_cases import Case
-    from jointplay.neural.study_report import ratio_goals
+    from jointplay.neural.study.cases import Case
+    from jointplay.neural.study.comparison import LINEAR, LPV, NEURAL
+    from jointplay.neural.study.report import ratio_goals
 
     key = "rms_acceleration_after"
     values = {NEURAL: (1.0, 3.0), LINEAR: (2.0, 4.0), LPV: (2.0, 2.0)}
@@ -145,10 +145,10 @@ def test_study_splits_the_acceleration_error_into_sample_mean_and_within_sample(
     """With the split of RMS |Δa| after settling in the rows, the study says each internal
     model's within-sample part, how far the network's alone sits against ARX-IMC's whole
     error, and the network over ARX-IMC on the sample-mean part (median, worst seed)."""
-    from jointplay.neural.comparison import LINEAR, LPV, NEURAL
-    from jointplay.neural.metrics import SPLIT_METRICS
-    from jointplay.neural.study_cases import Case
-    from jointplay.neural.study_report import split_lines
+    from jointplay.neural.control.metrics import SPLIT_METRICS
+    from jointplay.neural.study.cases import Case
+    from jointplay.neural.study.comparison import LINEAR, LPV, NEURAL
+    from jointplay.neural.study.report import split_lines
 
     mean_key, within_key = SPLIT_METRICS
     parts = {NEURAL: ((0.8, 0.6), (2.4, 1.8)), LINEAR: ((1.6, 1.2), (3.2, 2.4)),

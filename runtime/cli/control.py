@@ -1,5 +1,5 @@
 """``jointplay control``: validate, compile, run every controller against the ideal robot's
-motion, report and plot (the loops themselves: :mod:`jointplay.neural.control`).
+motion, report and plot (the loops themselves: :mod:`jointplay.neural.study.control_run`).
 
 Exit status 3 when any controller (PD and computed torque included) diverged."""
 
@@ -14,15 +14,24 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
-    add_settings_arguments,
+    add_controller_arguments,
     float_list,
-    load_control_scene,
     neural_scene_argument,
-    settings_from_args,
+)
+from jointplay.cli.neural_settings import (
+    add_settings_file_arguments,
+    controller_settings,
+    scene_and_settings,
+    settings_flags,
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
-from jointplay.neural.control import (
+from jointplay.neural.control.imc import ControllerSettings
+from jointplay.neural.control.loop import NO_CONDITIONS, LoopConditions
+from jointplay.neural.control.metrics import WORSE_MARGIN, worse_lines
+from jointplay.neural.control.noise_tuning import noise_vector
+from jointplay.neural.model.narx import MODEL_FILE, Narx, check_robot, load_narx
+from jointplay.neural.study.control_run import (
     DIVERGENCE_FACTOR,
     EXIT_DIVERGED,
     LINEAR,
@@ -37,11 +46,7 @@ from jointplay.neural.control import (
     verdict,
     write_runs,
 )
-from jointplay.neural.imc import ControllerSettings
-from jointplay.neural.loop import NO_CONDITIONS, LoopConditions
-from jointplay.neural.metrics import WORSE_MARGIN, worse_lines
-from jointplay.neural.narx import MODEL_FILE, Narx, check_robot, load_narx
-from jointplay.neural.noise_tuning import noise_vector
+from jointplay.neural.study.settings import SETTINGS_FILE, settings_toml
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -62,7 +67,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="folder written by `jointplay identify`")
     p.add_argument("--plot", metavar="DIR", help="write figures and the table (control.md) here")
     p.add_argument("--out", metavar="RUN.h5", help="write every run and the metrics (HDF5)")
-    add_settings_arguments(p, ControllerSettings())
+    flags = add_controller_arguments(p)
     p.add_argument("--pd-kp", help="PD baseline stiffness per driven joint, N m/rad (default: "
                                    "the inner loop's)")
     p.add_argument("--pd-kd", help="PD baseline damping per driven joint, N m s/rad (default: "
@@ -82,7 +87,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="also run PD and both internal-model controllers on the model's stored "
                         "test excitations")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
-    p.set_defaults(func=cmd_control)
+    add_settings_file_arguments(p)
+    settings_flags(p, flags)
+    p.set_defaults(func=cmd_control, settings_keys=flags)
     return p
 
 
@@ -99,6 +106,7 @@ class ControlJob:
     pd_kp: tuple[float, ...]
     pd_kd: tuple[float, ...]
     cases: list[tuple[str, Any]]
+    record: str  # the resolved settings, as settings.toml (written under --plot)
 
 
 def cmd_control(args: argparse.Namespace) -> int:
@@ -150,14 +158,14 @@ def cmd_control(args: argparse.Namespace) -> int:
 
 def control_job(args: argparse.Namespace) -> ControlJob:
     """Load the scene, the model and its twin; check every flag; prepare the outputs."""
-    scene = load_control_scene(args.scene, args.quiet)
+    scene, resolved, scene_file, _ = scene_and_settings(args, args.settings_keys)
     output_plan(args, scene)  # outputs meeting each other or an input: refused first
     model_dir = Path(args.model)
     narx = load_narx(model_dir)
     check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
     arx = load_twin(model_dir, narx)
     lpv = load_lpv(model_dir)
-    settings = settings_from_args(args, narx)
+    settings = controller_settings(resolved, narx)
     nj = len(scene.robot.moving_joints)
     pd_kp = float_list(args.pd_kp, "--pd-kp", nj)
     pd_kd = float_list(args.pd_kd, "--pd-kd", nj, positive=False)
@@ -169,7 +177,9 @@ def control_job(args: argparse.Namespace) -> ControlJob:
 
         check_output_path(args.out, "--out")
     cases = test_case_scenes(model_dir, scene) if args.test_cases else []
-    return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases)
+    record = settings_toml(resolved, scene_file,
+                           "jointplay control settings.toml --model MODEL_DIR")
+    return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases, record)
 
 
 def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
@@ -408,12 +418,13 @@ def _write_each(args: argparse.Namespace, job: ControlJob, comparison: Compariso
                 text: str) -> list[str]:
     written = []
     if args.plot:
-        from jointplay.neural.control_plots import plot_comparison
+        from jointplay.neural.study.control_plots import plot_comparison
 
         plot = Path(args.plot)
         written += [str(p) for p in plot_comparison(comparison, job.scene, plot)]
         atomic_write_text(plot / "control.md", text.strip() + "\n")
-        written.append(str(plot / "control.md"))
+        atomic_write_text(plot / SETTINGS_FILE, job.record)
+        written += [str(plot / "control.md"), str(plot / SETTINGS_FILE)]
     if args.out:
         write_runs(Path(args.out), comparison,
                    {"settings": asdict(job.settings), "scene": job.scene.name,

@@ -1,5 +1,6 @@
 """``jointplay control-study``: the controllers over training seeds, trajectories and
-clearances, the median and the worst seed (the study itself: :mod:`jointplay.neural.study`).
+clearances, the median and the worst seed (the study itself:
+:mod:`jointplay.neural.study.control_study`).
 
 Exit status 3 when an internal-model run diverged."""
 
@@ -10,47 +11,32 @@ import csv
 import io
 import json
 import math
-import os
 import time
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
-    add_base_fraction_argument,
-    add_base_motions_argument,
-    add_contact_argument,
-    add_identify_data_arguments,
-    add_iterations_argument,
-    add_linear_gain_argument,
-    add_operating_range_arguments,
-    add_residual_argument,
-    add_scene_motions_argument,
-    add_scheduling_argument,
-    add_settings_arguments,
-    base_fraction_setting,
-    contact_setting,
-    float_list,
-    int_list,
-    iteration_counts,
-    load_control_scene,
-    lpv_base_setting,
+    add_controller_arguments,
+    add_identify_arguments,
+    check_identify_for,
     neural_scene_argument,
-    operating_range,
-    residual_setting,
-    scene_motions_setting,
-    settings_from_args,
-    trajectory_counts,
+)
+from jointplay.cli.neural_settings import (
+    SETTINGS_HELP,
+    add_settings_file_arguments,
+    controller_settings,
+    scene_and_settings,
+    settings_flags,
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
-from jointplay.neural.control import MODEL_BASED, load_lpv, load_twin
-from jointplay.neural.identify_config import IdentifyConfig
-from jointplay.neural.imc import ControllerSettings
-from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
-from jointplay.neural.metrics import WORSE_MARGIN
-from jointplay.neural.narx import load_narx
-from jointplay.neural.study import (
+from jointplay.neural.control.imc import ControllerSettings
+from jointplay.neural.control.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
+from jointplay.neural.control.metrics import WORSE_MARGIN
+from jointplay.neural.model.narx import load_narx
+from jointplay.neural.study.control_run import MODEL_BASED, load_lpv, load_twin
+from jointplay.neural.study.control_study import (
     CASES,
     REPORTED,
     Case,
@@ -64,8 +50,13 @@ from jointplay.neural.study import (
     summarise,
     summary_table,
 )
-from jointplay.neural.study_report import ratio_goals, worse_lines
-from jointplay.neural.study_runs import JUDGED, STUDY_JOBS, pool_map
+from jointplay.neural.study.report import ratio_goals, worse_lines
+from jointplay.neural.study.runs import JUDGED, STUDY_JOBS, pool_map
+from jointplay.neural.study.settings import (
+    SETTINGS_FILE,
+    Settings,
+    settings_toml,
+)
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -83,38 +74,20 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     neural_scene_argument(p)
     p.add_argument("--out", required=True, metavar="DIR",
                    help="folder for models/, study.md, study.csv, study.json and the plots")
-    p.add_argument("--first-seed", type=int, default=0,
-                   help="the seeds are FIRST_SEED, FIRST_SEED + 1, ... (default 0; a study of "
-                        "seeds not used for tuning starts past them)")
-    p.add_argument("--seeds", type=int, default=3,
-                   help="training seeds at the scene's clearance (default %(default)s)")
-    p.add_argument("--cases", default=",".join(CASES),
-                   help=f"cases to run (default: all: {','.join(CASES)})")
-    p.add_argument("--clearances", help="other radial clearances, m, e.g. 10e-6,60e-6 "
-                                        "(each identified again)")
-    p.add_argument("--clearance-seeds", type=int, default=2,
-                   help="seeds per other clearance (default %(default)s)")
-    p.add_argument("--workers", type=int, default=min(2, os.cpu_count() or 1),
-                   help="processes for the closed-loop runs (default %(default)s)")
-    add_identify_data_arguments(p, study=True)
-    add_scheduling_argument(p)
-    add_contact_argument(p, "--identify-contact-outputs")
-    add_linear_gain_argument(p, "--identify-linear-input-gain")
-    add_residual_argument(p, "--identify-residual-by")
-    add_base_fraction_argument(p, "--identify-base-fraction")
-    add_base_motions_argument(p, "--identify-base-motions")
-    add_scene_motions_argument(p, "--identify-scene-motions")
-    add_operating_range_arguments(p, prefix="identify-")
-    p.add_argument("--identify-lags", default="2,2",
-                   help="identify: output lags,input lags (default %(default)s)")
-    p.add_argument("--identify-hidden", default="13,14",
-                   help="identify: hidden layer widths (default %(default)s)")
-    p.add_argument("--identify-window", type=int, default=IdentifyConfig.window,
-                   help="identify: samples per free-run window, for training and for "
-                        "weighing the residual (default %(default)s)")
-    add_iterations_argument(p, "--identify-iterations",
-                            "identify: L-BFGS iterations (default %(default)s)")
-    add_settings_arguments(p, ControllerSettings())
+    study_flags = {"first_seed": "study.first_seed", "seeds": "study.seeds",
+                   "cases": "study.cases", "clearances": "study.clearances",
+                   "clearance_seeds": "study.clearance_seeds", "workers": "study.workers",
+                   "undeclared_noise": "study.undeclared_noise", "verify": "study.verify"}
+    for dest, kind, text in (
+            ("first_seed", int, "the seeds are FIRST_SEED, FIRST_SEED + 1, ... (a study of "
+                                "seeds not used for tuning starts past them)"),
+            ("seeds", int, "training seeds at the scene's clearance"),
+            ("cases", str, f"cases to run, of {','.join(CASES)}"),
+            ("clearances", str, "other radial clearances, m, e.g. 10e-6,60e-6 (each "
+                                "identified again)"),
+            ("clearance_seeds", int, "seeds per other clearance"),
+            ("workers", int, "processes for the closed-loop runs")):
+        p.add_argument("--" + dest.replace("_", "-"), dest=dest, type=kind, help=text)
     p.add_argument("--undeclared-noise", action="store_true",
                    help="run the noise case without telling the controllers the sensors' "
                         "noise (by default they are told, and choose their horizon for it)")
@@ -123,40 +96,25 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "10x tighter: per case and controller, the estimated tip error, the "
                         "agreement horizon of the impact sequence and the energy residual "
                         "(study.csv, study.md); costs a second run of every loop")
+    flags = {**add_identify_arguments(p, study=True), **add_controller_arguments(p),
+             **study_flags}
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
-    p.set_defaults(func=cmd_study)
+    add_settings_file_arguments(p)
+    settings_flags(p, flags, shown=SHOWN_FLAGS)
+    p.epilog = ("A study is a file: jointplay control-study STUDY.toml --out DIR (the scene's "
+                "[identify], [control] and [study] tables, or a settings file naming its "
+                "scene; scenes/study_best.toml); DIR/settings.toml reruns it. The flags not "
+                "listed (--identify-hidden, --scheduling, --lambda, ...) are still accepted "
+                "as overrides; " + SETTINGS_HELP + ".")
+    p.set_defaults(func=cmd_study, settings_keys=flags)
     return p
 
 
-def hidden_widths(args: argparse.Namespace) -> tuple[int, ...]:
-    """--identify-hidden, checked as identify checks --hidden."""
-    from jointplay.common import limits as size_limits
-
-    hidden = tuple(int_list(args.identify_hidden, "--identify-hidden",
-                            high=size_limits.MAX_HIDDEN_WIDTH))
-    if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:
-        raise DescriptionError("--identify-hidden", f"gives {len(hidden)} layers; at most "
-                               f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
-    return hidden
-
-
-def lag_settings(args: argparse.Namespace) -> dict[str, int]:
-    """--identify-lags, checked as identify checks --lags."""
-    from jointplay.common import limits as size_limits
-
-    lags = int_list(args.identify_lags, "--identify-lags", 2, high=size_limits.MAX_LAGS)
-    return {"output_lags": lags[0], "input_lags": lags[1]}
-
-
-def window_setting(args: argparse.Namespace) -> int:
-    """--identify-window, within identify's limits for --window."""
-    from jointplay.common import limits as size_limits
-
-    low, high = size_limits.MIN_WINDOW, size_limits.MAX_WINDOW
-    if not low <= args.identify_window <= high:
-        raise DescriptionError("--identify-window", f"must be an integer from {low} to {high}, "
-                               f"got {args.identify_window}")
-    return int(args.identify_window)
+# The flags --help lists (by dest); the others are overrides the settings file documents,
+# each also a --set SECTION.KEY=VALUE.
+SHOWN_FLAGS = ("seeds", "first_seed", "cases", "clearances", "workers", "identify_train",
+               "identify_validation", "identify_test", "identify_duration", "horizon",
+               "verify")
 
 
 @dataclass(frozen=True)
@@ -169,6 +127,9 @@ class StudyPlan:
     scenes: dict[str, Scene]
     nominal: float
     identify_args: dict[str, Any]
+    settings: Settings  # as resolved, flags included: recorded as settings.toml
+    scene_file: Path | None
+    source: Path | None  # the file given: a scene, or a settings file
 
 
 def cmd_study(args: argparse.Namespace) -> int:
@@ -182,15 +143,15 @@ def cmd_study(args: argparse.Namespace) -> int:
     models = identify_models(args, plan)
     # Checked against the first model; each model then fills the defaults (tracked outputs,
     # their scales) from its own training data.
-    resolved = settings_from_args(args, load_narx(models[plan.nominal][0]))
-    settings = settings_from_args(args, None)
+    resolved = controller_settings(plan.settings, load_narx(models[plan.nominal][0]))
+    settings = plan.settings.control
     compile_all(models, settings)
     rows = run_cases(args, plan, models, settings)
     summary = summarise(rows)
     text = "\n".join([
         f"# Controller study: {plan.scene.name}",
         "",
-        f"{args.seeds} training seeds at {plan.nominal * 1e6:g} µm ("
+        f"{plan.settings.study.seeds} training seeds at {plan.nominal * 1e6:g} µm ("
         f"{', '.join(f'{size * 1e6:g} µm: {len(p)}' for size, p in models.items())} usable "
         "models); "
         f"cases: {', '.join(c.name for c in plan.cases)}; controller settings: horizon "
@@ -199,7 +160,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         "",
         summary_table(summary, plan.cases),
         "",
-        *noise_note(rows, args.undeclared_noise),
+        *noise_note(rows, plan.settings.study.undeclared_noise),
         "Goals:",
         "",
         *goal_checks(summary, plan.cases),
@@ -211,8 +172,8 @@ def cmd_study(args: argparse.Namespace) -> int:
         *worse_lines(rows, plan.cases),
         "",
         *identification_lines(models),
-        *(accuracy_lines(rows, plan.cases, check_tolerance(plan.scene)) if args.verify
-          else []),
+        *(accuracy_lines(rows, plan.cases, check_tolerance(plan.scene))
+          if plan.settings.study.verify else []),
         "The \"after settling\" window of each case starts at "
         + ", ".join(sorted({f"{r['settle_s'] * 1e3:.0f} ms" for r in rows}))
         + " (the later of the internal-model controllers' engagement plus their setpoint "
@@ -220,7 +181,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         "",
         f"Wall time {time.perf_counter() - started:.0f} s.",
     ])
-    written = write_study(plan, rows, summary, text, verify=args.verify)
+    written = write_study(plan, rows, summary, text, verify=plan.settings.study.verify)
     if not args.quiet:
         print(text)
         for path in written:
@@ -266,7 +227,8 @@ def noise_note(rows: list[dict[str, Any]], undeclared: bool) -> list[str]:
                 "(--undeclared-noise).", ""]
     horizons = sorted({int(r["horizon"]) for r in noisy})
     lines = ["Noise case: the internal-model controllers were told the sensors' noise and "
-             f"chose horizon {', '.join(map(str, horizons))} (jointplay.neural.noise_tuning)."]
+             f"chose horizon {', '.join(map(str, horizons))} "
+             "(jointplay.neural.control.noise_tuning)."]
     pd = [r for r in rows if r["case"] == "noise" and r["controller"] == "PD"]
     if pd:
         base = pd[0]["rms_acceleration_after"]
@@ -287,59 +249,41 @@ def _span(values: list[float]) -> str:
 
 def study_plan(args: argparse.Namespace) -> StudyPlan:
     """The scene, the cases and the identification settings, every flag checked."""
-    scene = load_control_scene(args.scene, args.quiet)
+    scene, settings, scene_file, given = scene_and_settings(args, args.settings_keys)
+    source = Path(args.scene) if args.scene else None  # never written over
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise DescriptionError("--out", f"{out} exists and is not a folder")
-    study_outputs(out, scene)
-    if args.measurement_noise:
-        raise DescriptionError("--measurement-noise", "control-study's noise case puts its own "
-                               "noise on the measurements and tells the controllers (see "
-                               "--help); run it with --cases noise, or --undeclared-noise to "
-                               "leave them untold; `jointplay control --measurement-noise` "
-                               "runs one model under noise of your choice")
-    contact = contact_setting(args, scene, "--identify-contact-outputs")
-    if args.seeds < 1:
-        raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
-    if args.first_seed < 0:
-        raise DescriptionError("--first-seed", f"must be 0 or more, got {args.first_seed}")
-    names = tuple(c.strip() for c in args.cases.split(",") if c.strip())
-    unknown = [c for c in names if c not in CASES]
-    if unknown or not names:
-        raise DescriptionError("--cases", f"unknown case(s) {unknown}; choose from "
-                               f"{', '.join(CASES)}")
+    study_outputs(out, scene, source)
+    if settings.control.measurement_noise:
+        raise DescriptionError(
+            given.get("control.measurement_noise", "control.measurement_noise"),
+            "control-study's noise case puts its own noise on the measurements and tells the "
+            "controllers (see --help); run it with --cases noise, or --undeclared-noise to "
+            "leave them untold; `jointplay control --measurement-noise` runs one model under "
+            "noise of your choice")
+    config = check_identify_for(settings.identify, scene, given)
+    study = settings.study
     nominal = nominal_clearance(scene)
-    clearances = float_list(args.clearances, "--clearances") if args.clearances else ()
-    counts = trajectory_counts(args)
-    iters = iteration_counts(args.identify_iterations, "--identify-iterations")
-    identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
-                     "duration": args.duration, "one_step_iterations": iters[0],
-                     "multi_step_iterations": iters[1], "scheduling": args.scheduling,
-                     "contact_outputs": contact,
-                     "linear_input_gain": args.linear_input_gain,
-                     "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
-                     "window": window_setting(args),
-                     "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),
-                     "base_fraction": base_fraction_setting(args, "--identify-base-fraction"),
-                     "base_motions": args.base_motions,
-                     "scene_motions": scene_motions_setting(args,
-                                                            "--identify-scene-motions"),
-                     **lag_settings(args),
-                     **operating_range(args, prefix="identify-")}
-    cases = case_list(scene, names, clearances, nominal,
-                      scene.robot.clearance_joints if contact else ())
+    # Every model's identification: the settings' [identify] table but its seed (one per
+    # model) and its workers (a process pool of the study's).
+    identify_args = {k: v for k, v in asdict(config).items() if k not in ("seed", "workers")}
+    cases = case_list(scene, study.cases, study.clearances, nominal,
+                      scene.robot.clearance_joints if config.contact_outputs else ())
     scenes = {c.name: case_scene(scene, c) for c in cases}
-    return StudyPlan(scene, out, cases, scenes, nominal, identify_args)
+    return StudyPlan(scene, out, cases, scenes, nominal, identify_args,
+                     replace(settings, identify=config), scene_file, source)
 
 
-def study_outputs(out: Path, scene: Scene) -> OutputPlan:
+def study_outputs(out: Path, scene: Scene, source: Path | None = None) -> OutputPlan:
     """study.csv, .md, .json and the figures, the model folders under models/, and the
     files read (the scene, its torque table): refused when they meet (exit 2)."""
     from jointplay.cli.args import plan_scene_inputs
 
     plan = OutputPlan()
     plan_scene_inputs(plan, scene)
-    for name in ("study.csv", "study.md", "study.json"):
+    plan.input("scene", source)
+    for name in ("study.csv", "study.md", "study.json", SETTINGS_FILE):
         plan.file("--out", out / name, f"the study's {name}")
     plan.folder("--out", out / "models", "the identified models")
     plan.folder("--out", out, "the figures", pattern="*.png")
@@ -351,11 +295,12 @@ def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, li
     """Usable model folders per clearance (all seeds at the scene's, fewer at the others)."""
     models: dict[float, list[Path]] = {}
     for size in sorted({c.clearance for c in plan.cases}):
-        n = args.seeds if math.isclose(size, plan.nominal, rel_tol=1e-9) else min(
-            args.seeds, args.clearance_seeds)
+        n = plan.settings.study.seeds if math.isclose(size, plan.nominal, rel_tol=1e-9) else min(
+            plan.settings.study.seeds, plan.settings.study.clearance_seeds)
         robot_scene = plan.scenes[next(k.name for k in plan.cases if k.clearance == size)]
         models[size] = ensure_models(robot_scene, plan.out / "models" / f"{size * 1e6:g}um", n,
-                                     plan.identify_args, args.quiet, first=args.first_seed)
+                                     plan.identify_args, args.quiet,
+                                     first=plan.settings.study.first_seed)
     if not models[plan.nominal]:
         raise DescriptionError("--seeds", "no seed gave a usable model; see the reports in "
                                f"{plan.out / 'models'}")
@@ -365,7 +310,7 @@ def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, li
 def compile_all(models: dict[float, list[Path]], settings: ControllerSettings) -> None:
     """Compile every controller once, before the workers fork (they then load it from the
     cache instead of compiling it twice at the same time)."""
-    from jointplay.neural.imc import compile_controller
+    from jointplay.neural.control.imc import compile_controller
 
     for paths in models.values():
         for path in paths:
@@ -383,19 +328,21 @@ def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, lis
     """The baselines once per case, then the internal-model controllers per case and seed
     (bounded by the baselines' divergence limit, measured after the baselines' settling
     window); one row per run."""
+    study = plan.settings.study
     STUDY_JOBS.clear()
     for c in plan.cases:
-        STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None, args.verify))
-    base_rows = pool_map(list(range(len(STUDY_JOBS))), args.workers, args.quiet, "baselines")
+        STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None, study.verify))
+    workers = study.workers
+    base_rows = pool_map(list(range(len(STUDY_JOBS))), workers, args.quiet, "baselines")
     rows = [r for rs in base_rows for r in rs]
     limits = {r["case"]: (r["limit"], r["settle_s"]) for r in rows if "limit" in r}
     start = len(STUDY_JOBS)
     for c in plan.cases:
-        told = settings if args.undeclared_noise else declared(settings, plan.scene, c)
+        told = settings if study.undeclared_noise else declared(settings, plan.scene, c)
         for path in models[c.clearance]:
             STUDY_JOBS.append((c, plan.scenes[c.name], path, told, limits[c.name],
-                               args.verify))
-    model_rows = pool_map(list(range(start, len(STUDY_JOBS))), args.workers, args.quiet,
+                               study.verify))
+    model_rows = pool_map(list(range(start, len(STUDY_JOBS))), workers, args.quiet,
                            "internal-model runs")
     return rows + [r for rs in model_rows for r in rs]
 
@@ -405,7 +352,7 @@ def write_study(plan: StudyPlan, rows: list[dict[str, Any]],
                 verify: bool = False) -> list[Path]:
     """study.csv, study.md, study.json and the plots; the paths written. ``verify`` adds
     the accuracy columns to study.csv."""
-    with all_or_nothing(study_outputs(plan.out, plan.scene)):
+    with all_or_nothing(study_outputs(plan.out, plan.scene, plan.source)):
         return _write_study(plan, rows, summary, text, verify)
 
 
@@ -421,8 +368,9 @@ def _write_study(plan: StudyPlan, rows: list[dict[str, Any]],
     writer.writerows(rows)
     atomic_write_text(out / "study.csv", buf.getvalue())
     atomic_write_text(out / "study.md", text + "\n")
+    atomic_write_text(out / SETTINGS_FILE, settings_toml(plan.settings, plan.scene_file))
     atomic_write_text(out / "study.json", json.dumps(
         {"rows": rows, "summary": {f"{k[0]} / {k[1]}": v for k, v in summary.items()}},
         indent=1, default=float) + "\n")
-    return [out / "study.md", out / "study.csv", out / "study.json",
+    return [out / "study.md", out / "study.csv", out / "study.json", out / SETTINGS_FILE,
             *plot_study(rows, cases=plan.cases, folder=out)]
