@@ -211,7 +211,7 @@ def _unreadable(path: str | Path, err: OSError) -> DescriptionError:
     from jointplay.common.files import describe_os_error
 
     detail = " ".join(describe_os_error(err).split())
-    return DescriptionError("path", f"cannot be read as a results file ({detail}); "
+    return DescriptionError("HDF5", f"cannot be read as a results file ({detail}); "
                             "give a file written by `jointplay simulate --out RUN.h5`",
                             str(path))
 
