@@ -127,9 +127,8 @@ def _load_group(group: Any, name: str, path: str | Path, depth: int) -> LoadedGr
     loaded = LoadedGroup(name, attrs=_attributes(group, name, path))
     for key in group:
         where = f"{name.rstrip('/')}/{shown(key)}"
-        link = group.get(key, getlink=True)
-        if not isinstance(link, h5py.HardLink):
-            raise damaged(path, where, f"is a {type(link).__name__}; a results file holds "
+        if group.id.links.get_info(group._e(key)).type != h5py.h5l.TYPE_HARD:
+            raise damaged(path, where, "is a soft or external link; a results file holds "
                           "no links to elsewhere")
         item = group[key]
         if isinstance(item, h5py.Group):
@@ -144,7 +143,8 @@ def _load_group(group: Any, name: str, path: str | Path, depth: int) -> LoadedGr
 
 
 def _attributes(obj: Any, where: str, path: str | Path) -> dict[str, Any]:
-    return {str(key): obj.attrs[key] for key in obj.attrs if key not in _BOOKKEEPING}
+    attrs = obj.attrs
+    return {str(key): attrs[key] for key in attrs if key not in _BOOKKEEPING}
 
 
 def _dataset(ds: Any, where: str, path: str | Path) -> np.ndarray:
@@ -155,7 +155,8 @@ def _dataset(ds: Any, where: str, path: str | Path) -> np.ndarray:
     if not text and ds.dtype.kind not in "fiub":
         raise damaged(path, where, f"has type {shown(ds.dtype)}, which a results file does "
                       "not use")
-    if ds.is_virtual or ds.external:
+    layout = ds.id.get_create_plist().get_layout()
+    if layout == h5py.h5d.VIRTUAL or (layout == h5py.h5d.CONTIGUOUS and ds.external):
         raise damaged(path, where, "keeps its values outside the file")
     declared = int(np.prod(ds.shape, dtype=object)) * max(int(ds.dtype.itemsize), 1)
     stored = int(ds.id.get_storage_size())
