@@ -224,6 +224,11 @@ class NetcdfGroup:
         return self._group.attrs
 
     @property
+    def h5group(self) -> Any:
+        """The h5py group underneath."""
+        return self._group
+
+    @property
     def dimensions(self) -> dict[str, int]:
         return dict(self._sizes)
 
@@ -384,7 +389,8 @@ def write_result(group: Any, r: SimulationResult, compress: bool = False) -> Non
 
 
 def write_file(fh: Any, r: SimulationResult, compress: bool = False) -> None:
-    """The whole file: root attributes, the result, its ideal counterpart in ``/ideal``."""
+    """The whole file: root attributes, the result, its ideal counterpart in ``/ideal``, and
+    (written through a :class:`NetcdfGroup` with checksums) the digest of it all."""
     from jointplay import __version__
 
     fh.attrs["Conventions"] = CONVENTIONS
@@ -398,6 +404,10 @@ def write_file(fh: Any, r: SimulationResult, compress: bool = False) -> None:
         ideal = fh.create_group("ideal")
         ideal.attrs["comment"] = "the same scene with ideal joints"
         write_result(ideal, r.ideal, compress)
+    if getattr(fh, "checksums", False):  # last: the digest covers everything above
+        from jointplay.results.integrity import stamp
+
+        stamp(fh.h5group)
 
 
 # ------------------------------------------------------------------------------------ reading

@@ -127,14 +127,12 @@ def write_hdf5(result: SimulationResult, path: str | Path, *, compress: bool = F
     described in :mod:`jointplay.results.netcdf`.
     """
     from jointplay.common.files import write_hdf5_in_memory
-    from jointplay.results import integrity, netcdf
+    from jointplay.results import netcdf
 
     path = check_output_path(path)
 
     def build(fh: Any) -> None:
         netcdf.write_file(netcdf.NetcdfGroup(fh, checksums=checksums), result, compress)
-        if checksums:
-            integrity.stamp(fh)
 
     # HDF5 1.10's format: a one-chunk variable needs no chunk index (a file of short runs
     # keeps its size with Fletcher-32), and HDF5 checksums its own headers too.
