@@ -6,7 +6,10 @@ output every 1 ms; the size of a README run) and ``series`` (``--series-t-end`` 
 ``--repeats`` writes of the same result (wall and CPU time) by:
 
 * ``netcdf_h5py_memory``: the netCDF-4/CF layout with h5py dimension scales, built in memory
-  (HDF5 core driver) and written with plain file I/O: what ``jointplay`` does;
+  (HDF5 core driver) and written with plain file I/O, with its checksums (Fletcher-32 on
+  every numeric variable, the SHA-256 digest of the content): what ``jointplay`` does;
+* ``netcdf_h5py_memory_unchecked``: the same without checksums (``checksums=False``: the
+  layout's version 2, as written before checksums existed);
 * ``netcdf_h5netcdf_memory``: the same layout through h5netcdf, in memory;
 * ``netcdf_h5py_disk``: the same layout written by HDF5 straight to the file (no memory
   image): the alternative to the core driver;
@@ -14,9 +17,11 @@ output every 1 ms; the size of a README run) and ``series`` (``--series-t-end`` 
 * ``netcdf_netcdf4_memory``: the same layout through netCDF4-python (the netCDF-C library)
   in memory, when that package is importable (it is not a dependency);
 
-and two ways of reading the file back: ``jointplay.read`` and
-``xarray.open_dataset(...).load()``. Bytes are the file's size; ``peak_image_mb`` the memory
-image's size (the extra memory the core driver needs).
+and two ways of reading the checked and the unchecked file back: ``jointplay.read`` (which
+checks every size, type and shape, and the checksums where the file has them) and
+``xarray.open_dataset(...).load()`` (HDF5 verifies Fletcher-32 where present). Bytes are the
+file's size. A second table gives what the checksums cost: the checked file's write time,
+read time and size over the unchecked one's.
 
 Writes ``results_file.csv`` and ``results_file.md`` into ``--out`` (atomically) and prints
 the Markdown.
@@ -127,6 +132,7 @@ def _netcdf4_memory(result: Any, path: Path) -> None:
 
 WRITERS: dict[str, Callable[[Any, Path], None]] = {
     "netcdf_h5py_memory": write_hdf5,
+    "netcdf_h5py_memory_unchecked": functools.partial(write_hdf5, checksums=False),
     "netcdf_h5netcdf_memory": _h5netcdf_memory,
     "netcdf_h5py_disk": _h5py_disk,
     "legacy_h5py_disk": write_hdf5_v1,
@@ -166,17 +172,34 @@ def measure(name: str, result: Any, repeats: int, folder: Path) -> list[dict[str
         rows.append({"run": name, "samples": result.n_samples, "action": f"write {writer}",
                      "median_wall_s": wall, "median_cpu_s": cpu,
                      "bytes": path.stat().st_size})
-    current = folder / f"{name}_netcdf_h5py_memory.h5"
-    for reader, read in READERS.items():
-        wall, cpu = _medians(functools.partial(read, current), repeats)
-        rows.append({"run": name, "samples": result.n_samples, "action": f"read {reader}",
-                     "median_wall_s": wall, "median_cpu_s": cpu,
-                     "bytes": current.stat().st_size})
+    for kind in ("", "_unchecked"):
+        current = folder / f"{name}_netcdf_h5py_memory{kind}.h5"
+        for reader, read in READERS.items():
+            wall, cpu = _medians(functools.partial(read, current), repeats)
+            rows.append({"run": name, "samples": result.n_samples,
+                         "action": f"read {reader}{kind}", "median_wall_s": wall,
+                         "median_cpu_s": cpu, "bytes": current.stat().st_size})
     base = next(r for r in rows if r["action"] == "write netcdf_h5py_memory")
     for row in rows:
         row["wall_ratio"] = row["median_wall_s"] / base["median_wall_s"]
         row["cpu_ratio"] = row["median_cpu_s"] / base["median_cpu_s"]
     return rows
+
+
+def cost_rows(rows: list[dict[str, Any]]) -> list[str]:
+    """Markdown rows: checked over unchecked, for jointplay's write and both reads."""
+    found = {(r["run"], r["action"]): r for r in rows}
+    lines = []
+    for run in dict.fromkeys(r["run"] for r in rows):
+        for checked, unchecked in (("write netcdf_h5py_memory",
+                                    "write netcdf_h5py_memory_unchecked"),
+                                   ("read jointplay_read", "read jointplay_read_unchecked"),
+                                   ("read xarray_load", "read xarray_load_unchecked")):
+            a, b = found[(run, checked)], found[(run, unchecked)]
+            lines.append(f"| {run} | {checked} | {a['median_wall_s'] / b['median_wall_s']:.2f} "
+                         f"| {a['median_cpu_s'] / b['median_cpu_s']:.2f} | "
+                         f"{a['bytes'] / b['bytes']:.3f} |")
+    return lines
 
 
 def main() -> None:
@@ -210,6 +233,10 @@ def main() -> None:
     md += [f"| {r['run']} | {r['samples']} | {r['action']} | {r['median_wall_s']:.3f} | "
            f"{r['median_cpu_s']:.3f} | {r['bytes'] / 1e6:.2f} | {r['wall_ratio']:.2f} | "
            f"{r['cpu_ratio']:.2f} |" for r in rows]
+    md += ["", "What the checksums cost: the checked file over the unchecked one (ratios of "
+           "median wall and CPU time, and of size)", "",
+           "| run | action | wall ratio | CPU ratio | size ratio |", "|---|---|---:|---:|---:|"]
+    md += cost_rows(rows)
     text = "\n".join(md) + "\n"
     atomic_write_text(args.out / "results_file.md", text)
     print(text)

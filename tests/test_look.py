@@ -143,12 +143,20 @@ def test_compare_command(dry: SimulationResult, tmp_path: Path,
 
 
 def test_tip_difference_on_other_sample_times(dry: SimulationResult) -> None:
-    """A run sampled at other times is interpolated onto the reference's samples."""
+    """Runs at other output steps are compared at the times both share, never through an
+    interpolant, and the same numbers come back with the runs swapped."""
     coarse = make_result(n=101, ideal=False)
+    fine = make_result(n=201, ideal=False)  # every other sample is one of coarse's
+    t, gap = tip_difference(fine, coarse)
+    np.testing.assert_allclose(t, coarse.t, rtol=0.0, atol=1e-15)
+    # The same smooth path at the same instants: equal to rounding of the sample times.
+    assert float(gap.max()) < 1e-12 * float(np.ptp(coarse.tip_position))
+    t_swapped, gap_swapped = tip_difference(coarse, fine)
+    np.testing.assert_array_equal(t_swapped, t)
+    np.testing.assert_array_equal(gap_swapped, gap)
+    # 200 and 101 samples over the same second share only the first and the last instant.
     t, gap = tip_difference(coarse, dry)
-    np.testing.assert_array_equal(t, dry.t)
-    # Linear interpolation of a smooth path sampled every 10 ms: far below its size.
-    assert 0.0 < float(gap.max()) < 1e-2 * float(np.ptp(dry.tip_position))
+    np.testing.assert_array_equal(t, [0.0, 1.0])
 
 
 @pytest.mark.parametrize("argv, says", [

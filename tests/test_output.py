@@ -244,7 +244,7 @@ def test_hdf5_is_cf_netcdf(result: SimulationResult, tmp_path: Path) -> None:
     write_hdf5(result, path)
     with xr.open_dataset(path) as ds:
         assert ds.attrs["Conventions"] == "CF-1.11"
-        assert ds.attrs["format_version"] == 2
+        assert ds.attrs["format_version"] == 3
         assert ds.attrs["model_hash"] == "0123abcd"  # string metadata: attributes of its own
         assert dict(ds.sizes) == {"time": 500, "coordinate": 4, "joint": 2, "axis": 2,
                                   "drive": 4, "parameter": 5, "impact": 6}

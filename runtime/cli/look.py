@@ -81,12 +81,21 @@ def _check_out(folder: str, runs: list[str]) -> tuple[Path, OutputPlan]:
     return path, plan
 
 
+def _read(path: str, argument: str, label: str) -> SimulationResult:
+    """The results file, checked; a file written before checksums existed says so once."""
+    from jointplay.results.look import UNCHECKED_NOTE, read_result_checked
+
+    result, checked = read_result_checked(path, argument)
+    if not checked:
+        print(f"{label}: {UNCHECKED_NOTE}")
+    return result
+
+
 def cmd_plot(args: argparse.Namespace) -> int:
-    from jointplay.results.look import read_result
     from jointplay.results.plots import plot_result
 
     folder, plan = _check_out(args.out, [args.run])
-    result = read_result(args.run, "RUN.h5")
+    result = _read(args.run, "RUN.h5", Path(args.run).name)
     _dense_output(result, Path(args.run).name, args.no_replay)
     with all_or_nothing(plan):  # every figure or none
         make_folder(folder, "--out")
@@ -97,19 +106,13 @@ def cmd_plot(args: argparse.Namespace) -> int:
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
-    from jointplay.results.look import (
-        compare_runs,
-        difference_table,
-        differences,
-        labelled,
-        read_result,
-    )
+    from jointplay.results.look import compare_runs, difference_table, differences, labelled
 
     if len(args.runs) < 2:
         raise DescriptionError("RUN.h5", "compare needs two or more results files; for one "
                                "run use `jointplay plot RUN.h5 --out DIR`")
     folder, plan = _check_out(args.out, args.runs)
-    runs = labelled(args.runs, [read_result(p, f"RUN.h5 #{i + 1}")
+    runs = labelled(args.runs, [_read(p, f"RUN.h5 #{i + 1}", p)
                                 for i, p in enumerate(args.runs)])
     for label, result in runs:
         _dense_output(result, label, args.no_replay)

@@ -125,18 +125,20 @@ def atomic_write_bytes(path: str | Path, data: bytes) -> None:
         fh.write(data)
 
 
-def write_hdf5_in_memory(path: str | Path, build: Callable[[Any], None]) -> None:
+def write_hdf5_in_memory(path: str | Path, build: Callable[[Any], None], *,
+                         libver: Any = None) -> None:
     """Build an HDF5 file in memory (the HDF5 core driver) with ``build(h5py_file)``, then
     write its bytes atomically with plain file I/O.
 
     A full disk, a quota or an I/O error then surfaces as an ``OSError`` of an ordinary
     ``write`` (a :class:`FileError` naming ``path``), never inside HDF5, whose failures while
-    flushing to a full disk happen in destructors and can crash the process.
+    flushing to a full disk happen in destructors and can crash the process. ``libver`` is
+    h5py's bound on the file format's version (None: the library's default, the oldest).
     """
     import h5py
 
     fh = h5py.File(f"jointplay-{id(build)}.h5", "w", driver="core", backing_store=False,
-                   track_order=True)
+                   track_order=True, libver=libver)
     try:
         build(fh)
         fh.flush()

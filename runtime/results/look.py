@@ -22,21 +22,29 @@ from jointplay.results.records import SimulationResult
 
 def read_result(path: str | Path, argument: str = "RUN") -> SimulationResult:
     """A results file as the :class:`SimulationResult` that was written; a file that is
-    missing or not a results file is refused naming ``argument`` and the path."""
-    from jointplay.results.write import read
+    missing, not a results file or fails its checks is refused naming ``argument`` and the
+    path."""
+    return read_result_checked(path, argument)[0]
 
-    path = Path(path)
-    if not path.is_file():
-        raise DescriptionError(argument, f"{path}: no such file (give a results file written "
-                               "by `jointplay simulate --out RUN.h5`)")
+
+def read_result_checked(path: str | Path, argument: str = "RUN"
+                        ) -> tuple[SimulationResult, bool]:
+    """:func:`read_result` and whether the file's checksums were verified (False: a file
+    written before results files carried them)."""
+    from jointplay.results.write import read_checked
+
     try:
-        return read(path)
+        return read_checked(path)
     except DescriptionError as err:
+        if err.field == "path":  # not a file at all: missing, a folder, a FIFO, a device
+            raise DescriptionError(argument, f"{path}: {err.message}") from None
         raise DescriptionError(argument, f"{path} is not a jointplay results file "
-                               f"({err.message})") from None
-    except (OSError, KeyError, ValueError) as err:
-        raise DescriptionError(argument, f"{path} is not a jointplay results file that can be "
-                               f"read ({type(err).__name__}: {err})") from None
+                               f"({err.field}: {err.message})") from None
+
+
+UNCHECKED_NOTE = ("written before results files carried checksums: its numbers are read "
+                  "unchecked (write it again with `jointplay simulate --out` to have them "
+                  "checked)")
 
 
 # ------------------------------------------------------------------------------- differences
@@ -53,24 +61,41 @@ class RunDifference:
     peak_force: float  # N, largest located peak over all joints (NaN: not located)
     max_approach_speed: float  # m/s, largest onset speed (NaN without impacts)
     max_film_force: float  # N, largest film force over the output samples (NaN: no lubricant)
-    max_tip_difference: float  # m, largest |tip - tip of the first run| over the common span
+    max_tip_difference: float  # m, largest |tip - tip of the first run| at shared times
     max_tip_difference_time: float  # s
+    compared_samples: int  # output times shared with the first run (where tips are compared)
     final_energy: float  # J, total mechanical energy at the end
     max_balance_error: float  # J, largest |energy balance residual|
 
 
+def common_samples(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Indices ``(ia, ib)`` of the output times ``a`` and ``b`` share (equal to a millionth of
+    the finer spacing: the same instant written by two output grids), in time order."""
+    if a.size == 0 or b.size == 0:
+        return np.zeros(0, dtype=int), np.zeros(0, dtype=int)
+    spacing = min((float(np.min(np.diff(t))) for t in (a, b) if t.size > 1), default=1.0)
+    tolerance = 1e-6 * spacing
+    nearest = np.clip(np.searchsorted(b, a), 1, max(b.size - 1, 1))
+    left = np.clip(nearest - 1, 0, b.size - 1)
+    right = np.clip(nearest, 0, b.size - 1)
+    ib = np.where(np.abs(b[left] - a) <= np.abs(b[right] - a), left, right)
+    keep = np.abs(b[ib] - a) <= tolerance
+    return np.flatnonzero(keep), ib[keep]
+
+
 def tip_difference(run: SimulationResult, reference: SimulationResult
                    ) -> tuple[np.ndarray, np.ndarray]:
-    """Times and |tip(run) - tip(reference)| (m) on the reference's samples inside both runs;
-    ``run``'s tip is interpolated linearly where its samples differ from the reference's."""
-    t = reference.t
-    inside = (t >= run.t[0]) & (t <= run.t[-1])
-    t = t[inside]
-    if run.t.shape == reference.t.shape and np.array_equal(run.t, reference.t):
-        tip = run.tip_position[inside]
-    else:
-        tip = np.stack([np.interp(t, run.t, run.tip_position[:, c]) for c in range(2)], axis=1)
-    return t, np.hypot(*(tip - reference.tip_position[inside]).T)
+    """Times and |tip(run) - tip(reference)| (m) at the output times both runs share.
+
+    Nothing is interpolated: a difference between samples of one run and an interpolant of
+    the other would be the interpolant's error, not the runs'. Symmetric: swapping the runs
+    gives the same times and the same numbers. Runs at output steps that are multiples of
+    one another share every sample of the coarser.
+    """
+    i_run, i_ref = common_samples(run.t, reference.t)
+    t = 0.5 * (run.t[i_run] + reference.t[i_ref])
+    gap = np.hypot(*(run.tip_position[i_run] - reference.tip_position[i_ref]).T)
+    return t, gap
 
 
 def differences(runs: Sequence[tuple[str, SimulationResult]]) -> list[RunDifference]:
@@ -95,6 +120,7 @@ def differences(runs: Sequence[tuple[str, SimulationResult]]) -> list[RunDiffere
             max_approach_speed=max(speeds) if speeds else math.nan, max_film_force=film,
             max_tip_difference=float(gap[k]) if gap.size else math.nan,
             max_tip_difference_time=float(t[k]) if gap.size else math.nan,
+            compared_samples=int(gap.size),
             final_energy=float(run.energy["total"][-1]),
             max_balance_error=float(np.max(np.abs(balance)))))
     return rows
@@ -107,7 +133,8 @@ def _number(value: float, unit: str, digits: int = 4) -> str:
 def difference_table(rows: Sequence[RunDifference]) -> str:
     """The comparison as an aligned text table, with a line on what it compares."""
     header = ("run", "integrator", "impacts", "dry peak force", "max approach",
-              "film max (sampled)", "max tip diff", "at", "final energy", "max |balance|")
+              "film max (sampled)", "max tip diff", "at", "samples compared", "final energy",
+              "max |balance|")
     lines = [header]
     for i, r in enumerate(rows):
         first = i == 0
@@ -117,14 +144,16 @@ def difference_table(rows: Sequence[RunDifference]) -> str:
                       else "no film",
                       "reference" if first else _number(r.max_tip_difference, "m", 3),
                       "" if first else _number(r.max_tip_difference_time, "s"),
+                      "" if first else str(r.compared_samples),
                       _number(r.final_energy, "J", 6), _number(r.max_balance_error, "J", 3)))
     widths = [max(len(line[i]) for line in lines) for i in range(len(header))]
     text = ["  ".join(cell.ljust(w) for cell, w in zip(line, widths, strict=True)).rstrip()
             for line in lines]
     text.insert(1, "  ".join("-" * w for w in widths))
-    text.append(f"tip differences against {rows[0].label}, on its samples over the time both "
-                "runs cover; dry peak forces located on the dense output (n/a: not located, "
-                "see the impact table); film forces the largest output sample")
+    text.append(f"tip differences against {rows[0].label} at the output times both runs "
+                "share (never interpolated); dry peak forces located on the dense output "
+                "(n/a: not located, see the impact table); film forces the largest output "
+                "sample")
     return "\n".join(text)
 
 
@@ -312,5 +341,6 @@ def labelled(paths: Sequence[str | Path], results: Sequence[SimulationResult]
     return list(zip(_labels(paths), results, strict=True))
 
 
-__all__: list[Any] = ["RunDifference", "compare_runs", "difference_table", "differences",
-                      "labelled", "read_result", "tip_difference"]
+__all__: list[Any] = ["UNCHECKED_NOTE", "RunDifference", "compare_runs", "difference_table",
+                      "differences", "labelled", "read_result", "read_result_checked",
+                      "tip_difference"]

@@ -4,7 +4,8 @@ Any netCDF reader sees named dimensions, coordinate variables and a ``units`` (U
 ``long_name`` on every numeric variable: ``xarray.open_dataset("run.h5")``, ncdump, Panoply,
 MATLAB's ``ncread``. :func:`read_result` gives back the very result that was written.
 
-Layout (``format = "jointplay-result"``, ``format_version = 2``):
+Layout (``format = "jointplay-result"``, ``format_version = 3``; version 2 is the same layout
+without checksums, see :mod:`jointplay.results.integrity`):
 
 * dimensions ``time`` (output samples), ``coordinate`` (the joint-angle coordinates q2, q3,
   ...), ``joint`` (the clearance joints, coordinate variable: their 1-based numbers),
@@ -38,7 +39,9 @@ import numpy as np
 from jointplay.results.records import PHASE_FIELDS, Impacts, SimulationResult, eccentricity_columns
 
 FORMAT = "jointplay-result"
-FORMAT_VERSION = 2
+FORMAT_VERSION = 3
+UNCHECKED_VERSION = 2
+"""The same layout written without checksums (before they existed, or ``checksums=False``)."""
 CONVENTIONS = "CF-1.11"
 # gzip level 1 with shuffle, only where it pays (see write_hdf5's ``compress``).
 _COMPRESS_MIN_BYTES = 1 << 14
@@ -104,6 +107,8 @@ class OptionalGroup(NamedTuple):
 
     write: Callable[[Any, Any], None]  # (new group, value)
     read: Callable[[Any], Any]  # (group) -> value
+    # (group read into memory, file path): raises if the group cannot be read (see checks.py)
+    check: Callable[[Any, Any], None] | None = None
 
 
 def _write_wear(group: Any, wear: Any) -> None:
@@ -173,9 +178,21 @@ def _read_accuracy(group: Any) -> Any:
                                                    dtype=bool))
 
 
+def _check_wear(group: Any, path: Any) -> None:
+    from jointplay.results.checks import check_wear
+
+    check_wear(group, path)
+
+
+def _check_accuracy(group: Any, path: Any) -> None:
+    from jointplay.results.checks import check_accuracy
+
+    check_accuracy(group, path)
+
+
 OPTIONAL_GROUPS: dict[str, OptionalGroup] = {
-    "wear": OptionalGroup(_write_wear, _read_wear),
-    "accuracy": OptionalGroup(_write_accuracy, _read_accuracy),
+    "wear": OptionalGroup(_write_wear, _read_wear, _check_wear),
+    "accuracy": OptionalGroup(_write_accuracy, _read_accuracy, _check_accuracy),
 }
 """Result attribute -> how its value is stored in the group of that name (None: no group)."""
 
@@ -193,8 +210,11 @@ class NetcdfGroup:
     ``benchmarks/results_file.py``); the tests read these files with xarray's h5netcdf engine.
     """
 
-    def __init__(self, h5group: Any, first_dimid: int = 0) -> None:
+    def __init__(self, h5group: Any, first_dimid: int = 0, checksums: bool = True) -> None:
         self._group = h5group
+        # Fletcher-32 on every numeric variable (chunked, as HDF5 filters require); HDF5
+        # cannot filter variable-length strings: the file's digest covers those.
+        self.checksums = checksums
         self._sizes: dict[str, int] = {}
         self._scales: dict[str, Any] = {}
         self._next_dimid = first_dimid
@@ -202,6 +222,11 @@ class NetcdfGroup:
     @property
     def attrs(self) -> Any:
         return self._group.attrs
+
+    @property
+    def h5group(self) -> Any:
+        """The h5py group underneath."""
+        return self._group
 
     @property
     def dimensions(self) -> dict[str, int]:
@@ -217,6 +242,8 @@ class NetcdfGroup:
         expected = tuple(self._sizes[d] for d in dims)
         if values.shape != expected:  # a layout error, never a user's: say exactly what
             raise ValueError(f"variable {name}: shape {values.shape} != {dims} {expected}")
+        if self.checksums and values.dtype.kind != "O":
+            options = {**options, "fletcher32": True}
         ds = self._group.create_dataset(name, data=values, dtype=dtype, **options)
         if dims == (name,):  # a coordinate variable: the dimension itself
             ds.make_scale(name)
@@ -229,7 +256,8 @@ class NetcdfGroup:
         return ds
 
     def create_group(self, name: str) -> NetcdfGroup:
-        return NetcdfGroup(self._group.create_group(name, track_order=True), self._next_dimid)
+        return NetcdfGroup(self._group.create_group(name, track_order=True), self._next_dimid,
+                           self.checksums)
 
 
 class StoredGroup:
@@ -361,19 +389,25 @@ def write_result(group: Any, r: SimulationResult, compress: bool = False) -> Non
 
 
 def write_file(fh: Any, r: SimulationResult, compress: bool = False) -> None:
-    """The whole file: root attributes, the result, its ideal counterpart in ``/ideal``."""
+    """The whole file: root attributes, the result, its ideal counterpart in ``/ideal``, and
+    (written through a :class:`NetcdfGroup` with checksums) the digest of it all."""
     from jointplay import __version__
 
     fh.attrs["Conventions"] = CONVENTIONS
     fh.attrs["title"] = f"jointplay simulation of scene {r.scene_name!r}"
     fh.attrs["source"] = f"jointplay {__version__}"
     fh.attrs["format"] = FORMAT
-    fh.attrs["format_version"] = FORMAT_VERSION
+    fh.attrs["format_version"] = (FORMAT_VERSION if getattr(fh, "checksums", False)
+                                  else UNCHECKED_VERSION)
     write_result(fh, r, compress)
     if r.ideal is not None:
         ideal = fh.create_group("ideal")
         ideal.attrs["comment"] = "the same scene with ideal joints"
         write_result(ideal, r.ideal, compress)
+    if getattr(fh, "checksums", False):  # last: the digest covers everything above
+        from jointplay.results.integrity import stamp
+
+        stamp(fh.h5group)
 
 
 # ------------------------------------------------------------------------------------ reading

@@ -115,50 +115,105 @@ def _same_file(a: Path, b: Path) -> bool:
 # --------------------------------------------------------------------------------------- HDF5
 
 
-def write_hdf5(result: SimulationResult, path: str | Path, *, compress: bool = False) -> None:
+def write_hdf5(result: SimulationResult, path: str | Path, *, compress: bool = False,
+               checksums: bool = True) -> None:
     """Write ``result`` (and its ideal counterpart) as a netCDF-4/CF file, atomically.
 
     The file is built in memory and written with plain file I/O (see
     :func:`~jointplay.common.files.write_hdf5_in_memory`): a full disk is a one-line
     :class:`~jointplay.common.errors.FileError` and leaves nothing behind. ``compress`` gzips
-    the large variables: smaller files, slower writes; readers need nothing. The layout is
+    the large variables: smaller files, slower writes; readers need nothing. ``checksums``
+    (the default) stores every numeric variable with HDF5's Fletcher-32 and the file's
+    SHA-256 digest (:mod:`jointplay.results.integrity`); without them the file is the
+    unchecked version 2 of the layout, as written before checksums existed. The layout is
     described in :mod:`jointplay.results.netcdf`.
     """
     from jointplay.common.files import write_hdf5_in_memory
     from jointplay.results import netcdf
 
     path = check_output_path(path)
-    write_hdf5_in_memory(path, lambda fh: netcdf.write_file(netcdf.NetcdfGroup(fh), result,
-                                                            compress))
+
+    def build(fh: Any) -> None:
+        netcdf.write_file(netcdf.NetcdfGroup(fh, checksums=checksums), result, compress)
+
+    # HDF5 1.10's format: a one-chunk variable needs no chunk index (a file of short runs
+    # keeps its size with Fletcher-32), and HDF5 checksums its own headers too.
+    write_hdf5_in_memory(path, build, libver=_CHECKED_LIBVER if checksums else None)
+
+
+_CHECKED_LIBVER = ("v110", "v110")
 
 
 def read(path: str | Path) -> SimulationResult:
     """The :class:`SimulationResult` stored in a results file by ``jointplay simulate --out``
     (or :func:`write_hdf5`): equal, field by field, to the one that was written.
 
-    Files of the earlier layout (``format_version`` 1) are read as well.
+    Every check of :func:`read_checked` is made first; a file that fails one is refused with
+    a :class:`~jointplay.common.errors.DescriptionError` naming the file and the part at
+    fault. Files of the earlier layouts (``format_version`` 1 and 2, without checksums) are
+    read as well.
+    """
+    return read_checked(path)[0]
+
+
+def read_checked(path: str | Path) -> tuple[SimulationResult, bool]:
+    """The result in ``path`` and whether its checksums were verified (False: a file
+    written before results files carried them, read unchecked).
+
+    Before anything is trusted: ``path`` must be a regular, non-empty file (nothing else is
+    opened: a FIFO, a device); every variable's stored size must back its declared shape;
+    the digest and HDF5's Fletcher-32 of every chunk must match; every variable must have
+    the type and shape its dimensions give, every attribute the form the layout gives it.
     """
     import h5py
 
-    from jointplay.results import netcdf
+    from jointplay.results import checks, integrity, netcdf
 
-    path = Path(path)
+    integrity.regular_file(path)
     try:
         with h5py.File(path, "r") as fh:
-            fmt, version = _text(fh.attrs.get("format")), fh.attrs.get("format_version")
-            if fmt == FORMAT and version == 1:
-                ideal = _read_group(fh["ideal"]) if "ideal" in fh else None
-                return _read_group(fh, ideal)
-            if fmt != FORMAT or version != netcdf.FORMAT_VERSION:
-                raise DescriptionError("format", f"expected {FORMAT} version "
-                                       f"{netcdf.FORMAT_VERSION}, found {fmt!r} version "
-                                       f"{version!r}", str(path))
-            return netcdf.read_file(netcdf.StoredGroup(fh))
+            root = integrity.load(fh, path)
+    except DescriptionError:
+        raise
     except OSError as err:
-        from jointplay.common.files import describe_os_error
+        raise _unreadable(path, err) from None
+    except _DAMAGE as err:
+        raise integrity.damaged(path, "/", f"{type(err).__name__}: {err}") from None
+    checked = integrity.verify(root, path)
+    fmt, version = _text(root.attrs.get("format")), root.attrs.get("format_version")
+    known = (1, netcdf.UNCHECKED_VERSION, netcdf.FORMAT_VERSION)
+    if fmt != FORMAT or not isinstance(version, int | np.integer) or version not in known:
+        raise DescriptionError("format", f"expected {FORMAT} version {netcdf.FORMAT_VERSION} "
+                               f"(or 1, 2), found {integrity.shown(fmt)} version "
+                               f"{integrity.shown(version)}", str(path))
+    if version == netcdf.FORMAT_VERSION and not checked:
+        raise integrity.damaged(path, integrity.DIGEST_ATTRIBUTE, "missing: a version 3 file "
+                                "always carries its checksum")
+    try:
+        if version == 1:
+            ideal = _read_group(root["ideal"]) if "ideal" in root.groups else None
+            return _read_group(root, ideal), checked
+        for group in (root, *([root.groups["ideal"]] if "ideal" in root.groups else [])):
+            checks.check_result_group(group, path)
+        return netcdf.read_file(root), checked
+    except DescriptionError:
+        raise
+    except _DAMAGE as err:  # what the checks above do not foresee still reads as damage
+        raise integrity.damaged(path, "/", f"{type(err).__name__}: {err}") from None
 
-        raise DescriptionError("path", f"cannot read a results file ({describe_os_error(err)})",
-                               str(path)) from None
+
+# What a damaged file can make h5py, numpy or json raise while it is read.
+_DAMAGE = (KeyError, ValueError, TypeError, IndexError, AttributeError, OverflowError,
+           UnicodeError, RuntimeError, MemoryError)
+
+
+def _unreadable(path: str | Path, err: OSError) -> DescriptionError:
+    from jointplay.common.files import describe_os_error
+
+    detail = " ".join(describe_os_error(err).split())
+    return DescriptionError("HDF5", f"cannot be read as a results file ({detail}); "
+                            "give a file written by `jointplay simulate --out RUN.h5`",
+                            str(path))
 
 
 read_hdf5 = read

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -158,19 +159,25 @@ def replay(result: SimulationResult) -> tuple[DenseSolution | None, str]:
     """The dense output of a result read from a file, by running its scene again.
 
     The file keeps the scene text, the run settings, the parameter vector and the model's
-    input hash; the run is repeated with them and used only if the model is the one that
-    made the file and every sample matches the file's (to ``REPLAY_MATCH`` of each state's
-    scale). Returns the solution, or None and why not, in a few words.
+    input hash. Before anything is compiled or run, the settings must pass the limits every
+    run passes and give exactly the file's output times (a file claiming ``t_end = 1e5`` over
+    50 ms of samples is not run for a day), and the scene's robot must hash to the model that
+    made the file. The run is then repeated and used only if every sample matches the file's
+    (to ``REPLAY_MATCH`` of each state's scale; a NaN anywhere is a mismatch). Returns the
+    solution, or None and why not, in a few words.
     """
     import tomllib
 
-    from jointplay.common.errors import DescriptionError
+    from jointplay.common.errors import DescriptionError, JointplayError
     from jointplay.scene.definition import ADAPTIVE, scene_from_dict
     from jointplay.sim import load_scene_model, simulate
 
     meta = result.metadata
     if result.integrator not in ADAPTIVE:
         return None, f"the fixed-step {result.integrator} method has no dense output"
+    state = np.hstack([result.q, result.u])
+    if state.size == 0 or not np.all(np.isfinite(state)):
+        return None, "the file's samples hold NaN or infinite values"
     text = meta.get("scene")
     if not isinstance(text, str) or not text.strip():
         return None, "the file keeps no scene text to run again"
@@ -183,23 +190,51 @@ def replay(result: SimulationResult) -> tuple[DenseSolution | None, str]:
         settings = meta.get("run")
         if isinstance(settings, dict):
             scene = scene.with_run(**settings)
-    except (tomllib.TOMLDecodeError, DescriptionError, OSError, TypeError) as err:
-        return None, f"its scene cannot be read again ({err})"
-    model = load_scene_model(scene)
-    if model.layout.input_hash != meta.get("model_input_hash"):
+    except (tomllib.TOMLDecodeError, DescriptionError, OSError, TypeError,
+            ValueError) as err:
+        return None, f"its scene cannot be read again ({' '.join(str(err).split())[:200]})"
+    why = _settings_disagree(scene.run, result.t)
+    if why:
+        return None, why
+    if _input_hash(scene) != meta.get("model_input_hash"):
         return None, "the model its scene builds now is not the one that made the file"
+    model = load_scene_model(scene)
     if len(result.parameters) != len(model.parameters):
         return None, "the file's parameters do not fit the model"
-    again = simulate(scene, model=model, parameters=result.parameters.tolist())
-    state, replayed = np.hstack([result.q, result.u]), np.hstack([again.q, again.u])
+    try:
+        again = simulate(scene, model=model, parameters=result.parameters.tolist())
+    except JointplayError as err:
+        return None, f"running its scene again fails ({str(err).splitlines()[0][:200]})"
+    replayed = np.hstack([again.q, again.u])
     if state.shape != replayed.shape:
         return None, "running its scene again gives other output times"
     scale = np.max(np.abs(state), axis=0) + np.finfo(float).tiny
     apart = float(np.max(np.abs(replayed - state) / scale))
-    if apart > REPLAY_MATCH:
+    if not apart <= REPLAY_MATCH:  # NaN included
         return None, (f"running its scene again does not reproduce the file (apart by "
                       f"{apart:.2g} of the states' scale)")
     sol = again.sol
     sol.accuracy = (f"its scene run again, every sample matching the file's to {apart:.2g} "
                     f"of the states' scale: {sol.accuracy}")
     return sol, f"dense output of the {sol.method} run, its scene run again"
+
+
+def _settings_disagree(run: Any, t: np.ndarray) -> str | None:
+    """Why the run settings (already checked against the limits) cannot have made the
+    output times ``t``, or None: a replay never runs longer than the file's own run."""
+    expected = run.n_outputs + 1
+    last = float(t[-1]) if t.size else float("nan")
+    if t.size != expected or not np.isclose(last, run.t_end, rtol=1e-9, atol=0.0):
+        return (f"its settings (t_end = {run.t_end:g} s, output_step = {run.output_step:g} s: "
+                f"{expected} samples) do not give the file's {t.size} samples up to "
+                f"{last:g} s; not run again")
+    return None
+
+
+def _input_hash(scene: Any) -> str:
+    """The input hash of the model the scene's robot needs, found without compiling it."""
+    from jointplay.store.formulation import formulation_for
+    from jointplay.store.stamp import provenance
+
+    structure = scene.robot.structure()
+    return str(provenance(structure.as_dict(), formulation_for(structure))["input_hash"])
