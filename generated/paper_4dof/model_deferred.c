@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+31f91bdafafe, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+f9f9f969bc7a, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 064671dc67c4277a4411e4f4195ef395da1273e01af9fc6f4e48b16a8240b9c5
+ * input hash: df47f33855f1869f2982a497f6717424870174f4ae527b3380aa9d6fb9d8fdaa
  * The deferred part of this model: compiled on the first call that needs it,
  * linked against the library of model.c. Functions, in CasADi's calling
  * convention (their slots are forward_dynamics' and its Jacobian's):
