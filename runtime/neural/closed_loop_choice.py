@@ -17,8 +17,13 @@ other amplitudes, rates and time shifts (:func:`scene_family_motions`); the cont
 with the default settings (:class:`jointplay.neural.imc_settings.ControllerSettings`) and its
 step through CasADi (the same law as the compiled step, which is not built for each
 candidate). The score of a candidate is the geometric mean over the runs of its error
-divided by the linear base's (alpha = 0); a run that diverges scores infinity. Ties go to the
-smaller weight: the network has to earn its place.
+divided by the linear base's (alpha = 0); a run that diverges scores infinity. The linear
+base is kept unless another candidate earns its place: lower error than the base's on every
+run, and a score at most 1 - :data:`MARGIN`. A smaller difference is within what moves
+between motions of one family (the held-out scene then decides as often against the
+network as for it), and the network would only add cost and risk to the controller.
+Among the candidates that earn it, the lowest score wins; ties go to the twin, then to the
+smaller weight.
 """
 
 from __future__ import annotations
@@ -34,6 +39,9 @@ import numpy as np
 from jointplay.neural.narx import Narx
 
 TWIN = "ARX twin"  # the candidate without scheduling signals
+# A candidate replaces the linear base only with a score at most 1 - MARGIN (and a lower
+# error on every run): the 2 % of the controller's goal against its linear base.
+MARGIN = 0.02
 
 
 @dataclass(frozen=True)
@@ -48,17 +56,34 @@ class ClosedLoopChoice:
     settle_s: float  # the "after settling" window's start, s (the latest over the runs)
     seconds: float
     motions: str = "validation runs"  # or "scene family" (scene_family_motions)
+    margin: float = MARGIN  # what a candidate's score must beat the base's 1 by
 
     def summary(self) -> dict[str, Any]:
         return {"criterion": "RMS end-effector acceleration error after settling, in closed "
                              "loop on the validation runs' motions (geometric mean of the "
-                             "ratio to the linear base)",
-                "chosen": self.chosen, "alpha": self.alpha,
+                             "ratio to the linear base; another candidate replaces the base "
+                             "only below 1 - margin and better on every run)",
+                "chosen": self.chosen, "alpha": self.alpha, "margin": self.margin,
+                "best_other": self.best_other(),
                 "score_by_candidate": {k: _finite(v) for k, v in self.score.items()},
                 "rms_acceleration_after": {k: [_finite(x) for x in v]
                                            for k, v in self.rms.items()},
                 "runs": self.runs, "motions": self.motions, "settle_s": self.settle_s,
                 "seconds": self.seconds}
+
+
+    def best_other(self) -> str | None:
+        """The best-scoring candidate other than the linear base (None: there is none)."""
+        others = {k: v for k, v in self.score.items() if k != label(0.0)}
+        return min(others, key=lambda k: others[k]) if others else None
+
+
+def earns_its_place(ratios: Sequence[float], margin: float = MARGIN) -> bool:
+    """Whether a candidate with these per-run error ratios to the linear base replaces it:
+    better on every run, and by at least ``margin`` in the geometric mean."""
+    if not ratios or not all(math.isfinite(r) and r > 0 for r in ratios):
+        return False
+    return all(r < 1 for r in ratios) and math.exp(float(np.mean(np.log(ratios)))) <= 1 - margin
 
 
 def _finite(value: float) -> float | None:
@@ -160,9 +185,14 @@ def choose_in_closed_loop(network: Narx, base: Narx, twin: Narx | None,
     base_log = mean_log.get(label(0.0), math.inf)
     score = {name: (math.exp(v - base_log) if math.isfinite(v) and math.isfinite(base_log)
                     else math.inf) for name, v in mean_log.items()}
-    # Ties go to the simpler model: the twin, then the smaller weight.
+    # The base unless another earns its place; among those, ties go to the simpler model:
+    # the twin, then the smaller weight.
     order = list(candidates)
-    chosen = min(order, key=lambda n: (mean_log[n], order.index(n)))
+    base_rms = rms.get(label(0.0), [])
+    earned = [n for n in order if n != label(0.0) and base_rms and earns_its_place(
+        [v / b if b > 0 else math.inf for v, b in zip(rms[n], base_rms, strict=True)])]
+    chosen = min(earned, key=lambda n: (mean_log[n], order.index(n))) if earned \
+        else label(0.0)
     alpha = 0.0 if chosen == TWIN else float(chosen.split("=")[1])
     return candidates[chosen], ClosedLoopChoice(
         chosen, alpha, score, rms, [d for d, _ in motions], round(settle_latest, 9),
@@ -176,5 +206,5 @@ def _mean_log(values: Sequence[float]) -> float:
     return float(np.mean(np.log(values)))
 
 
-__all__ = ["SCENE_FAMILY_MOTIONS", "TWIN", "ClosedLoopChoice", "choose_in_closed_loop", "label",
-           "scene_family_motions", "validation_motions"]
+__all__ = ["MARGIN", "SCENE_FAMILY_MOTIONS", "TWIN", "ClosedLoopChoice", "choose_in_closed_loop",
+           "earns_its_place", "label", "scene_family_motions", "validation_motions"]
