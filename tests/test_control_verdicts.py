@@ -226,3 +226,48 @@ def test_the_recommended_controller_is_the_simplest_within_the_tie_margin() -> N
     advice = recommend_from_runs(metrics)
     assert advice is not None and advice.controller == "neural IMC"
     assert recommend_from_runs({"open loop": row(1.0)}) is None
+
+
+@pytest.mark.slow
+def test_a_detuned_controller_warns_and_the_tuned_one_does_not() -> None:
+    """On the paper scene the inner loop's PD is no worse than the open loop where it can act
+    (its whole-run figures include the journals' release, which it cannot prevent), so no
+    line; the same PD with a derivative gain above the chatter bound (25 N m s/rad on joint
+    2: docs/control.md) rings and is named."""
+    from jointplay.neural.comparison import compare
+    from jointplay.neural.imc import ControllerSettings
+    from jointplay.neural.study_runs import _dummy_model
+    from jointplay.scene.definition import default_scene
+
+    scene = default_scene()
+    scene = scene.with_run(t_end=0.6)
+    model = _dummy_model(scene)
+    tuned = compare(scene, model, ControllerSettings(), controllers=("open loop", "PD"),
+                    analyse=False)
+    assert worse_lines(tuned.metrics) == []
+    detuned = compare(scene, model, ControllerSettings(), controllers=("open loop", "PD"),
+                      analyse=False, pd_kd=(25.0, 5.0))
+    lines = worse_lines(detuned.metrics)
+    assert len(lines) == 1 and lines[0].startswith("PD is worse than no control (open loop)")
+    assert "RMS |Δa| after the transient" in lines[0]
+
+
+def test_a_bounded_run_is_not_warned_about_for_its_linearisation_alone() -> None:
+    """The linearisation takes the model as its own plant: above 1 it is reported, and warned
+    about only with the run's own evidence (the guard acting, or a larger tip error than the
+    open loop's from engagement on)."""
+    from jointplay.neural.comparison import verdict
+
+    n = 50
+    run = Run("neural IMC", np.arange(n) * 1e-3, np.zeros((n, 10)), np.zeros((n, 2)),
+              np.zeros((n, 2)), 0, 0.0)
+    base = {"max_position_engaged": 1e-4}
+    comparison = SimpleNamespace(
+        metrics={"open loop": base, "neural IMC": {"max_position_engaged": 5e-5}},
+        limit=4e-4, nominal_radius={"neural IMC": 1.0013},
+        local_radius={"neural IMC": np.array([1.0014, 1.0015])})
+    text, warn = verdict("neural IMC", run, comparison)  # type: ignore[arg-type]
+    assert not warn and "unstable (spectral radius 1.0013)" in text
+    comparison.metrics["neural IMC"] = {"max_position_engaged": 1.5e-4}
+    text, warn = verdict("neural IMC", run, comparison)  # type: ignore[arg-type]
+    assert warn and "exceeds the open loop's by more than 1%" in text

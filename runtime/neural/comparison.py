@@ -381,7 +381,9 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
                    f"{MARGINAL:g} of 1: an integrating mode the tracked outputs do not see; "
                    "undecided)")
         else:
-            warn = True
+            # Supporting evidence, not the verdict: the linearisation takes the model as its
+            # own plant. It warns when the loop that ran needed the guard or ran away from
+            # the open loop (above); a bounded run without either is said, not warned about.
             lin = (f"nominal linearisation (its model in charge) unstable (spectral radius "
                    f"{nominal:.4f})")
         if local is not None and local.size:
