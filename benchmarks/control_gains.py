@@ -24,11 +24,11 @@ import h5py
 import numpy as np
 
 from jointplay.common.files import atomic_write_text
-from jointplay.neural.control import load_twin
-from jointplay.neural.imc_settings import ControllerSettings, resolve_settings
-from jointplay.neural.imc_step import _tracking_matrix
-from jointplay.neural.internal_model import _rollout, horizon_gain
-from jointplay.neural.narx import Narx, load_narx
+from jointplay.neural.control.imc_settings import ControllerSettings, resolve_settings
+from jointplay.neural.control.imc_step import _tracking_matrix
+from jointplay.neural.control.internal_model import _rollout, horizon_gain
+from jointplay.neural.model.narx import Narx, load_narx
+from jointplay.neural.study.control_run import load_twin
 from jointplay.scene.definition import default_scene, ideal_counterpart
 from jointplay.sim import load_scene_model
 

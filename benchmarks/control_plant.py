@@ -6,9 +6,9 @@ Runs the default scene's open loop and PD (and, with ``--model``, both internal-
 controllers) on the clearance robot integrated by ``bdf`` at the scenes' default tolerances
 (rtol 1e-6, atol 1e-5) and at rtol = atol = 1e-7 ... 1e-10, and reports the goal metrics and
 the wall time of each. With the last setting it also reports the acceleration metrics taken
-once per sample (just before each control update) beside the dense ones (jointplay.neural.plant
-.SUBSTEPS points per sample, what the commands report). Writes control_plant.md with the
-machine's load average.
+once per sample (just before each control update) beside the dense ones
+(jointplay.neural.model.plant .SUBSTEPS points per sample, what the commands report). Writes
+control_plant.md with the machine's load average.
 """
 
 from __future__ import annotations
@@ -19,9 +19,15 @@ import time
 from pathlib import Path
 
 from jointplay.common.files import atomic_write_text
-from jointplay.neural.control import NEURAL, ControllerSettings, compare, load_twin, run_metrics
-from jointplay.neural.plant import PLANT_TOLERANCE, SUBSTEPS
-from jointplay.neural.study_runs import _dummy_model
+from jointplay.neural.model.plant import PLANT_TOLERANCE, SUBSTEPS
+from jointplay.neural.study.control_run import (
+    NEURAL,
+    ControllerSettings,
+    compare,
+    load_twin,
+    run_metrics,
+)
+from jointplay.neural.study.runs import _dummy_model
 from jointplay.scene.definition import default_scene
 
 KEYS = ("max_position", "max_velocity_after", "rms_acceleration_after")
@@ -35,7 +41,7 @@ def main() -> None:
     scene = default_scene()
     narx, arx, names = _dummy_model(scene), None, ("open loop", "PD")
     if args.model:
-        from jointplay.neural.narx import load_narx
+        from jointplay.neural.model.narx import load_narx
 
         narx = load_narx(args.model)
         arx = load_twin(Path(args.model), narx)

@@ -23,14 +23,14 @@ from pathlib import Path
 import numpy as np
 
 from jointplay.common.files import atomic_write_text
-from jointplay.neural.comparison import compare
-from jointplay.neural.control import load_lpv, load_twin
-from jointplay.neural.datasets import read_datasets
-from jointplay.neural.imc_settings import ControllerSettings
-from jointplay.neural.metrics import tip_errors
-from jointplay.neural.narx import load_narx
-from jointplay.neural.plant import control_plant
-from jointplay.neural.study_cases import case_list, case_scene, nominal_clearance
+from jointplay.neural.control.imc_settings import ControllerSettings
+from jointplay.neural.control.metrics import tip_errors
+from jointplay.neural.identify.datasets import read_datasets
+from jointplay.neural.model.narx import load_narx
+from jointplay.neural.model.plant import control_plant
+from jointplay.neural.study.cases import case_list, case_scene, nominal_clearance
+from jointplay.neural.study.comparison import compare
+from jointplay.neural.study.control_run import load_lpv, load_twin
 from jointplay.scene.definition import default_scene
 
 

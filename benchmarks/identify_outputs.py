@@ -13,7 +13,7 @@ output divided by its scale):
   motion as further inputs (judged on the deviation it predicts, prediction minus the ideal
   robot's);
 - ``LPV-ARX``: deviations, input gain and offset scheduled on the ideal robot's configuration,
-  speeds and drive torques (jointplay.neural.lpv).
+  speeds and drive torques (jointplay.neural.identify.lpv).
 
 Writes identify_outputs.md under --out (default: the model folder's parent).
 """
@@ -27,10 +27,10 @@ from pathlib import Path
 import numpy as np
 
 from jointplay.common.files import atomic_write_text
-from jointplay.neural.identify import _segments, fit_arx, output_increments, read_datasets
-from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
-from jointplay.neural.lpv import window_loss as lpv_loss
-from jointplay.neural.twin import window_loss, windows
+from jointplay.neural.identify.lpv import fit_lpv_arx, scheduled_segments
+from jointplay.neural.identify.lpv import window_loss as lpv_loss
+from jointplay.neural.identify.pipeline import _segments, fit_arx, output_increments, read_datasets
+from jointplay.neural.model.twin import window_loss, windows
 
 WINDOW = 200
 

@@ -58,9 +58,9 @@ def identified(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Any, Any
     """A small model of the default scene identified once per session: (folder, network,
     its ARX twin)."""
     pytest.importorskip("torch")
-    from jointplay.neural.control import load_twin
-    from jointplay.neural.identify import IdentifyConfig, identify
-    from jointplay.neural.narx import load_narx
+    from jointplay.neural.identify.pipeline import IdentifyConfig, identify
+    from jointplay.neural.model.narx import load_narx
+    from jointplay.neural.study.control_run import load_twin
     from jointplay.scene.definition import default_scene
 
     out = tmp_path_factory.mktemp("model")

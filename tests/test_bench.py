@@ -110,7 +110,7 @@ def test_fidelity_quick_with_missing_surrogate_module(tmp_path: Path,
     assert float(rows[1]["err_position"]) > 0
     surrogate_row = rows[6]
     assert surrogate_row["status"] == "skipped"
-    assert "jointplay.neural.narx" in surrogate_row["note"]
+    assert "jointplay.neural.model.narx" in surrogate_row["note"]
     assert "not importable" in surrogate_row["note"]
     assert "not importable" in capsys.readouterr().err
     assert_png(out / "fidelity.png")

@@ -14,16 +14,16 @@ from typing import Any
 import numpy as np
 import pytest
 
-from jointplay.neural.closed_loop_choice import (
+from jointplay.neural.identify.pipeline import IdentifyConfig, output_names
+from jointplay.neural.model.narx import Narx
+from jointplay.neural.model.twin import ALPHAS, blend
+from jointplay.neural.study.closed_loop_choice import (
     MARGIN,
     TWIN,
     choose_in_closed_loop,
     earns_its_place,
     label,
 )
-from jointplay.neural.identify import IdentifyConfig, output_names
-from jointplay.neural.narx import Narx
-from jointplay.neural.twin import ALPHAS, blend
 
 
 def _linear(seed: int) -> Narx:
@@ -49,8 +49,8 @@ def _alpha_of(model: Narx, base: Narx) -> float | None:
 def _stand_in(monkeypatch: pytest.MonkeyPatch, base: Narx, error: Any) -> list[Any]:
     """Closed-loop runs replaced: each candidate's RMS |Δa| after settling is
     ``error(alpha)`` (None: the twin; infinity: the run diverged)."""
-    import jointplay.neural.comparison as comparison
-    import jointplay.neural.imc as imc
+    import jointplay.neural.control.imc as imc
+    import jointplay.neural.study.comparison as comparison
 
     calls: list[Any] = []
 
@@ -136,8 +136,8 @@ def test_earning_its_place_needs_every_run() -> None:
 
 
 def test_only_validation_motions_other_than_the_scene_are_run() -> None:
-    from jointplay.neural.closed_loop_choice import validation_motions
-    from jointplay.neural.identify import default_limits, inner_loop_for
+    from jointplay.neural.identify.pipeline import default_limits, inner_loop_for
+    from jointplay.neural.study.closed_loop_choice import validation_motions
     from jointplay.scene.definition import default_scene
 
     scene = default_scene()
@@ -160,11 +160,11 @@ def test_scene_family_motions_are_the_scenes_torques_retimed_never_the_scene_run
     scene's robot, seeded by the identification's seed."""
     import casadi as ca
 
-    from jointplay.neural.closed_loop_choice import (
+    from jointplay.neural.identify.trajectories import SCENE_FAMILY_RATE, SCENE_FAMILY_SCALE
+    from jointplay.neural.study.closed_loop_choice import (
         SCENE_FAMILY_MOTIONS,
         scene_family_motions,
     )
-    from jointplay.neural.trajectories import SCENE_FAMILY_RATE, SCENE_FAMILY_SCALE
     from jointplay.scene.definition import default_scene
 
     scene = default_scene()
@@ -200,7 +200,7 @@ def test_scene_family_motions_are_the_scenes_torques_retimed_never_the_scene_run
 
 def test_the_report_says_what_chose_the_weight_and_what_was_saved(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    from jointplay.neural.evaluation import _closed_loop_lines
+    from jointplay.neural.identify.evaluation import _closed_loop_lines
 
     base, network = _linear(1), _linear(2)
     res = {"free_run_loss_persistence": 1.0}
@@ -229,7 +229,8 @@ def test_identify_runs_each_candidate_in_closed_loop(tmp_path: Any) -> None:
     import contextlib
     import json
 
-    from jointplay.neural.identify import ModelRejected, identify
+    from jointplay.neural.identify.pipeline import ModelRejected
+    from jointplay.neural.study.closed_loop_choice import identify_model
     from jointplay.scene.definition import default_scene
 
     config = IdentifyConfig(duration=0.2, n_train=1, n_validation=2, n_test=1, hidden=(4,),
@@ -238,7 +239,7 @@ def test_identify_runs_each_candidate_in_closed_loop(tmp_path: Any) -> None:
                             residual_by="closed-loop")
     out = tmp_path / "model"
     with contextlib.suppress(ModelRejected):  # refused or not, the choice is recorded
-        identify(default_scene(), out, config, quiet=True)
+        identify_model(default_scene(), out, config, quiet=True)
     closed = json.loads((out / "metrics.json").read_text())["residual"]["closed_loop"]
     assert closed["runs"] == ["multisine (scene robot)"]
     rms = closed["rms_acceleration_after"]

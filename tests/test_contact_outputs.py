@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.identify import (
+from jointplay.neural.identify.pipeline import (
     IdentifyConfig,
     contact_joints,
     default_limits,
@@ -34,7 +34,7 @@ def test_contact_output_names_follow_the_others() -> None:
 
 
 def _trajectories(contact: bool) -> list[Any]:
-    from jointplay.neural.trajectories import _plan, run_task
+    from jointplay.neural.identify.trajectories import _plan, run_task
 
     scene = default_scene()
     config = IdentifyConfig(n_train=1, n_validation=0, n_test=0, duration=DURATION,
@@ -71,7 +71,7 @@ def test_a_model_measuring_a_joint_without_play_is_refused() -> None:
     refused by name before any step, not an index error deep in the loop."""
     from types import SimpleNamespace
 
-    from jointplay.neural.identify import contact_index
+    from jointplay.neural.identify.pipeline import contact_index
 
     with_play = SimpleNamespace(coordinates=["q2", "q3", "ex2", "ey2", "ex3", "ey3"])
     assert contact_index(with_play, (3, 2)) == [4, 5, 2, 3]
@@ -99,8 +99,8 @@ def test_contact_outputs_need_a_clearance_joint() -> None:
 
 
 def test_noise_case_covers_the_eccentricity_sensors() -> None:
-    from jointplay.neural.imc_settings import ControllerSettings
-    from jointplay.neural.study_cases import NOISE, case_list, declared, noise_levels
+    from jointplay.neural.control.imc_settings import ControllerSettings
+    from jointplay.neural.study.cases import NOISE, case_list, declared, noise_levels
 
     scene = default_scene()
     plain = noise_levels(scene)
@@ -117,10 +117,10 @@ def test_controllers_run_on_a_model_that_measures_the_contact_state() -> None:
     controller runs to the end with all 14 outputs recorded, the open loop's eccentricity
     reaches the bearing (beyond the 30 µm clearance), and the baselines' runs do not depend
     on it being measured (their other outputs equal to the bit)."""
-    from jointplay.neural.comparison import LINEAR, NEURAL, compare
-    from jointplay.neural.identify import _context, _signal_names
-    from jointplay.neural.imc_settings import ControllerSettings
-    from jointplay.neural.linear_fit import fit_arx, segments
+    from jointplay.neural.control.imc_settings import ControllerSettings
+    from jointplay.neural.identify.linear_fit import fit_arx, segments
+    from jointplay.neural.identify.pipeline import _context, _signal_names
+    from jointplay.neural.study.comparison import LINEAR, NEURAL, compare
 
     scene = default_scene().with_run(t_end=DURATION)
     measured, = _trajectories(True)
@@ -150,9 +150,9 @@ def test_controllers_run_on_a_model_that_measures_the_contact_state() -> None:
 def test_study_baselines_run_beside_models_that_measure_the_contact_state() -> None:
     """The study runs its baselines once per case on a stand-in for the model (they need
     only the inner loop's gains), beside internal models of either output set."""
-    from jointplay.neural.comparison import compare
-    from jointplay.neural.imc_settings import ControllerSettings
-    from jointplay.neural.study_runs import _dummy_model
+    from jointplay.neural.control.imc_settings import ControllerSettings
+    from jointplay.neural.study.comparison import compare
+    from jointplay.neural.study.runs import _dummy_model
 
     scene = default_scene().with_run(t_end=0.05)
     result = compare(scene, _dummy_model(scene), ControllerSettings(),

@@ -19,7 +19,8 @@ import numpy as np
 import pytest
 
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.control import (
+from jointplay.neural.model.narx import Narx, check_robot, load_narx, robot_identity, save_narx
+from jointplay.neural.study.control_run import (
     ControllerSettings,
     compare,
     compile_controller,
@@ -29,7 +30,6 @@ from jointplay.neural.control import (
     nominal_spectral_radius,
     resolve_settings,
 )
-from jointplay.neural.narx import Narx, check_robot, load_narx, robot_identity, save_narx
 
 OUTPUTS = ("q2", "q3", "dq2", "dq3", "tip_ax")
 
@@ -266,7 +266,7 @@ def test_bad_model_folders_name_the_problem(tmp_path: Path, case: str, expected:
         broken = replace(model)  # valid object; break the file consistently (with checksum)
         data = broken.to_dict()
         data["layers"][1]["weight"] = data["layers"][1]["weight"][:-1]
-        from jointplay.neural.narx import _checksum
+        from jointplay.neural.model.narx import _checksum
 
         content = {k: data[k] for k in ("outputs", "inputs", "output_lags", "input_lags",
                                         "sample_time", "activation", "layers", "linear",
@@ -326,8 +326,8 @@ def _parser() -> argparse.ArgumentParser:
     (["control-study", "--out", "/tmp/x", "--train", "0"], "--train/--validation/--test"),
     (["control-study", "--out", "/tmp/x", "--identify-iterations", "1"],
      "--identify-iterations"),
-    (["identify", "--out", "/tmp/x", "--lpv-base"], "--lpv-base"),
-    (["control-study", "--out", "/tmp/x", "--lpv-base"], "--lpv-base"),
+    (["identify", "--out", "/tmp/x", "--lpv-base", "--preset", "paper"], "--lpv-base"),
+    (["control-study", "--out", "/tmp/x", "--lpv-base", "--preset", "paper"], "--lpv-base"),
     (["control-study", "--out", "/tmp/x", "--identify-hidden", "0"], "--identify-hidden"),
     (["control-study", "--out", "/tmp/x", "--identify-window", "1"], "--identify-window"),
     (["identify", "--out", "/tmp/x", "--residual-by", "closed-loop", "--validation", "1"],
@@ -381,8 +381,8 @@ def test_control_rejects_bad_settings_for_the_model(tmp_path: Path) -> None:
 
 
 def test_import_jointplay_stays_free_of_torch() -> None:
-    code = ("import sys, jointplay, jointplay.neural.narx, jointplay.neural.control, "
-            "jointplay.neural.identify; "
+    code = ("import sys, jointplay, jointplay.neural.model.narx, "
+            "jointplay.neural.study.control_run, jointplay.neural.identify.pipeline; "
             "sys.exit('torch' in sys.modules)")
     assert subprocess.run([sys.executable, "-c", code], check=False).returncode == 0
 
@@ -391,7 +391,7 @@ def test_import_jointplay_stays_free_of_torch() -> None:
 
 def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     pytest.importorskip("torch")
-    from jointplay.neural.identify import IdentifyConfig, identify, read_datasets
+    from jointplay.neural.identify.pipeline import IdentifyConfig, identify, read_datasets
     from jointplay.scene.definition import default_scene
 
     scene = default_scene()
@@ -402,8 +402,8 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     # One training run of 70 samples for 24 regressors: neither the network nor its ARX start
     # can beat persistence on validation. The model is refused, kept as narx.rejected.json
     # with the report saying why, and control will not load it.
-    from jointplay.neural.identify import ModelRejected
-    from jointplay.neural.narx import REJECTED_FILE
+    from jointplay.neural.identify.pipeline import ModelRejected
+    from jointplay.neural.model.narx import REJECTED_FILE
 
     with pytest.raises(ModelRejected, match="worse than persistence"):
         identify(scene, out, config, quiet=True)
@@ -432,7 +432,7 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     assert all(us > 0 for us in result.per_call_us.values())
     # A failed rerun into the same folder leaves the finished model as it was.
     before = {name: (out / name).read_bytes() for name in (REJECTED_FILE, "metrics.json")}
-    import jointplay.neural.identify as identify_module
+    import jointplay.neural.identify.pipeline as identify_module
 
     def failing(*args: Any, **kwargs: Any) -> None:
         raise RuntimeError("training failed")
@@ -451,7 +451,7 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
 
 
 def test_training_data_with_nan_is_refused() -> None:
-    from jointplay.neural.identify import Trajectory, check_finite
+    from jointplay.neural.identify.pipeline import Trajectory, check_finite
 
     n = 5
     good = Trajectory(split="train", family="multisine", seed=0, t=np.arange(n) * 1e-3,
@@ -469,7 +469,7 @@ def test_step_vector_flags_follow_the_processor(tmp_path: Path,
                                                  monkeypatch: pytest.MonkeyPatch) -> None:
     import platform
 
-    from jointplay.neural.imc import _vector_flags
+    from jointplay.neural.control.imc import _vector_flags
 
     info = tmp_path / "cpuinfo"
     info.write_text("processor\t: 0\nflags\t\t: fpu sse2 avx avx2 fma bmi2\n")

@@ -14,16 +14,23 @@ import numpy as np
 import pytest
 from test_control import random_narx
 
-from jointplay.neural.control import (
+from jointplay.neural.control.imc import FLAGS, input_bound, training_box
+from jointplay.neural.model.narx import Narx
+from jointplay.neural.model.twin import (
+    Selection,
+    blend,
+    judge,
+    select_residual,
+    window_loss,
+    windows,
+)
+from jointplay.neural.study.control_run import (
     NEURAL,
     ControllerSettings,
     compare,
     compile_controller,
     verdict,
 )
-from jointplay.neural.imc import FLAGS, input_bound, training_box
-from jointplay.neural.narx import Narx
-from jointplay.neural.twin import Selection, blend, judge, select_residual, window_loss, windows
 
 
 def linear_twin(model: Narx, seed: int = 30) -> Narx:
@@ -163,7 +170,8 @@ def _damaged(narx: Narx) -> Narx:
 def test_neural_controller_beats_pd_on_the_default_scene(
         identified: tuple[Path, Narx, Narx]) -> None:
     """All three of the goal's metrics, on the plant the metrics are defined on (bdf at
-    jointplay.neural.plant.PLANT_TOLERANCE, the acceleration error evaluated between samples)."""
+    jointplay.neural.model.plant.PLANT_TOLERANCE, the acceleration error evaluated between
+    samples)."""
     from jointplay.scene.definition import default_scene
 
     _, narx, arx = identified
@@ -178,7 +186,7 @@ def test_neural_controller_beats_pd_on_the_default_scene(
     assert neural["max_velocity_after"] < 0.5 * pd["max_velocity_after"]
     assert neural["rms_acceleration_after"] < 0.7 * pd["rms_acceleration_after"]
     # The metric itself: evaluated between samples, and on a plant integrated accurately
-    # enough that it measures control (jointplay.neural.plant).
+    # enough that it measures control (jointplay.neural.model.plant).
     run = result.runs[NEURAL]
     assert run.dense_t.size == 10 * (run.t.size - 1)
 
@@ -212,7 +220,7 @@ def test_guard_keeps_a_damaged_model_bounded_and_divergence_is_reported(
 def with_scheduling(model: Narx, seed: int = 40) -> Narx:
     """The network with the scheduling signals of joints 2 and 3 as further regressors (their
     normalisation drawn too)."""
-    from jointplay.neural.scheduling import with_random_scheduling
+    from jointplay.neural.model.scheduling import with_random_scheduling
 
     return with_random_scheduling(model, [2, 3], np.random.default_rng(seed), linear_sd=0.05,
                                   random_normalisation=True)
@@ -283,8 +291,8 @@ def test_kernel_tanh_is_libm_tanh_to_a_few_ulp_and_saturates_and_keeps_nan() -> 
     beyond 20, 0 at 0, NaN kept (the guard's finiteness check relies on it)."""
     import ctypes
 
-    from jointplay.neural.imc import STEP_CFLAGS
-    from jointplay.neural.kernel_network import TANH
+    from jointplay.neural.control.imc import STEP_CFLAGS
+    from jointplay.neural.control.kernel_network import TANH
     from jointplay.store.build import compile_source
 
     source = TANH + """

@@ -1,4 +1,5 @@
-"""The outer loop's horizon chosen for declared sensor noise (jointplay.neural.noise_tuning).
+"""The outer loop's horizon chosen for declared sensor noise
+(jointplay.neural.control.noise_tuning).
 
 The prediction (the stationary RMS of the twin's acceleration outputs, from the impulse
 response of the loop linearised at rest) is checked against the same loop stepped with
@@ -16,13 +17,11 @@ import numpy as np
 import pytest
 
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.control import NEURAL, ControllerSettings, compare
-from jointplay.neural.imc_settings import resolve_settings
-from jointplay.neural.imc_step import build_step
-from jointplay.neural.internal_model import _inner_gains
-from jointplay.neural.loop import LoopConditions
-from jointplay.neural.narx import Narx
-from jointplay.neural.noise_tuning import (
+from jointplay.neural.control.imc_settings import resolve_settings
+from jointplay.neural.control.imc_step import build_step
+from jointplay.neural.control.internal_model import _inner_gains
+from jointplay.neural.control.loop import LoopConditions
+from jointplay.neural.control.noise_tuning import (
     HORIZONS,
     NoiseTuning,
     _predicted_rms,
@@ -30,7 +29,9 @@ from jointplay.neural.noise_tuning import (
     noise_vector,
     tune_to_noise,
 )
-from jointplay.neural.study_cases import NOISE, Case, declared
+from jointplay.neural.model.narx import Narx
+from jointplay.neural.study.cases import NOISE, Case, declared
+from jointplay.neural.study.control_run import NEURAL, ControllerSettings, compare
 
 STUDY_NOISE = {"q2": NOISE["q"], "q3": NOISE["q"], "dq2": NOISE["dq"], "dq3": NOISE["dq"],
                **{k: v for k, v in NOISE.items() if k.startswith("tip")}}
@@ -220,7 +221,7 @@ def test_pairwise_filter_reduces_to_the_first_order_one_without_the_position() -
     study's noise the position dominates the speed's estimate."""
     from test_control import random_narx
 
-    from jointplay.neural.mismatch_filter import pair_gains, position_of
+    from jointplay.neural.control.mismatch_filter import pair_gains, position_of
 
     assert [position_of(n) for n in ("dq7", "tip_vy", "q7", "tip_ax")] == \
         ["q7", "tip_y", None, None]
@@ -249,7 +250,7 @@ def test_pairwise_filter_follows_a_ramp_without_lag() -> None:
     steady-state filter's fixed point is the signal itself, so its error dies out."""
     from test_control import random_narx
 
-    from jointplay.neural.mismatch_filter import pair_gains
+    from jointplay.neural.control.mismatch_filter import pair_gains
 
     model = random_narx(6)
     settings = resolve_settings(model, ControllerSettings(
@@ -267,8 +268,8 @@ def test_pairwise_filter_follows_a_ramp_without_lag() -> None:
 def test_declared_noise_steps_run_as_casadi_code() -> None:
     from test_control import random_narx
 
-    from jointplay.neural.imc import compile_controller
-    from jointplay.neural.imc_kernel import kernel_source
+    from jointplay.neural.control.imc import compile_controller
+    from jointplay.neural.control.imc_kernel import kernel_source
 
     model = random_narx(7)
     settings = resolve_settings(model, ControllerSettings(

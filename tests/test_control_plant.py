@@ -10,9 +10,9 @@ import pytest
 from test_control import random_narx
 from test_control_guard import linear_twin
 
-from jointplay.neural.control import ControllerSettings, compile_controller, imc_law
-from jointplay.neural.imc import training_box
-from jointplay.neural.plant import PLANT_TOLERANCE, SUBSTEPS, control_plant
+from jointplay.neural.control.imc import training_box
+from jointplay.neural.model.plant import PLANT_TOLERANCE, SUBSTEPS, control_plant
+from jointplay.neural.study.control_run import ControllerSettings, compile_controller, imc_law
 from jointplay.scene.definition import default_scene
 from jointplay.sim import Stepper
 
@@ -80,8 +80,8 @@ def test_acceleration_split_adds_in_squares_to_the_rms_after_the_transient() -> 
     """RMS |Δa| after the transient = sqrt(sample-mean part² + within-sample part²); an
     error constant over each period has no within-sample part, and a zigzag of zero mean
     inside each period no sample-mean part; a run without dense output gives NaN."""
-    from jointplay.neural.loop import Run
-    from jointplay.neural.metrics import SPLIT_METRICS, run_metrics
+    from jointplay.neural.control.loop import Run
+    from jointplay.neural.control.metrics import SPLIT_METRICS, run_metrics
 
     rng = np.random.default_rng(3)
     n, nj, transient = 40, 2, 7

@@ -10,9 +10,9 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from jointplay.neural.comparison import RELEASE_GAP, engagement_end, release_end, settling
-from jointplay.neural.loop import LoopConditions, Run
-from jointplay.neural.metrics import WORSE_MARGIN, worse_lines, worse_than_baselines
+from jointplay.neural.control.loop import LoopConditions, Run
+from jointplay.neural.control.metrics import WORSE_MARGIN, worse_lines, worse_than_baselines
+from jointplay.neural.study.comparison import RELEASE_GAP, engagement_end, release_end, settling
 
 
 def _run(impacts: list[float]) -> Run:
@@ -87,8 +87,8 @@ def test_control_repeats_what_identify_warned_about(tmp_path: Path) -> None:
 def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
         monkeypatch: pytest.MonkeyPatch) -> None:
     import jointplay.cli.control as control_cli
-    from jointplay.neural.comparison import Settling
-    from jointplay.neural.imc import ControllerSettings
+    from jointplay.neural.control.imc import ControllerSettings
+    from jointplay.neural.study.comparison import Settling
 
     after = {"max_velocity_after": 1.0, "max_acceleration_after": 1.0,
              "rms_acceleration_after": 1.0}
@@ -130,9 +130,9 @@ def test_an_imc_worse_than_no_control_is_retuned_or_sent_back_to_pd(
 def test_study_sets_the_network_against_both_linear_controllers() -> None:
     """The study's goal lines: the network's RMS acceleration error after settling over
     ARX-IMC's (goal 0.75) and over LPV-ARX-IMC's (goal: below 1), median and worst seed."""
-    from jointplay.neural.comparison import LINEAR, LPV, NEURAL
-    from jointplay.neural.study_cases import Case
-    from jointplay.neural.study_report import ratio_goals
+    from jointplay.neural.study.cases import Case
+    from jointplay.neural.study.comparison import LINEAR, LPV, NEURAL
+    from jointplay.neural.study.report import ratio_goals
 
     key = "rms_acceleration_after"
     values = {NEURAL: (1.0, 3.0), LINEAR: (2.0, 4.0), LPV: (2.0, 2.0)}
@@ -150,10 +150,10 @@ def test_study_splits_the_acceleration_error_into_sample_mean_and_within_sample(
     """With the split of RMS |Δa| after settling in the rows, the study says each internal
     model's within-sample part, how far the network's alone sits against ARX-IMC's whole
     error, and the network over ARX-IMC on the sample-mean part (median, worst seed)."""
-    from jointplay.neural.comparison import LINEAR, LPV, NEURAL
-    from jointplay.neural.metrics import SPLIT_METRICS
-    from jointplay.neural.study_cases import Case
-    from jointplay.neural.study_report import split_lines
+    from jointplay.neural.control.metrics import SPLIT_METRICS
+    from jointplay.neural.study.cases import Case
+    from jointplay.neural.study.comparison import LINEAR, LPV, NEURAL
+    from jointplay.neural.study.report import split_lines
 
     mean_key, within_key = SPLIT_METRICS
     parts = {NEURAL: ((0.8, 0.6), (2.4, 1.8)), LINEAR: ((1.6, 1.2), (3.2, 2.4)),
@@ -177,7 +177,7 @@ def test_study_splits_the_acceleration_error_into_sample_mean_and_within_sample(
 def test_the_whole_run_is_judged_from_the_outer_loops_engagement() -> None:
     """What happens before the outer loop engages (the journals' release, every row the inner
     loop alone) is in the whole-run columns and not in the "_engaged" ones."""
-    from jointplay.neural.metrics import run_metrics
+    from jointplay.neural.control.metrics import run_metrics
 
     n, nj, engaged = 200, 2, 100
     t = np.arange(n) * 1e-3
@@ -201,7 +201,7 @@ def test_the_whole_run_is_judged_from_the_outer_loops_engagement() -> None:
 
 
 def test_the_recommended_controller_is_the_simplest_within_the_tie_margin() -> None:
-    from jointplay.neural.recommend import recommend_from_runs
+    from jointplay.neural.study.recommend import recommend_from_runs
 
     def row(rms: float, diverged: float = 0.0) -> dict[str, float]:
         return {"rms_acceleration_after": rms, "diverged": diverged}
@@ -234,9 +234,9 @@ def test_a_detuned_controller_warns_and_the_tuned_one_does_not() -> None:
     (its whole-run figures include the journals' release, which it cannot prevent), so no
     line; the same PD with a derivative gain above the chatter bound (25 N m s/rad on joint
     2: docs/control.md) rings and is named."""
-    from jointplay.neural.comparison import compare
-    from jointplay.neural.imc import ControllerSettings
-    from jointplay.neural.study_runs import _dummy_model
+    from jointplay.neural.control.imc import ControllerSettings
+    from jointplay.neural.study.comparison import compare
+    from jointplay.neural.study.runs import _dummy_model
     from jointplay.scene.definition import default_scene
 
     scene = default_scene()
@@ -256,7 +256,7 @@ def test_a_bounded_run_is_not_warned_about_for_its_linearisation_alone() -> None
     """The linearisation takes the model as its own plant: above 1 it is reported, and warned
     about only with the run's own evidence (the guard acting, or a larger tip error than the
     open loop's from engagement on)."""
-    from jointplay.neural.comparison import verdict
+    from jointplay.neural.study.comparison import verdict
 
     n = 50
     run = Run("neural IMC", np.arange(n) * 1e-3, np.zeros((n, 10)), np.zeros((n, 2)),

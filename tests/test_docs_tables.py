@@ -78,7 +78,7 @@ def test_exit_table_is_complete() -> None:
     """Every EXIT_* constant of the command line appears, and no status twice."""
     from jointplay.cli import args
     from jointplay.common import interrupts
-    from jointplay.neural import control
+    from jointplay.neural.study import control_run as control
 
     documented = [int(row[0]) for row in EXIT_ROWS]
     assert len(set(documented)) == len(documented)

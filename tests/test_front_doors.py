@@ -292,7 +292,7 @@ def test_set_messages(capsys: pytest.CaptureFixture[str]) -> None:
 
 
 def test_identify_seed_out_of_range(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    from jointplay.neural.identify_config import IdentifyConfig
+    from jointplay.neural.identify.config import IdentifyConfig
 
     for seed in ("-1", str(2**32)):
         assert main(["identify", "--seed", seed, "--out", str(tmp_path / "m"), "--quiet"]) == 2

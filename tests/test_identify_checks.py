@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from jointplay.neural.identify import (
+from jointplay.neural.identify.pipeline import (
     MIN_INPUT_SHARE,
     IdentifyConfig,
     Trajectory,
@@ -74,7 +74,7 @@ def test_too_short_duration_is_warned_about() -> None:
 
 def _network(config: IdentifyConfig) -> tuple[Any, Any, Any]:
     torch = pytest.importorskip("torch")
-    from jointplay.neural.training import _Network, _training_data
+    from jointplay.neural.identify.training import _Network, _training_data
 
     rng = np.random.default_rng(5)
     train = [_trajectory(rng, "train", 200, 1.0) for _ in range(2)]
@@ -85,7 +85,7 @@ def _network(config: IdentifyConfig) -> tuple[Any, Any, Any]:
 
 
 def test_runaway_free_run_start_is_shrunk_and_recorded() -> None:
-    from jointplay.neural.training import _stabilise_start
+    from jointplay.neural.identify.training import _stabilise_start
 
     config = IdentifyConfig(hidden=(6,), window=20, transient=0.0)
     torch, net, data = _network(config)
@@ -112,7 +112,7 @@ def test_runaway_free_run_start_is_shrunk_and_recorded() -> None:
 
 
 def test_nan_free_run_phase_is_retried_and_reported(monkeypatch: pytest.MonkeyPatch) -> None:
-    import jointplay.neural.training as training
+    import jointplay.neural.identify.training as training
 
     config = IdentifyConfig(hidden=(6,), window=40, transient=0.0, multi_step_iterations=2)
     torch, net, data = _network(config)
@@ -142,7 +142,7 @@ def test_nan_free_run_phase_is_retried_and_reported(monkeypatch: pytest.MonkeyPa
 
 
 def test_report_names_every_repair() -> None:
-    from jointplay.neural.evaluation import _repair_lines
+    from jointplay.neural.identify.evaluation import _repair_lines
 
     metrics = {"training_history": {"repairs": [
         {"phase": "free-run", "problem": "training loss not finite (attempt 1, L-BFGS step 1)",
@@ -176,11 +176,11 @@ def _scheduled_run(rng: np.random.Generator, n: int) -> Trajectory:
 
 
 def test_lpv_arx_sees_what_arx_cannot() -> None:
-    from jointplay.neural.identify import output_increments
-    from jointplay.neural.linear_fit import fit_arx, model_scheduling, segments
-    from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
-    from jointplay.neural.lpv import window_loss as lpv_loss
-    from jointplay.neural.twin import window_loss, windows
+    from jointplay.neural.identify.linear_fit import fit_arx, model_scheduling, segments
+    from jointplay.neural.identify.lpv import fit_lpv_arx, scheduled_segments
+    from jointplay.neural.identify.lpv import window_loss as lpv_loss
+    from jointplay.neural.identify.pipeline import output_increments
+    from jointplay.neural.model.twin import window_loss, windows
 
     rng = np.random.default_rng(6)
     train = [_scheduled_run(rng, 1500) for _ in range(3)]
@@ -222,9 +222,9 @@ def test_training_runs_span_the_clearances_and_payloads_asked_for() -> None:
     from test_control import random_narx
 
     from jointplay.common.errors import DescriptionError
-    from jointplay.neural.identify import _context, default_limits, inner_loop_for
-    from jointplay.neural.narx import check_robot
-    from jointplay.neural.trajectories import _plan
+    from jointplay.neural.identify.pipeline import _context, default_limits, inner_loop_for
+    from jointplay.neural.identify.trajectories import _plan
+    from jointplay.neural.model.narx import check_robot
     from jointplay.robot import with_parameters
     from jointplay.scene.definition import default_scene
 
@@ -262,16 +262,16 @@ def test_scene_family_base_motions_are_the_scenes_torques_retimed() -> None:
     scene's torques, then by the scene's torques, every joint alike, at an amplitude, rate and
     time shift drawn per run from the scene family's ranges (numpy as drawn); the test runs
     keep their families, and the draws are not the closed-loop choice's motions."""
-    from jointplay.neural.closed_loop_choice import scene_family_motions
-    from jointplay.neural.excitation import Retimed
-    from jointplay.neural.identify import default_limits, inner_loop_for
-    from jointplay.neural.trajectories import (
+    from jointplay.neural.identify.excitation import Retimed
+    from jointplay.neural.identify.pipeline import default_limits, inner_loop_for
+    from jointplay.neural.identify.trajectories import (
         SCENE_FAMILY_RATE,
         SCENE_FAMILY_SCALE,
         TEST_FAMILIES,
         TRAIN_FAMILIES,
         _plan,
     )
+    from jointplay.neural.study.closed_loop_choice import scene_family_motions
     from jointplay.scene.definition import default_scene
 
     scene = default_scene()
@@ -317,7 +317,7 @@ def test_scene_family_base_motions_are_the_scenes_torques_retimed() -> None:
 
 def test_control_study_hands_its_identification_flags_to_identify(tmp_path: Any) -> None:
     """control-study's --identify-* flags (and --train, --scheduling, --lpv-base) reach the
-    identification of every model unchanged, and their defaults are identify's own."""
+    identification of every model unchanged, and their defaults are the settings' preset."""
     from jointplay.cli import make_parser
     from jointplay.cli.study import study_plan
 
@@ -338,11 +338,12 @@ def test_control_study_hands_its_identification_flags_to_identify(tmp_path: Any)
         "closed-loop-scene", "scene-family", 3)
     assert (config.hidden, config.output_lags, config.input_lags, config.window,
             config.base_fraction) == ((24, 24), 3, 1, 50, 0.2)
-    default = IdentifyConfig(**study_plan(make_parser().parse_args(
-        ["control-study", "--out", out])).identify_args)
-    assert (default.base_motions, default.residual_by, default.linear_input_gain,
-            default.scheduling, default.lpv_base) == (
-        IdentifyConfig.base_motions, IdentifyConfig.residual_by, False, False, False)
+    from jointplay.neural.study.settings import preset_settings
+
+    for preset in ("paper", "best"):
+        default = IdentifyConfig(**study_plan(make_parser().parse_args(
+            ["control-study", "--out", out, "--preset", preset])).identify_args)
+        assert default == replace(preset_settings(preset).identify, seed=0, workers=0)
 
 
 def _scheduled_runs(seed: int) -> tuple[list[Trajectory], list[Trajectory]]:
@@ -355,7 +356,7 @@ def _scheduled_runs(seed: int) -> tuple[list[Trajectory], list[Trajectory]]:
 def _train_small(train: list[Trajectory], validation: list[Trajectory],
                  **flags: Any) -> tuple[Any, dict[str, Any]]:
     """A network of 4 hidden nodes with the scheduling signals, a few iterations."""
-    from jointplay.neural.training import train_narx
+    from jointplay.neural.identify.training import train_narx
 
     config = IdentifyConfig(hidden=(4,), window=20, transient=0.0, one_step_iterations=3,
                             multi_step_iterations=2, scheduling=True, **flags)
@@ -367,7 +368,7 @@ def test_network_trained_with_scheduling_signals_exports_them() -> None:
     model reproduces torch's predictions (train_narx checks to 1e-9) and its free run takes
     the signals from the runs' reference and feedforward."""
     pytest.importorskip("torch")
-    from jointplay.neural.scheduling import scheduling_names, trajectory_scheduling
+    from jointplay.neural.model.scheduling import scheduling_names, trajectory_scheduling
 
     train, validation = _scheduled_runs(8)
     names = _names()
@@ -384,13 +385,13 @@ def test_network_trained_with_scheduling_signals_exports_them() -> None:
 
 def test_network_on_an_lpv_arx_base_starts_at_the_lpv_fit_and_is_never_worse() -> None:
     """--lpv-base: the network's linear part is the LPV-ARX fit (fit_arx(lpv=True) predicts as
-    jointplay.neural.lpv's model), training keeps and exports a bilinear part, and the residual
-    weighed against that base is never worse than it in free run on validation."""
+    jointplay.neural.identify.lpv's model), training keeps and exports a bilinear part, and the
+    residual weighed against that base is never worse than it in free run on validation."""
     pytest.importorskip("torch")
-    from jointplay.neural.identify import output_increments
-    from jointplay.neural.linear_fit import fit_arx, model_scheduling, segments
-    from jointplay.neural.lpv import fit_lpv_arx, scheduled_segments
-    from jointplay.neural.twin import select_residual
+    from jointplay.neural.identify.linear_fit import fit_arx, model_scheduling, segments
+    from jointplay.neural.identify.lpv import fit_lpv_arx, scheduled_segments
+    from jointplay.neural.identify.pipeline import output_increments
+    from jointplay.neural.model.twin import select_residual
 
     train, validation = _scheduled_runs(9)
     names = _names()

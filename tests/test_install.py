@@ -137,7 +137,7 @@ def test_a_missing_extra_is_named_by_the_api(monkeypatch: pytest.MonkeyPatch) ->
     with pytest.raises(MissingExtra, match=r"pip install 'jointplay\[xarray\]'"):
         result.to_xarray()
     monkeypatch.setitem(sys.modules, "torch", None)
-    from jointplay.neural.identify import IdentifyConfig, identify
+    from jointplay.neural.identify.pipeline import IdentifyConfig, identify
 
     with pytest.raises(MissingExtra, match=r"pip install 'jointplay\[control\]'"):
         identify(default_scene(), Path("never-written"), IdentifyConfig())

@@ -221,7 +221,7 @@ def test_identify_never_writes_over_its_scene(tmp_path: Path, name: str,
                                               monkeypatch: pytest.MonkeyPatch) -> None:
     import jointplay.cli.identify as identify
 
-    monkeypatch.setattr(identify, "identify", _trap)
+    monkeypatch.setattr(identify, "identify_model", _trap)
     scene, _ = wear_scene_with_table(tmp_path)
     shutil.move(scene, tmp_path / name)
     refused_before_work(capsys, ["identify", str(tmp_path / name), "--out", str(tmp_path)],
@@ -449,10 +449,10 @@ def test_control_and_identify_files_fail_cleanly(tmp_path: Path,
                                                  monkeypatch: pytest.MonkeyPatch) -> None:
     """The control runs' file and the identification data: a full disk at the write gives
     the one-line error and no file."""
-    from jointplay.neural.comparison import Comparison, write_runs
-    from jointplay.neural.datasets import read_datasets, write_datasets
-    from jointplay.neural.loop import Run
-    from jointplay.neural.trajectories import ARRAYS, Trajectory
+    from jointplay.neural.control.loop import Run
+    from jointplay.neural.identify.datasets import read_datasets, write_datasets
+    from jointplay.neural.identify.trajectories import ARRAYS, Trajectory
+    from jointplay.neural.study.comparison import Comparison, write_runs
 
     t = np.linspace(0.0, 0.1, 11)
     run = Run("PD", t, np.zeros((11, 2)), np.ones((11, 1)), np.zeros((11, 1)), 0, 0.1,
@@ -626,8 +626,8 @@ def test_identify_model_folder_all_or_nothing(tmp_path: Path,
     """The model folder's files are staged and moved in together: a full disk at any of
     them is one error naming the file in the model folder (not its staging copy), and a
     folder the run created is gone; without a fault every file is in place."""
-    import jointplay.neural.identify as ident
-    from jointplay.neural.narx import MODEL_FILE
+    import jointplay.neural.identify.pipeline as ident
+    from jointplay.neural.model.narx import MODEL_FILE
 
     names = [ident.DATASETS_FILE, ident.METRICS_FILE, ident.REPORT_FILE, ident.ARX_FILE,
              ident.LPV_FILE, MODEL_FILE]

@@ -568,7 +568,7 @@ def test_interrupted_control_writes_nothing(tmp_path: Path) -> None:
     # persistence on validation and refused.
     proc = run_cli(["identify", "--out", str(model), "--train", "2", "--validation", "1",
                     "--test", "1", "--duration", "0.3", "--iterations", "1,1", "--workers", "1",
-                    "--quiet"], timeout=300)
+                    "--quiet", "--preset", "paper"], timeout=300)
     assert proc.returncode == 0, proc.stderr
     out = tmp_path / "runs.h5"
     code, err = interrupt_when(["control", "--model", str(model), "--out", str(out)],

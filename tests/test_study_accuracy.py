@@ -41,10 +41,10 @@ def baseline_loops() -> tuple[list[dict[str, Any]], dict[str, Any], dict[str, An
     """The study's baseline loops on the default scene's first 0.15 s: the verified rows,
     the loops themselves (the plant at the study's tolerance) and the converged loops (the
     plant at rtol = atol = 1e-12)."""
-    from jointplay.neural.comparison import compare
-    from jointplay.neural.imc import ControllerSettings
-    from jointplay.neural.study import case_list, case_scene, nominal_clearance
-    from jointplay.neural.study_runs import (
+    from jointplay.neural.control.imc import ControllerSettings
+    from jointplay.neural.study.comparison import compare
+    from jointplay.neural.study.control_study import case_list, case_scene, nominal_clearance
+    from jointplay.neural.study.runs import (
         BASELINES,
         STUDY_JOBS,
         _dummy_model,
@@ -77,7 +77,7 @@ def test_study_rows_state_each_loops_accuracy(
     converged loop, the agreement horizon never later than the true one (the converged
     loop's impacts at the stated tolerances), the energy residual a small part of the
     dissipation."""
-    from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS, _record
+    from jointplay.neural.control.loop_accuracy import ACCURACY_COLUMNS, _record
     from jointplay.results.accuracy import agreement_horizon
 
     rows, runs, converged, scene = baseline_loops
@@ -102,7 +102,7 @@ def test_control_study_verify_writes_the_accuracy_per_run(
     """``control-study --verify`` on a tiny study (one seed, the scene case, 0.15 s): every
     row of study.csv and study.json carries the accuracy columns, study.md the table."""
     from jointplay.cli import main
-    from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS
+    from jointplay.neural.control.loop_accuracy import ACCURACY_COLUMNS
 
     folder, narx, _ = identified
     text = (Path(__file__).parents[1] / "scenes" / "paper_4dof.toml").read_text()
@@ -116,7 +116,7 @@ def test_control_study_verify_writes_the_accuracy_per_run(
     shutil.copytree(folder, out / "models" / f"{size * 1e6:g}um" / f"seed{seed}")
     assert main(["control-study", str(scene_file), "--out", str(out), "--seeds", "1",
                  "--first-seed", str(seed), "--cases", "scene", "--workers", "1", "--quiet",
-                 "--verify"]) in (0, 3)
+                 "--verify", "--preset", "paper"]) in (0, 3)
     with (out / "study.csv").open() as fh:
         rows = list(csv.DictReader(fh))
     stored = json.loads((out / "study.json").read_text())["rows"]
@@ -134,8 +134,8 @@ def test_control_study_verify_writes_the_accuracy_per_run(
 def test_a_check_that_ends_differently_is_compared_where_both_ran() -> None:
     """A loop stopped as diverged in only one of the two runs: the estimate covers the
     samples both have, and the note says where each ended."""
-    from jointplay.neural.loop import Run
-    from jointplay.neural.loop_accuracy import accuracy_columns, loop_accuracy
+    from jointplay.neural.control.loop import Run
+    from jointplay.neural.control.loop_accuracy import accuracy_columns, loop_accuracy
 
     scene = default_scene().with_run(t_end=0.004)
     nj = len(scene.robot.moving_joints)

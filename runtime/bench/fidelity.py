@@ -35,7 +35,7 @@ if TYPE_CHECKING:
     from jointplay.results.records import SimulationResult
     from jointplay.scene.definition import Scene
 
-SURROGATE_MODULE = "jointplay.neural.narx"
+SURROGATE_MODULE = "jointplay.neural.model.narx"
 SURROGATE_ENTRY = "load_surrogate"
 
 FID_COLUMNS: list[tuple[str, str, str]] = [
@@ -147,7 +147,7 @@ def surrogate_row(scene: Scene, model_dir: Path | None, reference: SimulationRes
                   repeats: int = 3) -> dict[str, Any]:
     """The neural-surrogate rung: a hook, skipped with a note unless a trained model is given.
 
-    The surrogate module (``jointplay.neural.narx``) is expected to provide
+    The surrogate module (``jointplay.neural.model.narx``) is expected to provide
     ``load_surrogate(model_dir)`` returning an object whose ``rollout(scene)`` gives the
     end effector over the scene's output times (attributes ``t``, ``tip_position``,
     ``tip_velocity``, ``tip_acceleration``, as in a SimulationResult).

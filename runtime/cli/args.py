@@ -23,7 +23,8 @@ if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
 
 # Exit statuses (README, "Limits, interrupts and errors"; tests/test_docs_tables.py checks the
-# table there against these, jointplay.common.interrupts's and jointplay.neural.control's).
+# table there against these, jointplay.common.interrupts's and
+# jointplay.neural.study.control_run's).
 EXIT_OK = 0
 EXIT_FAILURE = 1
 EXIT_BAD_INPUT = 2

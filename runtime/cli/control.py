@@ -1,5 +1,5 @@
 """``jointplay control``: validate, compile, run every controller against the ideal robot's
-motion, report and plot (the loops themselves: :mod:`jointplay.neural.control`).
+motion, report and plot (the loops themselves: :mod:`jointplay.neural.study.control_run`).
 
 Exit status 3 when any controller (PD and computed torque included) diverged."""
 
@@ -14,15 +14,24 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
+    CONTROL_FLAGS,
     add_settings_arguments,
+    add_settings_file_arguments,
+    fill_from_settings,
     float_list,
-    load_control_scene,
     neural_scene_argument,
+    scene_and_settings,
+    settings_defaults,
     settings_from_args,
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
-from jointplay.neural.control import (
+from jointplay.neural.control.imc import ControllerSettings
+from jointplay.neural.control.loop import NO_CONDITIONS, LoopConditions
+from jointplay.neural.control.metrics import WORSE_MARGIN, worse_lines
+from jointplay.neural.control.noise_tuning import noise_vector
+from jointplay.neural.model.narx import MODEL_FILE, Narx, check_robot, load_narx
+from jointplay.neural.study.control_run import (
     DIVERGENCE_FACTOR,
     EXIT_DIVERGED,
     LINEAR,
@@ -37,12 +46,8 @@ from jointplay.neural.control import (
     verdict,
     write_runs,
 )
-from jointplay.neural.imc import ControllerSettings
-from jointplay.neural.loop import NO_CONDITIONS, LoopConditions
-from jointplay.neural.metrics import WORSE_MARGIN, worse_lines
-from jointplay.neural.narx import MODEL_FILE, Narx, check_robot, load_narx
-from jointplay.neural.noise_tuning import noise_vector
-from jointplay.neural.recommend import Recommendation, recommend_from_runs
+from jointplay.neural.study.recommend import Recommendation, recommend_from_runs
+from jointplay.neural.study.settings import SETTINGS_FILE, settings_toml
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -83,6 +88,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="also run PD and both internal-model controllers on the model's stored "
                         "test excitations")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
+    add_settings_file_arguments(p)
+    settings_defaults(p, CONTROL_FLAGS)
     p.set_defaults(func=cmd_control)
     return p
 
@@ -100,6 +107,7 @@ class ControlJob:
     pd_kp: tuple[float, ...]
     pd_kd: tuple[float, ...]
     cases: list[tuple[str, Any]]
+    record: str  # the resolved settings, as settings.toml (written under --plot)
 
 
 def cmd_control(args: argparse.Namespace) -> int:
@@ -153,7 +161,8 @@ def cmd_control(args: argparse.Namespace) -> int:
 
 def control_job(args: argparse.Namespace) -> ControlJob:
     """Load the scene, the model and its twin; check every flag; prepare the outputs."""
-    scene = load_control_scene(args.scene, args.quiet)
+    scene, resolved, scene_file = scene_and_settings(args)
+    fill_from_settings(args, resolved, CONTROL_FLAGS)
     output_plan(args, scene)  # outputs meeting each other or an input: refused first
     model_dir = Path(args.model)
     narx = load_narx(model_dir)
@@ -172,7 +181,9 @@ def control_job(args: argparse.Namespace) -> ControlJob:
 
         check_output_path(args.out, "--out")
     cases = test_case_scenes(model_dir, scene) if args.test_cases else []
-    return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases)
+    record = settings_toml(replace(resolved, control=settings_from_args(args, None)),
+                           scene_file, "jointplay control settings.toml --model MODEL_DIR")
+    return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases, record)
 
 
 def check_loop_flags(args: argparse.Namespace, scene: Scene) -> None:
@@ -319,7 +330,7 @@ def retune_lines(args: argparse.Namespace, job: ControlJob,
 
 def recommendation(job: ControlJob, comparison: Comparison, warnings: list[str],
                    worse: list[str]) -> Recommendation | None:
-    """The controller to use from this run (:mod:`jointplay.neural.recommend`); a controller
+    """The controller to use from this run (:mod:`jointplay.neural.study.recommend`); a controller
     named in a warning is not recommended while another is there."""
     warned = {name for name in comparison.metrics
               if any(w.startswith(f"{name}:") or w.startswith(f"{name} is worse")
@@ -424,12 +435,13 @@ def _write_each(args: argparse.Namespace, job: ControlJob, comparison: Compariso
                 text: str) -> list[str]:
     written = []
     if args.plot:
-        from jointplay.neural.control_plots import plot_comparison
+        from jointplay.neural.study.control_plots import plot_comparison
 
         plot = Path(args.plot)
         written += [str(p) for p in plot_comparison(comparison, job.scene, plot)]
         atomic_write_text(plot / "control.md", text.strip() + "\n")
-        written.append(str(plot / "control.md"))
+        atomic_write_text(plot / SETTINGS_FILE, job.record)
+        written += [str(plot / "control.md"), str(plot / SETTINGS_FILE)]
     if args.out:
         write_runs(Path(args.out), comparison,
                    {"settings": asdict(job.settings), "scene": job.scene.name,

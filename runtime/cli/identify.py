@@ -1,16 +1,19 @@
 """``jointplay identify``: validate every flag, then simulate the excitation runs, train the
-network and write the model folder (the work itself: :mod:`jointplay.neural.identify`)."""
+network and write the model folder (the work itself: :mod:`jointplay.neural.identify.pipeline`)."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
+    IDENTIFY_DATA,
+    FlagKeys,
     add_base_fraction_argument,
     add_base_motions_argument,
     add_contact_argument,
@@ -21,23 +24,28 @@ from jointplay.cli.neural_args import (
     add_residual_argument,
     add_scene_motions_argument,
     add_scheduling_argument,
+    add_settings_file_arguments,
     base_fraction_setting,
     check_duration,
     contact_setting,
+    fill_from_settings,
     float_list,
     int_list,
     iteration_counts,
-    load_control_scene,
     lpv_base_setting,
     neural_scene_argument,
     operating_range,
     residual_setting,
+    scene_and_settings,
     scene_motions_setting,
+    settings_defaults,
     trajectory_counts,
 )
 from jointplay.common import limits as size_limits
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.identify import (
+from jointplay.common.files import atomic_write_text
+from jointplay.neural.identify.config import MAX_SEED
+from jointplay.neural.identify.pipeline import (
     DEFAULT_KD,
     DEFAULT_KP,
     LIMIT_FACTOR,
@@ -45,9 +53,9 @@ from jointplay.neural.identify import (
     IdentifyConfig,
     ModelRejected,
     default_limits,
-    identify,
 )
-from jointplay.neural.identify_config import MAX_SEED
+from jointplay.neural.study.closed_loop_choice import identify_model
+from jointplay.neural.study.settings import SETTINGS_FILE, settings_toml
 
 if TYPE_CHECKING:
     from jointplay.common.files import OutputPlan
@@ -94,8 +102,20 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--workers", type=int, default=0,
                    help="processes simulating trajectories (default: one per core, at most 4)")
     p.add_argument("--quiet", action="store_true", help="no progress bars, no report")
+    add_settings_file_arguments(p)
+    settings_defaults(p, IDENTIFY_FLAGS)
     p.set_defaults(func=cmd_identify)
     return p
+
+
+# identify's flags and the keys of the settings' [identify] table they override
+IDENTIFY_FLAGS: FlagKeys = {
+    **IDENTIFY_DATA, "lags": ("identify.output_lags", "identify.input_lags"),
+    "hidden": "identify.hidden",
+    "iterations": ("identify.one_step_iterations", "identify.multi_step_iterations"),
+    "window": "identify.window", "no_linear_path": "!identify.linear_path",
+    "kp": "identify.kp", "kd": "identify.kd", "torque_limit": "identify.torque_limit",
+    "seed": "identify.seed", "workers": "identify.workers"}
 
 
 def cmd_identify(args: argparse.Namespace) -> int:
@@ -103,19 +123,25 @@ def cmd_identify(args: argparse.Namespace) -> int:
     from jointplay.common.extras import require
 
     require("control", "jointplay identify")  # before any work
-    scene = load_control_scene(args.scene, args.quiet)
+    scene, settings, scene_file = scene_and_settings(args)
+    fill_from_settings(args, settings, IDENTIFY_FLAGS)
     out = Path(args.out)
     output_plan(args, scene)
     check_writable_dir(out, "--out")
-    config = identify_config(args, scene)
+    config = identify_config(args, scene, settings.identify)
     check_scene_for(config, scene)
+    # What this model folder was identified with: `jointplay identify settings.toml` again.
+    record = settings_toml(replace(settings, identify=config), scene_file,
+                           "jointplay identify settings.toml --out MODEL_DIR")
     started = time.perf_counter()
     try:
-        metrics = identify(scene, out, config, quiet=args.quiet)
+        metrics = identify_model(scene, out, config, quiet=args.quiet)
     except ModelRejected:
+        atomic_write_text(out / SETTINGS_FILE, record)
         if not args.quiet:
             print((out / REPORT_FILE).read_text(encoding="utf-8"))
         raise
+    atomic_write_text(out / SETTINGS_FILE, record)
     if not args.quiet:
         print((out / REPORT_FILE).read_text(encoding="utf-8"))
         print(f"wrote {out}/narx.json, datasets.h5, metrics.json, report.md in "
@@ -129,20 +155,27 @@ def output_plan(args: argparse.Namespace, scene: Scene) -> OutputPlan:
     """The model folder's files and the scene's: refused when one is the other (exit 2)."""
     from jointplay.cli.args import plan_scene_inputs
     from jointplay.common.files import OutputPlan
-    from jointplay.neural.identify import ARX_FILE, DATASETS_FILE, METRICS_FILE, REJECTED_FILE
-    from jointplay.neural.narx import MODEL_FILE
+    from jointplay.neural.identify.pipeline import (
+        ARX_FILE,
+        DATASETS_FILE,
+        METRICS_FILE,
+        REJECTED_FILE,
+    )
+    from jointplay.neural.model.narx import MODEL_FILE
 
     plan = OutputPlan()
     plan_scene_inputs(plan, scene)
     for name in (MODEL_FILE, REJECTED_FILE, ARX_FILE, DATASETS_FILE, METRICS_FILE,
-                 REPORT_FILE):
+                 REPORT_FILE, SETTINGS_FILE):
         plan.file("--out", Path(args.out) / name, f"the model folder's {name}")
     plan.check()
     return plan
 
 
-def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
-    """The configuration the flags give, every flag checked and named when refused."""
+def identify_config(args: argparse.Namespace, scene: Scene,
+                    base: IdentifyConfig | None = None) -> IdentifyConfig:
+    """The configuration the flags give over ``base`` (the settings' keys without a flag),
+    every flag checked and named when refused."""
     n = len(scene.robot.moving_joints)
     if not 0 <= args.seed <= MAX_SEED:
         raise DescriptionError("--seed", f"must be a whole number from 0 to {MAX_SEED} "
@@ -163,8 +196,9 @@ def identify_config(args: argparse.Namespace, scene: Scene) -> IdentifyConfig:
         if not low <= value <= high:
             raise DescriptionError(flag, f"must be an integer from {low} to {high}, got {value}")
     check_duration(args.duration, counts, lags, scene.run.output_step)
-    return IdentifyConfig(
-        duration=args.duration, n_train=counts[0], n_validation=counts[1], n_test=counts[2],
+    return replace(
+        base or IdentifyConfig(), duration=args.duration, n_train=counts[0],
+        n_validation=counts[1], n_test=counts[2],
         output_lags=lags[0], input_lags=lags[1], hidden=hidden, seed=args.seed,
         kp=float_list(args.kp, "--kp", n), kd=float_list(args.kd, "--kd", n, positive=False),
         torque_limit=float_list(args.torque_limit, "--torque-limit", n),

@@ -7,22 +7,27 @@ from __future__ import annotations
 
 import argparse
 import math
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.common import limits as size_limits
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.identify import IdentifyConfig
-from jointplay.neural.imc import ControllerSettings, resolve_settings
+from jointplay.neural.control.imc import ControllerSettings, resolve_settings
+from jointplay.neural.identify.pipeline import IdentifyConfig
 
 if TYPE_CHECKING:
-    from jointplay.neural.narx import Narx
+    from jointplay.neural.model.narx import Narx
+    from jointplay.neural.study.settings import Settings
     from jointplay.scene.definition import Scene
 
 
 # ---- the scene ----------------------------------------------------------------------------------
 
 def neural_scene_argument(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("scene", nargs="?", help="scene file (TOML); default: the paper scene")
+    parser.add_argument("scene", nargs="?",
+                        help="scene file (TOML; its [identify], [control] and [study] tables "
+                             "are the settings), or a settings file naming its scene; "
+                             "default: the paper scene")
 
 
 def load_control_scene(path: str | None, quiet: bool = False) -> Scene:
@@ -141,7 +146,7 @@ def add_linear_gain_argument(parser: argparse.ArgumentParser, flag: str) -> None
 
 def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
                           ) -> None:
-    from jointplay.neural.identify_config import RESIDUAL_CRITERIA
+    from jointplay.neural.identify.config import RESIDUAL_CRITERIA
 
     parser.add_argument(flag, dest="residual_by", choices=RESIDUAL_CRITERIA,
                         default="free-run",
@@ -164,7 +169,7 @@ def add_scene_motions_argument(parser: argparse.ArgumentParser, flag: str) -> No
 def scene_motions_setting(args: argparse.Namespace, flag: str) -> int:
     """The number of scene-family motions, refused outside 1 to MAX_SCENE_MOTIONS."""
     from jointplay.common.errors import DescriptionError
-    from jointplay.neural.identify_config import MAX_SCENE_MOTIONS
+    from jointplay.neural.identify.config import MAX_SCENE_MOTIONS
 
     value = int(args.scene_motions)
     if not 1 <= value <= MAX_SCENE_MOTIONS:
@@ -193,7 +198,7 @@ def add_base_fraction_argument(parser: argparse.ArgumentParser, flag: str) -> No
 
 
 def add_base_motions_argument(parser: argparse.ArgumentParser, flag: str) -> None:
-    from jointplay.neural.identify_config import BASE_MOTIONS
+    from jointplay.neural.identify.config import BASE_MOTIONS
 
     parser.add_argument(flag, dest="base_motions", choices=BASE_MOTIONS,
                         default=_D.base_motions,
@@ -368,3 +373,119 @@ def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> Controlle
         engage=args.engage, measurement_noise=noise_pairs(args.measurement_noise),
         noise_budget=args.noise_budget)
     return resolve_settings(narx, settings) if narx is not None else settings
+
+
+# ---- the settings file ----------------------------------------------------------------------
+
+SETTINGS_HELP = ("every key of the [identify], [control] and [study] tables, its meaning and "
+                 "its default per preset: docs/how-to/settings-file.md")
+
+
+def add_settings_file_arguments(parser: argparse.ArgumentParser) -> None:
+    """``--preset`` and ``--set``: the settings' preset and any key of them."""
+    parser.add_argument("--preset", metavar="NAME",
+                        help="the settings' starting point: best (the best setting measured; "
+                             "the default) or paper (the paper's NARX 13/14)")
+    parser.add_argument("--set", dest="overrides", action="append", default=[],
+                        metavar="SECTION.KEY=VALUE",
+                        help="override one key of the settings, e.g. identify.hidden=24,24 "
+                             "(repeatable; " + SETTINGS_HELP + ")")
+
+
+def scene_and_settings(args: argparse.Namespace) -> tuple[Scene, Settings, Path | None]:
+    """The scene, the settings (the file's tables over its preset, ``--set`` on top) and the
+    scene file to record: ``args.scene`` is a scene file (its settings tables, if any, read
+    too), a settings file naming its scene, or None (the paper scene)."""
+    from jointplay.common.validation import read_toml
+    from jointplay.neural.study.settings import (
+        is_settings_document,
+        read_settings_file,
+        resolve_settings,
+        settings_tables,
+    )
+
+    path = Path(args.scene) if args.scene else None
+    scene_file: Path | None = path
+    if path is None:
+        settings = resolve_settings({}, preset=args.preset, overrides=args.overrides,
+                                    source="flags")
+    else:
+        data, _ = read_toml(path, "scene or settings")
+        if is_settings_document(data):
+            settings, scene_file = read_settings_file(path, preset=args.preset,
+                                                      overrides=args.overrides)
+        else:
+            settings = resolve_settings(settings_tables(data), preset=args.preset,
+                                        overrides=args.overrides, source=str(path))
+    scene = load_control_scene(str(scene_file) if scene_file else None, args.quiet)
+    return scene, settings, scene_file.resolve() if scene_file else None
+
+
+# Each command's flags and the settings key each overrides (a tuple: the flag gives them as
+# a comma-separated list; "!": the flag is the key's negation). A flag not given takes its
+# value from the settings.
+IDENTIFY_DATA = {
+    "train": "identify.n_train", "validation": "identify.n_validation",
+    "test": "identify.n_test", "duration": "identify.duration",
+    "scheduling": "identify.scheduling", "lpv_base": "identify.lpv_base",
+    "contact_outputs": "identify.contact_outputs",
+    "linear_input_gain": "identify.linear_input_gain", "residual_by": "identify.residual_by",
+    "base_fraction": "identify.base_fraction", "base_motions": "identify.base_motions",
+    "scene_motions": "identify.scene_motions", "span_clearances": "identify.clearances",
+    "span_payloads": "identify.payloads",
+}
+CONTROL_FLAGS = {
+    "horizon": "control.horizon", "lambda_": "control.regularisation",
+    "setpoint_filter": "control.setpoint_filter", "mismatch_filter": "control.mismatch_filter",
+    "iterations": "control.iterations", "track": "control.tracked", "scales": "control.scales",
+    "torque_limit": "control.torque_limit", "rate_limit": "control.rate_limit",
+    "no_guard": "!control.guard", "trust_input": "control.trust_input",
+    "trust_range": "control.trust_range", "trust_mismatch": "control.trust_mismatch",
+    "engage": "control.engage", "measurement_noise": "control.measurement_noise",
+    "noise_budget": "control.noise_budget", "fallback_hold": "control.fallback_hold",
+}
+FlagKeys = dict[str, str | tuple[str, ...]]
+
+
+def settings_defaults(parser: argparse.ArgumentParser, flags: FlagKeys,
+                      shown: tuple[str, ...] | None = None) -> None:
+    """The flags in ``flags`` default to the settings (None until filled in); their help
+    says so. With ``shown``, only those flags (and the others not in ``flags``) are listed
+    by --help: the rest stay accepted, as overrides the settings file documents."""
+    import re
+
+    for action in parser._actions:
+        if action.dest not in flags:
+            continue
+        action.default = None
+        if shown is not None and action.dest not in shown:
+            action.help = argparse.SUPPRESS
+        elif action.help and action.help != argparse.SUPPRESS:
+            action.help = re.sub(r" ?\(default[^()]*(\([^()]*\)[^()]*)*\)", "", action.help) \
+                + f" (default: {_setting_name(flags[action.dest])} of the settings)"
+
+
+def _setting_name(keys: str | tuple[str, ...]) -> str:
+    return ", ".join(keys) if isinstance(keys, tuple) else keys.lstrip("!")
+
+
+def fill_from_settings(args: argparse.Namespace, settings: Settings, flags: FlagKeys) -> None:
+    """Every flag not given takes the settings' value, in the form the flag is read in."""
+    for dest, keys in flags.items():
+        if getattr(args, dest, None) is not None:
+            continue
+        if isinstance(keys, tuple):
+            setattr(args, dest, ",".join(str(_value(settings, k)) for k in keys))
+            continue
+        value = _value(settings, keys.lstrip("!"))
+        if keys.startswith("!"):
+            value = not value
+        elif isinstance(value, tuple):
+            value = ",".join(f"{v[0]}={v[1]!r}" if isinstance(v, tuple) else str(v)
+                             for v in value) or None
+        setattr(args, dest, value)
+
+
+def _value(settings: Settings, key: str) -> Any:
+    section, _, name = key.partition(".")
+    return getattr(getattr(settings, section), name)

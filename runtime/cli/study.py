@@ -1,5 +1,6 @@
 """``jointplay control-study``: the controllers over training seeds, trajectories and
-clearances, the median and the worst seed (the study itself: :mod:`jointplay.neural.study`).
+clearances, the median and the worst seed (the study itself:
+:mod:`jointplay.neural.study.control_study`).
 
 Exit status 3 when an internal-model run diverged."""
 
@@ -12,11 +13,15 @@ import json
 import math
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
+    CONTROL_FLAGS,
+    IDENTIFY_DATA,
+    SETTINGS_HELP,
+    FlagKeys,
     add_base_fraction_argument,
     add_base_motions_argument,
     add_contact_argument,
@@ -28,29 +33,32 @@ from jointplay.cli.neural_args import (
     add_scene_motions_argument,
     add_scheduling_argument,
     add_settings_arguments,
+    add_settings_file_arguments,
     base_fraction_setting,
     contact_setting,
+    fill_from_settings,
     float_list,
     int_list,
     iteration_counts,
-    load_control_scene,
     lpv_base_setting,
     neural_scene_argument,
     operating_range,
     residual_setting,
+    scene_and_settings,
     scene_motions_setting,
+    settings_defaults,
     settings_from_args,
     trajectory_counts,
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
-from jointplay.neural.control import MODEL_BASED, load_lpv, load_twin
-from jointplay.neural.identify_config import IdentifyConfig
-from jointplay.neural.imc import ControllerSettings
-from jointplay.neural.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
-from jointplay.neural.metrics import WORSE_MARGIN
-from jointplay.neural.narx import load_narx
-from jointplay.neural.study import (
+from jointplay.neural.control.imc import ControllerSettings
+from jointplay.neural.control.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
+from jointplay.neural.control.metrics import WORSE_MARGIN
+from jointplay.neural.identify.config import IdentifyConfig
+from jointplay.neural.model.narx import load_narx
+from jointplay.neural.study.control_run import MODEL_BASED, load_lpv, load_twin
+from jointplay.neural.study.control_study import (
     CASES,
     REPORTED,
     Case,
@@ -64,8 +72,14 @@ from jointplay.neural.study import (
     summarise,
     summary_table,
 )
-from jointplay.neural.study_report import ratio_goals, worse_lines
-from jointplay.neural.study_runs import JUDGED, STUDY_JOBS, pool_map
+from jointplay.neural.study.report import ratio_goals, worse_lines
+from jointplay.neural.study.runs import JUDGED, STUDY_JOBS, pool_map
+from jointplay.neural.study.settings import (
+    SETTINGS_FILE,
+    Settings,
+    settings_toml,
+    with_overrides,
+)
 
 if TYPE_CHECKING:
     from jointplay.scene.definition import Scene
@@ -124,8 +138,30 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "agreement horizon of the impact sequence and the energy residual "
                         "(study.csv, study.md); costs a second run of every loop")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
+    add_settings_file_arguments(p)
+    settings_defaults(p, STUDY_FLAGS, shown=SHOWN_FLAGS)
+    p.epilog = ("A study is a file: jointplay control-study STUDY.toml --out DIR (the scene's "
+                "[identify], [control] and [study] tables, or a settings file naming its "
+                "scene; scenes/study_best.toml); DIR/settings.toml reruns it. The flags not "
+                "listed (--identify-hidden, --scheduling, --lambda, ...) are still accepted "
+                "as overrides; " + SETTINGS_HELP
+                + ".")
     p.set_defaults(func=cmd_study)
     return p
+
+
+# control-study's flags and the settings key each overrides; --help lists SHOWN_FLAGS (the
+# rest are overrides the settings file documents, also accepted as --set SECTION.KEY=VALUE).
+STUDY_FLAGS: FlagKeys = {
+    **IDENTIFY_DATA, "identify_lags": ("identify.output_lags", "identify.input_lags"),
+    "identify_hidden": "identify.hidden", "identify_window": "identify.window",
+    "identify_iterations": ("identify.one_step_iterations", "identify.multi_step_iterations"),
+    **CONTROL_FLAGS, "first_seed": "study.first_seed", "seeds": "study.seeds",
+    "cases": "study.cases", "clearances": "study.clearances",
+    "clearance_seeds": "study.clearance_seeds", "workers": "study.workers",
+    "undeclared_noise": "study.undeclared_noise", "verify": "study.verify"}
+SHOWN_FLAGS = ("seeds", "first_seed", "cases", "clearances", "workers", "train", "validation",
+               "test", "duration", "horizon", "verify")
 
 
 def hidden_widths(args: argparse.Namespace) -> tuple[int, ...]:
@@ -169,6 +205,9 @@ class StudyPlan:
     scenes: dict[str, Scene]
     nominal: float
     identify_args: dict[str, Any]
+    settings: Settings  # as resolved, flags included: recorded as settings.toml
+    scene_file: Path | None
+    source: Path | None  # the file given: a scene, or a settings file
 
 
 def cmd_study(args: argparse.Namespace) -> int:
@@ -266,7 +305,8 @@ def noise_note(rows: list[dict[str, Any]], undeclared: bool) -> list[str]:
                 "(--undeclared-noise).", ""]
     horizons = sorted({int(r["horizon"]) for r in noisy})
     lines = ["Noise case: the internal-model controllers were told the sensors' noise and "
-             f"chose horizon {', '.join(map(str, horizons))} (jointplay.neural.noise_tuning)."]
+             f"chose horizon {', '.join(map(str, horizons))} "
+             "(jointplay.neural.control.noise_tuning)."]
     pd = [r for r in rows if r["case"] == "noise" and r["controller"] == "PD"]
     if pd:
         base = pd[0]["rms_acceleration_after"]
@@ -287,11 +327,13 @@ def _span(values: list[float]) -> str:
 
 def study_plan(args: argparse.Namespace) -> StudyPlan:
     """The scene, the cases and the identification settings, every flag checked."""
-    scene = load_control_scene(args.scene, args.quiet)
+    scene, settings, scene_file = scene_and_settings(args)
+    source = Path(args.scene) if args.scene else None  # never written over
+    fill_from_settings(args, settings, STUDY_FLAGS)
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise DescriptionError("--out", f"{out} exists and is not a folder")
-    study_outputs(out, scene)
+    study_outputs(out, scene, source)
     if args.measurement_noise:
         raise DescriptionError("--measurement-noise", "control-study's noise case puts its own "
                                "noise on the measurements and tells the controllers (see "
@@ -312,7 +354,9 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     clearances = float_list(args.clearances, "--clearances") if args.clearances else ()
     counts = trajectory_counts(args)
     iters = iteration_counts(args.identify_iterations, "--identify-iterations")
-    identify_args = {"n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
+    identify_args = {**{k: v for k, v in asdict(settings.identify).items()
+                        if k not in ("seed", "workers")},
+                     "n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
                      "duration": args.duration, "one_step_iterations": iters[0],
                      "multi_step_iterations": iters[1], "scheduling": args.scheduling,
                      "contact_outputs": contact,
@@ -329,17 +373,26 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
     cases = case_list(scene, names, clearances, nominal,
                       scene.robot.clearance_joints if contact else ())
     scenes = {c.name: case_scene(scene, c) for c in cases}
-    return StudyPlan(scene, out, cases, scenes, nominal, identify_args)
+    resolved = with_overrides(
+        settings, study={"seeds": args.seeds, "first_seed": args.first_seed, "cases": names,
+                         "clearances": clearances, "clearance_seeds": args.clearance_seeds,
+                         "workers": args.workers, "undeclared_noise": bool(args.undeclared_noise),
+                         "verify": bool(args.verify)})
+    resolved = replace(resolved, control=settings_from_args(args, None), identify=replace(
+        settings.identify, **identify_args))
+    return StudyPlan(scene, out, cases, scenes, nominal, identify_args, resolved, scene_file,
+                     source)
 
 
-def study_outputs(out: Path, scene: Scene) -> OutputPlan:
+def study_outputs(out: Path, scene: Scene, source: Path | None = None) -> OutputPlan:
     """study.csv, .md, .json and the figures, the model folders under models/, and the
     files read (the scene, its torque table): refused when they meet (exit 2)."""
     from jointplay.cli.args import plan_scene_inputs
 
     plan = OutputPlan()
     plan_scene_inputs(plan, scene)
-    for name in ("study.csv", "study.md", "study.json"):
+    plan.input("scene", source)
+    for name in ("study.csv", "study.md", "study.json", SETTINGS_FILE):
         plan.file("--out", out / name, f"the study's {name}")
     plan.folder("--out", out / "models", "the identified models")
     plan.folder("--out", out, "the figures", pattern="*.png")
@@ -365,7 +418,7 @@ def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, li
 def compile_all(models: dict[float, list[Path]], settings: ControllerSettings) -> None:
     """Compile every controller once, before the workers fork (they then load it from the
     cache instead of compiling it twice at the same time)."""
-    from jointplay.neural.imc import compile_controller
+    from jointplay.neural.control.imc import compile_controller
 
     for paths in models.values():
         for path in paths:
@@ -405,7 +458,7 @@ def write_study(plan: StudyPlan, rows: list[dict[str, Any]],
                 verify: bool = False) -> list[Path]:
     """study.csv, study.md, study.json and the plots; the paths written. ``verify`` adds
     the accuracy columns to study.csv."""
-    with all_or_nothing(study_outputs(plan.out, plan.scene)):
+    with all_or_nothing(study_outputs(plan.out, plan.scene, plan.source)):
         return _write_study(plan, rows, summary, text, verify)
 
 
@@ -421,8 +474,9 @@ def _write_study(plan: StudyPlan, rows: list[dict[str, Any]],
     writer.writerows(rows)
     atomic_write_text(out / "study.csv", buf.getvalue())
     atomic_write_text(out / "study.md", text + "\n")
+    atomic_write_text(out / SETTINGS_FILE, settings_toml(plan.settings, plan.scene_file))
     atomic_write_text(out / "study.json", json.dumps(
         {"rows": rows, "summary": {f"{k[0]} / {k[1]}": v for k, v in summary.items()}},
         indent=1, default=float) + "\n")
-    return [out / "study.md", out / "study.csv", out / "study.json",
+    return [out / "study.md", out / "study.csv", out / "study.json", out / SETTINGS_FILE,
             *plot_study(rows, cases=plan.cases, folder=out)]

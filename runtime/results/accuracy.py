@@ -183,7 +183,7 @@ def statement(run: RunRecord, check: RunRecord, *, clearance_joints: Sequence[in
               t_end: float, rtol: float, atol: float, check_rtol: float, check_atol: float,
               check_wall_s: float = math.nan) -> Accuracy:
     """The accuracy statement of ``run`` from ``check``, the same run at tighter settings
-    (simulations, and the closed loops of :mod:`jointplay.neural.loop_accuracy`)."""
+    (simulations, and the closed loops of :mod:`jointplay.neural.control.loop_accuracy`)."""
     horizon, agreed = agreement_horizon(run.impacts, check.impacts, t_end,
                                         onset_tolerance=ONSET_TOLERANCE * CHECK_MARGIN,
                                         speed_tolerance=SPEED_TOLERANCE * CHECK_MARGIN,

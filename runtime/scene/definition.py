@@ -53,7 +53,11 @@ from jointplay.scene.torques import (
 INTEGRATORS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
 ADAPTIVE: tuple[str, ...] = ("bdf", "cvodes", "idas")
 
-_TOP_KEYS = ("name", "description", "robot", "constants", "torques", "initial", "run")
+# The settings of identification, the controller and studies may sit in a scene file too
+# (jointplay.neural.study.settings reads them; a simulation ignores them).
+_SETTINGS_KEYS = ("preset", "identify", "control", "study")
+_TOP_KEYS = ("name", "description", "robot", "constants", "torques", "initial", "run",
+             *_SETTINGS_KEYS)
 _RUN_KEYS = ("t_end", "output_step", "integrator", "rtol", "atol", "step", "max_steps")
 
 
@@ -331,6 +335,11 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
     with problems.check():
         if not isinstance(data, Mapping):
             raise _error("(top level)", "must be a table", source)
+        if "robot" not in data and data and all(k in ("scene", *_SETTINGS_KEYS) for k in data) \
+                and any(k in data for k in _SETTINGS_KEYS):
+            raise _error("(file)", "is a settings file (preset, scene, [identify], [control], "
+                         "[study]), not a scene; run it with: jointplay control-study FILE "
+                         "--out DIR (or identify, control)", source)
         if ("scene" in data or "parameters" in data) and "robot" not in data:
             raise _error("(file)", "is a sweep file (it has scene = ... or [parameters]), not "
                          "a scene; run it with: jointplay sweep FILE --out DIR", source)
