@@ -18,6 +18,7 @@ from jointplay.neural.identify.pipeline import IdentifyConfig, output_names
 from jointplay.neural.model.narx import Narx
 from jointplay.neural.model.twin import ALPHAS, blend
 from jointplay.neural.study.closed_loop_choice import (
+    CLOSED_LOOP_ALPHAS,
     MARGIN,
     TWIN,
     choose_in_closed_loop,
@@ -243,7 +244,7 @@ def test_identify_runs_each_candidate_in_closed_loop(tmp_path: Any) -> None:
     closed = json.loads((out / "metrics.json").read_text())["residual"]["closed_loop"]
     assert closed["runs"] == ["multisine (scene robot)"]
     rms = closed["rms_acceleration_after"]
-    assert set(rms) == {TWIN, *(label(a) for a in ALPHAS)}
+    assert set(rms) == {TWIN, *(label(a) for a in CLOSED_LOOP_ALPHAS)}
     finite = {k: v[0] for k, v in rms.items() if v[0] is not None}
     assert finite and all(v > 0 for v in finite.values())
     base = finite.get(label(0.0))

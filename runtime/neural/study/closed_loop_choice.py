@@ -4,8 +4,8 @@ The free-run loss that :func:`jointplay.neural.model.twin.select_residual` minim
 predict the controller: on seeds 1 and 2 of the paper scene the network fitted the validation
 runs better in free run than its linear base in 13 of 16 models and won in closed loop in 4
 (docs/control.md). Here each candidate internal model, the blends
-``base + alpha (network - base)`` at :data:`jointplay.neural.model.twin.ALPHAS` (and the ARX twin
-without scheduling signals, where the network has them), runs as the internal-model
+``base + alpha (network - base)`` at :data:`CLOSED_LOOP_ALPHAS` (and the ARX twin without
+scheduling signals, where the network has them), runs as the internal-model
 controller on the validation runs' motions, and the candidate with the lowest RMS
 end-effector acceleration error after settling is saved.
 
@@ -118,6 +118,10 @@ def validation_motions(scene: Any, config: Any, inner: Any,
 # (jointplay.neural.identify.trajectories.scene_family_torques) drawn from the identification's
 # seed (a stream of its own, past the splits' 0-2).
 SCENE_FAMILY_MOTIONS = 2
+# The residual weights run in closed loop: every study of the best setting chose at most 0.5
+# (seeds 11-20 at 30 µm and 0.1 mm; docs/control.md), and each weight costs a closed-loop
+# run per motion.
+CLOSED_LOOP_ALPHAS = (0.0, 0.25, 0.5)
 
 
 def scene_family_motions(scene: Any, config: Any) -> list[tuple[str, Any]]:
@@ -206,12 +210,10 @@ def choose_residual(scene: Any, config: Any, inner: Any, limits: np.ndarray, net
     (:data:`jointplay.neural.identify.pipeline.ClosedLoopChooser`): the candidates run on the
     validation runs' motions, or (``residual_by = "closed-loop-scene"``) on the scene's
     family."""
-    from jointplay.neural.model.twin import ALPHAS
-
     family = config.residual_by == "closed-loop-scene"
     motions = (scene_family_motions(scene, config) if family
                else validation_motions(scene, config, inner, limits))
-    model, closed = choose_in_closed_loop(network, base, twin, motions, ALPHAS)
+    model, closed = choose_in_closed_loop(network, base, twin, motions, CLOSED_LOOP_ALPHAS)
     return model, replace(closed, motions="scene family") if family else closed
 
 
@@ -230,6 +232,6 @@ def _mean_log(values: Sequence[float]) -> float:
     return float(np.mean(np.log(values)))
 
 
-__all__ = ["MARGIN", "SCENE_FAMILY_MOTIONS", "TWIN", "ClosedLoopChoice", "choose_in_closed_loop",
-           "choose_residual", "earns_its_place", "identify_model", "label",
-           "scene_family_motions", "validation_motions"]
+__all__ = ["CLOSED_LOOP_ALPHAS", "MARGIN", "SCENE_FAMILY_MOTIONS", "TWIN", "ClosedLoopChoice",
+           "choose_in_closed_loop", "choose_residual", "earns_its_place", "identify_model",
+           "label", "scene_family_motions", "validation_motions"]
