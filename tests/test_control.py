@@ -323,7 +323,7 @@ def _parser() -> argparse.ArgumentParser:
     (["control-study", "--out", "/tmp/x", "--seeds", "0"], "--seeds"),
     (["control-study", "--out", "/tmp/x", "--first-seed", "-1"], "--first-seed"),
     (["control-study", "--out", "/tmp/x", "--cases", "scene,foo"], "--cases"),
-    (["control-study", "--out", "/tmp/x", "--train", "0"], "--train/--validation/--test"),
+    (["control-study", "--out", "/tmp/x", "--train", "0"], "--train"),
     (["control-study", "--out", "/tmp/x", "--identify-iterations", "1"],
      "--identify-iterations"),
     (["identify", "--out", "/tmp/x", "--lpv-base", "--preset", "paper"], "--lpv-base"),
@@ -357,7 +357,7 @@ def test_neural_room_holds_no_command_line() -> None:
     import jointplay.neural
 
     folder = Path(jointplay.neural.__file__).parent
-    for path in sorted(folder.glob("*.py")):
+    for path in sorted(folder.rglob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         imports = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import)
                    for alias in node.names}

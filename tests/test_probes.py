@@ -238,9 +238,11 @@ def test_sweep_sizes(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None
 @pytest.mark.parametrize(("flags", "field", "word"), [
     (["--duration", "1e9"], "--duration", "at most"),
     (["--duration", "1e4"], "--duration", "samples"),
-    (["--hidden", "100000"], "--hidden", "at most"),
-    (["--train", "100000"], "--train/--validation/--test", "at most"),
-    (["--lags", "1000,2"], "--lags", "at most"),
+    (["--hidden", "100000"], "--hidden", "from 1 to 4096"),
+    (["--train", "100000"], "--train", "from 1 to 10000"),
+    (["--train", "5000", "--validation", "5000", "--test", "1"],
+     "--train/--validation/--test", "at most"),
+    (["--lags", "1000,2"], "--lags", "from 1 to 100"),
     (["--window", "100000000"], "--window", "from 2 to"),
 ])
 def test_identify_sizes(tmp_path: Path, capsys: pytest.CaptureFixture[str], flags: list[str],

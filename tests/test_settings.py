@@ -267,14 +267,15 @@ def test_a_tiny_best_study_runs_end_to_end_and_reruns_from_its_output(tmp_path: 
     (tmp_path / "study_best.toml").write_text(STUDY_BEST.read_text(encoding="utf-8"),
                                               encoding="utf-8")
     out = tmp_path / "out"
-    tiny = ["--set", "identify.n_train=1", "--set", "identify.n_validation=1", "--set",
-            "identify.n_test=1", "--set", "identify.duration=0.3", "--set",
-            "identify.hidden=4", "--set", "identify.one_step_iterations=2", "--set",
+    # (with fewer runs or iterations the network is worse than persistence and refused)
+    tiny = ["--set", "identify.n_train=2", "--set", "identify.n_validation=1", "--set",
+            "identify.n_test=1", "--set", "identify.duration=0.5", "--set",
+            "identify.hidden=4", "--set", "identify.one_step_iterations=20", "--set",
             "identify.multi_step_iterations=0", "--set", "identify.window=20", "--set",
             "identify.scene_motions=1", "--set", "study.clearances=[]", "--seeds", "1"]
     code = main(["control-study", str(tmp_path / "study_best.toml"), "--out", str(out),
                  "--quiet", *tiny])
-    assert code in (0, 3)
+    assert code in (0, 3)  # 3: an internal-model run diverged, which a tiny model may
     for name in ("study.md", "study.csv", "study.json", "settings.toml"):
         assert (out / name).is_file(), name
     recorded, scene = read_settings_file(out / "settings.toml")

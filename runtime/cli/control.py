@@ -14,15 +14,13 @@ from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
-    CONTROL_FLAGS,
-    add_settings_arguments,
+    add_controller_arguments,
     add_settings_file_arguments,
-    fill_from_settings,
+    controller_settings,
     float_list,
     neural_scene_argument,
     scene_and_settings,
-    settings_defaults,
-    settings_from_args,
+    settings_flags,
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
@@ -68,7 +66,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="folder written by `jointplay identify`")
     p.add_argument("--plot", metavar="DIR", help="write figures and the table (control.md) here")
     p.add_argument("--out", metavar="RUN.h5", help="write every run and the metrics (HDF5)")
-    add_settings_arguments(p, ControllerSettings())
+    flags = add_controller_arguments(p)
     p.add_argument("--pd-kp", help="PD baseline stiffness per driven joint, N m/rad (default: "
                                    "the inner loop's)")
     p.add_argument("--pd-kd", help="PD baseline damping per driven joint, N m s/rad (default: "
@@ -89,8 +87,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "test excitations")
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
     add_settings_file_arguments(p)
-    settings_defaults(p, CONTROL_FLAGS)
-    p.set_defaults(func=cmd_control)
+    settings_flags(p, flags)
+    p.set_defaults(func=cmd_control, settings_keys=flags)
     return p
 
 
@@ -161,15 +159,14 @@ def cmd_control(args: argparse.Namespace) -> int:
 
 def control_job(args: argparse.Namespace) -> ControlJob:
     """Load the scene, the model and its twin; check every flag; prepare the outputs."""
-    scene, resolved, scene_file = scene_and_settings(args)
-    fill_from_settings(args, resolved, CONTROL_FLAGS)
+    scene, resolved, scene_file, _ = scene_and_settings(args, args.settings_keys)
     output_plan(args, scene)  # outputs meeting each other or an input: refused first
     model_dir = Path(args.model)
     narx = load_narx(model_dir)
     check_robot(narx, scene.robot, scene.run.output_step, model_dir / MODEL_FILE)
     arx = load_twin(model_dir, narx)
     lpv = load_lpv(model_dir)
-    settings = settings_from_args(args, narx)
+    settings = controller_settings(resolved, narx)
     nj = len(scene.robot.moving_joints)
     pd_kp = float_list(args.pd_kp, "--pd-kp", nj)
     pd_kd = float_list(args.pd_kd, "--pd-kd", nj, positive=False)
@@ -181,8 +178,8 @@ def control_job(args: argparse.Namespace) -> ControlJob:
 
         check_output_path(args.out, "--out")
     cases = test_case_scenes(model_dir, scene) if args.test_cases else []
-    record = settings_toml(replace(resolved, control=settings_from_args(args, None)),
-                           scene_file, "jointplay control settings.toml --model MODEL_DIR")
+    record = settings_toml(resolved, scene_file,
+                           "jointplay control settings.toml --model MODEL_DIR")
     return ControlJob(scene, model_dir, narx, arx, lpv, settings, pd_kp, pd_kd, cases, record)
 
 

@@ -1,19 +1,22 @@
-"""What ``jointplay identify``, ``control`` and ``control-study`` share: their scene, number
-lists given per driven joint, the data and training flags of identification, and the
-controller's tuning flags. Every flag is declared here once; a command picks the ones it has.
+"""What ``jointplay identify``, ``control`` and ``control-study`` share: their scene and
+settings (a scene file's tables or a settings file, over a preset, ``--set`` on top), and the
+flags that override the settings, each declared once in a table with the key it sets and
+checked as that key (jointplay.neural.study.settings_schema).
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.common import limits as size_limits
 from jointplay.common.errors import DescriptionError
 from jointplay.neural.control.imc import ControllerSettings, resolve_settings
-from jointplay.neural.identify.pipeline import IdentifyConfig
+from jointplay.neural.identify.config import BASE_MOTIONS, RESIDUAL_CRITERIA, IdentifyConfig
+from jointplay.neural.study.settings_schema import SCHEMA
 
 if TYPE_CHECKING:
     from jointplay.neural.model.narx import Narx
@@ -63,322 +66,215 @@ def float_list(text: str | None, flag: str, count: int | None = None,
         raise DescriptionError(flag, f"every value must be > 0, got {text!r}")
     if not positive and not all(v >= 0 for v in values):
         raise DescriptionError(flag, f"every value must be >= 0, got {text!r}")
-    if count is not None and len(values) not in (1, count):
-        raise DescriptionError(flag, f"give one value, or one per driven joint ({count}), got "
+    return per_joint(values, flag, count) if count is not None else values
+
+
+def per_joint(values: tuple[float, ...], name: str, count: int) -> tuple[float, ...]:
+    """One value per driven joint; one value stands for every joint; empty stays empty."""
+    if values and len(values) not in (1, count):
+        raise DescriptionError(name, f"give one value, or one per driven joint ({count}), got "
                                f"{len(values)}")
-    return values * count if count is not None and len(values) == 1 else values
-
-
-def int_list(text: str, flag: str, size: int | None = None, low: int = 1,
-             high: int | None = None) -> tuple[int, ...]:
-    """``"13,14"`` to integers >= ``low`` (and <= ``high``), exactly ``size`` of them if given."""
-    try:
-        values = tuple(int(v) for v in text.split(",") if v.strip())
-    except ValueError:
-        raise DescriptionError(flag, f"expects comma-separated integers, got {text!r}") from None
-    if not values or any(v < low for v in values) or (size is not None and len(values) != size):
-        what = f"{size} integers" if size else "integers"
-        raise DescriptionError(flag, f"expects {what} >= {low}, got {text!r}")
-    if high is not None and max(values) > high:
-        raise DescriptionError(flag, f"every value must be at most {high}, got {text!r}")
-    return values
+    return values * count if len(values) == 1 else values
 
 
 # ---- identification: data and training ------------------------------------------------------
 
 COUNTS_FLAG = "--train/--validation/--test"
-_D = IdentifyConfig
-# flag -> (type, default, help in ``identify``, help in ``control-study``, where the flags
-# are the data of the models the study identifies)
-_DATA_FLAGS: dict[str, tuple[Any, Any, str, str]] = {
-    "--train": (int, _D.n_train, "training trajectories (default %(default)s)",
-                f"identify: training runs (default {_D.n_train})"),
-    "--validation": (int, _D.n_validation,
-                     "validation trajectories, for early stopping (default %(default)s)",
-                     f"identify: validation runs (default {_D.n_validation})"),
-    "--test": (int, _D.n_test, "test trajectories (default %(default)s)",
-               f"identify: test runs (default {_D.n_test})"),
-    "--duration": (float, _D.duration, "seconds per trajectory (default %(default)s)",
-                   f"identify: seconds per run (default {_D.duration:g})"),
-}
-ITERATIONS_DEFAULT = f"{_D.one_step_iterations},{_D.multi_step_iterations}"
+# identify's flags: (name, the settings key(s) it sets, help, type: int, float, str, bool
+# or the choices, whether control-study has it too and how: "" as is, "identify-" prefixed,
+# None not at all). A tuple of keys: the flag gives them comma-separated; "!": the negation.
+_IDENTIFY_TABLE: tuple[tuple[str, str | tuple[str, ...], str, Any, str | None], ...] = (
+    ("train", "identify.n_train", "training trajectories", int, ""),
+    ("validation", "identify.n_validation", "validation trajectories (early stopping, the "
+     "residual weight)", int, ""),
+    ("test", "identify.n_test", "test trajectories", int, ""),
+    ("duration", "identify.duration", "seconds per trajectory", float, ""),
+    ("lags", ("identify.output_lags", "identify.input_lags"), "output lags,input lags", str,
+     "identify-"),
+    ("hidden", "identify.hidden", "hidden layer widths, e.g. 24,24", str, "identify-"),
+    ("iterations", ("identify.one_step_iterations", "identify.multi_step_iterations"),
+     "L-BFGS iterations: one-step phase, free-run phase (early stopping may end either "
+     "sooner)", str, "identify-"),
+    ("window", "identify.window", "samples per free-run window, for training and for "
+     "weighing the residual", int, "identify-"),
+    ("scheduling", "identify.scheduling", "the network also sees the scheduling signals: the "
+     "ideal robot's joint angles (cos, sin) and speeds and the drive torques of the motion "
+     "(the LPV-ARX baseline always does)", bool, ""),
+    ("lpv-base", "identify.lpv_base", "with --scheduling: the network's linear part is an "
+     "LPV-ARX model (input gain affine in the scheduling signals), started at its "
+     "least-squares fit, and its residual is weighed against it", bool, ""),
+    ("contact-outputs", "identify.contact_outputs", "the journals' eccentricities (ex, ey) at "
+     "every clearance joint are measured outputs too (bearing displacement sensors): every "
+     "model and controller sees the contact state", bool, "identify-"),
+    ("linear-input-gain", "identify.linear_input_gain", "the network's hidden layers do not "
+     "see the added torque: the model's input gain (what the controller inverts) is its "
+     "linear part's, and the network corrects only the rest of the response", bool,
+     "identify-"),
+    ("residual-by", "identify.residual_by", "how the network's residual weight is chosen on "
+     "validation: free-run (its free-run loss over windows), closed-loop (each candidate "
+     "runs as the internal-model controller on the validation runs' motions; the lowest RMS "
+     "acceleration error after settling wins; needs --validation 2 or more) or "
+     "closed-loop-scene (the same on motions of the scene's own family: its torques at other "
+     "amplitudes, rates and time shifts, seeded)", RESIDUAL_CRITERIA, "identify-"),
+    ("base-fraction", "identify.base_fraction", "peak of the excitation runs' base torques "
+     "(multisines, steps, chirps), as a fraction of the torque limit", float, "identify-"),
+    ("base-motions", "identify.base_motions", "what drives the training and validation runs' "
+     "reference motions: mixed (the scene's torques, random multisines and steps in turn) or "
+     "scene-family (the scene's torques at other amplitudes, rates and time shifts, seeded: "
+     "the motions the controller is judged on); the test runs keep their families",
+     BASE_MOTIONS, "identify-"),
+    ("scene-motions", "identify.scene_motions", "with closed-loop-scene: how many motions of "
+     "the scene's family each candidate runs on", int, "identify-"),
+    ("clearances", "identify.clearances", "radial clearances, m, the training and validation "
+     "runs span (each run on one, cycling with the payloads; e.g. 30e-6,100e-6; default: "
+     "the scene's)", str, "identify-"),
+    ("payloads", "identify.payloads", "payload masses, kg, the training and validation runs "
+     "span (e.g. 0,2,3; default: the scene's)", str, "identify-"),
+    ("no-linear-path", "!identify.linear_path", "no linear direct path beside the hidden "
+     "layers (the bare network)", bool, None),
+    ("kp", "identify.kp", "inner-loop PD stiffness per driven joint, N m/rad (empty: the "
+     "inner loop's default)", str, None),
+    ("kd", "identify.kd", "inner-loop PD damping per driven joint, N m s/rad (empty: the "
+     "inner loop's default)", str, None),
+    ("torque-limit", "identify.torque_limit", "actuator limits per driven joint, N m (empty: "
+     "3 x the scene's peak torque)", str, None),
+    ("seed", "identify.seed", "seed of everything random", int, None),
+    ("workers", "identify.workers", "processes simulating trajectories (0: one per core, at "
+     "most 4)", int, None),
+)
 
 
-def add_identify_data_arguments(parser: argparse.ArgumentParser, *, study: bool = False) -> None:
-    """--train, --validation, --test, --duration: the trajectories identification simulates."""
-    for flag, (kind, default, own_help, study_help) in _DATA_FLAGS.items():
-        parser.add_argument(flag, type=kind, default=default,
-                            help=study_help if study else own_help)
+def add_identify_arguments(parser: argparse.ArgumentParser, *, study: bool = False
+                           ) -> FlagKeys:
+    """identify's flags (``study``: the ones control-study has, most prefixed with
+    ``identify-``); the settings key each sets, by its dest."""
+    keys: FlagKeys = {}
+    for name, key, text, kind, in_study in _IDENTIFY_TABLE:
+        if study and in_study is None:
+            continue
+        flag = f"--{in_study if study else ''}{name}"
+        dest = "identify_" + name.replace("-", "_")
+        if kind is bool:
+            parser.add_argument(flag, dest=dest, action="store_true", help=text)
+        elif isinstance(kind, tuple):
+            parser.add_argument(flag, dest=dest, choices=kind, help=text)
+        else:
+            parser.add_argument(flag, dest=dest, type=kind, help=text)
+        keys[dest] = key
+    return keys
 
 
-def add_scheduling_argument(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--scheduling", action="store_true",
-                        help="the network also sees the scheduling signals: the ideal robot's "
-                             "joint angles (cos, sin) and speeds and the drive torques of the "
-                             "motion (the LPV-ARX baseline always does)")
-    parser.add_argument("--lpv-base", action="store_true",
-                        help="with --scheduling: the network's linear part is an LPV-ARX model "
-                             "(input gain affine in the scheduling signals), started at its "
-                             "least-squares fit, and its residual is weighed against it")
+def check_identify_for(config: IdentifyConfig, scene: Scene,
+                       given: dict[str, str]) -> IdentifyConfig:
+    """What depends on the scene, checked before any work (each named by its flag when one
+    gave it, else by its key): per-joint values, the contact state measured, the trajectories'
+    number and duration; the per-joint values with one for every joint."""
+    def name(key: str) -> str:
+        return given.get(f"identify.{key}", f"identify.{key}")
 
-
-def add_contact_argument(parser: argparse.ArgumentParser, flag: str) -> None:
-    parser.add_argument(flag, dest="contact_outputs", action="store_true",
-                        help="the journals' eccentricities (ex, ey) at every clearance joint are "
-                             "measured outputs too (bearing displacement sensors): every model "
-                             "and controller sees the contact state")
-
-
-def contact_setting(args: argparse.Namespace, scene: Any, flag: str) -> bool:
-    """The contact-outputs flag, refused on a robot without a clearance joint."""
-    if args.contact_outputs and not scene.robot.clearance_joints:
-        raise DescriptionError(flag, "the scene's robot has no clearance joint, so there is "
-                               "no journal eccentricity to measure: drop the flag")
-    return bool(args.contact_outputs)
-
-
-def add_linear_gain_argument(parser: argparse.ArgumentParser, flag: str) -> None:
-    parser.add_argument(flag, dest="linear_input_gain", action="store_true",
-                        help="the network's hidden layers do not see the added torque: the "
-                             "model's input gain (what the controller inverts) is its linear "
-                             "part's, and the network corrects only the rest of the response")
-
-
-def add_residual_argument(parser: argparse.ArgumentParser, flag: str = "--residual-by"
-                          ) -> None:
-    from jointplay.neural.identify.config import RESIDUAL_CRITERIA
-
-    parser.add_argument(flag, dest="residual_by", choices=RESIDUAL_CRITERIA,
-                        default="free-run",
-                        help="how the network's residual weight is chosen on validation: "
-                             "free-run (its free-run loss over windows) or closed-loop (each "
-                             "candidate runs as the internal-model controller on the "
-                             "validation runs' motions; the lowest RMS acceleration error "
-                             "after settling wins; needs --validation 2 or more) or "
-                             "closed-loop-scene (the same on two motions of the scene's own "
-                             "family: its torques at other amplitudes, rates and time "
-                             "shifts, seeded) (default %(default)s)")
-
-
-def add_scene_motions_argument(parser: argparse.ArgumentParser, flag: str) -> None:
-    parser.add_argument(flag, dest="scene_motions", type=int, default=_D.scene_motions,
-                        help="with closed-loop-scene: how many motions of the scene's family "
-                             "each candidate runs on (default %(default)s)")
-
-
-def scene_motions_setting(args: argparse.Namespace, flag: str) -> int:
-    """The number of scene-family motions, refused outside 1 to MAX_SCENE_MOTIONS."""
-    from jointplay.common.errors import DescriptionError
-    from jointplay.neural.identify.config import MAX_SCENE_MOTIONS
-
-    value = int(args.scene_motions)
-    if not 1 <= value <= MAX_SCENE_MOTIONS:
-        raise DescriptionError(flag, f"must be a whole number from 1 to {MAX_SCENE_MOTIONS}, "
-                                     f"got {value}")
-    return value
-
-
-def residual_setting(args: argparse.Namespace, flag: str, n_validation: int) -> str:
-    """--residual-by, refused as closed-loop without a validation run past the first (which
-    drives the scene's own torques, the motion the controller is tested on)."""
-    from jointplay.common.errors import DescriptionError
-
-    if args.residual_by == "closed-loop" and n_validation < 2:
-        raise DescriptionError(flag, "closed-loop needs a validation run whose motion is not "
-                                     "the scene's own (the first drives the scene's torques): "
-                                     "give --validation 2 or more")
-    return str(args.residual_by)
-
-
-def add_base_fraction_argument(parser: argparse.ArgumentParser, flag: str) -> None:
-    parser.add_argument(flag, dest="base_fraction", type=float, default=_D.base_fraction,
-                        help="peak of the excitation runs' base torques (multisines, steps, "
-                             "chirps), as a fraction of the torque limit: the size of the "
-                             "motions the model is identified on (default %(default)s)")
-
-
-def add_base_motions_argument(parser: argparse.ArgumentParser, flag: str) -> None:
-    from jointplay.neural.identify.config import BASE_MOTIONS
-
-    parser.add_argument(flag, dest="base_motions", choices=BASE_MOTIONS,
-                        default=_D.base_motions,
-                        help="what drives the training and validation runs' reference "
-                             "motions: mixed (the scene's torques, random multisines and "
-                             "steps in turn) or scene-family (the scene's torques, then the "
-                             "scene's torques at other amplitudes, rates and time shifts, "
-                             "seeded: the motions the controller is judged on); the test runs "
-                             "keep their families (default %(default)s)")
-
-
-def base_fraction_setting(args: argparse.Namespace, flag: str) -> float:
-    """The base torques' peak fraction, refused outside (0, 1]."""
-    from jointplay.common.errors import DescriptionError
-
-    value = float(args.base_fraction)
-    if not 0 < value <= 1:
-        raise DescriptionError(flag, f"must be above 0 and at most 1, got {value:g}")
-    return value
-
-
-def lpv_base_setting(args: argparse.Namespace) -> bool:
-    """--lpv-base, refused without --scheduling."""
-    from jointplay.common.errors import DescriptionError
-
-    if args.lpv_base and not args.scheduling:
-        raise DescriptionError("--lpv-base", "needs --scheduling (the LPV-ARX gain is affine "
-                                             "in the scheduling signals)")
-    return bool(args.lpv_base)
-
-
-def add_operating_range_arguments(parser: argparse.ArgumentParser, prefix: str = "") -> None:
-    parser.add_argument(f"--{prefix}clearances", dest="span_clearances", metavar="M,M",
-                        help="radial clearances, m, the training and validation runs span "
-                             "(each run on one, cycling with the payloads; e.g. "
-                             "30e-6,100e-6; default: the scene's)")
-    parser.add_argument(f"--{prefix}payloads", dest="span_payloads", metavar="KG,KG",
-                        help="payload masses, kg, the training and validation runs span "
-                             "(e.g. 0,2,3; default: the scene's)")
-
-
-def operating_range(args: argparse.Namespace, prefix: str = "") -> dict[str, Any]:
-    """The clearances and payloads the flags give (each checked, named when refused)."""
-    out: dict[str, tuple[float, ...]] = {}
-    for key, flag, positive in (("clearances", f"--{prefix}clearances", True),
-                                ("payloads", f"--{prefix}payloads", False)):
-        text = getattr(args, f"span_{key}")
-        out[key] = float_list(text, flag, positive=positive) if text else ()
-    return out
-
-
-def add_iterations_argument(parser: argparse.ArgumentParser, flag: str, text: str) -> None:
-    parser.add_argument(flag, default=ITERATIONS_DEFAULT, help=text)
-
-
-def trajectory_counts(args: argparse.Namespace) -> tuple[int, ...]:
-    """Training, validation and test trajectories, each at least 1."""
-    return int_list(f"{args.train},{args.validation},{args.test}", COUNTS_FLAG)
-
-
-def iteration_counts(text: str, flag: str, high: int | None = None) -> tuple[int, ...]:
-    """L-BFGS iterations of the one-step and the free-run phase (0 skips a phase)."""
-    return int_list(text, flag, 2, low=0, high=high)
+    n = len(scene.robot.moving_joints)
+    joints = {key: per_joint(getattr(config, key), name(key), n)
+              for key in ("kp", "kd", "torque_limit")}
+    if config.contact_outputs and not scene.robot.clearance_joints:
+        raise DescriptionError(name("contact_outputs"), "the scene's robot has no clearance "
+                               "joint, so there is no journal eccentricity to measure")
+    counts = (config.n_train, config.n_validation, config.n_test)
+    if sum(counts) > size_limits.MAX_TRAJECTORIES:
+        raise DescriptionError(COUNTS_FLAG, f"{sum(counts)} trajectories in all; at most "
+                               f"{size_limits.MAX_TRAJECTORIES} are allowed")
+    check_duration(config.duration, counts, (config.output_lags, config.input_lags),
+                   scene.run.output_step, name("duration"))
+    return replace(config, **joints)
 
 
 def check_duration(duration: float, counts: tuple[int, ...], lags: tuple[int, ...],
-                   dt: float) -> None:
-    """Seconds per trajectory: positive, within the limits, long enough for the lags."""
-    if not (isinstance(duration, float) and math.isfinite(duration) and duration > 0):
-        raise DescriptionError("--duration", f"must be a positive number of seconds, got "
-                               f"{duration!r}")
-    if duration > size_limits.MAX_T_END:
-        raise DescriptionError("--duration", f"must be at most {size_limits.MAX_T_END:g} s, got "
-                               f"{duration:g}")
+                   dt: float, name: str = "--duration") -> None:
+    """Seconds per trajectory: within the samples allowed, long enough for the lags."""
     samples = sum(counts) * duration / dt
     if samples > size_limits.MAX_IDENTIFY_SAMPLES:
-        raise DescriptionError("--duration", f"{sum(counts)} trajectories of {duration:g} s "
+        raise DescriptionError(name, f"{sum(counts)} trajectories of {duration:g} s "
                                f"at {dt:g} s per sample are {samples:.3g} "
                                f"samples; at most {size_limits.MAX_IDENTIFY_SAMPLES} are allowed")
     if round(duration / dt) < max(lags) + 2 + round(0.05 / dt):
-        raise DescriptionError("--duration", f"{duration:g} s is too short for lags "
+        raise DescriptionError(name, f"{duration:g} s is too short for lags "
                                f"{lags} at {dt:g} s per sample after the 0.05 s transient")
 
 
 # ---- the controller's tuning ----------------------------------------------------------------
 
-def add_settings_arguments(p: argparse.ArgumentParser, d: ControllerSettings) -> None:
-    """The controller's tuning flags (``control`` and ``control-study``)."""
-    p.add_argument("--horizon", type=int, default=d.horizon,
-                   help="samples ahead the prediction is matched (default %(default)s)")
-    p.add_argument("--lambda", dest="lambda_", type=float, default=d.regularisation,
-                   help="regularisation of the inverse (default %(default)s)")
-    p.add_argument("--setpoint-filter", type=float, default=d.setpoint_filter,
-                   help="a in y_d(k+1) = a y_d(k) + (1 - a) r(k+1) (default %(default)s)")
-    p.add_argument("--mismatch-filter", type=float, default=d.mismatch_filter,
-                   help="b of the first-order mismatch filter (default %(default)s)")
-    p.add_argument("--iterations", type=int, default=d.iterations,
-                   help="linearisations per step (default %(default)s: the AIMNC law)")
-    p.add_argument("--track", help="outputs the controller matches, e.g. q2,q3 (default: the "
-                                   "end effector's position and velocity along the axis the "
-                                   "torques move it most, and the last joint's angle and "
-                                   "speed)")
-    p.add_argument("--scales", help="error of each tracked output that counts as 1 (default: "
-                                    "its spread in the training data)")
-    p.add_argument("--torque-limit", help="actuator limits per driven joint, N m (default: "
-                                          "the model's)")
-    p.add_argument("--rate-limit", help="limit on the outer loop's torque rate per driven "
-                                        "joint, N m/s (default: 10 x the torque limit)")
-    p.add_argument("--no-guard", action="store_true",
-                   help="run the network without its trust region and fallback (to see what "
-                        "the guard prevents; a diverging loop is still stopped and reported)")
-    p.add_argument("--trust-input", type=float, default=d.trust_input,
-                   help="|v| kept within this x the largest |v| in training (default "
-                        "%(default)s)")
-    p.add_argument("--trust-range", type=float, default=d.trust_range,
-                   help="the internal model's regressor and prediction must stay in the "
-                        "training range widened by this x its width (default %(default)s)")
-    p.add_argument("--trust-mismatch", type=float, default=d.trust_mismatch,
-                   help="largest scaled mismatch on a tracked output before the network is "
-                        "distrusted (default %(default)s)")
-    p.add_argument("--engage", type=float, default=None,
-                   help="seconds the outer loop waits at the start, the inner PD alone, before "
-                        "it starts its models from the measured history (default: twice the "
-                        "start-up the model's training runs left out, 0.1 s)")
-    p.add_argument("--measurement-noise", metavar="NAME=STD,...",
-                   help="the sensors' noise, standard deviation per measured output in its "
-                        "unit, e.g. q2=3e-6,dq2=4e-3,tip_vx=1e-3: every controller measures "
-                        "through it (control-study: see its noise case), and the "
-                        "internal-model controllers choose their horizon for it (the shortest "
-                        "whose predicted RMS tip acceleration from the noise is within "
-                        "1 + --noise-budget of the inner loop's alone)")
-    p.add_argument("--noise-budget", type=float, default=d.noise_budget,
-                   help="with --measurement-noise: the increase of the noise's RMS tip "
-                        "acceleration over the inner loop's alone that the outer loop may add "
-                        "(default %(default)s)")
-    p.add_argument("--fallback-hold", type=int, default=d.fallback_hold,
-                   help="samples on the fallback after a first intervention, doubling with "
-                        "each further one (default %(default)s)")
+# The controller's flags (``control`` and ``control-study``): (flag, dest, the settings key,
+# help, type).
+_CONTROL_TABLE: tuple[tuple[str, str, str, str, Any], ...] = (
+    ("--horizon", "horizon", "control.horizon", "samples ahead the prediction is matched",
+     int),
+    ("--lambda", "lambda_", "control.regularisation", "regularisation of the inverse", float),
+    ("--setpoint-filter", "setpoint_filter", "control.setpoint_filter",
+     "a in y_d(k+1) = a y_d(k) + (1 - a) r(k+1)", float),
+    ("--mismatch-filter", "mismatch_filter", "control.mismatch_filter",
+     "b of the first-order mismatch filter", float),
+    ("--iterations", "iterations", "control.iterations",
+     "linearisations per step (1: the AIMNC law)", int),
+    ("--track", "track", "control.tracked", "outputs the controller matches, e.g. q2,q3 "
+     "(empty: the end effector's position and velocity along the axis the torques move it "
+     "most, and the last joint's angle and speed)", str),
+    ("--scales", "scales", "control.scales", "error of each tracked output that counts as 1 "
+     "(empty: its spread in the training data)", str),
+    ("--torque-limit", "torque_limit", "control.torque_limit", "actuator limits per driven "
+     "joint, N m (empty: the model's)", str),
+    ("--rate-limit", "rate_limit", "control.rate_limit", "limit on the outer loop's torque "
+     "rate per driven joint, N m/s (empty: 10 x the torque limit)", str),
+    ("--no-guard", "no_guard", "!control.guard", "run the network without its trust region "
+     "and fallback (to see what the guard prevents; a diverging loop is still stopped and "
+     "reported)", bool),
+    ("--trust-input", "trust_input", "control.trust_input",
+     "|v| kept within this x the largest |v| in training", float),
+    ("--trust-range", "trust_range", "control.trust_range", "the internal model's regressor "
+     "and prediction must stay in the training range widened by this x its width", float),
+    ("--trust-mismatch", "trust_mismatch", "control.trust_mismatch", "largest scaled "
+     "mismatch on a tracked output before the network is distrusted", float),
+    ("--engage", "engage", "control.engage", "seconds the outer loop waits at the start, the "
+     "inner PD alone, before it starts its models from the measured history (absent: twice "
+     "the start-up the model's training runs left out, 0.1 s)", float),
+    ("--measurement-noise", "measurement_noise", "control.measurement_noise", "the sensors' "
+     "noise, NAME=STD per measured output in its unit, e.g. q2=3e-6,dq2=4e-3,tip_vx=1e-3: "
+     "every controller measures through it (control-study: see its noise case), and the "
+     "internal-model controllers choose their horizon for it (the shortest whose predicted "
+     "RMS tip acceleration from the noise is within 1 + --noise-budget of the inner loop's "
+     "alone)", str),
+    ("--noise-budget", "noise_budget", "control.noise_budget", "with --measurement-noise: "
+     "the increase of the noise's RMS tip acceleration over the inner loop's alone that the "
+     "outer loop may add", float),
+    ("--fallback-hold", "fallback_hold", "control.fallback_hold", "samples on the fallback "
+     "after a first intervention, doubling with each further one", int),
+)
+
+
+def add_controller_arguments(parser: argparse.ArgumentParser) -> FlagKeys:
+    """The controller's tuning flags; the settings key each sets, by its dest."""
+    for flag, dest, _, text, kind in _CONTROL_TABLE:
+        if kind is bool:
+            parser.add_argument(flag, dest=dest, action="store_true", help=text)
+        else:
+            parser.add_argument(flag, dest=dest, type=kind, help=text)
+    return {dest: key for _, dest, key, _, _ in _CONTROL_TABLE}
 
 
 def noise_pairs(text: str | None) -> tuple[tuple[str, float], ...]:
     """``--measurement-noise``'s NAME=STD pairs (names are checked against the model later)."""
-    out = []
-    for item in (text or "").split(","):
-        if not item.strip():
-            continue
-        name, sep, value = item.partition("=")
-        try:
-            std = float(value)
-        except ValueError:
-            std = math.nan
-        if not sep or not name.strip() or not math.isfinite(std) or std < 0:
-            raise DescriptionError("--measurement-noise", f"{item.strip()!r}: give NAME=STD "
-                                   "pairs, e.g. dq2=4e-3,tip_vx=1e-3 (STD >= 0, in the "
-                                   "output's unit)")
-        out.append((name.strip(), std))
-    return tuple(out)
-
-
-def settings_from_args(args: argparse.Namespace, narx: Narx | None) -> ControllerSettings:
-    """The settings the flags give; resolved against ``narx`` when given (defaults filled
-    from it, every value checked), else as given (each model resolves them for itself)."""
-    tracked = tuple(n.strip() for n in args.track.split(",") if n.strip()) if args.track else ()
-    settings = ControllerSettings(
-        horizon=args.horizon, regularisation=args.lambda_, setpoint_filter=args.setpoint_filter,
-        mismatch_filter=args.mismatch_filter, tracked=tracked,
-        scales=float_list(args.scales, "--scales"),
-        torque_limit=float_list(args.torque_limit, "--torque-limit"),
-        rate_limit=float_list(args.rate_limit, "--rate-limit"), iterations=args.iterations,
-        guard=not args.no_guard, trust_input=args.trust_input, trust_range=args.trust_range,
-        trust_mismatch=args.trust_mismatch, fallback_hold=args.fallback_hold,
-        engage=args.engage, measurement_noise=noise_pairs(args.measurement_noise),
-        noise_budget=args.noise_budget)
-    return resolve_settings(narx, settings) if narx is not None else settings
+    if not text:
+        return ()
+    value: tuple[tuple[str, float], ...] = _flag_value(
+        "--measurement-noise", SCHEMA["control"]["measurement_noise"], text)
+    return value
 
 
 # ---- the settings file ----------------------------------------------------------------------
 
 SETTINGS_HELP = ("every key of the [identify], [control] and [study] tables, its meaning and "
                  "its default per preset: docs/how-to/settings-file.md")
+# Each command's flags by dest, and the settings key each sets (a tuple: the flag gives them
+# comma-separated; "!": the flag is the key's negation).
+FlagKeys = dict[str, str | tuple[str, ...]]
 
 
 def add_settings_file_arguments(parser: argparse.ArgumentParser) -> None:
@@ -392,10 +288,32 @@ def add_settings_file_arguments(parser: argparse.ArgumentParser) -> None:
                              "(repeatable; " + SETTINGS_HELP + ")")
 
 
-def scene_and_settings(args: argparse.Namespace) -> tuple[Scene, Settings, Path | None]:
-    """The scene, the settings (the file's tables over its preset, ``--set`` on top) and the
-    scene file to record: ``args.scene`` is a scene file (its settings tables, if any, read
-    too), a settings file naming its scene, or None (the paper scene)."""
+def settings_flags(parser: argparse.ArgumentParser, flags: FlagKeys,
+                   shown: tuple[str, ...] | None = None) -> None:
+    """The flags in ``flags`` override the settings: not given, they are None; their help
+    names the key. With ``shown``, --help lists only those of them (the others stay accepted,
+    as the overrides the settings file documents)."""
+    names = {}
+    for action in parser._actions:
+        if action.dest not in flags:
+            continue
+        action.default = None
+        names[action.dest] = action.option_strings[-1]
+        if shown is not None and action.dest not in shown:
+            action.help = argparse.SUPPRESS
+        elif action.help:
+            keys = flags[action.dest]
+            key = ", ".join(keys) if isinstance(keys, tuple) else keys.lstrip("!")
+            action.help += f" (settings: {key})"
+    parser.set_defaults(flag_names=names)
+
+
+def scene_and_settings(args: argparse.Namespace, flags: FlagKeys
+                       ) -> tuple[Scene, Settings, Path | None, dict[str, str]]:
+    """The scene, the settings (the file's tables over its preset, ``--set`` on top, the
+    flags given on top of that), the scene file to record, and which flag gave which key.
+    ``args.scene`` is a scene file (its settings tables, if any, read too), a settings file
+    naming its scene, or None (the paper scene)."""
     from jointplay.common.validation import read_toml
     from jointplay.neural.study.settings import (
         is_settings_document,
@@ -407,8 +325,7 @@ def scene_and_settings(args: argparse.Namespace) -> tuple[Scene, Settings, Path 
     path = Path(args.scene) if args.scene else None
     scene_file: Path | None = path
     if path is None:
-        settings = resolve_settings({}, preset=args.preset, overrides=args.overrides,
-                                    source="flags")
+        settings = resolve_settings({}, preset=args.preset, overrides=args.overrides)
     else:
         data, _ = read_toml(path, "scene or settings")
         if is_settings_document(data):
@@ -417,75 +334,70 @@ def scene_and_settings(args: argparse.Namespace) -> tuple[Scene, Settings, Path 
         else:
             settings = resolve_settings(settings_tables(data), preset=args.preset,
                                         overrides=args.overrides, source=str(path))
+    settings, given = apply_flags(args, settings, flags)
     scene = load_control_scene(str(scene_file) if scene_file else None, args.quiet)
-    return scene, settings, scene_file.resolve() if scene_file else None
+    return scene, settings, scene_file.resolve() if scene_file else None, given
 
 
-# Each command's flags and the settings key each overrides (a tuple: the flag gives them as
-# a comma-separated list; "!": the flag is the key's negation). A flag not given takes its
-# value from the settings.
-IDENTIFY_DATA = {
-    "train": "identify.n_train", "validation": "identify.n_validation",
-    "test": "identify.n_test", "duration": "identify.duration",
-    "scheduling": "identify.scheduling", "lpv_base": "identify.lpv_base",
-    "contact_outputs": "identify.contact_outputs",
-    "linear_input_gain": "identify.linear_input_gain", "residual_by": "identify.residual_by",
-    "base_fraction": "identify.base_fraction", "base_motions": "identify.base_motions",
-    "scene_motions": "identify.scene_motions", "span_clearances": "identify.clearances",
-    "span_payloads": "identify.payloads",
-}
-CONTROL_FLAGS = {
-    "horizon": "control.horizon", "lambda_": "control.regularisation",
-    "setpoint_filter": "control.setpoint_filter", "mismatch_filter": "control.mismatch_filter",
-    "iterations": "control.iterations", "track": "control.tracked", "scales": "control.scales",
-    "torque_limit": "control.torque_limit", "rate_limit": "control.rate_limit",
-    "no_guard": "!control.guard", "trust_input": "control.trust_input",
-    "trust_range": "control.trust_range", "trust_mismatch": "control.trust_mismatch",
-    "engage": "control.engage", "measurement_noise": "control.measurement_noise",
-    "noise_budget": "control.noise_budget", "fallback_hold": "control.fallback_hold",
-}
-FlagKeys = dict[str, str | tuple[str, ...]]
+def apply_flags(args: argparse.Namespace, settings: Settings, flags: FlagKeys
+                ) -> tuple[Settings, dict[str, str]]:
+    """``settings`` with every flag given on top, each checked as the settings file's key
+    and named by its flag when refused (all problems at once); and which flag gave which
+    key."""
+    from jointplay.common.validation import Problems
 
-
-def settings_defaults(parser: argparse.ArgumentParser, flags: FlagKeys,
-                      shown: tuple[str, ...] | None = None) -> None:
-    """The flags in ``flags`` default to the settings (None until filled in); their help
-    says so. With ``shown``, only those flags (and the others not in ``flags``) are listed
-    by --help: the rest stay accepted, as overrides the settings file documents."""
-    import re
-
-    for action in parser._actions:
-        if action.dest not in flags:
-            continue
-        action.default = None
-        if shown is not None and action.dest not in shown:
-            action.help = argparse.SUPPRESS
-        elif action.help and action.help != argparse.SUPPRESS:
-            action.help = re.sub(r" ?\(default[^()]*(\([^()]*\)[^()]*)*\)", "", action.help) \
-                + f" (default: {_setting_name(flags[action.dest])} of the settings)"
-
-
-def _setting_name(keys: str | tuple[str, ...]) -> str:
-    return ", ".join(keys) if isinstance(keys, tuple) else keys.lstrip("!")
-
-
-def fill_from_settings(args: argparse.Namespace, settings: Settings, flags: FlagKeys) -> None:
-    """Every flag not given takes the settings' value, in the form the flag is read in."""
+    problems = Problems()
+    values: dict[str, dict[str, Any]] = {}
+    given: dict[str, str] = {}
     for dest, keys in flags.items():
-        if getattr(args, dest, None) is not None:
+        raw = getattr(args, dest, None)
+        if raw is None:
             continue
-        if isinstance(keys, tuple):
-            setattr(args, dest, ",".join(str(_value(settings, k)) for k in keys))
-            continue
-        value = _value(settings, keys.lstrip("!"))
-        if keys.startswith("!"):
-            value = not value
-        elif isinstance(value, tuple):
-            value = ",".join(f"{v[0]}={v[1]!r}" if isinstance(v, tuple) else str(v)
-                             for v in value) or None
-        setattr(args, dest, value)
+        flag = getattr(args, "flag_names", {}).get(dest, dest)
+        with problems.check():
+            for key, value in _flag_values(flag, keys, raw):
+                section, name = key.split(".")
+                values.setdefault(section, {})[name] = value
+                given[key] = flag
+    problems.raise_any()
+    changed = {}
+    for section, table in values.items():
+        try:  # the checks across keys (IdentifyConfig's), named by the flag when one gave it
+            changed[section] = replace(getattr(settings, section), **table)
+        except DescriptionError as err:
+            raise err.renamed(lambda field, s=section: given.get(
+                f"{s}.{field}", f"{s}.{field}")) from None
+    return replace(settings, **changed), given
 
 
-def _value(settings: Settings, key: str) -> Any:
+def _flag_values(flag: str, keys: str | tuple[str, ...], raw: Any) -> list[tuple[str, Any]]:
+    if isinstance(keys, tuple):
+        parts = [p for p in str(raw).split(",") if p.strip()]
+        if len(parts) != len(keys):
+            raise DescriptionError(flag, f"expects {len(keys)} comma-separated values "
+                                   f"({', '.join(keys)}), got {raw!r}")
+        return [(k, _flag_value(flag, _key(k), p)) for k, p in zip(keys, parts, strict=True)]
+    if keys.startswith("!"):
+        return [(keys[1:], not raw)]
+    return [(keys, _flag_value(flag, _key(keys), raw))]
+
+
+def _key(key: str) -> Any:
     section, _, name = key.partition(".")
-    return getattr(getattr(settings, section), name)
+    return SCHEMA[section][name]
+
+
+def _flag_value(flag: str, key: Any, raw: Any) -> Any:
+    """A flag's value checked as the key's, the error naming the flag."""
+    from jointplay.neural.study.settings_schema import checked, parse_text
+
+    try:
+        return parse_text(flag, key, raw) if isinstance(raw, str) else checked(flag, key, raw)
+    except DescriptionError as err:
+        raise err.renamed(lambda _: flag) from None
+
+
+def controller_settings(settings: Settings, narx: Narx | None) -> ControllerSettings:
+    """The controller's settings, resolved against ``narx`` when given (defaults filled from
+    it, every value checked), else as given (each model resolves them for itself)."""
+    return resolve_settings(narx, settings.control) if narx is not None else settings.control

@@ -11,51 +11,27 @@ import csv
 import io
 import json
 import math
-import os
 import time
 from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
-    CONTROL_FLAGS,
-    IDENTIFY_DATA,
     SETTINGS_HELP,
-    FlagKeys,
-    add_base_fraction_argument,
-    add_base_motions_argument,
-    add_contact_argument,
-    add_identify_data_arguments,
-    add_iterations_argument,
-    add_linear_gain_argument,
-    add_operating_range_arguments,
-    add_residual_argument,
-    add_scene_motions_argument,
-    add_scheduling_argument,
-    add_settings_arguments,
+    add_controller_arguments,
+    add_identify_arguments,
     add_settings_file_arguments,
-    base_fraction_setting,
-    contact_setting,
-    fill_from_settings,
-    float_list,
-    int_list,
-    iteration_counts,
-    lpv_base_setting,
+    check_identify_for,
+    controller_settings,
     neural_scene_argument,
-    operating_range,
-    residual_setting,
     scene_and_settings,
-    scene_motions_setting,
-    settings_defaults,
-    settings_from_args,
-    trajectory_counts,
+    settings_flags,
 )
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text
 from jointplay.neural.control.imc import ControllerSettings
 from jointplay.neural.control.loop_accuracy import ACCURACY_COLUMNS, accuracy_lines, check_tolerance
 from jointplay.neural.control.metrics import WORSE_MARGIN
-from jointplay.neural.identify.config import IdentifyConfig
 from jointplay.neural.model.narx import load_narx
 from jointplay.neural.study.control_run import MODEL_BASED, load_lpv, load_twin
 from jointplay.neural.study.control_study import (
@@ -78,7 +54,6 @@ from jointplay.neural.study.settings import (
     SETTINGS_FILE,
     Settings,
     settings_toml,
-    with_overrides,
 )
 
 if TYPE_CHECKING:
@@ -97,38 +72,20 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     neural_scene_argument(p)
     p.add_argument("--out", required=True, metavar="DIR",
                    help="folder for models/, study.md, study.csv, study.json and the plots")
-    p.add_argument("--first-seed", type=int, default=0,
-                   help="the seeds are FIRST_SEED, FIRST_SEED + 1, ... (default 0; a study of "
-                        "seeds not used for tuning starts past them)")
-    p.add_argument("--seeds", type=int, default=3,
-                   help="training seeds at the scene's clearance (default %(default)s)")
-    p.add_argument("--cases", default=",".join(CASES),
-                   help=f"cases to run (default: all: {','.join(CASES)})")
-    p.add_argument("--clearances", help="other radial clearances, m, e.g. 10e-6,60e-6 "
-                                        "(each identified again)")
-    p.add_argument("--clearance-seeds", type=int, default=2,
-                   help="seeds per other clearance (default %(default)s)")
-    p.add_argument("--workers", type=int, default=min(2, os.cpu_count() or 1),
-                   help="processes for the closed-loop runs (default %(default)s)")
-    add_identify_data_arguments(p, study=True)
-    add_scheduling_argument(p)
-    add_contact_argument(p, "--identify-contact-outputs")
-    add_linear_gain_argument(p, "--identify-linear-input-gain")
-    add_residual_argument(p, "--identify-residual-by")
-    add_base_fraction_argument(p, "--identify-base-fraction")
-    add_base_motions_argument(p, "--identify-base-motions")
-    add_scene_motions_argument(p, "--identify-scene-motions")
-    add_operating_range_arguments(p, prefix="identify-")
-    p.add_argument("--identify-lags", default="2,2",
-                   help="identify: output lags,input lags (default %(default)s)")
-    p.add_argument("--identify-hidden", default="13,14",
-                   help="identify: hidden layer widths (default %(default)s)")
-    p.add_argument("--identify-window", type=int, default=IdentifyConfig.window,
-                   help="identify: samples per free-run window, for training and for "
-                        "weighing the residual (default %(default)s)")
-    add_iterations_argument(p, "--identify-iterations",
-                            "identify: L-BFGS iterations (default %(default)s)")
-    add_settings_arguments(p, ControllerSettings())
+    study_flags = {"first_seed": "study.first_seed", "seeds": "study.seeds",
+                   "cases": "study.cases", "clearances": "study.clearances",
+                   "clearance_seeds": "study.clearance_seeds", "workers": "study.workers",
+                   "undeclared_noise": "study.undeclared_noise", "verify": "study.verify"}
+    for dest, kind, text in (
+            ("first_seed", int, "the seeds are FIRST_SEED, FIRST_SEED + 1, ... (a study of "
+                                "seeds not used for tuning starts past them)"),
+            ("seeds", int, "training seeds at the scene's clearance"),
+            ("cases", str, f"cases to run, of {','.join(CASES)}"),
+            ("clearances", str, "other radial clearances, m, e.g. 10e-6,60e-6 (each "
+                                "identified again)"),
+            ("clearance_seeds", int, "seeds per other clearance"),
+            ("workers", int, "processes for the closed-loop runs")):
+        p.add_argument("--" + dest.replace("_", "-"), dest=dest, type=kind, help=text)
     p.add_argument("--undeclared-noise", action="store_true",
                    help="run the noise case without telling the controllers the sensors' "
                         "noise (by default they are told, and choose their horizon for it)")
@@ -137,62 +94,25 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "10x tighter: per case and controller, the estimated tip error, the "
                         "agreement horizon of the impact sequence and the energy residual "
                         "(study.csv, study.md); costs a second run of every loop")
+    flags = {**add_identify_arguments(p, study=True), **add_controller_arguments(p),
+             **study_flags}
     p.add_argument("--quiet", action="store_true", help="no progress, no report")
     add_settings_file_arguments(p)
-    settings_defaults(p, STUDY_FLAGS, shown=SHOWN_FLAGS)
+    settings_flags(p, flags, shown=SHOWN_FLAGS)
     p.epilog = ("A study is a file: jointplay control-study STUDY.toml --out DIR (the scene's "
                 "[identify], [control] and [study] tables, or a settings file naming its "
                 "scene; scenes/study_best.toml); DIR/settings.toml reruns it. The flags not "
                 "listed (--identify-hidden, --scheduling, --lambda, ...) are still accepted "
-                "as overrides; " + SETTINGS_HELP
-                + ".")
-    p.set_defaults(func=cmd_study)
+                "as overrides; " + SETTINGS_HELP + ".")
+    p.set_defaults(func=cmd_study, settings_keys=flags)
     return p
 
 
-# control-study's flags and the settings key each overrides; --help lists SHOWN_FLAGS (the
-# rest are overrides the settings file documents, also accepted as --set SECTION.KEY=VALUE).
-STUDY_FLAGS: FlagKeys = {
-    **IDENTIFY_DATA, "identify_lags": ("identify.output_lags", "identify.input_lags"),
-    "identify_hidden": "identify.hidden", "identify_window": "identify.window",
-    "identify_iterations": ("identify.one_step_iterations", "identify.multi_step_iterations"),
-    **CONTROL_FLAGS, "first_seed": "study.first_seed", "seeds": "study.seeds",
-    "cases": "study.cases", "clearances": "study.clearances",
-    "clearance_seeds": "study.clearance_seeds", "workers": "study.workers",
-    "undeclared_noise": "study.undeclared_noise", "verify": "study.verify"}
-SHOWN_FLAGS = ("seeds", "first_seed", "cases", "clearances", "workers", "train", "validation",
-               "test", "duration", "horizon", "verify")
-
-
-def hidden_widths(args: argparse.Namespace) -> tuple[int, ...]:
-    """--identify-hidden, checked as identify checks --hidden."""
-    from jointplay.common import limits as size_limits
-
-    hidden = tuple(int_list(args.identify_hidden, "--identify-hidden",
-                            high=size_limits.MAX_HIDDEN_WIDTH))
-    if len(hidden) > size_limits.MAX_HIDDEN_LAYERS:
-        raise DescriptionError("--identify-hidden", f"gives {len(hidden)} layers; at most "
-                               f"{size_limits.MAX_HIDDEN_LAYERS} are allowed")
-    return hidden
-
-
-def lag_settings(args: argparse.Namespace) -> dict[str, int]:
-    """--identify-lags, checked as identify checks --lags."""
-    from jointplay.common import limits as size_limits
-
-    lags = int_list(args.identify_lags, "--identify-lags", 2, high=size_limits.MAX_LAGS)
-    return {"output_lags": lags[0], "input_lags": lags[1]}
-
-
-def window_setting(args: argparse.Namespace) -> int:
-    """--identify-window, within identify's limits for --window."""
-    from jointplay.common import limits as size_limits
-
-    low, high = size_limits.MIN_WINDOW, size_limits.MAX_WINDOW
-    if not low <= args.identify_window <= high:
-        raise DescriptionError("--identify-window", f"must be an integer from {low} to {high}, "
-                               f"got {args.identify_window}")
-    return int(args.identify_window)
+# The flags --help lists (by dest); the others are overrides the settings file documents,
+# each also a --set SECTION.KEY=VALUE.
+SHOWN_FLAGS = ("seeds", "first_seed", "cases", "clearances", "workers", "identify_train",
+               "identify_validation", "identify_test", "identify_duration", "horizon",
+               "verify")
 
 
 @dataclass(frozen=True)
@@ -221,15 +141,15 @@ def cmd_study(args: argparse.Namespace) -> int:
     models = identify_models(args, plan)
     # Checked against the first model; each model then fills the defaults (tracked outputs,
     # their scales) from its own training data.
-    resolved = settings_from_args(args, load_narx(models[plan.nominal][0]))
-    settings = settings_from_args(args, None)
+    resolved = controller_settings(plan.settings, load_narx(models[plan.nominal][0]))
+    settings = plan.settings.control
     compile_all(models, settings)
     rows = run_cases(args, plan, models, settings)
     summary = summarise(rows)
     text = "\n".join([
         f"# Controller study: {plan.scene.name}",
         "",
-        f"{args.seeds} training seeds at {plan.nominal * 1e6:g} µm ("
+        f"{plan.settings.study.seeds} training seeds at {plan.nominal * 1e6:g} µm ("
         f"{', '.join(f'{size * 1e6:g} µm: {len(p)}' for size, p in models.items())} usable "
         "models); "
         f"cases: {', '.join(c.name for c in plan.cases)}; controller settings: horizon "
@@ -238,7 +158,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         "",
         summary_table(summary, plan.cases),
         "",
-        *noise_note(rows, args.undeclared_noise),
+        *noise_note(rows, plan.settings.study.undeclared_noise),
         "Goals:",
         "",
         *goal_checks(summary, plan.cases),
@@ -250,8 +170,8 @@ def cmd_study(args: argparse.Namespace) -> int:
         *worse_lines(rows, plan.cases),
         "",
         *identification_lines(models),
-        *(accuracy_lines(rows, plan.cases, check_tolerance(plan.scene)) if args.verify
-          else []),
+        *(accuracy_lines(rows, plan.cases, check_tolerance(plan.scene))
+          if plan.settings.study.verify else []),
         "The \"after settling\" window of each case starts at "
         + ", ".join(sorted({f"{r['settle_s'] * 1e3:.0f} ms" for r in rows}))
         + " (the later of the internal-model controllers' engagement plus their setpoint "
@@ -259,7 +179,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         "",
         f"Wall time {time.perf_counter() - started:.0f} s.",
     ])
-    written = write_study(plan, rows, summary, text, verify=args.verify)
+    written = write_study(plan, rows, summary, text, verify=plan.settings.study.verify)
     if not args.quiet:
         print(text)
         for path in written:
@@ -327,61 +247,30 @@ def _span(values: list[float]) -> str:
 
 def study_plan(args: argparse.Namespace) -> StudyPlan:
     """The scene, the cases and the identification settings, every flag checked."""
-    scene, settings, scene_file = scene_and_settings(args)
+    scene, settings, scene_file, given = scene_and_settings(args, args.settings_keys)
     source = Path(args.scene) if args.scene else None  # never written over
-    fill_from_settings(args, settings, STUDY_FLAGS)
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise DescriptionError("--out", f"{out} exists and is not a folder")
     study_outputs(out, scene, source)
-    if args.measurement_noise:
-        raise DescriptionError("--measurement-noise", "control-study's noise case puts its own "
-                               "noise on the measurements and tells the controllers (see "
-                               "--help); run it with --cases noise, or --undeclared-noise to "
-                               "leave them untold; `jointplay control --measurement-noise` "
-                               "runs one model under noise of your choice")
-    contact = contact_setting(args, scene, "--identify-contact-outputs")
-    if args.seeds < 1:
-        raise DescriptionError("--seeds", f"must be at least 1, got {args.seeds}")
-    if args.first_seed < 0:
-        raise DescriptionError("--first-seed", f"must be 0 or more, got {args.first_seed}")
-    names = tuple(c.strip() for c in args.cases.split(",") if c.strip())
-    unknown = [c for c in names if c not in CASES]
-    if unknown or not names:
-        raise DescriptionError("--cases", f"unknown case(s) {unknown}; choose from "
-                               f"{', '.join(CASES)}")
+    if settings.control.measurement_noise:
+        raise DescriptionError(
+            given.get("control.measurement_noise", "control.measurement_noise"),
+            "control-study's noise case puts its own noise on the measurements and tells the "
+            "controllers (see --help); run it with --cases noise, or --undeclared-noise to "
+            "leave them untold; `jointplay control --measurement-noise` runs one model under "
+            "noise of your choice")
+    config = check_identify_for(settings.identify, scene, given)
+    study = settings.study
     nominal = nominal_clearance(scene)
-    clearances = float_list(args.clearances, "--clearances") if args.clearances else ()
-    counts = trajectory_counts(args)
-    iters = iteration_counts(args.identify_iterations, "--identify-iterations")
-    identify_args = {**{k: v for k, v in asdict(settings.identify).items()
-                        if k not in ("seed", "workers")},
-                     "n_train": counts[0], "n_validation": counts[1], "n_test": counts[2],
-                     "duration": args.duration, "one_step_iterations": iters[0],
-                     "multi_step_iterations": iters[1], "scheduling": args.scheduling,
-                     "contact_outputs": contact,
-                     "linear_input_gain": args.linear_input_gain,
-                     "lpv_base": lpv_base_setting(args), "hidden": hidden_widths(args),
-                     "window": window_setting(args),
-                     "residual_by": residual_setting(args, "--identify-residual-by", counts[1]),
-                     "base_fraction": base_fraction_setting(args, "--identify-base-fraction"),
-                     "base_motions": args.base_motions,
-                     "scene_motions": scene_motions_setting(args,
-                                                            "--identify-scene-motions"),
-                     **lag_settings(args),
-                     **operating_range(args, prefix="identify-")}
-    cases = case_list(scene, names, clearances, nominal,
-                      scene.robot.clearance_joints if contact else ())
+    # Every model's identification: the settings' [identify] table but its seed (one per
+    # model) and its workers (a process pool of the study's).
+    identify_args = {k: v for k, v in asdict(config).items() if k not in ("seed", "workers")}
+    cases = case_list(scene, study.cases, study.clearances, nominal,
+                      scene.robot.clearance_joints if config.contact_outputs else ())
     scenes = {c.name: case_scene(scene, c) for c in cases}
-    resolved = with_overrides(
-        settings, study={"seeds": args.seeds, "first_seed": args.first_seed, "cases": names,
-                         "clearances": clearances, "clearance_seeds": args.clearance_seeds,
-                         "workers": args.workers, "undeclared_noise": bool(args.undeclared_noise),
-                         "verify": bool(args.verify)})
-    resolved = replace(resolved, control=settings_from_args(args, None), identify=replace(
-        settings.identify, **identify_args))
-    return StudyPlan(scene, out, cases, scenes, nominal, identify_args, resolved, scene_file,
-                     source)
+    return StudyPlan(scene, out, cases, scenes, nominal, identify_args,
+                     replace(settings, identify=config), scene_file, source)
 
 
 def study_outputs(out: Path, scene: Scene, source: Path | None = None) -> OutputPlan:
@@ -404,11 +293,12 @@ def identify_models(args: argparse.Namespace, plan: StudyPlan) -> dict[float, li
     """Usable model folders per clearance (all seeds at the scene's, fewer at the others)."""
     models: dict[float, list[Path]] = {}
     for size in sorted({c.clearance for c in plan.cases}):
-        n = args.seeds if math.isclose(size, plan.nominal, rel_tol=1e-9) else min(
-            args.seeds, args.clearance_seeds)
+        n = plan.settings.study.seeds if math.isclose(size, plan.nominal, rel_tol=1e-9) else min(
+            plan.settings.study.seeds, plan.settings.study.clearance_seeds)
         robot_scene = plan.scenes[next(k.name for k in plan.cases if k.clearance == size)]
         models[size] = ensure_models(robot_scene, plan.out / "models" / f"{size * 1e6:g}um", n,
-                                     plan.identify_args, args.quiet, first=args.first_seed)
+                                     plan.identify_args, args.quiet,
+                                     first=plan.settings.study.first_seed)
     if not models[plan.nominal]:
         raise DescriptionError("--seeds", "no seed gave a usable model; see the reports in "
                                f"{plan.out / 'models'}")
@@ -436,19 +326,21 @@ def run_cases(args: argparse.Namespace, plan: StudyPlan, models: dict[float, lis
     """The baselines once per case, then the internal-model controllers per case and seed
     (bounded by the baselines' divergence limit, measured after the baselines' settling
     window); one row per run."""
+    study = plan.settings.study
     STUDY_JOBS.clear()
     for c in plan.cases:
-        STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None, args.verify))
-    base_rows = pool_map(list(range(len(STUDY_JOBS))), args.workers, args.quiet, "baselines")
+        STUDY_JOBS.append((c, plan.scenes[c.name], None, settings, None, study.verify))
+    workers = study.workers
+    base_rows = pool_map(list(range(len(STUDY_JOBS))), workers, args.quiet, "baselines")
     rows = [r for rs in base_rows for r in rs]
     limits = {r["case"]: (r["limit"], r["settle_s"]) for r in rows if "limit" in r}
     start = len(STUDY_JOBS)
     for c in plan.cases:
-        told = settings if args.undeclared_noise else declared(settings, plan.scene, c)
+        told = settings if study.undeclared_noise else declared(settings, plan.scene, c)
         for path in models[c.clearance]:
             STUDY_JOBS.append((c, plan.scenes[c.name], path, told, limits[c.name],
-                               args.verify))
-    model_rows = pool_map(list(range(start, len(STUDY_JOBS))), args.workers, args.quiet,
+                               study.verify))
+    model_rows = pool_map(list(range(start, len(STUDY_JOBS))), workers, args.quiet,
                            "internal-model runs")
     return rows + [r for rs in model_rows for r in rs]
 

@@ -173,6 +173,9 @@ def _number(where: str, key: Key, value: Any) -> float | int:
 def _in_range(where: str, key: Key, value: float) -> None:
     low_ok = key.low is None or value > key.low or (value == key.low and not key.low_open)
     high_ok = key.high is None or value < key.high or (value == key.high and not key.high_open)
+    if not (low_ok and high_ok) and key.kind == "int" and None not in (key.low, key.high):
+        raise DescriptionError(where, f"must be a whole number from {int(key.low or 0)} to "
+                               f"{int(key.high or 0)}, got {value!r}")
     if not (low_ok and high_ok):
         low = "" if key.low is None else f"{'above' if key.low_open else 'at least'} {key.low:g}"
         high = "" if key.high is None else (f"{'below' if key.high_open else 'at most'} "
