@@ -132,10 +132,12 @@ def cmd_control(args: argparse.Namespace) -> int:
     lines = report_lines(args, job, comparison, advice) + verdicts
     lines += retune_lines(args, job, comparison)
     worse = worse_lines(comparison.metrics)
-    lines += ["", "Against the baselines (every reported metric; ties within "
-                  f"{WORSE_MARGIN:g} not counted):", *([f"- {w}" for w in worse] or [
+    lines += ["", "Against the baselines (the open loop: every reported metric, the whole run "
+                  "from the outer loop's engagement on and after settling; PD: the "
+                  "internal-model controllers after settling; ties within "
+                  f"{WORSE_MARGIN:.0%} not counted):", *([f"- {w}" for w in worse] or [
                       "- no controller is worse than the open loop, and no model-based one "
-                      "worse than PD, on any reported metric"])]
+                      "worse than PD, on any judged metric"])]
     warnings += worse
     if comparison.noise_tuning is not None and not comparison.noise_tuning.met:
         warnings.append(comparison.noise_tuning.describe())

@@ -46,14 +46,14 @@ def recommend_from_runs(metrics: dict[str, dict[str, float]], warned: Collection
     why = [f"lowest {METRIC_LABEL} in this run ({mine:.3g} m/s²"]
     for other in (LINEAR, LPV):
         if other != chosen and other in metrics and metrics[other].get(METRIC, 0) > 0:
-            why.append(f"{mine / metrics[other][METRIC]:.3g}x {other}'s")
+            why.append(f"{mine / metrics[other][METRIC]:.3f}x {other}'s")
     line = f"use {chosen}: " + ", ".join(why) + ")"
     if chosen != best:
         line += (f"; {best} is within {WORSE_MARGIN:.0%} of it ({value:.3g}), a tie, and "
                  f"{chosen} is the simpler controller")
     elif NEURAL in metrics and chosen != NEURAL and NEURAL in pool:
         ratio = metrics[NEURAL][METRIC] / mine
-        line += f"; the neural IMC has {ratio:.3g}x its error"
+        line += f"; the neural IMC has {ratio:.3f}x its error"
     if NEURAL in metrics and residual_weight == 0:
         line += ("; the network's residual weight is 0 (it did not beat its linear base on "
                  "validation), so the neural IMC runs that linear model")
