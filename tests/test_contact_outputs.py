@@ -81,21 +81,22 @@ def test_a_model_measuring_a_joint_without_play_is_refused() -> None:
 
 
 def test_contact_outputs_need_a_clearance_joint() -> None:
-    """identify and control-study refuse the flag on a robot without play, naming it."""
-    import argparse
-
-    from jointplay.cli.neural_args import contact_setting
+    """identify and control-study refuse the setting on a robot without play, naming the flag
+    that gave it (else the settings key)."""
+    from jointplay.cli.neural_args import check_identify_for
+    from jointplay.neural.identify.config import IdentifyConfig
     from jointplay.scene.definition import ideal_counterpart
 
     scene = default_scene()
     rigid = scene.with_robot(ideal_counterpart(scene.robot))
-    asked = argparse.Namespace(contact_outputs=True)
-    for flag in ("--contact-outputs", "--identify-contact-outputs"):
+    asked = IdentifyConfig(contact_outputs=True)
+    for flag in ("--contact-outputs", "--identify-contact-outputs", None):
+        given = {"identify.contact_outputs": flag} if flag else {}
         with pytest.raises(DescriptionError, match=r"no clearance joint") as err:
-            contact_setting(asked, rigid, flag)
-        assert err.value.field == flag
-    assert contact_setting(asked, scene, "--contact-outputs") is True
-    assert contact_setting(argparse.Namespace(contact_outputs=False), rigid, "x") is False
+            check_identify_for(asked, rigid, given)
+        assert err.value.field == (flag or "identify.contact_outputs")
+    assert check_identify_for(asked, scene, {}).contact_outputs is True
+    assert check_identify_for(IdentifyConfig(), rigid, {}).contact_outputs is False
 
 
 def test_noise_case_covers_the_eccentricity_sensors() -> None:

@@ -9,7 +9,6 @@ untold controller and PD (slow, on the session's identified model); bad input by
 
 from __future__ import annotations
 
-import argparse
 from dataclasses import replace
 from pathlib import Path
 
@@ -175,11 +174,12 @@ def test_noise_flags_are_checked_by_name() -> None:
 
 
 def test_study_refuses_its_own_noise_flag_and_declares_the_case_noise() -> None:
+    from jointplay.cli import make_parser
     from jointplay.cli.study import study_plan
     from jointplay.scene.definition import default_scene
 
-    args = argparse.Namespace(measurement_noise="dq2=1e-3", scene=None, quiet=True,
-                              out="unused", seeds=1)
+    args = make_parser().parse_args(["control-study", "--measurement-noise", "dq2=1e-3",
+                                     "--quiet", "--out", "unused", "--seeds", "1"])
     with pytest.raises(DescriptionError, match=r"--measurement-noise.*noise case"):
         study_plan(args)
     scene = default_scene()

@@ -125,6 +125,22 @@ def test_set_overrides_are_checked_by_the_same_schema() -> None:
     assert settings.study.cases == ("scene", "noise") and settings.study.clearances == ()
 
 
+def test_the_command_line_reports_file_set_and_flag_problems_at_once(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("torch")
+    from jointplay.cli import main
+
+    study = tmp_path / "study.toml"
+    study.write_text('[identify]\nwindow = 1\n', encoding="utf-8")
+    out = tmp_path / "model"
+    assert main(["identify", str(study), "--out", str(out), "--set", "identify.hiden=3",
+                 "--hidden", "0", "--lags", "2"]) == 2
+    err = capsys.readouterr().err
+    for named in ("identify.window:", "--set: 'identify.hiden=3'", "--hidden:", "--lags:"):
+        assert named in err, err
+    assert "4 problems" in err and not out.exists()
+
+
 def test_paper_is_the_dataclasses_defaults_and_best_the_measured_setting() -> None:
     paper = preset_settings("paper")
     assert paper == Settings("paper", IdentifyConfig(), ControllerSettings(), StudySettings())
@@ -215,6 +231,37 @@ def test_a_study_records_settings_that_rerun_it(tmp_path: Path) -> None:
     assert plan.settings.identify.scene_motions == 3  # type: ignore[attr-defined]
 
 
+def test_identify_records_the_settings_it_ran_with(tmp_path: Path,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """identify's model folder gets settings.toml (preset, file, --set and flags resolved);
+    read back, it gives the same identification (the work itself replaced by a stand-in)."""
+    pytest.importorskip("torch")
+    import jointplay.cli.identify as command
+    from jointplay.cli import main
+
+    ran: list[IdentifyConfig] = []
+
+    def stand_in(scene: object, out: Path, config: IdentifyConfig,
+                 quiet: bool = False) -> dict[str, object]:
+        out.mkdir(parents=True, exist_ok=True)
+        ran.append(config)
+        return {}
+
+    monkeypatch.setattr(command, "identify_model", stand_in)
+    out = tmp_path / "model"
+    assert main(["identify", "--out", str(out), "--quiet", "--set", "identify.window=50",
+                 "--hidden", "8,8", "--kp", "40", "--seed", "3"]) == 0
+    settings, scene = read_settings_file(out / "settings.toml")
+    assert scene is None and settings.preset == "best"
+    assert settings.identify == ran[0]
+    assert (ran[0].window, ran[0].hidden, ran[0].kp, ran[0].seed) == (50, (8, 8), (40.0, 40.0),
+                                                                      3)
+    assert ran[0].lpv_base  # the best preset's, no flag needed
+    again = tmp_path / "again"
+    assert main(["identify", str(out / "settings.toml"), "--out", str(again), "--quiet"]) == 0
+    assert ran[1] == ran[0]
+
+
 def test_control_study_help_lists_at_most_20_options() -> None:
     from jointplay.cli import make_parser
 
@@ -282,3 +329,10 @@ def test_a_tiny_best_study_runs_end_to_end_and_reruns_from_its_output(tmp_path: 
     assert scene == (tmp_path / "paper_4dof.toml").resolve()
     assert recorded.identify.hidden == (4,) and recorded.study.seeds == 1
     assert recorded.identify.residual_by == "closed-loop-scene"
+    # control on the study's model records its settings beside its figures
+    plot = tmp_path / "plot"
+    model = next((out / "models").glob("*/seed11"))
+    assert main(["control", str(tmp_path / "paper_4dof.toml"), "--model", str(model),
+                 "--plot", str(plot), "--quiet", "--horizon", "3"]) in (0, 3)
+    controlled, _ = read_settings_file(plot / "settings.toml")
+    assert controlled.control.horizon == 3 and controlled.preset == "best"

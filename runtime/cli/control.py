@@ -15,10 +15,12 @@ from typing import TYPE_CHECKING, Any
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_controller_arguments,
-    add_settings_file_arguments,
-    controller_settings,
     float_list,
     neural_scene_argument,
+)
+from jointplay.cli.neural_settings import (
+    add_settings_file_arguments,
+    controller_settings,
     scene_and_settings,
     settings_flags,
 )

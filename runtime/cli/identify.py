@@ -14,9 +14,11 @@ from typing import TYPE_CHECKING, Any
 from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_identify_arguments,
-    add_settings_file_arguments,
     check_identify_for,
     neural_scene_argument,
+)
+from jointplay.cli.neural_settings import (
+    add_settings_file_arguments,
     scene_and_settings,
     settings_flags,
 )

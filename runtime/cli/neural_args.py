@@ -9,18 +9,14 @@ from __future__ import annotations
 import argparse
 import math
 from dataclasses import replace
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.common import limits as size_limits
 from jointplay.common.errors import DescriptionError
-from jointplay.neural.control.imc import ControllerSettings, resolve_settings
 from jointplay.neural.identify.config import BASE_MOTIONS, RESIDUAL_CRITERIA, IdentifyConfig
 from jointplay.neural.study.settings_schema import SCHEMA
 
 if TYPE_CHECKING:
-    from jointplay.neural.model.narx import Narx
-    from jointplay.neural.study.settings import Settings
     from jointplay.scene.definition import Scene
 
 
@@ -80,6 +76,9 @@ def per_joint(values: tuple[float, ...], name: str, count: int) -> tuple[float, 
 # ---- identification: data and training ------------------------------------------------------
 
 COUNTS_FLAG = "--train/--validation/--test"
+# Each command's flags by dest, and the settings key each sets (a tuple: the flag gives them
+# comma-separated; "!": the flag is the key's negation).
+FlagKeys = dict[str, str | tuple[str, ...]]
 # identify's flags: (name, the settings key(s) it sets, help, type: int, float, str, bool
 # or the choices, whether control-study has it too and how: "" as is, "identify-" prefixed,
 # None not at all). A tuple of keys: the flag gives them comma-separated; "!": the negation.
@@ -239,8 +238,8 @@ _CONTROL_TABLE: tuple[tuple[str, str, str, str, Any], ...] = (
      "noise, NAME=STD per measured output in its unit, e.g. q2=3e-6,dq2=4e-3,tip_vx=1e-3: "
      "every controller measures through it (control-study: see its noise case), and the "
      "internal-model controllers choose their horizon for it (the shortest whose predicted "
-     "RMS tip acceleration from the noise is within 1 + --noise-budget of the inner loop's "
-     "alone)", str),
+     "RMS tip acceleration from the noise is within 1 + the noise budget of the inner "
+     "loop's alone)", str),
     ("--noise-budget", "noise_budget", "control.noise_budget", "with --measurement-noise: "
      "the increase of the noise's RMS tip acceleration over the inner loop's alone that the "
      "outer loop may add", float),
@@ -261,143 +260,10 @@ def add_controller_arguments(parser: argparse.ArgumentParser) -> FlagKeys:
 
 def noise_pairs(text: str | None) -> tuple[tuple[str, float], ...]:
     """``--measurement-noise``'s NAME=STD pairs (names are checked against the model later)."""
+    from jointplay.neural.study.settings_schema import parse_text
+
     if not text:
         return ()
-    value: tuple[tuple[str, float], ...] = _flag_value(
+    value: tuple[tuple[str, float], ...] = parse_text(
         "--measurement-noise", SCHEMA["control"]["measurement_noise"], text)
     return value
-
-
-# ---- the settings file ----------------------------------------------------------------------
-
-SETTINGS_HELP = ("every key of the [identify], [control] and [study] tables, its meaning and "
-                 "its default per preset: docs/how-to/settings-file.md")
-# Each command's flags by dest, and the settings key each sets (a tuple: the flag gives them
-# comma-separated; "!": the flag is the key's negation).
-FlagKeys = dict[str, str | tuple[str, ...]]
-
-
-def add_settings_file_arguments(parser: argparse.ArgumentParser) -> None:
-    """``--preset`` and ``--set``: the settings' preset and any key of them."""
-    parser.add_argument("--preset", metavar="NAME",
-                        help="the settings' starting point: best (the best setting measured; "
-                             "the default) or paper (the paper's NARX 13/14)")
-    parser.add_argument("--set", dest="overrides", action="append", default=[],
-                        metavar="SECTION.KEY=VALUE",
-                        help="override one key of the settings, e.g. identify.hidden=24,24 "
-                             "(repeatable; " + SETTINGS_HELP + ")")
-
-
-def settings_flags(parser: argparse.ArgumentParser, flags: FlagKeys,
-                   shown: tuple[str, ...] | None = None) -> None:
-    """The flags in ``flags`` override the settings: not given, they are None; their help
-    names the key. With ``shown``, --help lists only those of them (the others stay accepted,
-    as the overrides the settings file documents)."""
-    names = {}
-    for action in parser._actions:
-        if action.dest not in flags:
-            continue
-        action.default = None
-        names[action.dest] = action.option_strings[-1]
-        if shown is not None and action.dest not in shown:
-            action.help = argparse.SUPPRESS
-        elif action.help:
-            keys = flags[action.dest]
-            key = ", ".join(keys) if isinstance(keys, tuple) else keys.lstrip("!")
-            action.help += f" (settings: {key})"
-    parser.set_defaults(flag_names=names)
-
-
-def scene_and_settings(args: argparse.Namespace, flags: FlagKeys
-                       ) -> tuple[Scene, Settings, Path | None, dict[str, str]]:
-    """The scene, the settings (the file's tables over its preset, ``--set`` on top, the
-    flags given on top of that), the scene file to record, and which flag gave which key.
-    ``args.scene`` is a scene file (its settings tables, if any, read too), a settings file
-    naming its scene, or None (the paper scene)."""
-    from jointplay.common.validation import read_toml
-    from jointplay.neural.study.settings import (
-        is_settings_document,
-        read_settings_file,
-        resolve_settings,
-        settings_tables,
-    )
-
-    path = Path(args.scene) if args.scene else None
-    scene_file: Path | None = path
-    if path is None:
-        settings = resolve_settings({}, preset=args.preset, overrides=args.overrides)
-    else:
-        data, _ = read_toml(path, "scene or settings")
-        if is_settings_document(data):
-            settings, scene_file = read_settings_file(path, preset=args.preset,
-                                                      overrides=args.overrides)
-        else:
-            settings = resolve_settings(settings_tables(data), preset=args.preset,
-                                        overrides=args.overrides, source=str(path))
-    settings, given = apply_flags(args, settings, flags)
-    scene = load_control_scene(str(scene_file) if scene_file else None, args.quiet)
-    return scene, settings, scene_file.resolve() if scene_file else None, given
-
-
-def apply_flags(args: argparse.Namespace, settings: Settings, flags: FlagKeys
-                ) -> tuple[Settings, dict[str, str]]:
-    """``settings`` with every flag given on top, each checked as the settings file's key
-    and named by its flag when refused (all problems at once); and which flag gave which
-    key."""
-    from jointplay.common.validation import Problems
-
-    problems = Problems()
-    values: dict[str, dict[str, Any]] = {}
-    given: dict[str, str] = {}
-    for dest, keys in flags.items():
-        raw = getattr(args, dest, None)
-        if raw is None:
-            continue
-        flag = getattr(args, "flag_names", {}).get(dest, dest)
-        with problems.check():
-            for key, value in _flag_values(flag, keys, raw):
-                section, name = key.split(".")
-                values.setdefault(section, {})[name] = value
-                given[key] = flag
-    problems.raise_any()
-    changed = {}
-    for section, table in values.items():
-        try:  # the checks across keys (IdentifyConfig's), named by the flag when one gave it
-            changed[section] = replace(getattr(settings, section), **table)
-        except DescriptionError as err:
-            raise err.renamed(lambda field, s=section: given.get(
-                f"{s}.{field}", f"{s}.{field}")) from None
-    return replace(settings, **changed), given
-
-
-def _flag_values(flag: str, keys: str | tuple[str, ...], raw: Any) -> list[tuple[str, Any]]:
-    if isinstance(keys, tuple):
-        parts = [p for p in str(raw).split(",") if p.strip()]
-        if len(parts) != len(keys):
-            raise DescriptionError(flag, f"expects {len(keys)} comma-separated values "
-                                   f"({', '.join(keys)}), got {raw!r}")
-        return [(k, _flag_value(flag, _key(k), p)) for k, p in zip(keys, parts, strict=True)]
-    if keys.startswith("!"):
-        return [(keys[1:], not raw)]
-    return [(keys, _flag_value(flag, _key(keys), raw))]
-
-
-def _key(key: str) -> Any:
-    section, _, name = key.partition(".")
-    return SCHEMA[section][name]
-
-
-def _flag_value(flag: str, key: Any, raw: Any) -> Any:
-    """A flag's value checked as the key's, the error naming the flag."""
-    from jointplay.neural.study.settings_schema import checked, parse_text
-
-    try:
-        return parse_text(flag, key, raw) if isinstance(raw, str) else checked(flag, key, raw)
-    except DescriptionError as err:
-        raise err.renamed(lambda _: flag) from None
-
-
-def controller_settings(settings: Settings, narx: Narx | None) -> ControllerSettings:
-    """The controller's settings, resolved against ``narx`` when given (defaults filled from
-    it, every value checked), else as given (each model resolves them for itself)."""
-    return resolve_settings(narx, settings.control) if narx is not None else settings.control

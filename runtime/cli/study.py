@@ -17,13 +17,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from jointplay.cli.neural_args import (
-    SETTINGS_HELP,
     add_controller_arguments,
     add_identify_arguments,
-    add_settings_file_arguments,
     check_identify_for,
-    controller_settings,
     neural_scene_argument,
+)
+from jointplay.cli.neural_settings import (
+    SETTINGS_HELP,
+    add_settings_file_arguments,
+    controller_settings,
     scene_and_settings,
     settings_flags,
 )

@@ -62,23 +62,26 @@ class Key:
     most: int | None = None  # and at most
 
 
-_INT = {"kind": "int"}
+def _int(low: int, high: int) -> Key:
+    return Key("int", low, high)
+
+
 _POS = Key("float", 0.0, low_open=True)
 _NONNEG = Key("float", 0.0)
 _FRACTION = Key("float", 0.0, 1.0, low_open=True)
 _UNIT_OPEN = Key("float", 0.0, 1.0, high_open=True)
-_COUNT = Key(**_INT, low=1, high=size_limits.MAX_TRAJECTORIES)
+_COUNT = _int(1, size_limits.MAX_TRAJECTORIES)
 _BOOL = Key("bool")
 
 SCHEMA: dict[str, dict[str, Key]] = {
     "identify": {
         "duration": Key("float", 0.0, size_limits.MAX_T_END, low_open=True),
         "n_train": _COUNT, "n_validation": _COUNT, "n_test": _COUNT,
-        "output_lags": Key(**_INT, low=1, high=size_limits.MAX_LAGS),
-        "input_lags": Key(**_INT, low=1, high=size_limits.MAX_LAGS),
+        "output_lags": _int(1, size_limits.MAX_LAGS),
+        "input_lags": _int(1, size_limits.MAX_LAGS),
         "hidden": Key("ints", 1, size_limits.MAX_HIDDEN_WIDTH, least=1,
                       most=size_limits.MAX_HIDDEN_LAYERS),
-        "seed": Key(**_INT, low=0, high=MAX_SEED),
+        "seed": _int(0, MAX_SEED),
         "kp": Key("floats", 0.0, low_open=True), "kd": Key("floats", 0.0),
         "torque_limit": Key("floats", 0.0, low_open=True),
         "base_fraction": _FRACTION,
@@ -89,36 +92,36 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "contact_outputs": _BOOL, "linear_input_gain": _BOOL,
         "clearances": Key("floats", 0.0, low_open=True), "payloads": Key("floats", 0.0),
         "residual_by": Key("str", choices=RESIDUAL_CRITERIA),
-        "scene_motions": Key(**_INT, low=1, high=MAX_SCENE_MOTIONS),
-        "one_step_iterations": Key(**_INT, low=0, high=size_limits.MAX_ITERATIONS),
-        "multi_step_iterations": Key(**_INT, low=0, high=size_limits.MAX_ITERATIONS),
-        "window": Key(**_INT, low=size_limits.MIN_WINDOW, high=size_limits.MAX_WINDOW),
-        "patience": Key(**_INT, low=1, high=size_limits.MAX_ITERATIONS),
-        "workers": Key(**_INT, low=0, high=size_limits.MAX_WORKERS),
+        "scene_motions": _int(1, MAX_SCENE_MOTIONS),
+        "one_step_iterations": _int(0, size_limits.MAX_ITERATIONS),
+        "multi_step_iterations": _int(0, size_limits.MAX_ITERATIONS),
+        "window": _int(size_limits.MIN_WINDOW, size_limits.MAX_WINDOW),
+        "patience": _int(1, size_limits.MAX_ITERATIONS),
+        "workers": _int(0, size_limits.MAX_WORKERS),
     },
     "control": {
-        "horizon": Key(**_INT, low=1, high=500),
+        "horizon": _int(1, 500),
         "regularisation": _NONNEG,
         "setpoint_filter": _UNIT_OPEN, "mismatch_filter": _UNIT_OPEN,
         "tracked": Key("strs"),
         "scales": Key("floats", 0.0, low_open=True),
         "torque_limit": Key("floats", 0.0, low_open=True),
         "rate_limit": Key("floats", 0.0, low_open=True),
-        "iterations": Key(**_INT, low=1, high=20),
+        "iterations": _int(1, 20),
         "guard": _BOOL,
         "trust_input": _POS, "trust_range": _NONNEG, "trust_mismatch": _POS,
-        "fallback_hold": Key(**_INT, low=1, high=10**9),
+        "fallback_hold": _int(1, 10**9),
         "engage": Key("optional-float", 0.0),
         "measurement_noise": Key("noise", 0.0),
         "noise_budget": _POS,
     },
     "study": {
-        "seeds": Key(**_INT, low=1, high=size_limits.MAX_TRAJECTORIES),
-        "first_seed": Key(**_INT, low=0, high=MAX_SEED),
+        "seeds": _int(1, size_limits.MAX_TRAJECTORIES),
+        "first_seed": _int(0, MAX_SEED),
         "cases": Key("strs", choices=CASES, least=1),
         "clearances": Key("floats", 0.0, low_open=True),
-        "clearance_seeds": Key(**_INT, low=1, high=size_limits.MAX_TRAJECTORIES),
-        "workers": Key(**_INT, low=1, high=size_limits.MAX_WORKERS),
+        "clearance_seeds": _int(1, size_limits.MAX_TRAJECTORIES),
+        "workers": _int(1, size_limits.MAX_WORKERS),
         "undeclared_noise": _BOOL, "verify": _BOOL,
     },
 }
@@ -141,7 +144,7 @@ def checked(where: str, key: Key, value: Any) -> Any:
         if not isinstance(value, dict):
             raise DescriptionError(where, "must be a table of output name = standard "
                                    f"deviation, e.g. {{ q2 = 3e-6 }}, got {value!r}")
-        return tuple((str(name), checked(f"{where}.{name}", Key("float", 0.0), std))
+        return tuple((str(name), _noise_std(f"{where}.{name}", std))
                      for name, std in value.items())
     if key.kind == "bool":
         if not isinstance(value, bool):
@@ -157,6 +160,15 @@ def checked(where: str, key: Key, value: Any) -> Any:
     number = _number(where, key, value)
     _in_range(where, key, number)
     return number
+
+
+def _noise_std(where: str, value: Any) -> float:
+    try:
+        std: float = checked(where, Key("float", 0.0), value)
+    except DescriptionError as err:
+        raise DescriptionError(where, f"{err.message}: give NAME=STD pairs, STD >= 0 in the "
+                               "output's unit") from None
+    return std
 
 
 def _number(where: str, key: Key, value: Any) -> float | int:
@@ -213,7 +225,7 @@ def _noise_pairs(where: str, text: str) -> dict[str, Any]:
         name, sep, value = item.partition("=")
         if not sep or not name.strip():
             raise DescriptionError(where, f"{item!r}: give NAME=STD pairs, e.g. "
-                                   "q2=3e-6,dq2=4e-3")
+                                   "q2=3e-6,dq2=4e-3 (STD >= 0, in the output's unit)")
         out[name.strip()] = _scalar(value.strip())
     return out
 
