@@ -172,8 +172,8 @@ def check_identify_for(config: IdentifyConfig, scene: Scene,
         return given.get(f"identify.{key}", f"identify.{key}")
 
     n = len(scene.robot.moving_joints)
-    joints = {key: per_joint(getattr(config, key), name(key), n)
-              for key in ("kp", "kd", "torque_limit")}
+    joints: dict[str, Any] = {key: per_joint(getattr(config, key), name(key), n)
+                              for key in ("kp", "kd", "torque_limit")}
     if config.contact_outputs and not scene.robot.clearance_joints:
         raise DescriptionError(name("contact_outputs"), "the scene's robot has no clearance "
                                "joint, so there is no journal eccentricity to measure")

@@ -117,8 +117,8 @@ def apply_flags(args: argparse.Namespace, settings: Settings, flags: FlagKeys
         flag = getattr(args, "flag_names", {}).get(dest, dest)
         with problems.check():
             for key, value in _flag_values(flag, keys, raw):
-                section, name = key.split(".")
-                values.setdefault(section, {})[name] = value
+                section, field = key.split(".")
+                values.setdefault(section, {})[field] = value
                 given[key] = flag
     problems.raise_any()
     changed = {}
