@@ -17,7 +17,14 @@ import pytest
 from jointplay.neural.identify.pipeline import IdentifyConfig, output_names
 from jointplay.neural.model.narx import Narx
 from jointplay.neural.model.twin import ALPHAS, blend
-from jointplay.neural.study.closed_loop_choice import TWIN, choose_in_closed_loop, label
+from jointplay.neural.study.closed_loop_choice import (
+    CLOSED_LOOP_ALPHAS,
+    MARGIN,
+    TWIN,
+    choose_in_closed_loop,
+    earns_its_place,
+    label,
+)
 
 
 def _linear(seed: int) -> Narx:
@@ -89,13 +96,44 @@ def test_the_lowest_closed_loop_error_wins_and_a_diverged_run_never_does(
     assert len(calls) == 2 * (1 + 1 + len(ALPHAS))
 
 
-def test_ties_go_to_the_simpler_model(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_ties_go_to_the_linear_base(monkeypatch: pytest.MonkeyPatch) -> None:
     base, network = _linear(1), _linear(2)
     _stand_in(monkeypatch, base, lambda a: 1.0)
     _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
-    assert choice.chosen == TWIN and choice.alpha == 0.0
+    assert choice.chosen == label(0.0) and choice.alpha == 0.0
     _, choice = choose_in_closed_loop(network, base, None, [_motion("first")], ALPHAS)
     assert choice.chosen == label(0.0)
+
+
+def test_a_gain_within_the_margin_keeps_the_linear_base(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The network replaces its base only when better on every run and by more than MARGIN
+    in the geometric mean; among the candidates that are, ties go to the twin."""
+    base, network = _linear(1), _linear(2)
+    # 1.5 % better everywhere: within the margin.
+    _stand_in(monkeypatch, base, lambda a: 1.1 if a is None else 1.0 - 0.015 * (a > 0))
+    model, choice = choose_in_closed_loop(network, base, _linear(3),
+                                          [_motion("first"), _motion("second")], ALPHAS)
+    assert choice.chosen == label(0.0) and choice.alpha == 0.0
+    assert choice.best_other() == label(0.25)  # the first of the equal blends
+    assert choice.summary()["margin"] == MARGIN
+    np.testing.assert_allclose(model.predict(np.ones(24)), base.predict(np.ones(24)),
+                               rtol=0, atol=1e-15)
+    # 3 % better: beyond it.
+    _stand_in(monkeypatch, base, lambda a: 1.1 if a is None else 1.0 - 0.03 * (a or 0))
+    _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
+    assert choice.chosen == label(1.0)
+    # The twin and a blend equally good, both beyond the margin: the twin.
+    _stand_in(monkeypatch, base, lambda a: 0.9 if a is None or a == 0.5 else 1.0)
+    _, choice = choose_in_closed_loop(network, base, _linear(3), [_motion("first")], ALPHAS)
+    assert choice.chosen == TWIN
+
+
+def test_earning_its_place_needs_every_run() -> None:
+    assert earns_its_place([0.95, 0.97])
+    assert not earns_its_place([0.985, 0.99])  # geometric mean above 1 - MARGIN
+    assert not earns_its_place([0.80, 1.001])  # much better on average, worse on one run
+    assert not earns_its_place([0.9, math.inf])  # a diverged run
+    assert not earns_its_place([])
 
 
 def test_only_validation_motions_other_than_the_scene_are_run() -> None:
@@ -206,8 +244,12 @@ def test_identify_runs_each_candidate_in_closed_loop(tmp_path: Any) -> None:
     closed = json.loads((out / "metrics.json").read_text())["residual"]["closed_loop"]
     assert closed["runs"] == ["multisine (scene robot)"]
     rms = closed["rms_acceleration_after"]
-    assert set(rms) == {TWIN, *(label(a) for a in ALPHAS)}
+    assert set(rms) == {TWIN, *(label(a) for a in CLOSED_LOOP_ALPHAS)}
     finite = {k: v[0] for k, v in rms.items() if v[0] is not None}
     assert finite and all(v > 0 for v in finite.values())
-    assert closed["chosen"] == min(finite, key=lambda k: (finite[k], list(rms).index(k)))
+    base = finite.get(label(0.0))
+    earned = {k: v for k, v in finite.items() if base and k != label(0.0)
+              and earns_its_place([v / base])}
+    assert closed["chosen"] == (min(earned, key=lambda k: (earned[k], list(rms).index(k)))
+                                if earned else label(0.0))
     assert "chosen in closed loop" in (out / "report.md").read_text()

@@ -153,7 +153,7 @@ def test_paper_is_the_dataclasses_defaults_and_best_the_measured_setting() -> No
         "closed-loop-scene", "scene-family", (24, 24))
     assert (config.n_train, config.n_validation, config.n_test, config.duration) == (
         24, 2, 2, 2.0)
-    assert (config.one_step_iterations, config.multi_step_iterations) == (40, 20)
+    assert (config.one_step_iterations, config.multi_step_iterations) == (20, 5)
     assert best.control == ControllerSettings() and best.study == StudySettings()
     assert set(PRESETS) == {"paper", "best"}
 

@@ -46,6 +46,7 @@ from jointplay.neural.study.control_run import (
     verdict,
     write_runs,
 )
+from jointplay.neural.study.recommend import Recommendation, recommend_from_runs
 from jointplay.neural.study.settings import SETTINGS_FILE, settings_toml
 
 if TYPE_CHECKING:
@@ -126,15 +127,19 @@ def cmd_control(args: argparse.Namespace) -> int:
                          ct_zeta=args.ct_zeta, pd_kp=job.pd_kp, pd_kd=job.pd_kd,
                          quiet=args.quiet, divergence_factor=args.divergence_factor,
                          conditions=sensor_noise(job))
-    lines = report_lines(args, job, comparison)
-    warnings, diverged = stability_lines(comparison, lines)
+    verdicts: list[str] = []
+    warnings, diverged = stability_lines(comparison, verdicts)
     warnings = [*identification_warnings(job.model_dir), *warnings]
+    advice = recommendation(job, comparison, warnings, worse_lines(comparison.metrics))
+    lines = report_lines(args, job, comparison, advice) + verdicts
     lines += retune_lines(args, job, comparison)
     worse = worse_lines(comparison.metrics)
-    lines += ["", "Against the baselines (every reported metric; ties within "
-                  f"{WORSE_MARGIN:g} not counted):", *([f"- {w}" for w in worse] or [
+    lines += ["", "Against the baselines (the open loop: every reported metric, the whole run "
+                  "from the outer loop's engagement on and after settling; PD: the "
+                  "internal-model controllers after settling; ties within "
+                  f"{WORSE_MARGIN:.0%} not counted):", *([f"- {w}" for w in worse] or [
                       "- no controller is worse than the open loop, and no model-based one "
-                      "worse than PD, on any reported metric"])]
+                      "worse than PD, on any judged metric"])]
     warnings += worse
     if comparison.noise_tuning is not None and not comparison.noise_tuning.met:
         warnings.append(comparison.noise_tuning.describe())
@@ -214,9 +219,9 @@ def check_plot_dir(plot: Path) -> None:
     check_writable_dir(plot, "--plot")
 
 
-def report_lines(args: argparse.Namespace, job: ControlJob,
-                 comparison: Comparison) -> list[str]:
-    """The metrics table and every setting the runs used."""
+def report_lines(args: argparse.Namespace, job: ControlJob, comparison: Comparison,
+                 advice: Recommendation | None = None) -> list[str]:
+    """The controller to use, the metrics table and every setting the runs used."""
     settings, scene = ran_settings(job.settings, comparison), job.scene
     inner = job.narx.context["plant"]["inner_loop"]
     alpha = job.narx.context.get("training", {}).get("metrics", {}).get("residual_weight")
@@ -228,11 +233,13 @@ def report_lines(args: argparse.Namespace, job: ControlJob,
              f"{settings.trust_range:g}, mismatch <= {settings.trust_mismatch:g}, hold "
              f"{settings.fallback_hold})" if settings.guard else "OFF")
     return [
+        *([f"Recommended: {advice.line}."] if advice else []),
         "",
         f"End-effector errors vs the ideal-joint robot ({scene.name}, {scene.run.t_end:g} s; "
         "norms over x, y):",
         "",
-        metrics_table(comparison.metrics, settled_time(comparison)),
+        metrics_table(comparison.metrics, settled_time(comparison),
+                      advice.controller if advice else None),
         "",
         (comparison.settling.describe() if comparison.settling else "") + ".",
         "",
@@ -320,6 +327,17 @@ def retune_lines(args: argparse.Namespace, job: ControlJob,
             lines.append(f"- {name} ends worse than no control after settling, and so does it "
                          f"at horizons {tried}: {fallback}")
     return ["", "Retuning:", *lines] if lines else []
+
+
+def recommendation(job: ControlJob, comparison: Comparison, warnings: list[str],
+                   worse: list[str]) -> Recommendation | None:
+    """The controller to use from this run (:mod:`jointplay.neural.study.recommend`); a controller
+    named in a warning is not recommended while another is there."""
+    warned = {name for name in comparison.metrics
+              if any(w.startswith(f"{name}:") or w.startswith(f"{name} is worse")
+                     for w in [*warnings, *worse])}
+    alpha = job.narx.context.get("training", {}).get("metrics", {}).get("residual_weight")
+    return recommend_from_runs(comparison.metrics, warned, alpha)
 
 
 def identification_warnings(model_dir: Path) -> list[str]:

@@ -84,11 +84,16 @@ def metrics_table(metrics: dict[str, Any], outputs: Sequence[str], kind: str = "
 
 def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
                     config: IdentifyConfig) -> str:
+    from jointplay.neural.identify.recommendation import recommend_from_identification
+
     inner = model.context["plant"]["inner_loop"]
     contact = list(contact_joints(model.output_names))
+    residual = metrics.get("residual")
     lines = [
         f"# Identification of {scene.name}",
         "",
+        *([f"**{recommend_from_identification(residual, config.lpv_base)}**", ""]
+          if residual else []),
         f"NARX: {model.n_regressor} regressors ({model.output_lags} output lags, "
         f"{model.input_lags} input lags) -> hidden {list(model.hidden)} (tanh)"
         f"{' + linear direct path' if model.linear is not None else ''}"

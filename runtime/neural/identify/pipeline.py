@@ -267,6 +267,10 @@ def _identify_into(scene: Any, out: Path, config: IdentifyConfig, inner: InnerLo
         "test_families": [t.family for t in split["test"]],
         "warnings": warnings,
     }
+    from jointplay.neural.identify.recommendation import recommend_from_identification
+
+    metrics["recommendation"] = recommend_from_identification(metrics["residual"],
+                                                              config.lpv_base)
     _write_results(out, scene, config, model, arx, metrics, selection, verdict)
     save_narx(lpv, out, LPV_FILE)
     return metrics

@@ -37,7 +37,7 @@ from jointplay.neural.control.loop import (
     pd_law,
     run_loop,
 )
-from jointplay.neural.control.metrics import run_metrics, tip_errors
+from jointplay.neural.control.metrics import WORSE_MARGIN, run_metrics, tip_errors
 from jointplay.neural.control.noise_tuning import NoiseTuning, tune_to_noise
 from jointplay.neural.model.narx import Narx
 
@@ -221,9 +221,10 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     settled = (settling(runs, ctrls, dt, settle_after) if transient is None else
                Settling(transient, None, None, 0.0, given=True))
     k0 = max(0, round(settled.time / dt))
+    k_engaged = max(0, round(engagement(ctrls, settings) / dt))
     dense_reference = ideal_reference(scene.with_run(
         output_step=scene.run.output_step / SUBSTEPS)).tip_acceleration
-    metrics = {name: run_metrics(run, reference, nj, k0, dense_reference)
+    metrics = {name: run_metrics(run, reference, nj, k0, dense_reference, k_engaged)
                for name, run in runs.items()}
     result = Comparison(runs, reference, metrics, k0, limit, ctrls, tau_ff=ideal.tau,
                         dense_reference=dense_reference, noise_tuning=tuning,
@@ -231,6 +232,16 @@ def compare(scene: Any, narx: Narx, settings: ControllerSettings, *, arx: Narx |
     if analyse:
         _analyse(result)
     return result
+
+
+def engagement(ctrls: dict[str, Controller], settings: ControllerSettings) -> float:
+    """When the outer loop engages (s): the latest of the internal-model controllers'; without
+    one, the engagement they would have (``settings``, else twice the start-up identification
+    leaves out), so that baselines run apart from them share their window."""
+    engage = max((c.settings.engage or 0.0 for c in ctrls.values()), default=None)
+    if engage is not None:
+        return engage
+    return settings.engage if settings.engage is not None else 2.0 * DEFAULT_TRANSIENT
 
 
 def open_loop_bound(open_loop: Run, reference: np.ndarray, nj: int, factor: float) -> float:
@@ -339,8 +350,10 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
         return f"{name}: DIVERGED ({run.diverged}); the run was stopped", True
     parts: list[str] = []
     warn = False
-    worse = run.y.shape[0] and comparison.metrics[name]["max_position"] > \
-        comparison.limit / DIVERGENCE_FACTOR
+    # Judged where the controller acts (from its engagement on), a tie within WORSE_MARGIN.
+    base = comparison.metrics.get("open loop", {}).get("max_position_engaged")
+    worse = run.y.shape[0] and base is not None and \
+        comparison.metrics[name]["max_position_engaged"] > base * (1 + WORSE_MARGIN)
     if counts.get("episodes", 0):
         warn = True
         # A controller without a fallback (ARX-IMC) hands over to the inner loop alone.
@@ -358,7 +371,8 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
                      f"{counts['input_at_trust_bound']} samples")
     if worse:
         warn = True
-        parts.append("its largest tip error exceeds the open loop's")
+        parts.append("its largest tip error from its engagement on exceeds the open loop's "
+                     f"by more than {WORSE_MARGIN:.0%}")
     nominal = comparison.nominal_radius.get(name)
     local = comparison.local_radius.get(name)
     if nominal is not None:
@@ -371,7 +385,9 @@ def verdict(name: str, run: Run, comparison: Comparison) -> tuple[str, bool]:
                    f"{MARGINAL:g} of 1: an integrating mode the tracked outputs do not see; "
                    "undecided)")
         else:
-            warn = True
+            # Supporting evidence, not the verdict: the linearisation takes the model as its
+            # own plant. It warns when the loop that ran needed the guard or ran away from
+            # the open loop (above); a bounded run without either is said, not warned about.
             lin = (f"nominal linearisation (its model in charge) unstable (spectral radius "
                    f"{nominal:.4f})")
         if local is not None and local.size:
@@ -468,6 +484,6 @@ def write_runs(path: Path, comparison: Comparison, meta: dict[str, Any],
 
 __all__ = ["CONTROLLERS", "DEFAULT_TRANSIENT", "DIVERGENCE_FACTOR", "LINEAR", "LPV", "MARGINAL",
            "MODEL_BASED", "NEURAL", "RELEASE_GAP", "SETPOINT_DECAY", "Comparison", "Settling",
-           "compare", "engagement_end", "open_loop_bound", "release_end", "settling",
+           "compare", "engagement", "engagement_end", "open_loop_bound", "release_end", "settling",
            "stability_radii",
            "verdict", "write_runs"]

@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.neural.control.metrics import SPLIT_METRICS, WORSE_MARGIN
+from jointplay.neural.control.metrics import SPLIT_METRICS, WORSE_MARGIN, judged
 from jointplay.neural.study.cases import Case
 from jointplay.neural.study.comparison import LINEAR, LPV, MODEL_BASED, NEURAL
 from jointplay.neural.study.runs import BASELINES, GOAL_METRICS, JUDGED, REPORTED
@@ -81,7 +81,8 @@ def goal_checks(summary: dict[tuple[str, str], dict[str, Any]], cases: list[Case
 
 def worse_counts(rows: list[dict[str, Any]]) -> dict[tuple[str, str, str], int]:
     """(case, controller, baseline) -> runs (seeds) that end worse than that baseline on some
-    judged metric (ties within WORSE_MARGIN not counted)."""
+    judged metric (:func:`jointplay.neural.control.metrics.judged`; ties within WORSE_MARGIN not
+    counted)."""
     base = {(r["case"], r["controller"]): r for r in rows if r["seed"] == -1}
     out: dict[tuple[str, str, str], int] = {}
     for r in rows:
@@ -89,7 +90,8 @@ def worse_counts(rows: list[dict[str, Any]]) -> dict[tuple[str, str, str], int]:
             ref = base.get((r["case"], baseline))
             if ref is None or r["controller"] in (baseline, "open loop"):
                 continue
-            worse = any(ref[k] > 0 and r[k] > ref[k] * (1 + WORSE_MARGIN) for k in JUDGED)
+            keys = [k for k in judged(r["controller"], baseline) if k in JUDGED]
+            worse = any(ref[k] > 0 and r[k] > ref[k] * (1 + WORSE_MARGIN) for k in keys)
             key = (r["case"], r["controller"], baseline)
             out[key] = out.get(key, 0) + int(worse)
     return out

@@ -23,9 +23,14 @@ BASELINES = ("open loop", "PD", "computed torque")
 GOAL_METRICS = (("max_position", "max |Δp| [m]"),
                 ("max_velocity_after", "max |Δv| after settling [m/s]"),
                 ("rms_acceleration_after", "RMS |Δa| after settling [m/s²]"))
-# The metrics judged against the open loop and PD ("worse than no control" is counted).
-JUDGED = (*(k for k, _ in GOAL_METRICS), "max_velocity", "max_acceleration_after")
-REPORTED = (*JUDGED, *SPLIT_METRICS, "diverged", "guard_episodes", "fallback_samples",
+GOAL_METRICS_KEYS = tuple(k for k, _ in GOAL_METRICS)
+# The metrics judged against the open loop and PD ("worse than no control" is counted), where
+# a controller can act: from the outer loop's engagement on, and after settling.
+JUDGED = ("max_position_engaged", "max_velocity_engaged", "max_velocity_after",
+          "max_acceleration_after", "rms_acceleration_after")
+REPORTED = (*GOAL_METRICS_KEYS, "max_velocity", *(k for k in JUDGED
+                                                  if k not in GOAL_METRICS_KEYS),
+            *SPLIT_METRICS, "diverged", "guard_episodes", "fallback_samples",
             "input_bound_samples", "settle_s")
 
 
