@@ -14,6 +14,7 @@ import numpy as np
 
 if TYPE_CHECKING:
     from jointplay.results.accuracy import Accuracy
+    from jointplay.results.sensitivities import Sensitivities
     from jointplay.results.solution import DenseSolution
     from jointplay.results.wear import WearProfile
 
@@ -149,6 +150,8 @@ class SimulationResult:
     ideal: SimulationResult | None = None  # the same scene with ideal joints (--compare-ideal)
     wear: WearProfile | None = None  # Archard wear of the clearance joints, when compiled
     accuracy: Accuracy | None = None  # the run checked at 10x tighter tolerances (verify=True)
+    # d outputs / d named parameters (simulate(..., sensitivities=[...])), else None
+    sensitivities: Sensitivities | None = None
 
     @property
     def n_samples(self) -> int:

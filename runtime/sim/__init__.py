@@ -52,7 +52,8 @@ METHODS: dict[str, Method] = {"bdf": run_bdf, "cvodes": _run_adaptive, "idas": _
 def simulate(scene: Scene, *, model: Model | None = None,
              parameters: Mapping[str, float] | Sequence[float] | None = None,
              compare_ideal: bool = False, quiet: bool = True,
-             verify: bool = False) -> SimulationResult:
+             verify: bool = False,
+             sensitivities: Sequence[str] | None = None) -> SimulationResult:
     """Simulate ``scene`` and return every output as numpy arrays.
 
     ``parameters`` overrides numbers of the scene's robot by name (``{"friction.mu": 0.1}``)
@@ -63,6 +64,13 @@ def simulate(scene: Scene, *, model: Model | None = None,
     energy residuals, the agreement horizon of the impact sequence and which impacts are
     tolerance-sensitive); it costs that second run. Raises :class:`SimulationError` with the
     time, the joint and the cause when the integration cannot go on.
+
+    ``sensitivities`` names parameters (any name ``parameters`` takes, and
+    ``jointN.clearance``, the radial clearance of joint N with its bearing radius held):
+    ``result.sensitivities`` (:class:`jointplay.results.sensitivities.Sensitivities`) then
+    holds the derivatives of the state, the tip, the impact times and peak forces with
+    respect to each, integrated beside the state and carried through every contact onset
+    (``bdf`` only; the state is the same as without them).
     """
     from tqdm import tqdm
 
@@ -80,6 +88,7 @@ def simulate(scene: Scene, *, model: Model | None = None,
                                 parameters=ideal_params, quiet=quiet)
     pr = _Problem(model, scene, p)
     run = scene.run
+    names = _sensitivity_names(sensitivities, run.integrator)
     if model.structure.wear is not None and run.integrator != "bdf":
         from jointplay.common.errors import DescriptionError
 
@@ -92,6 +101,10 @@ def simulate(scene: Scene, *, model: Model | None = None,
                        v_imp=np.zeros((n_out + 1, pr.nc)),
                        work=np.zeros(n_out + 1), dissipated=np.zeros(n_out + 1))
     x0 = _initial_state(model, scene, p)
+    if names:
+        from jointplay.sim.sensitivity import sensitivity_inputs
+
+        pr.sensitivity = sensitivity_inputs(pr, names, x0)
     stats = _Accumulated()
     start = time.perf_counter()
     with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,
@@ -111,12 +124,52 @@ def simulate(scene: Scene, *, model: Model | None = None,
     counts: dict[str, Any] = dict(stats.counts)
     result = _assemble(pr, traj, t, counts, wall, ideal_result, phases)
     check_result(result, pr)
+    if names:
+        result = _with_sensitivities(result, pr, names, traj)
     if verify:
         result = with_accuracy(result, scene, model=model, parameters=parameters, quiet=quiet)
     # Last: the dense output is attached to this very object (a dataclass replace drops it).
     from jointplay.sim.dense import attach
 
     return attach(result, pr, traj, x0)
+
+
+def _sensitivity_names(names: Sequence[str] | None, integrator: str) -> tuple[str, ...]:
+    """The names asked for, checked for form (the model checks them by name later)."""
+    from jointplay.common.errors import DescriptionError
+
+    if names is None:
+        return ()
+    if isinstance(names, str):
+        names = (names,)
+    names = tuple(names)
+    for name in names:
+        if not isinstance(name, str):
+            raise DescriptionError("sensitivities", f"names parameters by name (strings), "
+                                   f"got {name!r}")
+    if names and integrator != "bdf":
+        raise DescriptionError("run.integrator", f"sensitivities are integrated by the bdf "
+                               f"integrator only; use integrator = \"bdf\" (got "
+                               f"{integrator!r})")
+    return names
+
+
+def _with_sensitivities(result: SimulationResult, pr: _Problem, names: tuple[str, ...],
+                        traj: _Trajectory) -> SimulationResult:
+    """``result`` with its sensitivities; the problem stops carrying them (a dense output
+    run later integrates the state alone)."""
+    from dataclasses import replace
+
+    from jointplay.sim.sensitivity import assemble_sensitivities
+
+    inputs, pr.sensitivity = pr.sensitivity, None
+    impacts = result.impacts
+    joints = np.array([pr.model.clearance_joints.index(int(j)) for j in impacts.joint],
+                      dtype=int)
+    sens = assemble_sensitivities(pr, names, inputs, result.t, traj.x, traj.sensitivity,
+                                  traj.phase_sensitivity, joints,
+                                  np.asarray(impacts.max_penetration, dtype=float))
+    return replace(result, sensitivities=sens)
 
 
 def tighter_settings(scene: Scene) -> dict[str, float]:

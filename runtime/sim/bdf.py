@@ -34,7 +34,7 @@ def native_integrator(pr: _Problem) -> NativeIntegrator:
     return NativeIntegrator(model, pr.p, pr.scale, ecc, clearance,
                             np.asarray(pr.angle_index, dtype=np.int32), pr.torques,
                             rtol=run.rtol, atol=run.atol, max_steps=run.max_steps,
-                            max_events=MAX_EVENTS_PER_OUTPUT)
+                            max_events=MAX_EVENTS_PER_OUTPUT, sensitivities=pr.sensitivity)
 
 
 def torque_fields(pr: _Problem) -> list[str]:
@@ -87,6 +87,9 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
     integ = native_integrator(pr)
     integ.reset(x0)
     traj.x[0] = x0
+    if integ.n_sensitivities:
+        traj.sensitivity = np.zeros((n_out + 1, pr.nx, integ.n_sensitivities))
+        traj.sensitivity[0] = pr.sensitivity.initial.T
     _, speeds = integ.flags()
     traj.v_imp[0] = speeds
     nx = pr.nx
@@ -106,15 +109,19 @@ def run_bdf(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated
         traj.x[rows] = values[:, :nx]
         traj.work[rows] = values[:, nx]
         if pr.nc:  # per joint: impulse, damping energy, friction energy
-            per_joint = values[:, nx + 1:].reshape(upto - done, pr.nc, 3)
+            per_joint = values[:, nx + 1:nx + 1 + 3 * pr.nc].reshape(upto - done, pr.nc, 3)
             traj.dissipated[rows] = per_joint[:, :, 1:].sum(axis=(1, 2))
         traj.v_imp[rows] = v_out
+        if integ.n_sensitivities:
+            traj.sensitivity[rows] = integ.sensitivity_rows(values)
         progress.update(upto - done)
         done = upto
     _add_counts(stats, integ)
     wear = integ.wear()
     if wear is not None:
         traj.wear = wear_profile(list(pr.model.clearance_joints), *wear)
+    if integ.n_sensitivities:
+        traj.phase_sensitivity = integ.phase_sensitivities()
     phase_rows = close_open_phases(integ, pr, integ.phases(), integ.current())
     return phase_table(pr, phase_rows, float(t[-1]))
 
@@ -131,6 +138,8 @@ def _add_counts(stats: _Accumulated, integ: NativeIntegrator) -> None:
     # or JOINTPLAY_NEWTON=reduced; none with JOINTPLAY_NEWTON=full).
     stats.counts["reduced_lu_decompositions"] = counts["reduced_lu_decompositions"]
     stats.counts["newton_failures"] = counts["newton_failures"]
+    if integ.n_sensitivities:  # the Jacobians at each step's end the sensitivities take
+        stats.counts["sensitivity_jacobians"] = counts["sensitivity_jacobians"]
 
 
 def _joint_at_failure(pr: _Problem, integ: NativeIntegrator) -> int | None:

@@ -100,6 +100,14 @@ typedef struct {
   jp_function wear;         /* eval NULL: no wear integrated */
   int wear_bins;            /* angular bins around each surface */
   jp_function normal;       /* contact's f_n alone; eval NULL: taken from contact */
+  /* Forward sensitivities (see sens_step): ns named parameters, each a direction in the
+   * parameter vector (dp, ns x np), its clearance change (dc, ns x nc) and the initial
+   * state's derivative (s0, ns x nx, unscaled); jac_in is the model's
+   * jac_forward_dynamics_inputs, sp_p and sp_v the CCS patterns of its p and v_imp blocks. */
+  int ns;
+  const double *dp, *dc, *s0;
+  jp_function jac_in;
+  const jp_int *sp_p, *sp_v;
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -160,6 +168,15 @@ typedef struct {
   int status; double fail_t; int fail_joint; double fail_h;
   /* wear: outputs of the model's wear function (7 x nc), volume (nc), depth (2 x nc x bins) */
   double *wear_out, *wear_volume, *wear_depth;
+  /* sensitivities: columns sens_col.. of D hold ns blocks of nx (scaled, like the state);
+   * Js / LUs / LTs / pivs the Jacobian at the step's end and its Newton matrix; bz the
+   * scaled forcing (ns x nx); v_sens d v_imp / d parameter (nc x ns); phase_sens one record
+   * of PS values per phase (see PS_* below) */
+  int sens_col, sens_record;
+  double *Js, *LUs, *LTs; int *pivs;
+  double *bz, *fp_sparse, *fv_sparse, *v_sens, *sens_tmp, *f_minus, *f_plus;
+  double *phase_sens;
+  long n_sens_jac;
 } jp_sim;
 
 static volatile sig_atomic_t jp_interrupted = 0;
@@ -455,7 +472,8 @@ static void dense_first(const jp_sim *s, double t, double *y, int n) {
 /* Dense output of the last step at time t into y (N values). */
 static void dense(const jp_sim *s, double t, double *y) { dense_first(s, t, y, s->N); }
 
-static int jacobian(jp_sim *s, double t, const double *z) {
+/* The scaled state Jacobian at (t, z) into J (nx x nx, row-major). */
+static int jacobian_values(jp_sim *s, double t, const double *z, double *J) {
   const jp_config *c = &s->c;
   int nx = c->nx;
   if (torques_at(s, t)) return 1;
@@ -465,8 +483,7 @@ static int jacobian(jp_sim *s, double t, const double *z) {
   s->res[0] = s->jac_sparse;
   for (int k = 1; k < c->jac.n_out; ++k) s->res[k] = NULL;
   if (call(s, &c->jac)) return 1;
-  s->n_jac++;
-  memset(s->J, 0, (size_t)nx * nx * sizeof(double));
+  memset(J, 0, (size_t)nx * nx * sizeof(double));
   const jp_int *sp = c->jac.sparsity_out0; /* nrow, ncol, colind[ncol+1], row[nnz] */
   jp_int ncol = sp[1];
   const jp_int *colind = sp + 2, *row = sp + 2 + ncol + 1;
@@ -474,8 +491,15 @@ static int jacobian(jp_sim *s, double t, const double *z) {
     for (jp_int k = colind[col]; k < colind[col + 1]; ++k) {
       jp_int r = row[k];
       /* scaled: dz_r/dz_col = J_rc * scale_col / scale_r */
-      s->J[r * nx + col] = s->jac_sparse[k] * c->scale[col] / c->scale[r];
+      J[r * nx + col] = s->jac_sparse[k] * c->scale[col] / c->scale[r];
     }
+  return 0;
+}
+
+static int jacobian(jp_sim *s, double t, const double *z) {
+  int nx = s->c.nx;
+  if (jacobian_values(s, t, z, s->J)) return 1;
+  s->n_jac++;
   int n = nx / 2;
   s->reduced = nx % 2 == 0 && s->newton != JP_NEWTON_FULL
               && (s->newton == JP_NEWTON_REDUCED || n >= JP_REDUCED_NEWTON_FROM);
@@ -549,6 +573,164 @@ static void quad_scale(jp_sim *s, const double *y, double *scal) {
   for (int i = 0; i < s->c.nx; ++i) scal[i] = s->c.atol + s->c.rtol * fabs(y[i]);
 }
 
+/* ---- forward sensitivities -------------------------------------------------------------------- */
+/* S = dx/dp for ns named parameters, each a direction dp in the parameter vector, solves the
+ * linear system S' = f_x S + f_p dp + f_v dv_imp/dp. The staggered direct method (Caracotsios
+ * and Stewart, Comput. Chem. Eng. 9, 1985): after each accepted step of the state, S at the
+ * step's end solves the same BDF formula, with f_x and f_p at the converged state and its own
+ * Newton matrix I - c f_x (exact in one solve; the state's LU may hold a stale Jacobian).
+ * S rides in D beside the state (so the dense output, step changes and redone steps carry
+ * it) but outside the error test: the state's steps are those of a run without it. At a
+ * contact onset (an event g = |e| - c(p) = 0 at tau) the event time moves by
+ * dtau/dp = -(g_x S + g_p) / (g_x f), S jumps by (f- - f+) dtau/dp (Hiskens and Pai, IEEE
+ * TCAS-I 47, 2000), and the captured approach speed's derivative, d(delta_dot(x(tau)))/dp,
+ * is carried as a parameter's until the joint's next onset. */
+
+/* A phase's sensitivity record: dtau/dp (ns), then at its force peak the state (nx), S
+ * (ns x nx, unscaled), the impact speeds (nc) and their derivatives (nc x ns). */
+static int sens_record_size(const jp_config *c) {
+  return c->ns + c->nx + c->ns * c->nx + c->nc + c->nc * c->ns;
+}
+
+/* dz/dt at (t, z) with the current impact speeds, not counted as a step's evaluation. */
+static int model_rates(jp_sim *s, double t, const double *z, double *dz) {
+  const jp_config *c = &s->c;
+  if (torques_at(s, t)) return 1;
+  unscale(s, z);
+  s->arg[0] = s->xs; s->arg[1] = s->tau; s->arg[2] = c->p; s->arg[3] = s->v_imp;
+  s->res[0] = s->xdot;
+  if (call(s, &c->f)) return 1;
+  for (int i = 0; i < c->nx; ++i) dz[i] = s->xdot[i] / c->scale[i];
+  return all_finite(c->nx, dz) ? 0 : 1;
+}
+
+/* bz (ns x nx, scaled): f_p dp + f_v dv_imp/dp at (t, z), from jac_forward_dynamics_inputs. */
+static int sens_forcing(jp_sim *s, double t, const double *z) {
+  const jp_config *c = &s->c;
+  int nx = c->nx, ns = c->ns, np = c->np, nc = c->nc;
+  if (torques_at(s, t)) return 1;
+  unscale(s, z);
+  s->arg[0] = s->xs; s->arg[1] = s->tau; s->arg[2] = c->p; s->arg[3] = s->v_imp;
+  for (int k = 0; k < c->jac_in.n_out; ++k) s->res[k] = NULL;
+  s->res[1] = s->fp_sparse;
+  if (nc) s->res[2] = s->fv_sparse;
+  if (call(s, &c->jac_in)) return 1;
+  memset(s->bz, 0, (size_t)ns * nx * sizeof(double));
+  const jp_int *patterns[2] = {c->sp_p, nc ? c->sp_v : NULL};
+  const double *values[2] = {s->fp_sparse, s->fv_sparse};
+  for (int b = 0; b < 2; ++b) {
+    const jp_int *sp = patterns[b];
+    if (!sp) continue;
+    jp_int ncol = sp[1];
+    const jp_int *colind = sp + 2, *row = sp + 2 + ncol + 1;
+    for (jp_int col = 0; col < ncol; ++col)
+      for (jp_int k = colind[col]; k < colind[col + 1]; ++k) {
+        jp_int r = row[k];
+        double v = values[b][k];
+        for (int q = 0; q < ns; ++q) {
+          double dir = b == 0 ? c->dp[(size_t)q * np + col] : s->v_sens[col * ns + q];
+          s->bz[q * nx + r] += v * dir;
+        }
+      }
+  }
+  for (int q = 0; q < ns; ++q)
+    for (int r = 0; r < nx; ++r) s->bz[q * nx + r] /= c->scale[r];
+  return all_finite(ns * nx, s->bz) ? 0 : 1;
+}
+
+/* Z' = Js Z + bz for each sensitivity block of the N-vector y, into out (same layout). */
+static void sens_rates(const jp_sim *s, const double *y, double *out) {
+  int nx = s->c.nx;
+  for (int q = 0; q < s->c.ns; ++q) {
+    int o = s->sens_col + q * nx;
+    for (int i = 0; i < nx; ++i) {
+      const double *ji = s->Js + (size_t)i * nx;
+      double sum = 0.0;
+      for (int j = 0; j < nx; ++j) sum += ji[j] * y[o + j];
+      out[o + i] = sum + s->bz[q * nx + i];
+    }
+  }
+}
+
+/* The sensitivities at the end of the step just accepted (state y_new at t_new, predictor
+ * y_pred, psi and c of the step): d = y_new - y_pred of each block from
+ * (I - c Js) d = c (Js y_pred + bz) - psi. */
+static int sens_step(jp_sim *s, double t_new, double c_coef) {
+  const jp_config *c = &s->c;
+  int nx = c->nx;
+  if (jacobian_values(s, t_new, s->y_new, s->Js) || sens_forcing(s, t_new, s->y_new)) return 1;
+  s->n_sens_jac++;
+  for (int i = 0; i < nx * nx; ++i) s->LUs[i] = -c_coef * s->Js[i];
+  for (int i = 0; i < nx; ++i) s->LUs[i * nx + i] += 1.0;
+  if (lu_factor(nx, s->LUs, s->pivs)) return 1;
+  lu_lower_columns(nx, s->LUs, s->LTs);
+  sens_rates(s, s->y_pred, s->sens_tmp);
+  for (int q = 0; q < c->ns; ++q) {
+    int o = s->sens_col + q * nx;
+    double *dz = s->d + o;
+    for (int i = 0; i < nx; ++i) dz[i] = c_coef * s->sens_tmp[o + i] - s->psi[o + i];
+    lu_solve(nx, s->LUs, s->LTs, s->pivs, dz);
+    for (int i = 0; i < nx; ++i) s->y_new[o + i] = s->y_pred[o + i] + dz[i];
+  }
+  return all_finite(c->ns * nx, s->d + s->sens_col) ? 0 : 1;
+}
+
+/* At the onset of joint j at t (y: the N-vector there, a copy of D's first row; v_old: the
+ * impact speed before this onset captured v_imp[j]): the event time's derivative (located:
+ * 0 for a contact present at the start), the jump of S in D's first row and the new impact
+ * speed's derivative. */
+static void sens_onset(jp_sim *s, int j, double t, const double *y, double v_old,
+                       int located) {
+  const jp_config *c = &s->c;
+  int nx = c->nx, nq = c->nq, ns = c->ns, nc = c->nc;
+  double v_new = s->v_imp[j];
+  s->v_imp[j] = v_old;
+  int bad = model_rates(s, t, y, s->f_minus);
+  s->v_imp[j] = v_new;
+  bad |= model_rates(s, t, y, s->f_plus);
+  if (bad) { s->status = JP_NONFINITE; s->fail_t = t; s->fail_joint = j; return; }
+  int ix = c->ecc_index[2 * j], iy = c->ecc_index[2 * j + 1];
+  const double *sc = c->scale;
+  double ex = y[ix] * sc[ix], ey = y[iy] * sc[iy];
+  double vx = y[nq + ix] * sc[nq + ix], vy = y[nq + iy] * sc[nq + iy];
+  double ax = s->f_minus[nq + ix] * sc[nq + ix], ay = s->f_minus[nq + iy] * sc[nq + iy];
+  double floor = 1e-6 * c->clearance[j];
+  double e = sqrt(fmax(ex * ex + ey * ey, floor * floor));
+  double rate = (ex * vx + ey * vy) / e;
+  double *record = s->open_phase[j] >= 0
+                   ? s->phase_sens + (size_t)s->open_phase[j] * s->sens_record : NULL;
+  for (int q = 0; q < ns; ++q) {
+    int o = s->sens_col + q * nx;
+    double sex = y[o + ix] * sc[ix], sey = y[o + iy] * sc[iy];
+    double svx = y[o + nq + ix] * sc[nq + ix], svy = y[o + nq + iy] * sc[nq + iy];
+    double dtau = located ? -((ex * sex + ey * sey) / e - c->dc[q * nc + j]) / rate : 0.0;
+    /* the state at the moved event: x(tau(p), p), its derivative S + f- dtau/dp */
+    double dex = sex + vx * dtau, dey = sey + vy * dtau;
+    double dvx = svx + ax * dtau, dvy = svy + ay * dtau;
+    s->v_sens[j * ns + q] = (vx / e - rate * ex / (e * e)) * dex
+                            + (vy / e - rate * ey / (e * e)) * dey + ex / e * dvx + ey / e * dvy;
+    for (int i = 0; i < nx; ++i) s->D[o + i] += (s->f_minus[i] - s->f_plus[i]) * dtau;
+    if (record) record[q] = dtau;
+  }
+}
+
+/* A new force peak of joint j's open phase at t (on the last step's dense output): the state,
+ * sensitivities and impact speeds there, for the peak's derivative. */
+static void sens_peak(jp_sim *s, int j, double t) {
+  const jp_config *c = &s->c;
+  int nx = c->nx, ns = c->ns, nc = c->nc;
+  if (s->open_phase[j] < 0) return;
+  double *x = s->phase_sens + (size_t)s->open_phase[j] * s->sens_record + ns;
+  double *S = x + nx, *v = S + (size_t)ns * nx;
+  dense(s, t, s->sens_tmp);
+  for (int i = 0; i < nx; ++i) x[i] = s->sens_tmp[i] * c->scale[i];
+  for (int q = 0; q < ns; ++q)
+    for (int i = 0; i < nx; ++i)
+      S[q * nx + i] = s->sens_tmp[s->sens_col + q * nx + i] * c->scale[i];
+  memcpy(v, s->v_imp, nc * sizeof(double));
+  memcpy(v + nc, s->v_sens, (size_t)nc * ns * sizeof(double));
+}
+
 /* Start (or restart) at (t, z): order 1, a step from the initial-step heuristic. */
 static int bdf_start(jp_sim *s, double t, const double *z, const double *quad, double t_bound) {
   const jp_config *c = &s->c;
@@ -556,6 +738,8 @@ static int bdf_start(jp_sim *s, double t, const double *z, const double *quad, d
   memset(s->D, 0, (size_t)(MAX_ORDER + 3) * N * sizeof(double));
   memcpy(s->D, z, nx * sizeof(double));
   memcpy(s->D + nx, quad, s->nquad * sizeof(double));
+  /* z is a whole N-vector: its sensitivity blocks follow the quadratures */
+  if (c->ns) memcpy(s->D + s->sens_col, z + s->sens_col, (size_t)c->ns * nx * sizeof(double));
   double *f0 = s->f_buf, *f1 = s->dy, *y1 = s->tmp_y;
   int rc = rhs(s, t, z, f0);
   if (rc) { if (rc > 0) { s->status = JP_NONFINITE; s->fail_t = t; } return 1; }
@@ -590,6 +774,12 @@ static int bdf_start(jp_sim *s, double t, const double *z, const double *quad, d
   s->have_lu = 0; s->current_jac = 0; s->started = 1;
   if (jacobian(s, t, z)) { s->status = JP_NONFINITE; s->fail_t = t; return 1; }
   s->current_jac = 1;
+  if (c->ns) {
+    memcpy(s->Js, s->J, (size_t)nx * nx * sizeof(double));
+    if (sens_forcing(s, t, z)) { s->status = JP_NONFINITE; s->fail_t = t; return 1; }
+    sens_rates(s, s->D, s->sens_tmp);
+    for (int i = s->sens_col; i < N; ++i) s->D[N + i] = s->sens_tmp[i] * h;
+  }
   return 0;
 }
 
@@ -690,6 +880,9 @@ static int bdf_step(jp_sim *s, double t_bound) {
       double di = c_coef * s->tmp_y2[i] - s->psi[nx + i];
       s->d[nx + i] = di;
       s->y_new[nx + i] = s->y_pred[nx + i] + di;
+    }
+    if (c->ns && sens_step(s, t_new, c_coef)) {
+      s->status = JP_NONFINITE; s->fail_t = t_new; s->fail_h = h; return 1;
     }
     /* rows 0..order+2 are all a step at this order reads or writes (those above are written
      * before they are read, should the order rise): the rest need no copy for a redo */
@@ -798,7 +991,18 @@ static int new_phase(jp_sim *s, int j, double t, double speed, const double *xs)
     long cap = s->cap_phases ? 2 * s->cap_phases : 64;
     double *grown = realloc(s->phases, (size_t)cap * PH_FIELDS * sizeof(double));
     if (!grown) { s->status = JP_NO_MEMORY; return 1; }
-    s->phases = grown; s->cap_phases = cap;
+    s->phases = grown;
+    if (s->c.ns) {
+      grown = realloc(s->phase_sens, (size_t)cap * s->sens_record * sizeof(double));
+      if (!grown) { s->status = JP_NO_MEMORY; return 1; }
+      s->phase_sens = grown;
+    }
+    s->cap_phases = cap;
+  }
+  if (s->c.ns) { /* nothing known yet: no event-time change, no peak (state NAN) */
+    double *rec = s->phase_sens + (size_t)s->n_phases * s->sens_record;
+    for (int k = 0; k < s->sens_record; ++k) rec[k] = 0.0;
+    for (int k = 0; k < s->c.nx; ++k) rec[s->c.ns + k] = NAN;
   }
   double *row = s->phases + s->n_phases * PH_FIELDS;
   for (int k = 0; k < PH_FIELDS; ++k) row[k] = NAN;
@@ -823,15 +1027,17 @@ static void phase_quadratures(jp_sim *s, double *row, const double *y, int j, do
   }
 }
 
-static void onset(jp_sim *s, int j, double t, const double *y /* scaled, N */) {
+static void onset(jp_sim *s, int j, double t, const double *y /* scaled, N */,
+                  int located) {
   unscale(s, y);
-  double delta, rate;
+  double delta, rate, v_old = s->v_imp[j];
   gap(s, s->xs, j, &delta, &rate);
   s->flags[j] = 1.0; s->armed[j] = delta > 0; s->v_imp[j] = rate; s->rising[j] = 1;
   s->v_gen++;
   s->n_events++;
   if (new_phase(s, j, t, rate, s->xs)) return;
   phase_quadratures(s, s->phases + s->open_phase[j] * PH_FIELDS, y, j, -1.0);
+  if (s->c.ns) sens_onset(s, j, t, y, v_old, located);
 }
 
 static void separation(jp_sim *s, int j, double t) {
@@ -851,7 +1057,10 @@ static void separation(jp_sim *s, int j, double t) {
 static void note_peak(jp_sim *s, int j, int column, int time_column, double value, double t) {
   if (s->open_phase[j] < 0) return;
   double *row = s->phases + s->open_phase[j] * PH_FIELDS;
-  if (value > row[column]) { row[column] = value; row[time_column] = t; }
+  if (value > row[column]) {
+    row[column] = value; row[time_column] = t;
+    if (column == PH_F_PEAK && s->c.ns) sens_peak(s, j, t);
+  }
 }
 
 /* Samples of one step: its start, INTERIOR points and its end. */
@@ -1007,7 +1216,7 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
         if (dl[k][j] > 0 || (k == NS - 1 && s->t >= s->landing_target &&
                              dl[k][j] > -landing_gap(s, j))) {
           memcpy(s->tmp_y2, s->D, s->N * sizeof(double));
-          onset(s, j, ts[k], s->tmp_y2);
+          onset(s, j, ts[k], s->tmp_y2, 1);
         }
         continue;
       }
@@ -1170,7 +1379,9 @@ jp_sim *jp_create(const jp_config *config) {
   const jp_config *c = &s->c;
   int nx = c->nx, nc = c->nc;
   s->nquad = 1 + 3 * nc;
-  s->N = nx + s->nquad;
+  s->sens_col = nx + s->nquad;
+  s->sens_record = sens_record_size(c);
+  s->N = nx + s->nquad + c->ns * nx;
   int N = s->N;
   size_t rows = MAX_ORDER + 3;
   s->D = calloc(rows * N, sizeof(double));
@@ -1207,8 +1418,9 @@ jp_sim *jp_create(const jp_config *config) {
   s->fn_carry = calloc(nc + 1, sizeof(double));
   s->fn_quad_t = s->fn_carry_t = NAN;
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
-  const jp_function *fns[5] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal};
-  for (int k = 0; k < 5; ++k) {
+  const jp_function *fns[6] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal,
+                               &c->jac_in};
+  for (int k = 0; k < 6; ++k) {
     if (!fns[k]->eval) continue;
     if (fns[k]->sz_arg > sz_arg) sz_arg = fns[k]->sz_arg;
     if (fns[k]->sz_res > sz_res) sz_res = fns[k]->sz_res;
@@ -1231,6 +1443,23 @@ jp_sim *jp_create(const jp_config *config) {
     return NULL;
   }
   for (int j = 0; j < nc; ++j) s->open_phase[j] = -1;
+  if (c->ns) {
+    size_t nxx = (size_t)nx * nx;
+    s->Js = calloc(nxx, sizeof(double)); s->LUs = calloc(nxx, sizeof(double));
+    s->LTs = calloc(nxx, sizeof(double)); s->pivs = calloc(nx, sizeof(int));
+    s->bz = calloc((size_t)c->ns * nx, sizeof(double));
+    s->fp_sparse = calloc(c->sp_p[2 + c->sp_p[1]] + 1, sizeof(double));
+    s->fv_sparse = calloc((nc ? c->sp_v[2 + c->sp_v[1]] : 0) + 1, sizeof(double));
+    s->v_sens = calloc((size_t)nc * c->ns + 1, sizeof(double));
+    s->sens_tmp = calloc(N, sizeof(double));
+    s->f_minus = calloc(nx, sizeof(double)); s->f_plus = calloc(nx, sizeof(double));
+    if (!s->Js || !s->LUs || !s->LTs || !s->pivs || !s->bz || !s->fp_sparse ||
+        !s->fv_sparse || !s->v_sens || !s->sens_tmp || !s->f_minus || !s->f_plus ||
+        !c->jac_in.eval) {
+      jp_free(s);
+      return NULL;
+    }
+  }
   if (c->wear.eval) {
     s->wear_out = calloc((size_t)WO_FIELDS * nc + 1, sizeof(double));
     s->wear_volume = calloc(nc + 1, sizeof(double));
@@ -1251,7 +1480,9 @@ void jp_free(jp_sim *s) {
                   s->xdot, s->tau, s->u_hold, s->tau_scene, s->torque_same, s->v_imp, s->flags,
                   s->armed, s->rising, s->open_phase,
                   s->c_out, s->samples, s->fn_quad, s->fn_carry, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
-                  s->wear_out, s->wear_volume, s->wear_depth};
+                  s->wear_out, s->wear_volume, s->wear_depth, s->Js, s->LUs, s->LTs,
+                  s->pivs, s->bz, s->fp_sparse, s->fv_sparse, s->v_sens, s->sens_tmp,
+                  s->f_minus, s->f_plus, s->phase_sens};
   for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
   free(s);
 }
@@ -1278,11 +1509,17 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
     memset(s->wear_volume, 0, c->nc * sizeof(double));
     memset(s->wear_depth, 0, (size_t)2 * c->nc * c->wear_bins * sizeof(double));
   }
+  /* the initial sensitivities, and no impact speed's derivative yet */
+  for (int q = 0; q < c->ns; ++q)
+    for (int i = 0; i < c->nx; ++i)
+      s->D[s->sens_col + q * c->nx + i] = c->s0[q * c->nx + i] / c->scale[i];
+  if (c->ns) memset(s->v_sens, 0, (size_t)c->nc * c->ns * sizeof(double));
+  s->n_sens_jac = 0;
   memcpy(s->tmp_y2, s->D, s->N * sizeof(double));
   for (int j = 0; j < c->nc; ++j) {
     double delta;
     gap(s, x0, j, &delta, NULL);
-    if (delta > 0) onset(s, j, t0, s->tmp_y2);
+    if (delta > 0) onset(s, j, t0, s->tmp_y2, 0);
   }
   return s->status;
 }
@@ -1335,7 +1572,7 @@ int jp_integrate(jp_sim *s, double t_end, long n_out, const double *t_out, doubl
         bound = t_cut; s->landing_target = t_cut;
       } else {
         memcpy(s->tmp_y2, s->D, N * sizeof(double));
-        onset(s, cut_joint, s->t, s->tmp_y2);
+        onset(s, cut_joint, s->t, s->tmp_y2, 1);
         if (s->status) break;
       }
       if (++events_since_output > c->max_events) {
@@ -1382,7 +1619,13 @@ void jp_flags(const jp_sim *s, double *flags, double *v_imp) {
 void jp_stats(const jp_sim *s, long *out) {
   out[0] = s->n_steps; out[1] = s->n_rhs; out[2] = s->n_jac; out[3] = s->n_lu;
   out[4] = s->n_err_fail; out[5] = s->n_newton_fail; out[6] = s->n_events; out[7] = s->n_onsets;
-  out[8] = s->n_lu_reduced;
+  out[8] = s->n_lu_reduced; out[9] = s->n_sens_jac;
+}
+/* The phases' sensitivity records (see sens_record_size), n_phases x record. */
+int jp_sens_record(const jp_sim *s) { return s->sens_record; }
+void jp_phase_sens(const jp_sim *s, double *out) {
+  if (s->c.ns)
+    memcpy(out, s->phase_sens, (size_t)s->n_phases * s->sens_record * sizeof(double));
 }
 void jp_failure(const jp_sim *s, double *t, double *h, int *joint) {
   *t = s->fail_t; *h = s->fail_h; *joint = s->fail_joint;

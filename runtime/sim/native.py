@@ -36,7 +36,7 @@ PHASE_COLUMNS = ("joint", "time", "speed", "ex", "ey", "peak_force", "peak_force
                  "impulse", "damping_energy", "friction_energy")
 STAT_NAMES = ("steps", "rhs_evaluations", "jacobian_evaluations", "lu_decompositions",
               "error_test_failures", "newton_failures", "events", "impacts",
-              "reduced_lu_decompositions")
+              "reduced_lu_decompositions", "sensitivity_jacobians")
 # The driver's own C flags: -O3 (it is small and compiled once; its LU and difference updates
 # vectorise, without reassociation, so the results equal -O2's); -fno-math-errno as for models.
 DRIVER_CFLAGS = ("-O3", "-fPIC", "-shared", "-fno-math-errno")
@@ -65,7 +65,9 @@ class _Config(ctypes.Structure):
                 ("max_steps", ctypes.c_long), ("max_events", ctypes.c_long),
                 ("max_order", ctypes.c_int),
                 ("f", _Function), ("jac", _Function), ("contact", _Function),
-                ("wear", _Function), ("wear_bins", ctypes.c_int), ("normal", _Function)]
+                ("wear", _Function), ("wear_bins", ctypes.c_int), ("normal", _Function),
+                ("ns", ctypes.c_int), ("dp", _dbl_p), ("dc", _dbl_p), ("s0", _dbl_p),
+                ("jac_in", _Function), ("sp_p", _i64_p), ("sp_v", _i64_p)]
 
 
 @functools.cache
@@ -99,6 +101,8 @@ def driver_library() -> ctypes.CDLL:
     lib.jp_failure.argtypes = [ctypes.c_void_p, _dbl_p, _dbl_p, _int_p]
     lib.jp_n_state.argtypes = [ctypes.c_void_p]
     lib.jp_wear.argtypes = [ctypes.c_void_p, _dbl_p, _dbl_p]
+    lib.jp_sens_record.argtypes = [ctypes.c_void_p]
+    lib.jp_phase_sens.argtypes = [ctypes.c_void_p, _dbl_p]
     lib.jp_map.argtypes = [ctypes.POINTER(_Function), ctypes.c_long, ctypes.c_void_p,
                            ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
     if lib.jp_phase_fields() != len(PHASE_COLUMNS):
@@ -114,8 +118,9 @@ def _model_library(path: str) -> ctypes.CDLL:
     return lib
 
 
-def _function(model: Model, name: str) -> tuple[_Function, Any]:
-    lib = _model_library(str(model.library))
+def _function(model: Model, name: str, library: str | None = None) -> tuple[_Function, Any]:
+    """The generated function ``name`` of the model's eager library (or of ``library``)."""
+    lib = _model_library(library or str(model.library))
     fn = _Function()
     fn.eval = ctypes.cast(getattr(lib, name), ctypes.c_void_p).value
     n_in = getattr(lib, f"{name}_n_in")
@@ -136,12 +141,30 @@ def _ptr(array: np.ndarray, kind: Any) -> Any:
     return array.ctypes.data_as(kind)
 
 
+class SensitivityInputs:
+    """What the loop needs to integrate sensitivities beside the state: each named
+    parameter's direction in the parameter vector (ns, np), its change of each clearance
+    (ns, nc) and the initial state's derivative (ns, nx), unscaled."""
+
+    def __init__(self, directions: np.ndarray, clearance: np.ndarray,
+                 initial: np.ndarray) -> None:
+        self.directions = np.ascontiguousarray(directions, dtype=np.float64)
+        self.clearance = np.ascontiguousarray(clearance, dtype=np.float64)
+        self.initial = np.ascontiguousarray(initial, dtype=np.float64)
+
+    @property
+    def count(self) -> int:
+        return int(self.directions.shape[0])
+
+
 class NativeIntegrator:
     """One compiled run object: a model, a parameter vector, torques and tolerances.
 
     ``reset(x0)`` puts it at t = 0; ``integrate(t_end, t_out)`` advances to ``t_end`` and
     returns the states, quadratures and captured approach speeds at ``t_out``; ``hold(u)``
-    adds constant torques from now on (closed-loop control).
+    adds constant torques from now on (closed-loop control). With ``sensitivities``, each
+    output row also holds d state / d parameter (after the quadratures, one block of nx per
+    parameter, scaled like the state: see :meth:`sensitivity_rows`).
     """
 
     def __init__(self, model: Model, p: np.ndarray, scale: np.ndarray, ecc_index: np.ndarray,
@@ -149,7 +172,7 @@ class NativeIntegrator:
                  torques: tuple[TimeFunction, ...], *, rtol: float, atol: float,
                  max_steps: int, max_events: int, max_order: int = 5,
                  h_max: float = math.inf,
-                 h_init: float = 0.0) -> None:
+                 h_init: float = 0.0, sensitivities: SensitivityInputs | None = None) -> None:
         self.lib = driver_library()
         self.model = model
         self.nx = model.n_state
@@ -202,13 +225,52 @@ class NativeIntegrator:
             model.function("wear")
             cfg.wear, _ = _function(model, "wear")
             cfg.wear_bins = self.wear_bins
+        self.n_sensitivities = 0
+        if sensitivities is not None and sensitivities.count:
+            self._sensitivity_config(cfg, model, sensitivities)
         self._config = cfg
         handle = self.lib.jp_create(ctypes.byref(cfg))
         if not handle:
             raise MemoryError("the integrator could not allocate its work arrays")
         self._handle = ctypes.c_void_p(handle)
         self.n_values = int(self.lib.jp_n_state(self._handle))
-        self.n_quadratures = self.n_values - self.nx
+        self.n_quadratures = self.n_values - self.nx - self.n_sensitivities * self.nx
+
+    def _sensitivity_config(self, cfg: _Config, model: Model,
+                            sens: SensitivityInputs) -> None:
+        """Point the loop at the sensitivity inputs and the model's parameter Jacobians (its
+        deferred library, compiled on first use)."""
+        from jointplay.derive.deferred import INPUT_JACOBIANS
+
+        self._sens = sens
+        self.n_sensitivities = sens.count
+        model.function(INPUT_JACOBIANS)
+        library = str(model.deferred_library)
+        cfg.ns = sens.count
+        cfg.dp, cfg.s0 = _ptr(sens.directions, _dbl_p), _ptr(sens.initial, _dbl_p)
+        self._dc_buf = sens.clearance if sens.clearance.size else np.zeros(1)
+        cfg.dc = _ptr(self._dc_buf, _dbl_p)
+        cfg.jac_in, lib = _function(model, INPUT_JACOBIANS, library)
+        pattern = getattr(lib, f"{INPUT_JACOBIANS}_sparsity_out")
+        pattern.restype = _i64_p
+        cfg.sp_p = pattern(ctypes.c_longlong(1))
+        cfg.sp_v = pattern(ctypes.c_longlong(2))
+
+    def sensitivity_rows(self, values: np.ndarray) -> np.ndarray:
+        """d state / d parameter (rows, nx, ns), unscaled, from output rows of integrate."""
+        start = self.nx + self.n_quadratures
+        blocks = values[:, start:start + self.n_sensitivities * self.nx]
+        scaled = blocks.reshape(values.shape[0], self.n_sensitivities, self.nx)
+        return np.transpose(scaled * self._scale[None, None, :], (0, 2, 1))
+
+    def phase_sensitivities(self) -> np.ndarray:
+        """The phases' sensitivity records (n_phases, record): see driver.c, sens_peak."""
+        n = int(self.lib.jp_n_phases(self._handle))
+        size = int(self.lib.jp_sens_record(self._handle))
+        out = np.zeros((n, size))
+        if n and self.n_sensitivities:
+            self.lib.jp_phase_sens(self._handle, _ptr(out, _dbl_p))
+        return out
 
     def __del__(self) -> None:
         handle = getattr(self, "_handle", None)

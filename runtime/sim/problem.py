@@ -100,6 +100,8 @@ class _Problem:
         run = scene.run
         self.gap_tolerance = EVENT_GAP_FRACTION * run.atol * np.asarray(clearances, dtype=float)
         self.event_time_tolerance = EVENT_TIME_FRACTION * run.rtol * RATE_SCALE_TIME
+        # Forward sensitivities to integrate beside the state (bdf only), or None.
+        self.sensitivity: Any = None
 
     def tau(self, t: np.ndarray | float) -> np.ndarray:
         """Drive torques at times t: shape (len(t), ntau)."""
@@ -138,6 +140,9 @@ class _Trajectory:
     dissipated: np.ndarray
     impacts: list[tuple[float, int, float, float, float]] = field(default_factory=list)
     wear: Any = None  # jointplay.results.wear.WearProfile, from a method that integrates it
+    # With sensitivities: d x / d p at the samples (n_t, nx, ns) and the phases' records
+    sensitivity: Any = None
+    phase_sensitivity: Any = None
 
 
 def _initial_state(model: Model, scene: Scene, p: np.ndarray | None = None) -> np.ndarray:
@@ -170,9 +175,16 @@ def _parameter_vector(model: Model, scene: Scene,
     if parameters is None:
         return defaults
     if isinstance(parameters, Mapping):
+        from jointplay.robot.derived import expand_derived
+
         problems = Problems()
         vec = defaults.copy()
         values: dict[str, float] = {}
+        # jointN.clearance: the journal radius it gives, checked as that radius below
+        with problems.check():
+            parameters = expand_derived(parameters, model.parameters, scene.robot,
+                                        dict(zip(model.parameters, defaults, strict=True)))
+        problems.raise_any("parameters")
         for name, value in parameters.items():
             with problems.check():
                 if name not in model.parameters:
