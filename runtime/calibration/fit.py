@@ -70,7 +70,8 @@ def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np
     asked and the fit does not yet explain the data); with ``sigma`` None each column's noise
     is estimated from the residuals of the best fit and the fit polished with it."""
     stated = sigma is not None
-    weights = sigma if stated else np.ones(len(predictor.measured.columns))
+    weights: np.ndarray = sigma if sigma is not None else np.ones(
+        len(predictor.measured.columns))
     best, record = _multi_start(predictor, weights, starts[:1], max_evaluations,
                                 stop_early=stated)
     if scan is not None and scan.points > 0 and not (stated and _explains(record[-1], predictor)):

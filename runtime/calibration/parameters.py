@@ -60,7 +60,7 @@ class FreeParameters:
     def size(self) -> int:
         return len(self.names)
 
-    def as_overrides(self, values: Sequence[float], scene: Scene) -> dict[str, float]:
+    def as_overrides(self, values: Sequence[float] | np.ndarray, scene: Scene) -> dict[str, float]:
         """``simulate(parameters=...)`` overrides giving the free parameters ``values``."""
         out: dict[str, float] = {}
         for name, value in zip(self.names, values, strict=True):

@@ -79,7 +79,7 @@ def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
     wide = std > MAX_RELATIVE_STD * scale
     determined = ~(undetermined | wide | np.array([bool(partners[i]) for i in range(n)]))
     for i in np.flatnonzero(~determined):
-        reason = _reason(i, names, partners, undetermined, std, values)
+        reason = _reason(int(i), names, partners, undetermined, std, values)
         warnings.append(f"{names[i]} is not determined by the data ({reason})")
     low = np.where(np.isfinite(std), values - Z95 * std, lower)
     high = np.where(np.isfinite(std), values + Z95 * std, upper)
