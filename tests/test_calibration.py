@@ -81,20 +81,21 @@ def test_parameters_the_data_cannot_separate_are_flagged() -> None:
 
 @pytest.mark.slow
 def test_standard_deviation_matches_the_spread_over_noise_seeds() -> None:
-    """The reported std against the spread of the estimates over 16 noise seeds (its
-    sampling error at 16 seeds is about 18 %: the ratio must lie in 0.6-1.5)."""
+    """The reported std against the spread of the estimates over 40 noise seeds: the
+    sample std of 40 draws has a standard error of about 11 %, so the ratio must lie within
+    three of them, 0.7-1.45."""
     scene = _ideal_scene(0.3)
     truth = {"payload.mass": 2.3, "link2.com": 0.19}
     options = CalibrationOptions(tighten=1.0, starts=1, scan_points=0, profile_points=0)
     estimates, stds = [], []
-    for seed in range(16):
-        result = calibrate(scene, _synthetic(scene, truth, seed=100 + seed), list(truth),
+    for seed in range(40):
+        result = calibrate(scene, _synthetic(scene, truth, seed=seed), list(truth),
                            noise=NOISE, start=truth, options=options)
         estimates.append(result.values)
         stds.append([e.std for e in result.estimates.values()])
     spread = np.std(estimates, axis=0, ddof=1)
     ratio = np.median(stds, axis=0) / spread
-    assert np.all((0.6 < ratio) & (ratio < 1.5)), ratio
+    assert np.all((ratio > 0.7) & (ratio < 1.45)), ratio
 
 
 # ---- the command -------------------------------------------------------------------------
