@@ -194,3 +194,18 @@ def test_a_parameter_the_model_does_not_have() -> None:
     data = Measured("m", np.array([0.0, 0.005, 0.01]), ("tip_x",), np.zeros((3, 1)))
     with pytest.raises(DescriptionError, match=r"free friction\.mu: is not a parameter"):
         calibrate(scene, data, ["friction.mu"])
+
+
+def test_a_fit_that_does_not_explain_the_data_claims_nothing() -> None:
+    """Noise stated 100x smaller than it is: chi²/dof near 1e4, so no estimate is reported as
+    determined and the warning says the intervals are not valid."""
+    scene = _ideal_scene(0.1)
+    truth = {"payload.mass": 2.3}
+    result = calibrate(scene, _synthetic(scene, truth, seed=3), list(truth), noise=NOISE / 100,
+                       options=CalibrationOptions(tighten=1.0, starts=1, scan_points=0,
+                                                  profile_points=0))
+    assert result.fit_explains_data is False
+    assert result.residuals["normalised_chi2"] > 1e3
+    assert not result.estimates["payload.mass"].determined
+    assert any("intervals hold only at the best fit and are not valid" in w
+               for w in result.warnings)

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.calibration.fit import (
+    CHI2_SIGMAS,
     Scan,
     Start,
     least_squares_fit,
@@ -93,6 +94,7 @@ class CalibrationResult:
     cpu_time_s: float
     warnings: tuple[str, ...]
     settings: dict[str, Any]
+    fit_explains_data: bool | None = None
     profiles: dict[str, dict[str, list[float]]] = field(default_factory=dict)
 
     @property
@@ -131,6 +133,7 @@ class CalibrationResult:
             "wall_time_s": self.wall_time_s,
             "cpu_time_s": self.cpu_time_s,
             "warnings": list(self.warnings),
+            "fit_explains_data": self.fit_explains_data,
             "settings": self.settings,
             "profiles": self.profiles,
         }
@@ -200,21 +203,26 @@ def run(problem: Problem) -> CalibrationResult:
     stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
     warnings = list(spread.warnings)
     warnings += _fit_warnings(stats, problem.sigma is not None, optimum.values, free)
+    explains = None if problem.sigma is None else bool(
+        stats["chi2"] <= stats["dof"] + CHI2_SIGMAS * math.sqrt(2 * max(stats["dof"], 1)))
     profiles = cost_profiles(predictor, optimum, spread, opts.profile_points)
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   wall1 - wall0, cpu1 - cpu0)
+                   wall1 - wall0, cpu1 - cpu0, explains)
 
 
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
             fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
             profiles: dict[str, dict[str, list[float]]], wall: float,
-            cpu: float) -> CalibrationResult:
+            cpu: float, explains: bool | None) -> CalibrationResult:
     free = problem.free
+    # A fit that does not explain the data within the stated noise determines nothing: its
+    # optimum may be a local one, and its intervals are not valid.
+    determined = spread.determined & (explains is not False)
     estimates = {
         name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
                        float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
-                       bool(spread.determined[k]))
+                       bool(determined[k]))
         for k, name in enumerate(free.names)}
     source = {name: ("compiled sensitivities" if name in predictor.compiled
                      else "central differences") for name in free.names}
@@ -234,7 +242,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
                   "seed": problem.options.seed,
                   "max_evaluations": problem.options.max_evaluations,
                   "profile": "others fixed at their estimates"},
-        profiles=profiles)
+        fit_explains_data=explains, profiles=profiles)
 
 
 def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) -> Scene:
@@ -252,7 +260,7 @@ def _fit_warnings(stats: dict[str, Any], stated: bool, values: np.ndarray,
                   free: FreeParameters) -> list[str]:
     out = []
     dof = stats["dof"]
-    if stated and dof > 0 and stats["chi2"] > dof + 5.0 * math.sqrt(2 * dof):
+    if stated and dof > 0 and stats["chi2"] > dof + CHI2_SIGMAS * math.sqrt(2 * dof):
         out.append(f"the fit does not explain the data within the stated noise (chi²/dof = "
                    f"{stats['normalised_chi2']:.3g}): a local minimum (impacts make the cost "
                    "rugged; more --starts or --scan-points may find a better one), a model "

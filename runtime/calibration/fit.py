@@ -134,7 +134,8 @@ def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.n
     for i, s in enumerate(line):
         x = np.clip(best + s * direction, free.lower, free.upper)
         try:
-            residual = whitened(predictor.outputs(x) - predictor.measured.values, weights)
+            residual = whitened(predictor.outputs(x, with_jacobian=False)
+                                - predictor.measured.values, weights)
         except TrialFailed:
             continue
         chi2[i] = float(np.sum(residual**2))

@@ -72,8 +72,11 @@ class Predictor:
 
     # -- the two things a fit asks for ---------------------------------------------------------
 
-    def outputs(self, x: np.ndarray) -> np.ndarray:
-        return self._evaluate(x)[0]
+    def outputs(self, x: np.ndarray, *, with_jacobian: bool = True) -> np.ndarray:
+        """The measured columns at ``x``; ``with_jacobian=False`` (a scan, a profile) runs
+        without sensitivities, at a fraction of the cost, when the Jacobian is not wanted
+        next."""
+        return self._evaluate(x, with_jacobian)[0]
 
     def jacobian(self, x: np.ndarray) -> np.ndarray:
         y, sens = self._evaluate(x)
@@ -89,11 +92,14 @@ class Predictor:
 
     # -- runs --------------------------------------------------------------------------------
 
-    def _evaluate(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
+    def _evaluate(self, x: np.ndarray, with_jacobian: bool = True
+                  ) -> tuple[np.ndarray, np.ndarray | None]:
         key = np.asarray(x, dtype=float).tobytes()
-        if key not in self._cache:
+        cached = self._cache.get(key)
+        wanted = self.compiled if with_jacobian else ()
+        if cached is None or (wanted and cached[1] is None):
             self._cache.clear()  # a fit asks for one point at a time
-            self._cache[key] = self._run(np.asarray(x, dtype=float), self.compiled)
+            self._cache[key] = self._run(np.asarray(x, dtype=float), wanted)
         return self._cache[key]
 
     def _run(self, x: np.ndarray, names: tuple[str, ...]

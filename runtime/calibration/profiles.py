@@ -46,7 +46,8 @@ def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty,
             x = best.copy()
             x[k] = value
             try:
-                residual = whitened(predictor.outputs(x) - measured.values, optimum.sigma)
+                residual = whitened(predictor.outputs(x, with_jacobian=False) - measured.values,
+                                    optimum.sigma)
                 chi2.append(float(np.sum(residual**2)))
             except TrialFailed:
                 chi2.append(math.nan)

@@ -56,6 +56,10 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
     lines += [f"Measured: `{result.measured.source}`, {stats['samples']} samples of "
               f"{', '.join(result.measured.columns)} from {result.measured.t[0]:g} s to "
               f"{result.measured.t[-1]:g} s.", ""]
+    if result.fit_explains_data is False:
+        lines += ["**The fit does not explain the data within the stated noise: the estimates "
+                  "below are the best optimum found, not established values, and their "
+                  "intervals are not valid.**", ""]
     lines += ["| parameter | start | estimate | std | 95 % interval | determined |",
               "|---|---|---|---|---|---|"]
     for e in result.estimates.values():

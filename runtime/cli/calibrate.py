@@ -73,6 +73,9 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
     result = run(problem)
     written = write_report(result, out, plan, command_line())
     if not args.quiet:
+        if result.fit_explains_data is False:
+            print("the fit does not explain the data within the stated noise: best optimum "
+                  "found, not established values")
         for e in result.estimates.values():
             std = f"{e.std:.3g}" if math.isfinite(e.std) else "inf"
             note = "" if e.determined else "  (NOT determined by the data)"
