@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -209,7 +210,7 @@ def timed() -> tuple[float, float]:
 
 
 def residual_statistics(measured: Measured, fitted: np.ndarray, sigma: np.ndarray,
-                        n_free: int) -> dict[str, object]:
+                        n_free: int) -> dict[str, Any]:
     """Per-column RMS of the residuals, chi² against the noise, dof and chi²/dof."""
     raw = fitted - measured.values
     chi2 = float(np.sum((raw / sigma[None, :]) ** 2))
