@@ -209,3 +209,21 @@ def test_a_fit_that_does_not_explain_the_data_claims_nothing() -> None:
     assert not result.estimates["payload.mass"].determined
     assert any("intervals hold only at the best fit and are not valid" in w
                for w in result.warnings)
+
+
+@pytest.mark.parametrize(("flags", "named"), [
+    (["--measured", "absent.csv"], "--measured: absent.csv does not exist"),
+    (["--spread", "1.5"], "--spread: must lie between 0 and 1"),
+    (["--starts", "0"], "--starts: must be >= 1"),
+])
+def test_bad_flags_exit_2(tmp_path: Path, short_scene: Path,
+                          capsys: pytest.CaptureFixture[str], flags: list[str],
+                          named: str) -> None:
+    measured = _csv(tmp_path / "m.csv", "time,tip_x", [[0.0, 0.1], [0.001, 0.1], [0.002, 0.1]])
+    out = tmp_path / "cal"
+    args = ["calibrate", str(short_scene), "--measured", str(measured), "--free",
+            "friction.mu", "--out", str(out)]
+    assert main(args + flags) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and named in err, err
+    assert not out.exists()

@@ -48,15 +48,19 @@ class CalibrationOptions:
     refine: int = 3
 
     def __post_init__(self) -> None:
-        checks = (("tighten", self.tighten >= 1), ("starts", self.starts >= 1),
-                  ("scan_points", self.scan_points == 0 or self.scan_points >= 3),
-                  ("refine", self.refine >= 1),
-                  ("spread", 0 < self.spread < 1), ("max_evaluations", self.max_evaluations >= 1),
-                  ("profile_points", self.profile_points == 0 or self.profile_points >= 3))
-        for name, ok in checks:
+        checks = (("tighten", self.tighten >= 1, "must be >= 1"),
+                  ("starts", self.starts >= 1, "must be >= 1"),
+                  ("scan_points", self.scan_points == 0 or self.scan_points >= 3,
+                   "must be 0 (no scan) or >= 3"),
+                  ("refine", self.refine >= 1, "must be >= 1"),
+                  ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
+                  ("max_evaluations", self.max_evaluations >= 1, "must be >= 1"),
+                  ("profile_points", self.profile_points == 0 or self.profile_points >= 3,
+                   "must be 0 (no profiles) or >= 3"))
+        for name, ok, allowed in checks:
             if not ok:
-                raise DescriptionError(f"options.{name}", f"got {getattr(self, name)!r}; see "
-                                       "CalibrationOptions for the allowed values")
+                raise DescriptionError(f"options.{name}",
+                                       f"{allowed}, got {getattr(self, name)!r}")
 
 
 @dataclass(frozen=True)

@@ -99,10 +99,10 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
                             seed=args.seed, profile_points=args.profile_points,
                             scan_points=args.scan_points)
     except DescriptionError as err:
-        key = err.field.removeprefix("options.").replace("_", "-")
-        flag = f"--{key}"
-        raise DescriptionError(flag, f"got {flags.get(flag)!r}; see jointplay calibrate "
-                               "--help for the allowed values") from None
+        flag = "--" + err.field.removeprefix("options.").replace("_", "-")
+        if flag not in flags:
+            raise
+        raise DescriptionError(flag, err.message) from None
 
 
 def _noise(text: str | None) -> float | dict[str, float] | None:
@@ -143,7 +143,7 @@ def _number(flag: str, text: str) -> float:
 
 def _flagged(err: DescriptionError) -> DescriptionError:
     """A Python-API field name as the flag that gave it (``free x`` -> ``--free x``)."""
-    for name in ("free", "start", "noise"):
+    for name in ("free", "start", "noise", "measured"):
         if err.field == name or err.field.startswith(name + " "):
             return DescriptionError("--" + err.field, err.message, err.source)
     return err
