@@ -80,6 +80,7 @@ def recovery(scene: jp.Scene, model: Any, draws: int) -> list[dict[str, Any]]:
             row[f"{name} estimate"] = e.value
             row[f"{name} rel error"] = (e.value - truth[name]) / truth[name]
             row[f"{name} covered"] = bool(e.low95 <= truth[name] <= e.high95)
+            row[f"{name} determined"] = e.determined
         row.update(chi2_dof=result.residuals["normalised_chi2"], runs=result.simulations,
                    local_fits=len(result.starts), wall_s=result.wall_time_s,
                    cpu_s=result.cpu_time_s, warnings=len(result.warnings))
