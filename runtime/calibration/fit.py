@@ -13,7 +13,9 @@ restarts are independent runs that cost no more than the continuation's ladder o
 
 from __future__ import annotations
 
+import itertools
 import math
+import re
 import time
 from dataclasses import dataclass
 from typing import Any
@@ -75,7 +77,14 @@ def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np
         len(predictor.measured.columns))
     best, record = _multi_start(predictor, weights, starts[:1], max_evaluations,
                                 stop_early=stated)
-    if scan is not None and scan.points > 0 and not (stated and _explains(record[-1], predictor)):
+    exchanged = exchanged_clearances(predictor.free.names, best)
+    if len(exchanged) and not (stated and _explains(record[-1], predictor)):
+        more_best, more = _multi_start(predictor, weights, np.vstack([best, exchanged]),
+                                       max_evaluations, stop_early=stated)
+        record += more[1:]
+        best = more_best
+    if scan is not None and scan.points > 0 and not (stated and _explains(
+            min(record, key=_chi2), predictor)):
         seeds = scan_weakest_direction(predictor, weights, best, starts[0], scan)
         more_best, more = _multi_start(predictor, weights, np.vstack([best, seeds]),
                                        max_evaluations, stop_early=stated)
@@ -105,6 +114,19 @@ class Scan:
     points: int
     spread: float
     refine: int
+
+
+def exchanged_clearances(names: tuple[str, ...], best: np.ndarray) -> np.ndarray:
+    """Starts with two free clearances exchanged, one per pair: a tip sees mostly the sum of
+    the journals' offsets, so the exchanged pair is a second valley the first fit rarely
+    crosses to (on the paper scene two of three benchmark draws ended near it)."""
+    joints = [k for k, name in enumerate(names) if re.fullmatch(r"joint\d+\.clearance", name)]
+    out = []
+    for a, b in itertools.combinations(joints, 2):
+        x = best.copy()
+        x[a], x[b] = best[b], best[a]
+        out.append(x)
+    return np.array(out).reshape(-1, best.size)
 
 
 def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
