@@ -92,5 +92,9 @@ def expand_derived(values: Mapping[str, float], parameter_names: Sequence[str],
                                                               np.floating)):
             raise DescriptionError(str(name), f"must be a number, got {value!r}")
         rb = float(values.get(bearing, current[bearing]))
+        if not 0 < float(value) < rb:
+            raise DescriptionError(str(name), f"must be a radial clearance between 0 and the "
+                                   f"bearing radius ({rb:g} m), got {value!r}; use kind = "
+                                   "\"ideal\" for no play")
         out[journal] = rb - float(value)
     return out

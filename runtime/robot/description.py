@@ -319,7 +319,13 @@ def unknown_parameter(name: str, robot: Robot) -> DescriptionError:
 
 
 def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
-    """A copy of ``robot`` with named parameters changed (structure unchanged)."""
+    """A copy of ``robot`` with named parameters changed (structure unchanged); a
+    ``jointN.clearance`` sets joint N's journal radius to its bearing radius less it."""
+    from jointplay.robot.derived import expand_derived
+
+    names = [p.name for p in robot.parameters()]
+    values = expand_derived(values, names, robot,
+                            dict(zip(names, robot.parameter_values(), strict=True)))
     known = {p.name: p for p in robot.parameters()}
     links = [vars(link).copy() for link in robot.links]
     joints = [vars(j).copy() for j in robot.joints]

@@ -53,7 +53,8 @@ def simulate(scene: Scene, *, model: Model | None = None,
              parameters: Mapping[str, float] | Sequence[float] | None = None,
              compare_ideal: bool = False, quiet: bool = True,
              verify: bool = False,
-             sensitivities: Sequence[str] | None = None) -> SimulationResult:
+             sensitivities: Sequence[str] | None = None,
+             sensitivity_error_control: bool = False) -> SimulationResult:
     """Simulate ``scene`` and return every output as numpy arrays.
 
     ``parameters`` overrides numbers of the scene's robot by name (``{"friction.mu": 0.1}``)
@@ -70,12 +71,20 @@ def simulate(scene: Scene, *, model: Model | None = None,
     ``result.sensitivities`` (:class:`jointplay.results.sensitivities.Sensitivities`) then
     holds the derivatives of the state, the tip, the impact times and peak forces with
     respect to each, integrated beside the state and carried through every contact onset
-    (``bdf`` only; the state is the same as without them).
+    (``bdf`` only). By default they stay out of the integrator's error test, and the state is
+    the same as without them; ``sensitivity_error_control`` puts them in it (their error then
+    follows the run's tolerances, at the price of more steps, and the state changes within
+    those tolerances).
     """
     from tqdm import tqdm
 
+    names = _sensitivity_names(sensitivities, scene.run.integrator)
     model = model or load_scene_model(scene)
     p = _parameter_vector(model, scene, parameters)
+    if names:  # every name checked before any work
+        from jointplay.robot.derived import parameter_directions
+
+        parameter_directions(names, model.parameters, scene.robot)
     ideal_result = None
     if compare_ideal:
         ideal_scene = scene.with_robot(ideal_counterpart(scene.robot))
@@ -88,7 +97,6 @@ def simulate(scene: Scene, *, model: Model | None = None,
                                 parameters=ideal_params, quiet=quiet)
     pr = _Problem(model, scene, p)
     run = scene.run
-    names = _sensitivity_names(sensitivities, run.integrator)
     if model.structure.wear is not None and run.integrator != "bdf":
         from jointplay.common.errors import DescriptionError
 
@@ -104,7 +112,7 @@ def simulate(scene: Scene, *, model: Model | None = None,
     if names:
         from jointplay.sim.sensitivity import sensitivity_inputs
 
-        pr.sensitivity = sensitivity_inputs(pr, names, x0)
+        pr.sensitivity = sensitivity_inputs(pr, names, x0, sensitivity_error_control)
     stats = _Accumulated()
     start = time.perf_counter()
     with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,

@@ -28,6 +28,10 @@
  * The state is scaled: eccentricities in units of their joint's clearance, so one absolute
  * tolerance means the same for angles and micrometre play.
  *
+ * Forward sensitivities (only when a run asks for them): d state / d parameter integrated
+ * beside the state by the staggered direct method and carried through every onset (see
+ * "forward sensitivities" below).
+ *
  * Wear (only for a model with a generated `wear` function): Archard's volume rate and its
  * spread over the bearing's and the journal's surfaces are integrated over every step that
  * stands, by Gauss-Legendre quadrature on the dense output in time and exactly over each
@@ -108,6 +112,12 @@ typedef struct {
   const double *dp, *dc, *s0;
   jp_function jac_in;
   const jp_int *sp_p, *sp_v;
+  /* Sensitivities in the error test too (CVODES's errconS): each block's norm, with weights
+   * atol / sens_scale + rtol |Z| (sens_scale: the parameter's size, so that S sens_scale is
+   * the state's change for a 100 % change of it), beside the state's; else (0) outside it,
+   * and the state's steps are those of a run without sensitivities. */
+  int sens_errcon;
+  const double *sens_scale;
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -171,7 +181,7 @@ typedef struct {
   /* sensitivities: columns sens_col.. of D hold ns blocks of nx (scaled, like the state);
    * Js / LUs / LTs / pivs the Jacobian at the step's end and its Newton matrix; bz the
    * scaled forcing (ns x nx); v_sens d v_imp / d parameter (nc x ns); phase_sens one record
-   * of PS values per phase (see PS_* below) */
+   * of sens_record values per phase (see sens_record_size) */
   int sens_col, sens_record;
   double *Js, *LUs, *LTs; int *pivs;
   double *bz, *fp_sparse, *fv_sparse, *v_sens, *sens_tmp, *f_minus, *f_plus;
@@ -580,7 +590,8 @@ static void quad_scale(jp_sim *s, const double *y, double *scal) {
  * step's end solves the same BDF formula, with f_x and f_p at the converged state and its own
  * Newton matrix I - c f_x (exact in one solve; the state's LU may hold a stale Jacobian).
  * S rides in D beside the state (so the dense output, step changes and redone steps carry
- * it) but outside the error test: the state's steps are those of a run without it. At a
+ * it), by default outside the error test: the state's steps are those of a run without it
+ * (with sens_errcon, in it: see sens_norm). At a
  * contact onset (an event g = |e| - c(p) = 0 at tau) the event time moves by
  * dtau/dp = -(g_x S + g_p) / (g_x f), S jumps by (f- - f+) dtau/dp (Hiskens and Pai, IEEE
  * TCAS-I 47, 2000), and the captured approach speed's derivative, d(delta_dot(x(tau)))/dp,
@@ -673,6 +684,24 @@ static int sens_step(jp_sim *s, double t_new, double c_coef) {
     for (int i = 0; i < nx; ++i) s->y_new[o + i] = s->y_pred[o + i] + dz[i];
   }
   return all_finite(c->ns * nx, s->d + s->sens_col) ? 0 : 1;
+}
+
+/* The largest RMS norm over the sensitivity blocks of factor * e (an N-vector of corrections
+ * or differences) with weights atol / sens_scale + rtol |y| (y: the N-vector they belong to). */
+static double sens_norm(const jp_sim *s, double factor, const double *e, const double *y) {
+  const jp_config *c = &s->c;
+  int nx = c->nx;
+  double norm = 0.0;
+  for (int q = 0; q < c->ns; ++q) {
+    int o = s->sens_col + q * nx;
+    double floor = c->atol / c->sens_scale[q], sum = 0.0;
+    for (int i = 0; i < nx; ++i) {
+      double v = factor * e[o + i] / (floor + c->rtol * fabs(y[o + i]));
+      sum += v * v;
+    }
+    norm = fmax(norm, sqrt(sum / nx));
+  }
+  return norm;
 }
 
 /* At the onset of joint j at t (y: the N-vector there, a copy of D's first row; v_old: the
@@ -865,6 +894,13 @@ static int bdf_step(jp_sim *s, double t_bound) {
     quad_scale(s, s->y_new, s->scal);
     for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order] * s->d[i];
     double err_norm = rms(nx, s->err, s->scal);
+    if (c->ns && c->sens_errcon) {
+      /* the sensitivities first, so that their error counts in the test */
+      if (sens_step(s, t_new, c_coef)) {
+        s->status = JP_NONFINITE; s->fail_t = t_new; s->fail_h = h; return 1;
+      }
+      err_norm = fmax(err_norm, sens_norm(s, ERRCONST[order], s->d, s->y_new));
+    }
     s->last_err_norm = err_norm;
     if (err_norm > 1.0) {
       s->n_err_fail++;
@@ -881,7 +917,7 @@ static int bdf_step(jp_sim *s, double t_bound) {
       s->d[nx + i] = di;
       s->y_new[nx + i] = s->y_pred[nx + i] + di;
     }
-    if (c->ns && sens_step(s, t_new, c_coef)) {
+    if (c->ns && !c->sens_errcon && sens_step(s, t_new, c_coef)) {
       s->status = JP_NONFINITE; s->fail_t = t_new; s->fail_h = h; return 1;
     }
     /* rows 0..order+2 are all a step at this order reads or writes (those above are written
@@ -925,13 +961,18 @@ static void bdf_adapt(jp_sim *s) {
   if (s->n_equal_steps < order + 1) return;
   quad_scale(s, s->D, s->scal); /* D[0] is the current point */
   double norms[3] = {INFINITY, s->last_err_norm, INFINITY};
+  int sens = s->c.ns && s->c.sens_errcon;
   if (order > 1) {
     for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order - 1] * s->D[order * N + i];
     norms[0] = rms(nx, s->err, s->scal);
+    if (sens)
+      norms[0] = fmax(norms[0], sens_norm(s, ERRCONST[order - 1], s->D + order * N, s->D));
   }
   if (order < s->order_cap) {
     for (int i = 0; i < nx; ++i) s->err[i] = ERRCONST[order + 1] * s->D[(order + 2) * N + i];
     norms[2] = rms(nx, s->err, s->scal);
+    if (sens)
+      norms[2] = fmax(norms[2], sens_norm(s, ERRCONST[order + 1], s->D + (order + 2) * N, s->D));
   }
   int best = 1; double best_factor = 0.0;
   for (int k = 0; k < 3; ++k) {

@@ -67,7 +67,8 @@ class _Config(ctypes.Structure):
                 ("f", _Function), ("jac", _Function), ("contact", _Function),
                 ("wear", _Function), ("wear_bins", ctypes.c_int), ("normal", _Function),
                 ("ns", ctypes.c_int), ("dp", _dbl_p), ("dc", _dbl_p), ("s0", _dbl_p),
-                ("jac_in", _Function), ("sp_p", _i64_p), ("sp_v", _i64_p)]
+                ("jac_in", _Function), ("sp_p", _i64_p), ("sp_v", _i64_p),
+                ("sens_errcon", ctypes.c_int), ("sens_scale", _dbl_p)]
 
 
 @functools.cache
@@ -144,13 +145,19 @@ def _ptr(array: np.ndarray, kind: Any) -> Any:
 class SensitivityInputs:
     """What the loop needs to integrate sensitivities beside the state: each named
     parameter's direction in the parameter vector (ns, np), its change of each clearance
-    (ns, nc) and the initial state's derivative (ns, nx), unscaled."""
+    (ns, nc), the initial state's derivative (ns, nx, unscaled), and with ``error_control``
+    the parameters' sizes (ns) that weigh the sensitivities in the error test."""
 
     def __init__(self, directions: np.ndarray, clearance: np.ndarray,
-                 initial: np.ndarray) -> None:
+                 initial: np.ndarray, sizes: np.ndarray | None = None,
+                 error_control: bool = False) -> None:
         self.directions = np.ascontiguousarray(directions, dtype=np.float64)
         self.clearance = np.ascontiguousarray(clearance, dtype=np.float64)
         self.initial = np.ascontiguousarray(initial, dtype=np.float64)
+        self.sizes = np.ascontiguousarray(sizes if sizes is not None
+                                          else np.ones(self.directions.shape[0]),
+                                          dtype=np.float64)
+        self.error_control = bool(error_control)
 
     @property
     def count(self) -> int:
@@ -255,6 +262,8 @@ class NativeIntegrator:
         pattern.restype = _i64_p
         cfg.sp_p = pattern(ctypes.c_longlong(1))
         cfg.sp_v = pattern(ctypes.c_longlong(2))
+        cfg.sens_errcon = int(sens.error_control)
+        cfg.sens_scale = _ptr(sens.sizes, _dbl_p)
 
     def sensitivity_rows(self, values: np.ndarray) -> np.ndarray:
         """d state / d parameter (rows, nx, ns), unscaled, from output rows of integrate."""

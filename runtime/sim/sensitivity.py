@@ -10,12 +10,12 @@ state's derivative, and the derived outputs:
   (H[u+w, u+w] - H[u-w, u-w]) / 4 of the generated acceleration at zero udot (H[u, u]), and
   J S_u the velocity at speeds S_u: all exact. Their explicit dependence on parameters (link
   lengths, fixed joint angles) is a central difference in the parameter alone: exact for a
-  length (the tip is affine in each), O(1e-12) relative for an angle.
+  length (the tip is affine in each), about 1e-11 relative for an angle (step 1e-5).
 - a phase's peak normal force F(x, p, v_imp) at its located maximum t*: dF/dp = F_x S(t*) +
   F_p dp + F_v dv_imp/dp (the shift of t* drops out, dF/dt = 0 there), a directional central
   difference of the generated normal force along (S, dp, dv_imp/dp), the largest component's
   move 3e-3 of its own scale (the penetration for the eccentricities), extrapolated from two
-  steps (Richardson): O(1e-9) relative.
+  steps (Richardson): a 3x larger or smaller step moves them by under 1e-7 relative.
 """
 
 from __future__ import annotations
@@ -33,14 +33,16 @@ from jointplay.sim.problem import _Problem
 RELATIVE_STEP = 1e-5
 # Relative size of the largest move of a component (the penetration, a parameter, a speed) in
 # the differences of the peak force, extrapolated (Richardson) from h and 2 h: their error is
-# O(h^4); measured, 1e-9 relative on the falling journal's peaks (O(h^2) alone needed h so
-# small that rounding the radii, c = Rb - Rj, left 1e-6).
+# O(h^4). Measured on the falling journal's peaks: steps of 1e-2 and 1e-3 moved them by under
+# 1e-7 relative from 3e-3's; the O(h^2) difference alone needed steps so small that rounding
+# the radii (c = Rb - Rj) left 1e-6.
 PEAK_STEP = 3e-3
 
 
-def sensitivity_inputs(pr: _Problem, names: Sequence[str], x0: np.ndarray
-                       ) -> SensitivityInputs:
-    """The named parameters' directions, their clearance changes and d x0 / d p."""
+def sensitivity_inputs(pr: _Problem, names: Sequence[str], x0: np.ndarray,
+                       error_control: bool = False) -> SensitivityInputs:
+    """The named parameters' directions, their clearance changes, d x0 / d p, and their
+    sizes (for the error test, with ``error_control``)."""
     from jointplay.robot.derived import parameter_directions
 
     model = pr.model
@@ -54,7 +56,16 @@ def sensitivity_inputs(pr: _Problem, names: Sequence[str], x0: np.ndarray
                            - d[slot("joint", j, "journal_radius")]
                            for j in model.clearance_joints] for d in directions])
     clearance = clearance.reshape(len(names), len(model.clearance_joints))
-    return SensitivityInputs(directions, clearance, _initial_sensitivity(pr, directions, x0))
+    # A parameter's size: its value (the clearance, for jointN.clearance), 1 where it is 0.
+    clearances = np.array([pr.p[slot("joint", j, "bearing_radius")]
+                           - pr.p[slot("joint", j, "journal_radius")]
+                           for j in model.clearance_joints])
+    values = np.array([pr.p[model.parameters.index(name)] if name in model.parameters
+                       else float(np.sum(dc * clearances))
+                       for name, dc in zip(names, clearance, strict=True)])
+    sizes = np.where(np.abs(values) > 0, np.abs(values), 1.0)
+    return SensitivityInputs(directions, clearance, _initial_sensitivity(pr, directions, x0),
+                             sizes, error_control)
 
 
 def _initial_sensitivity(pr: _Problem, directions: np.ndarray, x0: np.ndarray) -> np.ndarray:

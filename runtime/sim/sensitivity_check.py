@@ -64,26 +64,35 @@ def _central(scene: Scene, base: Mapping[str, float], name: str, value: float, h
 
 
 def _normwise(a: np.ndarray, b: np.ndarray) -> float:
-    scale = float(np.max(np.abs(b))) if b.size else 0.0
-    return float(np.max(np.abs(a - b)) / scale) if scale > 0 else float("nan")
+    """max |a - b| / max |b|; where b is all zero (the parameter moves nothing): 0 if a is
+    too, else inf; NaN when there is nothing to compare (no impacts, or every sample in
+    contact)."""
+    if not b.size:
+        return float("nan")
+    scale = float(np.max(np.abs(b)))
+    if scale == 0:
+        return 0.0 if not np.any(a) else float("inf")
+    return float(np.max(np.abs(a - b)) / scale)
 
 
 def compare_with_differences(scene: Scene, names: Sequence[str], *,
                              relative_step: float = 1e-3,
                              reference: Scene | None = None,
-                             parameters: Mapping[str, float] | None = None
-                             ) -> dict[str, dict[str, Any]]:
+                             parameters: Mapping[str, float] | None = None,
+                             error_control: bool = False) -> dict[str, dict[str, Any]]:
     """Per name: each output's normwise disagreement with central differences (``state``,
     ``tip``, ``velocity``, ``times``, ``peaks``), and beside each (``..._stability``) the
     differences' change from h to h / 2; h = ``relative_step`` times the parameter's value.
     The differences run ``reference`` (default ``scene``: give the same scene at tighter
-    tolerances to check the sensitivities of a run at its own); ``parameters`` as in
-    ``simulate``. Raises SimulationError where a step changes the sequence of impacts."""
+    tolerances to check the sensitivities of a run at its own); ``parameters`` and
+    ``error_control`` (``sensitivity_error_control``) as in ``simulate``. Raises
+    SimulationError where a step changes the sequence of impacts."""
     from jointplay.sim import simulate
 
     base = dict(parameters or {})
     reference = reference or scene
-    result = simulate(scene, parameters=base or None, sensitivities=names)
+    result = simulate(scene, parameters=base or None, sensitivities=names,
+                      sensitivity_error_control=error_control)
     sens = result.sensitivities
     assert sens is not None
     analytic = {"state": sens.state, "tip": sens.tip_position, "velocity": sens.tip_velocity,
