@@ -43,22 +43,10 @@ TRUTH_TIGHTEN = 1e4
 def synthetic(scene: jp.Scene, model: Any, truth: dict[str, float], seed: int) -> Measured:
     exact = jp.simulate(scene.with_run(rtol=scene.run.rtol / TRUTH_TIGHTEN,
                                        atol=scene.run.atol / TRUTH_TIGHTEN),
-                        model=model, parameters=_overrides(scene, truth))
+                        model=model, parameters=truth)
     rng = np.random.default_rng(seed)
     tip = exact.tip_position + NOISE * rng.standard_normal(exact.tip_position.shape)
     return Measured(f"synthetic seed {seed}", exact.t.copy(), ("tip_x", "tip_y"), tip)
-
-
-def _overrides(scene: jp.Scene, values: dict[str, float]) -> dict[str, float]:
-    out = {}
-    for name, value in values.items():
-        if name.endswith(".clearance"):
-            joint = int(name[5:name.index(".")])
-            out[f"joint{joint}.journal_radius"] = scene.robot.joints[joint - 1].bearing_radius \
-                - value
-        else:
-            out[name] = value
-    return out
 
 
 def draw_truth(scene: jp.Scene, rng: np.random.Generator) -> dict[str, float]:

@@ -60,17 +60,10 @@ class FreeParameters:
     def size(self) -> int:
         return len(self.names)
 
-    def as_overrides(self, values: Sequence[float] | np.ndarray, scene: Scene) -> dict[str, float]:
-        """``simulate(parameters=...)`` overrides giving the free parameters ``values``."""
-        out: dict[str, float] = {}
-        for name, value in zip(self.names, values, strict=True):
-            m = _CLEARANCE.fullmatch(name)
-            if m:  # the bearing radius held, the journal radius follows the clearance
-                joint = scene.robot.joints[int(m.group(1)) - 1]
-                out[f"joint{m.group(1)}.journal_radius"] = joint.bearing_radius - float(value)
-            else:
-                out[name] = float(value)
-        return out
+    def as_overrides(self, values: Sequence[float] | np.ndarray) -> dict[str, float]:
+        """``simulate(parameters=...)`` overrides giving the free parameters ``values``
+        (``jointN.clearance`` among them: the simulator resolves it, bearing radius held)."""
+        return {name: float(value) for name, value in zip(self.names, values, strict=True)}
 
 
 def free_parameters(names: Sequence[str], scene: Scene, model: Model,

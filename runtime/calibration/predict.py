@@ -107,7 +107,7 @@ class Predictor:
         from jointplay.common.errors import SimulationError
         from jointplay.sim import simulate
 
-        overrides = self.free.as_overrides(x, self.scene)
+        overrides = self.free.as_overrides(x)
         kwargs: dict[str, Any] = {"sensitivities": names} if names else {}
         try:
             result = simulate(self.scene, model=self.model, parameters=overrides, **kwargs)
