@@ -227,3 +227,25 @@ def test_bad_flags_exit_2(tmp_path: Path, short_scene: Path,
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and named in err, err
     assert not out.exists()
+
+
+def test_central_difference_fallback_agrees_with_the_sensitivities() -> None:
+    """The Jacobian by central differences (used for a name the compiled sensitivities do
+    not cover) against the compiled one, on the arm with ideal joints: 1e-4 relative to the
+    largest entry (the differences' step is 1e-2 relative, truncation O(h²))."""
+    from jointplay.calibration.api import prepare
+    from jointplay.calibration.predict import Predictor
+
+    scene = _ideal_scene(0.2)
+    truth = {"payload.mass": 2.3, "link2.com": 0.19}
+    problem = prepare(scene, _synthetic(scene, truth, seed=4), list(truth), noise=NOISE)
+    compiled = Predictor(problem.scene, problem.model, problem.free, problem.measured)
+    assert compiled.compiled == tuple(truth)
+    fallback = Predictor(problem.scene, problem.model, problem.free, problem.measured)
+    fallback.compiled = ()
+    x = problem.free.start
+    exact, approximate = compiled.jacobian(x), fallback.jacobian(x)
+    for k in range(len(truth)):
+        scale = np.abs(exact[:, :, k]).max()
+        assert np.abs(approximate[:, :, k] - exact[:, :, k]).max() <= 1e-4 * scale
+    assert fallback.counter.by_kind["plain"] == 1 + 2 * len(truth)
