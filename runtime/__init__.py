@@ -49,6 +49,10 @@ from jointplay.store.build import cache_root, compile_source
 from jointplay.store.lookup import generated_folder, model_for
 from jointplay.store.model import FastFunction, Model, load_model
 
+# isort: split
+# After the interrupt guard, as every other import here.
+from jointplay.calibration import CalibrationOptions, CalibrationResult, calibrate
+
 __version__ = "0.1.0"
 
 _moved.install()
@@ -56,6 +60,8 @@ _moved.install()
 __all__ = [
     "Accuracy",
     "BuildError",
+    "CalibrationOptions",
+    "CalibrationResult",
     "Contact",
     "Coordinate",
     "DenseSolution",
@@ -80,6 +86,7 @@ __all__ = [
     "Structure",
     "__version__",
     "cache_root",
+    "calibrate",
     "compile_source",
     "default_robot",
     "default_scene",

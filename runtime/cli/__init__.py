@@ -9,6 +9,8 @@
   jointplay compare A.h5 B.h5 [...] --out DIR            runs overlaid, table of differences
   jointplay identify | control | control-study ...       identification, the neural controller
   jointplay sweep SWEEP.toml --out DIR                   parameter sweeps on Dask
+  jointplay calibrate [SCENE.toml] --measured FILE --free NAME[,...] --out DIR
+                                                         parameters from measured motion
   jointplay bench work-precision | fidelity | scaling    what accuracy costs, measured
   jointplay cache list | clear | prune [--older-than AGE] [--max-size SIZE]
 
@@ -29,6 +31,7 @@ from jointplay.cli import (
     bench,
     build,
     cache,
+    calibrate,
     control,
     derive,
     identify,
@@ -55,6 +58,7 @@ def make_parser() -> argparse.ArgumentParser:
     simulate.register(sub)
     look.register(sub)
     identify.register(sub)
+    calibrate.register(sub)
     control.register(sub)
     study.register(sub)
     sweep.register(sub)

@@ -1,0 +1,176 @@
+"""Calibration of the paper scene from synthetic measurements: recovery, coverage, cost.
+
+    python benchmarks/calibration.py --out out/calibration [--draws 3] [--seeds 20]
+
+Measurements: 2 s of tip position at 1 ms made by the paper scene with joint 2's and joint
+3's radial clearances and the journal friction drawn up to 50 % away from the scene's
+values (uniform, seeded), at tolerances 1e4 tighter than the scene's (the fit runs at 1e3
+tighter), with 1 µm of Gaussian noise on each coordinate. Two parts:
+
+- recovery: for each draw, ``jointplay.calibrate`` from the scene's values with its default
+  options (multi-start, scan of the weakest direction): the relative error of each estimate,
+  whether its 95 % interval holds the truth, chi²/dof, runs, wall and CPU seconds;
+- coverage: the first draw's truth measured with ``--seeds`` noise seeds, each fit started at
+  the truth (one local fit: the global search is the recovery part's), counting the seeds
+  whose 95 % interval holds the truth, and the reported std against the estimates' spread.
+
+Writes OUT/recovery.csv, OUT/coverage.csv and OUT/calibration.md (with the machine, its load
+average and the package versions). Times: wall (``time.perf_counter``) and CPU
+(``time.process_time``) of each calibration.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import os
+import platform
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+import jointplay as jp
+from jointplay.calibration import CalibrationOptions, Measured, calibrate
+from jointplay.calibration.parameters import scene_value
+
+NAMES = ("joint2.clearance", "joint3.clearance", "friction.mu")
+NOISE = 1e-6
+TRUTH_TIGHTEN = 1e4
+
+
+def synthetic(scene: jp.Scene, model: Any, truth: dict[str, float], seed: int) -> Measured:
+    exact = jp.simulate(scene.with_run(rtol=scene.run.rtol / TRUTH_TIGHTEN,
+                                       atol=scene.run.atol / TRUTH_TIGHTEN),
+                        model=model, parameters=truth)
+    rng = np.random.default_rng(seed)
+    tip = exact.tip_position + NOISE * rng.standard_normal(exact.tip_position.shape)
+    return Measured(f"synthetic seed {seed}", exact.t.copy(), ("tip_x", "tip_y"), tip)
+
+
+def draw_truth(scene: jp.Scene, rng: np.random.Generator) -> dict[str, float]:
+    return {n: scene_value(n, scene) * (1 + rng.uniform(-0.5, 0.5)) for n in NAMES}
+
+
+def recovery(scene: jp.Scene, model: Any, draws: int) -> list[dict[str, Any]]:
+    rows = []
+    rng = np.random.default_rng(2026)
+    for draw in range(draws):
+        truth = draw_truth(scene, rng)
+        measured = synthetic(scene, model, truth, seed=draw)
+        result = calibrate(scene, measured, list(NAMES), noise=NOISE, model=model,
+                           options=CalibrationOptions(profile_points=0))
+        row: dict[str, Any] = {"draw": draw}
+        for name in NAMES:
+            e = result.estimates[name]
+            row[f"{name} truth"] = truth[name]
+            row[f"{name} estimate"] = e.value
+            row[f"{name} rel error"] = (e.value - truth[name]) / truth[name]
+            row[f"{name} covered"] = bool(e.low95 <= truth[name] <= e.high95)
+            row[f"{name} determined"] = e.determined
+        row.update(chi2_dof=result.residuals["normalised_chi2"], runs=result.simulations,
+                   local_fits=len(result.starts), wall_s=result.wall_time_s,
+                   cpu_s=result.cpu_time_s, warnings=len(result.warnings))
+        print(row, flush=True)
+        rows.append(row)
+    return rows
+
+
+def coverage(scene: jp.Scene, model: Any, seeds: int) -> list[dict[str, Any]]:
+    truth = draw_truth(scene, np.random.default_rng(2026))
+    options = CalibrationOptions(starts=1, scan_points=0, profile_points=0)
+    rows = []
+    for seed in range(seeds):
+        measured = synthetic(scene, model, truth, seed=1000 + seed)
+        result = calibrate(scene, measured, list(NAMES), noise=NOISE, start=truth,
+                           model=model, options=options)
+        row: dict[str, Any] = {"seed": 1000 + seed}
+        for name in NAMES:
+            e = result.estimates[name]
+            row[f"{name} estimate"] = e.value
+            row[f"{name} std"] = e.std
+            row[f"{name} covered"] = bool(e.low95 <= truth[name] <= e.high95)
+        row.update(truth=truth, chi2_dof=result.residuals["normalised_chi2"],
+                   runs=result.simulations, wall_s=result.wall_time_s, cpu_s=result.cpu_time_s)
+        print(row, flush=True)
+        rows.append(row)
+    return rows
+
+
+def _write_csv(path: Path, rows: list[dict[str, Any]]) -> None:
+    with open(path, "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def _median_worst(values: list[float]) -> str:
+    return f"{np.median(values):.3g} / {np.max(values):.3g}"
+
+
+def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str) -> str:
+    import casadi
+    import scipy
+
+    lines = ["# Calibration benchmark", "", "```sh", command, "```", "",
+             f"Machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
+             f"load average {', '.join(f'{v:.2f}' for v in os.getloadavg())}; jointplay "
+             f"{jp.__version__}, SciPy {scipy.__version__}, CasADi {casadi.__version__}, "
+             f"NumPy {np.__version__}.", ""]
+    if rec:
+        lines += ["## Recovery from the scene's values", "",
+                  "| draw | " + " | ".join(f"{n} truth → rel. error (covered)" for n in NAMES)
+                  + " | chi²/dof | runs | wall s | CPU s |",
+                  "|---" * (len(NAMES) + 5) + "|"]
+        for r in rec:
+            cells = [f"{r[f'{n} truth']:.4g} → {r[f'{n} rel error']:+.2e} "
+                     f"({'yes' if r[f'{n} covered'] else 'no'})" for n in NAMES]
+            lines.append(f"| {r['draw']} | " + " | ".join(cells)
+                         + f" | {r['chi2_dof']:.3g} | {r['runs']} | {r['wall_s']:.1f} | "
+                         f"{r['cpu_s']:.1f} |")
+        lines += ["", "Median / worst: wall " + _median_worst([r["wall_s"] for r in rec])
+                  + " s, CPU " + _median_worst([r["cpu_s"] for r in rec]) + " s, runs "
+                  + _median_worst([r["runs"] for r in rec]) + "; |rel. error| "
+                  + ", ".join(f"{n} " + _median_worst([abs(r[f'{n} rel error']) for r in rec])
+                              for n in NAMES) + ".", ""]
+    if cov:
+        lines += ["## Coverage of the 95 % intervals (fits started at the truth)", "",
+                  "| parameter | covered | median reported std | spread of estimates |",
+                  "|---|---|---|---|"]
+        for n in NAMES:
+            est = [r[f"{n} estimate"] for r in cov]
+            lines.append(f"| {n} | {sum(r[f'{n} covered'] for r in cov)} / {len(cov)} | "
+                         f"{np.median([r[f'{n} std'] for r in cov]):.3g} | "
+                         f"{np.std(est, ddof=1):.3g} |")
+        lines += ["", "chi²/dof median / worst " + _median_worst([r["chi2_dof"] for r in cov])
+                  + "; CPU s " + _median_worst([r["cpu_s"] for r in cov]) + ".", ""]
+    return "\n".join(lines)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", required=True, help="folder for the CSV and Markdown")
+    parser.add_argument("--draws", type=int, default=3, help="truths drawn for recovery")
+    parser.add_argument("--seeds", type=int, default=20, help="noise seeds for coverage")
+    args = parser.parse_args()
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    scene = jp.default_scene()
+    model = jp.load_scene_model(scene)
+    start = time.perf_counter()
+    cov = coverage(scene, model, args.seeds) if args.seeds else []
+    if cov:
+        _write_csv(out / "coverage.csv", cov)
+    rec = recovery(scene, model, args.draws) if args.draws else []
+    if rec:
+        _write_csv(out / "recovery.csv", rec)
+    command = (f"python benchmarks/calibration.py --out {args.out} --draws {args.draws} "
+               f"--seeds {args.seeds}")
+    (out / "calibration.md").write_text(summary(rec, cov, command))
+    print(summary(rec, cov, command))
+    print(f"total {time.perf_counter() - start:.0f} s wall")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,21 @@
+"""Calibration: a scene's physical parameters estimated from measured motion.
+
+Rooms: ``measured`` (reading and checking the measured file), ``parameters`` (free names,
+start values, physical bounds), ``predict`` (the model's outputs at the measured times and
+their Jacobian), ``fit`` (weighted least squares, multi-start), ``uncertainty`` (covariance,
+correlations, what the data cannot determine), ``profiles`` (chi² along each parameter),
+``report`` (calibration.json, report.md and the figures, written all or none).
+"""
+
+from jointplay.calibration.api import (
+    CalibrationOptions,
+    CalibrationResult,
+    Estimate,
+    calibrate,
+    prepare,
+    run,
+)
+from jointplay.calibration.measured import Measured, read_measured
+
+__all__ = ["CalibrationOptions", "CalibrationResult", "Estimate", "Measured", "calibrate",
+           "prepare", "read_measured", "run"]

@@ -1,0 +1,277 @@
+"""``jointplay.calibrate``: a scene's physical parameters estimated from measured motion."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointplay.calibration.fit import (
+    CHI2_SIGMAS,
+    Scan,
+    Start,
+    least_squares_fit,
+    residual_statistics,
+    starts_around,
+    timed,
+)
+from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
+from jointplay.calibration.parameters import FreeParameters, free_parameters
+from jointplay.calibration.predict import Predictor
+from jointplay.calibration.uncertainty import Uncertainty, uncertainty
+from jointplay.common.errors import DescriptionError
+from jointplay.scene.definition import Scene
+
+
+@dataclass(frozen=True)
+class CalibrationOptions:
+    """How the fit runs. ``tighten``: the runs of the fit use the scene's tolerances divided
+    by this (a 1 µm sensor needs a model far more accurate than the scene's working
+    accuracy of about 3 µm at the tip). ``starts``: starts of the multi-start at most,
+    the first the given start, the rest a Latin hypercube within ±``spread`` (relative) of
+    it, run only while the best fit does not explain the data within the stated noise.
+    ``scan_points``: runs along the weakest direction of the first optimum (0: no scan),
+    local fits from the ``refine`` lowest minima along it. ``max_evaluations``: least-squares
+    evaluations per start. ``profile_points``: points of each cost profile (0: none)."""
+
+    tighten: float = 1000.0
+    starts: int = 6
+    spread: float = 0.5
+    seed: int = 0
+    max_evaluations: int = 40
+    profile_points: int = 13
+    scan_points: int = 201
+    refine: int = 3
+
+    def __post_init__(self) -> None:
+        checks = (("tighten", self.tighten >= 1, "must be >= 1"),
+                  ("starts", self.starts >= 1, "must be >= 1"),
+                  ("scan_points", self.scan_points == 0 or self.scan_points >= 3,
+                   "must be 0 (no scan) or >= 3"),
+                  ("refine", self.refine >= 1, "must be >= 1"),
+                  ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
+                  ("max_evaluations", self.max_evaluations >= 1, "must be >= 1"),
+                  ("profile_points", self.profile_points == 0 or self.profile_points >= 3,
+                   "must be 0 (no profiles) or >= 3"))
+        for name, ok, allowed in checks:
+            if not ok:
+                raise DescriptionError(f"options.{name}",
+                                       f"{allowed}, got {getattr(self, name)!r}")
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """One free parameter's estimate, standard deviation and 95 % interval."""
+
+    name: str
+    value: float
+    std: float
+    low95: float
+    high95: float
+    start: float
+    determined: bool
+
+
+@dataclass(frozen=True)
+class CalibrationResult:
+    """Everything a calibration found; ``to_dict()`` is ``calibration.json``."""
+
+    scene_name: str
+    measured: Measured
+    estimates: dict[str, Estimate]
+    covariance: np.ndarray
+    correlation: np.ndarray
+    condition_number: float
+    residuals: dict[str, Any]
+    noise: dict[str, float]
+    noise_stated: bool
+    fitted: np.ndarray
+    starts: tuple[Start, ...]
+    simulations: int
+    simulations_by_kind: dict[str, int]
+    jacobian_source: dict[str, str]
+    wall_time_s: float
+    cpu_time_s: float
+    warnings: tuple[str, ...]
+    settings: dict[str, Any]
+    fit_explains_data: bool | None = None
+    profiles: dict[str, dict[str, list[float]]] = field(default_factory=dict)
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.estimates)
+
+    @property
+    def values(self) -> np.ndarray:
+        return np.array([e.value for e in self.estimates.values()])
+
+    def to_dict(self) -> dict[str, Any]:
+        def number(v: float) -> float | str | None:
+            return float(v) if math.isfinite(v) else (None if math.isnan(v) else str(v))
+
+        return {
+            "scene": self.scene_name,
+            "measured": {"source": self.measured.source, "columns": list(self.measured.columns),
+                         "samples": int(self.measured.t.size),
+                         "t_first": float(self.measured.t[0]),
+                         "t_last": float(self.measured.t[-1])},
+            "estimates": {e.name: {"value": e.value, "std": number(e.std),
+                                   "low95": e.low95, "high95": e.high95, "start": e.start,
+                                   "determined": e.determined}
+                          for e in self.estimates.values()},
+            "correlation": {"names": self.names,
+                            "matrix": [[number(v) for v in row] for row in self.correlation]},
+            "condition_number": number(self.condition_number),
+            "residuals": self.residuals,
+            "noise": {"stated": self.noise_stated, "std": self.noise},
+            "starts": [{"start": list(s.start), "end": list(s.end), "chi2": number(s.chi2),
+                        "evaluations": s.evaluations, "message": s.message,
+                        "failed": s.failed} for s in self.starts],
+            "simulations": self.simulations,
+            "simulations_by_kind": self.simulations_by_kind,
+            "jacobian": self.jacobian_source,
+            "wall_time_s": self.wall_time_s,
+            "cpu_time_s": self.cpu_time_s,
+            "warnings": list(self.warnings),
+            "fit_explains_data": self.fit_explains_data,
+            "settings": self.settings,
+            "profiles": self.profiles,
+        }
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A checked calibration problem: everything validated, nothing run."""
+
+    scene: Scene
+    model: Any
+    measured: Measured
+    free: FreeParameters
+    sigma: np.ndarray | None
+    options: CalibrationOptions
+
+
+def prepare(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
+            noise: float | Mapping[str, float] | None = None,
+            start: Mapping[str, float] | None = None,
+            options: CalibrationOptions | None = None, model: Any = None) -> Problem:
+    """Check every input (raises :class:`DescriptionError` naming the file or the name)."""
+    from jointplay.sim import load_scene_model
+
+    options = options or CalibrationOptions()
+    model = model or load_scene_model(scene)
+    names = [free] if isinstance(free, str) else list(free)
+    parameters = free_parameters(names, scene, model, start)
+    data = measured if isinstance(measured, Measured) else read_measured(measured, model)
+    data = checked_for_scene(data, scene, parameters.size)
+    sigma = noise_levels(noise, data)
+    return Problem(_fit_scene(scene, data, options), model, data, parameters, sigma, options)
+
+
+def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
+              noise: float | Mapping[str, float] | None = None,
+              start: Mapping[str, float] | None = None,
+              options: CalibrationOptions | None = None, model: Any = None
+              ) -> CalibrationResult:
+    """Estimate the ``free`` parameters of ``scene``'s robot from ``measured`` motion.
+
+    ``measured``: a CSV path (``time``, and any of ``tip_x``, ``tip_y``, ``q2``, ...), a
+    results file (.h5) or a :class:`Measured`. ``free``: parameter names as ``--set`` takes
+    them, plus ``jointN.clearance``. ``noise``: the sensors' standard deviations (one number,
+    or one per column); without it each column's noise is estimated from the residuals.
+    ``start``: start values (default: the scene's). Bad input raises
+    :class:`DescriptionError`; a run that stops at every start raises SimulationError.
+    """
+    problem = prepare(scene, measured, free, noise=noise, start=start, options=options,
+                      model=model)
+    return run(problem)
+
+
+def run(problem: Problem) -> CalibrationResult:
+    """Fit a prepared problem, then state the estimates' uncertainty and the cost profiles."""
+    from jointplay.calibration.profiles import cost_profiles
+
+    wall0, cpu0 = timed()
+    opts = problem.options
+    predictor = Predictor(problem.scene, problem.model, problem.free, problem.measured)
+    starts = starts_around(problem.free, opts.starts, opts.spread, opts.seed)
+    scan = Scan(opts.scan_points, opts.spread, opts.refine)
+    optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan)
+    free = problem.free
+    spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
+    fitted = predictor.outputs(optimum.values)
+    stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
+    warnings = list(spread.warnings)
+    warnings += _fit_warnings(stats, problem.sigma is not None, optimum.values, free)
+    explains = None if problem.sigma is None else bool(
+        stats["chi2"] <= stats["dof"] + CHI2_SIGMAS * math.sqrt(2 * max(stats["dof"], 1)))
+    profiles = cost_profiles(predictor, optimum, spread, opts.profile_points)
+    wall1, cpu1 = timed()
+    return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
+                   wall1 - wall0, cpu1 - cpu0, explains)
+
+
+def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
+            fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
+            profiles: dict[str, dict[str, list[float]]], wall: float,
+            cpu: float, explains: bool | None) -> CalibrationResult:
+    free = problem.free
+    # A fit that does not explain the data within the stated noise determines nothing: its
+    # optimum may be a local one, and its intervals are not valid.
+    determined = spread.determined & (explains is not False)
+    estimates = {
+        name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
+                       float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
+                       bool(determined[k]))
+        for k, name in enumerate(free.names)}
+    source = {name: ("compiled sensitivities" if name in predictor.compiled
+                     else "central differences") for name in free.names}
+    run_settings = problem.scene.run
+    return CalibrationResult(
+        scene_name=problem.scene.name, measured=problem.measured, estimates=estimates,
+        covariance=spread.covariance, correlation=spread.correlation,
+        condition_number=spread.condition_number, residuals=stats,
+        noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
+        noise_stated=problem.sigma is not None, fitted=fitted, starts=optimum.starts,
+        simulations=predictor.counter.simulations,
+        simulations_by_kind=dict(predictor.counter.by_kind), jacobian_source=source,
+        wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
+        settings={"rtol": run_settings.rtol, "atol": run_settings.atol,
+                  "t_end": run_settings.t_end, "output_step": run_settings.output_step,
+                  "starts": problem.options.starts, "spread": problem.options.spread,
+                  "seed": problem.options.seed,
+                  "max_evaluations": problem.options.max_evaluations,
+                  "profile": "others fixed at their estimates"},
+        fit_explains_data=explains, profiles=profiles)
+
+
+def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) -> Scene:
+    """The scene the fit runs: tolerances tightened, the run ending at the last measured
+    sample's output step (no later samples are needed)."""
+    run = scene.run
+    steps = max(1, math.ceil(measured.t[-1] / run.output_step - 1e-9))
+    changes: dict[str, Any] = {"t_end": min(run.t_end, steps * run.output_step)}
+    if run.integrator in ("bdf", "cvodes", "idas"):
+        changes.update(rtol=run.rtol / options.tighten, atol=run.atol / options.tighten)
+    return scene.with_run(**changes)
+
+
+def _fit_warnings(stats: dict[str, Any], stated: bool, values: np.ndarray,
+                  free: FreeParameters) -> list[str]:
+    out = []
+    dof = stats["dof"]
+    if stated and dof > 0 and stats["chi2"] > dof + CHI2_SIGMAS * math.sqrt(2 * dof):
+        out.append(f"the fit does not explain the data within the stated noise (chi²/dof = "
+                   f"{stats['normalised_chi2']:.3g}): a local minimum (impacts make the cost "
+                   "rugged; more --starts or --scan-points may find a better one), a model "
+                   "that lacks something the robot does, or noise larger than stated; the "
+                   "intervals hold only at the best fit and are not valid here")
+    for k, name in enumerate(free.names):
+        if values[k] <= free.lower[k] or values[k] >= free.upper[k]:
+            out.append(f"{name} ended on its physical bound ({values[k]:.6g}): the optimum "
+                       "may lie outside the range the model accepts")
+    return out

@@ -1,0 +1,216 @@
+"""Measured motion to calibrate against: a CSV table or a jointplay results file.
+
+A CSV has a header, a ``time`` column (s, strictly increasing) and any of ``tip_x``,
+``tip_y`` (m) and the joint angles of the model (``q2``, ... in rad). A results file (.h5,
+from ``jointplay simulate --out``) gives its tip position and every joint angle. Every cell
+is checked before any simulation: a bad one is named by file, row and column.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
+from jointplay.common.limits import MAX_TABLE_BYTES
+from jointplay.scene.definition import Scene
+from jointplay.store.model import Model
+
+TIP_COLUMNS = ("tip_x", "tip_y")
+MIN_SAMPLES = 3
+"""The fewest measured times: fewer leave nothing to fit beyond the start."""
+# Times this close to a sample of the run (relative to its output step) are on its grid.
+_ON_GRID = 1e-9
+
+
+@dataclass(frozen=True)
+class Measured:
+    """Measured samples: ``values[i, k]`` is column ``columns[k]`` at ``t[i]``."""
+
+    source: str
+    t: np.ndarray
+    columns: tuple[str, ...]
+    values: np.ndarray
+
+    @property
+    def size(self) -> int:
+        return int(self.values.size)
+
+
+def angle_columns(model: Model) -> list[str]:
+    """The joint angles a measurement may hold: the model's coordinates that are angles."""
+    return [c for c in model.coordinates if c.startswith("q")]
+
+
+def read_measured(path: str | Path, model: Model) -> Measured:
+    """The measured samples in ``path`` (CSV or results file), checked against ``model``."""
+    path = Path(path)
+    if not path.is_file():
+        raise DescriptionError("measured", f"{path} does not exist or is not a file; give a "
+                               "CSV table or a results file (.h5)")
+    if path.suffix.lower() in (".h5", ".hdf5"):
+        return _from_results(path, model)
+    return _from_csv(path, model)
+
+
+def checked_for_scene(measured: Measured, scene: Scene, n_free: int) -> Measured:
+    """``measured`` if its times lie inside the scene's run and it holds more numbers than
+    free parameters; else the error naming the file."""
+    t_end = scene.run.t_end
+    if measured.t[0] < 0.0:
+        raise DescriptionError("time", f"{measured.t[0]:g} s is before the run starts "
+                               "(0 s); measured times must lie in the scene's run",
+                               measured.source)
+    if measured.t[-1] > t_end * (1 + 1e-12):
+        raise DescriptionError("time", f"{measured.t[-1]:g} s is after the scene's run ends "
+                               f"({t_end:g} s); drop the later rows or lengthen run.t_end",
+                               measured.source)
+    if measured.size <= n_free:
+        raise DescriptionError("time", f"{measured.size} measured numbers cannot determine "
+                               f"{n_free} free parameters; measure longer or free fewer",
+                               measured.source)
+    return measured
+
+
+def noise_levels(noise: float | Mapping[str, float] | None,
+                 measured: Measured) -> np.ndarray | None:
+    """The sensors' standard deviations, one per measured column (None: not given)."""
+    if noise is None:
+        return None
+    if isinstance(noise, Mapping):
+        unknown = [k for k in noise if k not in measured.columns]
+        if unknown:
+            raise DescriptionError(f"noise {unknown[0]}", "is not a measured column ("
+                                   f"{', '.join(measured.columns)})"
+                                   + did_you_mean(unknown[0], measured.columns))
+        missing = [c for c in measured.columns if c not in noise]
+        if missing:
+            raise DescriptionError(f"noise {missing[0]}", "has no standard deviation; give "
+                                   "one for every measured column, or one number for all")
+        levels = [noise[c] for c in measured.columns]
+        names = list(measured.columns)
+    else:
+        levels = [noise] * len(measured.columns)
+        names = ["noise"] * len(measured.columns)
+    for name, level in zip(names, levels, strict=True):
+        if isinstance(level, bool) or not isinstance(level, (int, float, np.floating)) \
+                or not math.isfinite(level) or level <= 0:
+            raise DescriptionError(name if name == "noise" else f"noise {name}",
+                                   f"must be a finite standard deviation > 0, got {level!r}")
+    return np.asarray(levels, dtype=float)
+
+
+def grid_indices(t: np.ndarray, output_step: float) -> np.ndarray | None:
+    """Indices of ``t`` in the run's output grid, or None when a time falls between samples."""
+    k = np.rint(t / output_step)
+    if np.all(np.abs(t - k * output_step) <= _ON_GRID * output_step):
+        return k.astype(int)
+    return None
+
+
+def _from_csv(path: Path, model: Model) -> Measured:
+    source = str(path)
+    if path.stat().st_size > MAX_TABLE_BYTES:
+        raise DescriptionError("measured", f"is larger than {MAX_TABLE_BYTES >> 20} MiB; "
+                               "give fewer samples", source)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
+        raise DescriptionError("measured", "is not a UTF-8 text table; give a CSV with a "
+                               "header row, or a results file (.h5)", source) from None
+    rows = [row for row in csv.reader(io.StringIO(text)) if any(c.strip() for c in row)]
+    if not rows:
+        raise DescriptionError("measured", "is empty; give a header row (time, tip_x, ...) "
+                               "and the samples", source)
+    header = [c.strip() for c in rows[0]]
+    columns = _checked_header(header, model, source)
+    data = np.empty((len(rows) - 1, len(header)))
+    for i, row in enumerate(rows[1:], start=2):
+        if len(row) != len(header):
+            raise DescriptionError(f"row {i}", f"has {len(row)} cells, the header "
+                                   f"{len(header)}; give every column in every row", source)
+        for k, cell in enumerate(row):
+            data[i - 2, k] = _cell(cell, i, header[k], source)
+    t = data[:, header.index("time")]
+    values = data[:, [header.index(c) for c in columns]]
+    return _checked_times(Measured(source, t, tuple(columns), values))
+
+
+def _checked_header(header: Sequence[str], model: Model, source: str) -> list[str]:
+    allowed = [*TIP_COLUMNS, *angle_columns(model)]
+    if "time" not in header:
+        raise DescriptionError("time", "column is missing; the header needs time (s) and "
+                               f"any of {', '.join(allowed)}", source)
+    seen: set[str] = set()
+    for name in header:
+        if name in seen:
+            raise DescriptionError(name or "header", "column appears twice; name each once",
+                                   source)
+        seen.add(name)
+        if name != "time" and name not in allowed:
+            raise DescriptionError(name or "header", "is not a column this model can be "
+                                   f"compared on; allowed: time, {', '.join(allowed)}"
+                                   + did_you_mean(name, ["time", *allowed]), source)
+    columns = [c for c in header if c != "time"]
+    if not columns:
+        raise DescriptionError("header", "has a time column only; add measured columns ("
+                               f"{', '.join(allowed)})", source)
+    return columns
+
+
+def _cell(text: str, row: int, column: str, source: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise DescriptionError(f"row {row} column {column}", f"is not a number ({text!r})",
+                               source) from None
+    if not math.isfinite(value):
+        raise DescriptionError(f"row {row} column {column}", f"is {text.strip()}; every cell "
+                               "must be a finite number (drop or fill missing samples)", source)
+    return value
+
+
+def _checked_times(measured: Measured) -> Measured:
+    t = measured.t
+    if t.size < MIN_SAMPLES:
+        raise DescriptionError("time", f"has {t.size} samples; a calibration needs at least "
+                               f"{MIN_SAMPLES}", measured.source)
+    steps = np.diff(t)
+    if np.any(steps <= 0):
+        k = int(np.argmax(steps <= 0))
+        raise DescriptionError("time", f"must increase strictly: {t[k + 1]:g} s follows "
+                               f"{t[k]:g} s (sample {k + 2})", measured.source)
+    return measured
+
+
+def _from_results(path: Path, model: Model) -> Measured:
+    from jointplay.results.write import read
+
+    try:
+        result = read(path)
+    except DescriptionError:
+        raise
+    except (OSError, ValueError, KeyError) as err:
+        raise DescriptionError("measured", f"cannot be read as a results file ({err}); give "
+                               "one written by jointplay simulate --out, or a CSV",
+                               str(path)) from None
+    angles = [c for c in angle_columns(model) if c in result.coordinate_names]
+    missing = [c for c in angle_columns(model) if c not in result.coordinate_names]
+    if missing:
+        raise DescriptionError("measured", f"holds no {missing[0]}: it is a run of another "
+                               "robot; measure this scene's robot", str(path))
+    columns = [*TIP_COLUMNS, *angles]
+    values = np.column_stack([result.tip_position[:, 0], result.tip_position[:, 1],
+                              *(result.q[:, result.coordinate_names.index(c)]
+                                for c in angles)])
+    if not np.all(np.isfinite(values)):
+        raise DescriptionError("measured", "holds values that are not finite", str(path))
+    return _checked_times(Measured(str(path), np.asarray(result.t, float), tuple(columns),
+                                   values))

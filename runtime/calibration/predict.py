@@ -1,0 +1,206 @@
+"""The model's prediction of the measured columns, and its Jacobian in the free parameters.
+
+The Jacobian comes from the compiled BDF's sensitivities (``simulate(...,
+sensitivities=NAMES)``: one run gives the outputs and their derivatives, through every
+impact). Where that is unavailable for a name, that column is taken by central differences
+of whole runs (two per name). Samples are read off the run's output grid when the measured
+times lie on it; otherwise the values come from the run's dense output and the sensitivities
+are interpolated linearly between samples.
+"""
+
+from __future__ import annotations
+
+import inspect
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from jointplay.calibration.measured import TIP_COLUMNS, Measured, grid_indices
+from jointplay.calibration.parameters import FreeParameters
+from jointplay.common.errors import DescriptionError
+from jointplay.scene.definition import Scene
+from jointplay.store.model import Model
+
+# Central-difference step, relative to the parameter's magnitude: near the optimum of the
+# error (cube root of the runs' relative accuracy, about 1e-9 at the fit's tolerances) and far
+# above the jitter of adaptive steps.
+FD_RELATIVE_STEP = 1e-2
+
+
+class TrialFailed(Exception):
+    """A run at trial parameters stopped (a SimulationError): the message says where."""
+
+
+@dataclass
+class Counter:
+    """Runs made so far (a run with sensitivities counts as one)."""
+
+    simulations: int = 0
+    by_kind: dict[str, int] = field(default_factory=lambda: {"plain": 0, "sensitivities": 0})
+
+    def add(self, kind: str) -> None:
+        self.simulations += 1
+        self.by_kind[kind] += 1
+
+
+def compiled_sensitivities_available() -> bool:
+    """Whether this build's :func:`jointplay.simulate` integrates sensitivities."""
+    from jointplay.sim import simulate
+
+    return "sensitivities" in inspect.signature(simulate).parameters
+
+
+class Predictor:
+    """``outputs(x)`` (n_t, n_columns) and ``jacobian(x)`` (n_t, n_columns, n_free) of the
+    measured columns at free-parameter values ``x``; caches the last point."""
+
+    def __init__(self, scene: Scene, model: Model, free: FreeParameters,
+                 measured: Measured) -> None:
+        self.scene = scene
+        self.model = model
+        self.free = free
+        self.measured = measured
+        self.counter = Counter()
+        self._grid = grid_indices(measured.t, scene.run.output_step)
+        self._angle_index = [model.coordinates.index(c) for c in measured.columns
+                             if c not in TIP_COLUMNS]
+        self.compiled = self._compiled_names()
+        self._cache: dict[bytes, tuple[np.ndarray, np.ndarray | None]] = {}
+
+    # -- the two things a fit asks for ---------------------------------------------------------
+
+    def outputs(self, x: np.ndarray, *, with_jacobian: bool = True) -> np.ndarray:
+        """The measured columns at ``x``; ``with_jacobian=False`` (a scan, a profile) runs
+        without sensitivities, at a fraction of the cost, when the Jacobian is not wanted
+        next."""
+        return self._evaluate(x, with_jacobian)[0]
+
+    def jacobian(self, x: np.ndarray) -> np.ndarray:
+        y, sens = self._evaluate(x)
+        jac = np.zeros((*y.shape, self.free.size))
+        if sens is not None:
+            for k, name in enumerate(self.free.names):
+                if name in self.compiled:
+                    jac[:, :, k] = sens[:, :, self.compiled.index(name)]
+        for k, name in enumerate(self.free.names):
+            if name not in self.compiled:
+                jac[:, :, k] = self._central_difference(x, k)
+        return jac
+
+    # -- runs --------------------------------------------------------------------------------
+
+    def _evaluate(self, x: np.ndarray, with_jacobian: bool = True
+                  ) -> tuple[np.ndarray, np.ndarray | None]:
+        key = np.asarray(x, dtype=float).tobytes()
+        cached = self._cache.get(key)
+        wanted = self.compiled if with_jacobian else ()
+        if cached is None or (wanted and cached[1] is None):
+            self._cache.clear()  # a fit asks for one point at a time
+            self._cache[key] = self._run(np.asarray(x, dtype=float), wanted)
+        return self._cache[key]
+
+    def _run(self, x: np.ndarray, names: tuple[str, ...]
+             ) -> tuple[np.ndarray, np.ndarray | None]:
+        from jointplay.common.errors import SimulationError
+        from jointplay.sim import simulate
+
+        overrides = self.free.as_overrides(x)
+        kwargs: dict[str, Any] = {"sensitivities": names} if names else {}
+        try:
+            result = simulate(self.scene, model=self.model, parameters=overrides, **kwargs)
+        except SimulationError as err:
+            raise TrialFailed(f"the run at {_describe(self.free.names, x)} stopped: {err}") \
+                from None
+        self.counter.add("sensitivities" if names else "plain")
+        y = self._sampled(result)
+        sens = self._sampled_sensitivities(result) if names else None
+        return y, sens
+
+    def _sampled(self, result: Any) -> np.ndarray:
+        columns = []
+        if self._grid is not None:
+            tip, q = result.tip_position[self._grid], result.q[self._grid]
+        else:
+            tip, q = self._dense(result)
+        for name in self.measured.columns:
+            if name in TIP_COLUMNS:
+                columns.append(tip[:, TIP_COLUMNS.index(name)])
+            else:
+                columns.append(q[:, self.model.coordinates.index(name)])
+        return np.column_stack(columns)
+
+    def _dense(self, result: Any) -> tuple[np.ndarray, np.ndarray]:
+        from jointplay.sim.assemble import _mapped
+
+        t = self.measured.t
+        xs = result.sol(t)  # (n_state, m)
+        n = len(self.model.coordinates)
+        ps = np.repeat(np.asarray(result.parameters, float)[:, None], t.size, axis=1)
+        tip = _mapped(self.model, "end_effector", [xs, np.zeros((n, t.size)), ps])[0]
+        return tip.T, xs[:n].T
+
+    def _sampled_sensitivities(self, result: Any) -> np.ndarray:
+        sens = result.sensitivities
+        tip, state = np.asarray(sens.tip_position), np.asarray(sens.state)
+        columns = []
+        for name in self.measured.columns:
+            if name in TIP_COLUMNS:
+                columns.append(tip[:, TIP_COLUMNS.index(name), :])
+            else:
+                columns.append(state[:, self.model.coordinates.index(name), :])
+        stacked = np.stack(columns, axis=1)  # (n_grid, n_columns, n_compiled)
+        if self._grid is not None:
+            return stacked[self._grid]
+        t_grid = np.asarray(sens.t, float)
+        out = np.empty((self.measured.t.size, *stacked.shape[1:]))
+        for c in range(stacked.shape[1]):
+            for k in range(stacked.shape[2]):
+                out[:, c, k] = np.interp(self.measured.t, t_grid, stacked[:, c, k])
+        return out
+
+    def _central_difference(self, x: np.ndarray, k: int) -> np.ndarray:
+        h = FD_RELATIVE_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
+        lo, hi = self.free.lower[k], self.free.upper[k]
+        up, down = x.copy(), x.copy()
+        up[k], down[k] = min(x[k] + h, hi), max(x[k] - h, lo)
+        y_up = self._run(up, ())[0]
+        y_down = self._run(down, ())[0]
+        return (y_up - y_down) / (up[k] - down[k])
+
+    def _compiled_names(self) -> tuple[str, ...]:
+        """The free names the compiled sensitivities cover (tried once at the start)."""
+        if not compiled_sensitivities_available():
+            return ()
+        names = tuple(self.free.names)
+        covered = []
+        for name in names:
+            if self._accepts(name):
+                covered.append(name)
+        return tuple(covered)
+
+    def _accepts(self, name: str) -> bool:
+        from jointplay.sim import simulate
+
+        short = self.scene.with_run(t_end=self.scene.run.output_step)
+        try:
+            simulate(short, model=self.model, parameters=None, sensitivities=(name,))
+        except DescriptionError:
+            return False
+        return True
+
+
+def _describe(names: tuple[str, ...], x: np.ndarray) -> str:
+    return ", ".join(f"{n} = {v:.6g}" for n, v in zip(names, x, strict=True))
+
+
+def whitened(values: np.ndarray, sigma: np.ndarray) -> np.ndarray:
+    """(n_t, n_columns[, n_p]) divided by each column's standard deviation, flattened to rows."""
+    scaled = values / (sigma[None, :, None] if values.ndim == 3 else sigma[None, :])
+    return scaled.reshape(values.shape[0] * values.shape[1], *values.shape[2:])
+
+
+def overrides_text(values: Mapping[str, float]) -> str:
+    return ", ".join(f"{k}={v:.9g}" for k, v in values.items() if math.isfinite(v))

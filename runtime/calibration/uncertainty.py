@@ -1,0 +1,127 @@
+"""What the data say about the estimates: covariance, correlations, conditioning, and which
+parameters they cannot determine.
+
+At the optimum of the weighted least squares, with residuals whitened by the sensors'
+standard deviations, the estimates' covariance is (JᵀJ)⁻¹ (J the whitened Jacobian). It is
+computed through the correlation form C = D⁻¹ JᵀJ D⁻¹ (D the columns' norms), whose
+condition number is unit-free. A direction the data do not see (a singular value of C below
+:data:`RANK_TOLERANCE` of the largest) leaves the parameters in it undetermined: infinite
+standard deviation, interval the whole physical range.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+Z95 = 1.959963984540054
+"""The two-sided 95 % quantile of the standard normal distribution."""
+RANK_TOLERANCE = 1e-10
+"""Singular values of the correlation form below this fraction of the largest: rank lost."""
+MAX_CORRELATION = 0.99
+"""Pairs more correlated than this are reported as not separated by the data."""
+MAX_RELATIVE_STD = 0.5
+"""A 95 % interval wider than the value itself (std > half the value): not determined."""
+NULL_COMPONENT = 0.1
+"""A parameter taking part in a lost direction by more than this (unit vector) is undetermined."""
+
+
+@dataclass(frozen=True)
+class Uncertainty:
+    covariance: np.ndarray
+    std: np.ndarray
+    correlation: np.ndarray
+    condition_number: float
+    low95: np.ndarray
+    high95: np.ndarray
+    determined: np.ndarray
+    warnings: tuple[str, ...]
+
+
+def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
+                upper: np.ndarray, names: tuple[str, ...]) -> Uncertainty:
+    """The covariance (JᵀJ)⁻¹ of whitened-residual estimates ``values`` and what it implies."""
+    n = values.size
+    jtj = jacobian.T @ jacobian
+    norms = np.sqrt(np.diag(jtj))
+    seen = norms > 0
+    unit = np.where(seen, norms, 1.0)
+    corr_form = jtj / np.outer(unit, unit)
+    corr_form[~seen, :] = 0.0
+    corr_form[:, ~seen] = 0.0
+    u, s, vt = np.linalg.svd(corr_form)
+    s_max = float(s[0]) if s.size else 0.0
+    lost = s <= RANK_TOLERANCE * s_max if s_max > 0 else np.ones(n, bool)
+    condition = float(s_max / s[-1]) if s_max > 0 and s[-1] > 0 else float("inf")
+    inverse = (vt[~lost].T / s[~lost]) @ u[:, ~lost].T
+    covariance = inverse / np.outer(unit, unit)
+    undetermined = ~seen.copy()
+    partners: dict[int, set[int]] = {i: set() for i in range(n)}
+    for k in np.flatnonzero(lost):
+        members = np.flatnonzero(np.abs(vt[k]) > NULL_COMPONENT)
+        undetermined[members] = True
+        for i in members:
+            partners[int(i)].update(int(j) for j in members if j != i)
+    std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
+    std[undetermined] = np.inf
+    correlation = _correlation(covariance, corr_form, lost, undetermined)
+    warnings = []
+    for i, j in zip(*np.triu_indices(n, 1), strict=True):
+        r = correlation[i, j]
+        if np.isfinite(r) and abs(r) > MAX_CORRELATION:
+            partners[int(i)].add(int(j))
+            partners[int(j)].add(int(i))
+            warnings.append(f"{names[i]} and {names[j]} are correlated {r:+.4f}: the data "
+                            "determine a combination of them, not each one")
+    scale = np.where(values != 0, np.abs(values), np.where(np.isfinite(upper - lower),
+                                                           upper - lower, 1.0))
+    wide = std > MAX_RELATIVE_STD * scale
+    determined = ~(undetermined | wide | np.array([bool(partners[i]) for i in range(n)]))
+    for i in np.flatnonzero(~determined):
+        reason = _reason(int(i), names, partners, undetermined, std, values)
+        warnings.append(f"{names[i]} is not determined by the data ({reason})")
+    low = np.where(np.isfinite(std), values - Z95 * std, lower)
+    high = np.where(np.isfinite(std), values + Z95 * std, upper)
+    return Uncertainty(covariance=np.where(np.outer(undetermined, undetermined) |
+                                           undetermined[:, None] | undetermined[None, :],
+                                           np.inf, covariance),
+                       std=std, correlation=correlation, condition_number=condition,
+                       low95=np.maximum(low, lower), high95=np.minimum(high, upper),
+                       determined=determined, warnings=tuple(warnings))
+
+
+def _correlation(covariance: np.ndarray, corr_form: np.ndarray, lost: np.ndarray,
+                 undetermined: np.ndarray) -> np.ndarray:
+    """Correlations of the estimates; a pair in a lost direction gets +-1 from that direction
+    (the data move them together), and a parameter the runs do not depend on gets NaN."""
+    d = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        corr = covariance / np.outer(d, d)
+    np.fill_diagonal(corr, 1.0)
+    if np.any(lost):
+        # In a lost direction v the estimates can move along v freely: perfectly correlated
+        # with the sign of v_i v_j.
+        _, _, vt = np.linalg.svd(corr_form)
+        for k in np.flatnonzero(lost):
+            v = vt[k]
+            big = np.flatnonzero(np.abs(v) > NULL_COMPONENT)
+            for i in big:
+                for j in big:
+                    if i != j:
+                        corr[i, j] = float(np.sign(v[i] * v[j]))
+    blind = np.flatnonzero(np.diag(corr_form) == 0)
+    corr[blind, :] = np.nan
+    corr[:, blind] = np.nan
+    corr[blind, blind] = 1.0
+    return corr
+
+
+def _reason(i: int, names: tuple[str, ...], partners: dict[int, set[int]],
+            undetermined: np.ndarray, std: np.ndarray, values: np.ndarray) -> str:
+    if partners[i]:
+        others = ", ".join(names[j] for j in sorted(partners[i]))
+        return f"it cannot be separated from {others}"
+    if undetermined[i]:
+        return "the measured outputs do not depend on it"
+    return f"standard deviation {std[i]:.3g} against a value of {values[i]:.6g}"

@@ -1,0 +1,149 @@
+"""``jointplay calibrate``: a scene's physical parameters estimated from measured motion."""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+from typing import Any
+
+from jointplay.cli.args import check_writable_dir, command_line, scene_argument, scene_from_args
+from jointplay.common.errors import DescriptionError
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    p = subparsers.add_parser(
+        "calibrate", help="estimate robot parameters (clearance, friction, ...) from measured "
+                          "motion, with confidence intervals")
+    scene_argument(p)
+    p.add_argument("--measured", required=True, metavar="FILE",
+                   help="CSV with a header: time (s) and any of tip_x, tip_y (m), q2, ... "
+                        "(rad); or a results file (.h5)")
+    p.add_argument("--free", required=True, metavar="NAME[,NAME...]",
+                   help="parameters to estimate: any name --set accepts (friction.mu, "
+                        "link2.mass, ...) or jointN.clearance (bearing radius held)")
+    p.add_argument("--out", required=True, metavar="DIR",
+                   help="folder for calibration.json, report.md, fit.png, residuals.png, "
+                        "profiles.png (written all or none)")
+    p.add_argument("--noise", metavar="SIGMA|COLUMN=SIGMA,...",
+                   help="the sensors' standard deviations: one number for every column, or "
+                        "one per column (tip_x=1e-6,tip_y=1e-6); default: estimated from the "
+                        "residuals")
+    p.add_argument("--start", metavar="NAME=VALUE,...",
+                   help="start values of free parameters (default: the scene's)")
+    p.add_argument("--starts", type=int, default=6,
+                   help="local fits at most: the start, then a Latin hypercube within "
+                        "--spread of it, tried while the fit does not explain the data "
+                        "(default 6)")
+    p.add_argument("--spread", type=float, default=0.5,
+                   help="relative half-width of the box of further starts and of the scan "
+                        "(default 0.5)")
+    p.add_argument("--scan-points", type=int, default=201,
+                   help="runs along the weakest direction of the first fit, where impacts "
+                        "make the cost rugged (default 201; 0: no scan)")
+    p.add_argument("--profile-points", type=int, default=13,
+                   help="points of each cost profile (default 13; 0: none)")
+    p.add_argument("--tighten", type=float, default=1000.0,
+                   help="the fit's runs use the scene's tolerances divided by this "
+                        "(default 1000)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the further starts")
+    p.add_argument("--quiet", action="store_true", help="print nothing but errors")
+    p.set_defaults(func=cmd_calibrate)
+    return p
+
+
+def cmd_calibrate(args: argparse.Namespace) -> int:
+    from jointplay.calibration.api import CalibrationOptions, prepare, run
+    from jointplay.calibration.report import output_plan, write_report
+
+    scene = scene_from_args(args)
+    out = Path(args.out)
+    check_writable_dir(out, "--out")
+    plan = output_plan(out, {"scene": scene.source, "--measured": args.measured})
+    free = [n.strip() for n in args.free.split(",") if n.strip()]
+    options = _options(args, CalibrationOptions)
+    try:
+        problem = prepare(scene, args.measured, free, noise=_noise(args.noise),
+                          start=_start(args.start), options=options)
+    except DescriptionError as err:
+        raise _flagged(err) from None
+    if not args.quiet:
+        print(f"calibrating {', '.join(problem.free.names)} of {scene.name} on "
+              f"{problem.measured.t.size} samples of {', '.join(problem.measured.columns)}")
+    result = run(problem)
+    written = write_report(result, out, plan, command_line())
+    if not args.quiet:
+        if result.fit_explains_data is False:
+            print("the fit does not explain the data within the stated noise: best optimum "
+                  "found, not established values")
+        for e in result.estimates.values():
+            std = f"{e.std:.3g}" if math.isfinite(e.std) else "inf"
+            note = "" if e.determined else "  (NOT determined by the data)"
+            print(f"  {e.name} = {e.value:.8g} ± {std}  95 % [{e.low95:.8g}, "
+                  f"{e.high95:.8g}]{note}")
+        for warning in result.warnings:
+            print(f"warning: {warning}")
+        print(f"chi²/dof = {result.residuals['normalised_chi2']:.4g}; {result.simulations} "
+              f"runs, {result.wall_time_s:.1f} s")
+        for path in written:
+            print(f"wrote {path}")
+    return 0
+
+
+def _options(args: argparse.Namespace, options_type: Any) -> Any:
+    flags = {"--starts": args.starts, "--spread": args.spread,
+             "--scan-points": args.scan_points, "--profile-points": args.profile_points,
+             "--tighten": args.tighten}
+    try:
+        return options_type(tighten=args.tighten, starts=args.starts, spread=args.spread,
+                            seed=args.seed, profile_points=args.profile_points,
+                            scan_points=args.scan_points)
+    except DescriptionError as err:
+        flag = "--" + err.field.removeprefix("options.").replace("_", "-")
+        if flag not in flags:
+            raise
+        raise DescriptionError(flag, err.message) from None
+
+
+def _noise(text: str | None) -> float | dict[str, float] | None:
+    if text is None:
+        return None
+    if "=" not in text:
+        return _number("--noise", text)
+    return {name: _number(f"--noise {name}", value) for name, value in _pairs(text, "--noise")}
+
+
+def _start(text: str | None) -> dict[str, float] | None:
+    if text is None:
+        return None
+    return {name: _number(f"--start {name}", value) for name, value in _pairs(text, "--start")}
+
+
+def _pairs(text: str, flag: str) -> list[tuple[str, str]]:
+    out = []
+    for item in text.split(","):
+        if not item.strip():
+            continue
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip():
+            raise DescriptionError(flag, f"expects NAME=VALUE pairs separated by commas, got "
+                                   f"{item!r}")
+        out.append((name.strip(), value.strip()))
+    if not out:
+        raise DescriptionError(flag, "no values given")
+    return out
+
+
+def _number(flag: str, text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise DescriptionError(flag, f"must be a number, got {text!r}") from None
+
+
+def _flagged(err: DescriptionError) -> DescriptionError:
+    """A Python-API field name as the flag that gave it (``free x`` -> ``--free x``)."""
+    for name in ("free", "start", "noise", "measured"):
+        if err.field == name or err.field.startswith(name + " "):
+            return DescriptionError("--" + err.field, err.message, err.source)
+    return err
