@@ -13,6 +13,9 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 DPI = 130
+# The id (``Line2D.get_gid``) of every drawn journal orbit: the data a reader sees, which a
+# check of the figure reads back (compare figures append ":" and the run's label).
+ORBIT_GID = "orbit"
 
 
 def figure(rows: int, cols: int, width: float, height: float, *,

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.figures import figure, save
+from jointplay.common.figures import ORBIT_GID, figure, save
 from jointplay.results.records import SimulationResult
 
 
@@ -210,7 +210,7 @@ def plot_orbits(runs: Sequence[tuple[str, SimulationResult]], joint: int,
         _, ecc, source = dense[label]
         ax.plot(c * np.cos(angle), c * np.sin(angle), color=f"C{i}", lw=0.8, ls=":")
         ax.plot(um * ecc[:, k, 0], um * ecc[:, k, 1], color=f"C{i}", lw=0.6,
-                label=f"{label} ({source}; c = {c:.4g} µm)")
+                gid=f"{ORBIT_GID}:{label}", label=f"{label} ({source}; c = {c:.4g} µm)")
         hits = um * run.impacts.eccentricity[run.impacts.joint == joint].reshape(-1, 2)
         ax.plot(hits[:, 0], hits[:, 1], "o", color=f"C{i}", ms=3.5, mec="k", mew=0.4)
         reach = max(reach, c, float(np.nanmax(np.hypot(ecc[:, k, 0], ecc[:, k, 1])) * um))

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.figures import figure, save
+from jointplay.common.figures import ORBIT_GID, figure, save
 from jointplay.results.records import Impacts, SimulationResult
 
 if TYPE_CHECKING:
@@ -175,7 +175,7 @@ def plot_orbit(result: SimulationResult, k: int, path: Path,
     angle = np.linspace(0.0, 2.0 * np.pi, 361)
     ax.plot(c * np.cos(angle), c * np.sin(angle), color="0.3", lw=1.5,
             label=f"clearance c = {c:.4g} µm")
-    ax.plot(ex, ey, color="C0", lw=0.6, alpha=0.9,
+    ax.plot(ex, ey, color="C0", lw=0.6, alpha=0.9, gid=ORBIT_GID,
             label=f"journal centre, {times.size} points:\n{source}")
     ax.plot(hits[:, 0], hits[:, 1], "o", color="C3", ms=4, label=f"impacts ({len(hits)})")
     ax.plot(ex[0], ey[0], "^", color="C2", ms=9, mec="k", label=f"start, t = {times[0]:.3g} s")

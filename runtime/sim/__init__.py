@@ -135,8 +135,6 @@ def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None
     """``result`` (a run of ``scene`` with ``parameters``) with its accuracy statement, from
     a second run at tolerances 10x tighter: what ``simulate(..., verify=True)`` does, for a
     run already made (the CLI decides after the first run whether the check is affordable)."""
-    from dataclasses import replace
-
     from jointplay.results.accuracy import compare_runs
 
     tighter = tighter_settings(scene)
@@ -150,7 +148,7 @@ def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None
                             atol=run.atol if adaptive else math.nan,
                             check_rtol=tighter.get("rtol", math.nan),
                             check_atol=tighter.get("atol", math.nan))
-    return replace(result, accuracy=accuracy)
+    return result.with_accuracy(accuracy)
 
 
 
