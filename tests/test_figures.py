@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from jointplay.cli import main
+from jointplay.common import figures as figure_module
 from jointplay.common.figures import ORBIT_GID
 from jointplay.results.contacts import joint_contact
 from jointplay.results.records import SimulationResult
@@ -36,7 +37,7 @@ def drawn(monkeypatch: pytest.MonkeyPatch) -> list[Any]:
         return original(self, *args, **kwargs)
 
     monkeypatch.setattr(Figure, "savefig", keep)
-    monkeypatch.setenv("JOINTPLAY_FIGURE_WORKERS", "1")  # drawn here, not in a worker
+    monkeypatch.setattr(figure_module, "WORKERS", 1)  # drawn in this process, not in a worker
     return figures
 
 

@@ -1,21 +1,48 @@
 """One way to make and save a figure: an Agg canvas (no display, no global pyplot state) and
 an atomic PNG write. matplotlib is imported on first use, so importing a plotting module
-costs nothing until a figure is drawn."""
+costs nothing until a figure is drawn.
+
+A set of figures is drawn by :func:`draw_all`: on Linux in a few forked workers at once (a
+figure costs 0.1-0.7 s of matplotlib, almost all of it Python), each returning its PNG bytes
+to the parent, which writes every file itself (so an output transaction of
+:func:`jointplay.common.files.all_or_nothing` sees them all).
+"""
 
 from __future__ import annotations
 
+import io
+import os
+import sys
+import threading
+import warnings
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from jointplay.common.files import atomic_path
+from jointplay.common.files import atomic_write_bytes
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 DPI = 130
+# zlib level of the PNG files: 1 writes them in about half the time of the default 6, for
+# files about 10 % larger (measured on the paper scene's figures).
+PNG_COMPRESSION = 1
 # The id (``Line2D.get_gid``) of every drawn journal orbit: the data a reader sees, which a
 # check of the figure reads back (compare figures append ":" and the run's label).
 ORBIT_GID = "orbit"
+# Most workers :func:`draw_all` forks (a figure set has 6-10 figures); None: up to this many,
+# never more than the CPUs this process may use. 1 draws every figure in this process.
+MAX_WORKERS = 4
+WORKERS: int | None = None
+
+# A figure job draws and saves one figure, returning its path.
+FigureJob = Callable[[], Path]
+
+# Set in a drawing worker: save() keeps (path, PNG bytes) here instead of writing.
+_captured: list[tuple[Path, bytes]] | None = None
+# The jobs of the draw_all call in progress (a forked worker finds them here by index).
+_jobs: Sequence[FigureJob] = ()
 
 
 def figure(rows: int, cols: int, width: float, height: float, *,
@@ -30,9 +57,73 @@ def figure(rows: int, cols: int, width: float, height: float, *,
     return fig, axes
 
 
+def png_bytes(fig: Figure, *, dpi: int = DPI) -> bytes:
+    """The figure rendered as a PNG file's bytes."""
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=dpi, pil_kwargs={"compress_level": PNG_COMPRESSION})
+    return buffer.getvalue()
+
+
 def save(fig: Figure, path: Path | str, *, dpi: int = DPI) -> Path:
-    """Save as PNG through a temporary name, so a reader never sees a half-written file."""
+    """Save as PNG through a temporary name, so a reader never sees a half-written file (in a
+    :func:`draw_all` worker: hand the bytes to the parent, which writes them)."""
     path = Path(path)
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, format="png", dpi=dpi)
+    data = png_bytes(fig, dpi=dpi)
+    if _captured is not None:
+        _captured.append((path, data))
+    else:
+        atomic_write_bytes(path, data)
     return path
+
+
+def worker_count(jobs: int) -> int:
+    """How many workers :func:`draw_all` uses for ``jobs`` figures: 1 (this process) where
+    forking is not available or not safe (another Python thread is running)."""
+    if WORKERS is not None:
+        return max(1, min(WORKERS, jobs))
+    if sys.platform != "linux" or threading.active_count() > 1:
+        return 1
+    return max(1, min(MAX_WORKERS, jobs, len(os.sched_getaffinity(0))))
+
+
+def _draw(index: int) -> list[tuple[Path, bytes]]:
+    """Run job ``index`` in a forked worker; its figures as (path, PNG bytes)."""
+    global _captured
+    _captured = []
+    try:
+        _jobs[index]()
+        return _captured
+    finally:
+        _captured = None
+
+
+def draw_all(jobs: Sequence[FigureJob], *, workers: int | None = None) -> list[Path]:
+    """Run every job (each draws and saves one figure) and return the paths in job order.
+
+    With more than one worker the jobs run in forked copies of this process, the costliest
+    first is best (jobs are handed out in order as workers come free); the files are written
+    here, in job order.
+    """
+    count = worker_count(len(jobs)) if workers is None else max(1, min(workers, len(jobs)))
+    if count <= 1:
+        return [job() for job in jobs]
+    import multiprocessing
+
+    global _jobs
+    _jobs = jobs
+    try:
+        with warnings.catch_warnings():
+            # Python 3.12 warns of fork() in a process with other OS threads (numpy's BLAS
+            # pool); a worker only draws with matplotlib and takes none of their locks.
+            warnings.filterwarnings("ignore", message=r".*fork\(\) may lead to deadlocks",
+                                    category=DeprecationWarning)
+            with multiprocessing.get_context("fork").Pool(count) as pool:
+                drawn = pool.map(_draw, range(len(jobs)), chunksize=1)
+    finally:
+        _jobs = ()
+    paths = []
+    for figures in drawn:
+        for path, data in figures:
+            atomic_write_bytes(path, data)
+            paths.append(path)
+    return paths
