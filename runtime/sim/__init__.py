@@ -93,6 +93,10 @@ def simulate(scene: Scene, *, model: Model | None = None,
                        work=np.zeros(n_out + 1), dissipated=np.zeros(n_out + 1))
     x0 = _initial_state(model, scene, p)
     stats = _Accumulated()
+    if run.integrator == "bdf":  # compiled now if the cache lacks it: said before the bar
+        from jointplay.sim.native import driver_library
+
+        driver_library()
     start = time.perf_counter()
     with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,
               desc=f"{scene.name} ({run.integrator})") as progress:

@@ -175,7 +175,8 @@ class Model:
                 library = self.deferred_library
             else:
                 source, _ = read_generated(self.folder)
-                self.library, self.compile_seconds = compile_source(source, self.cflags)
+                self.library, self.compile_seconds = compile_source(
+                    source, self.cflags, what=f"model {self.name!r}")
                 self._functions.clear()
                 library = self.library
         try:
@@ -194,22 +195,19 @@ class Model:
         return self.function(name).function
 
     def _compile_deferred(self) -> tuple[Path, float]:
-        import sys
 
         # The eager library first (from the cache, or rebuilt if it was removed): the
         # deferred one is linked against it by its path.
         source, _ = read_generated(self.folder)
-        self.library, seconds = compile_source(source, self.cflags)
+        self.library, seconds = compile_source(source, self.cflags,
+                                               what=f"model {self.name!r}")
         self.compile_seconds += seconds
         deferred = read_deferred(self.folder, self.layout)
 
-        def announce() -> None:
-            print(f"jointplay: compiling the rest of model {self.name!r} "
-                  f"({', '.join(self.layout.deferred[:2])}, ...: not needed to integrate; "
-                  "once, then cached)", file=sys.stderr, flush=True)
-
         return compile_source(deferred, self.cflags, libraries=(str(self.library),),
-                              announce=announce)
+                              what=f"the rest of model {self.name!r} "
+                                   f"({', '.join(self.layout.deferred[:2])}, ...: not needed "
+                                   "to integrate)")
 
     # ---- parameters ------------------------------------------------------------------------
     def parameter_vector(self, values: Mapping[str, float] | Sequence[float] | None = None,
@@ -361,7 +359,7 @@ def load_model(folder: str | Path, cflags: tuple[str, ...] = DEFAULT_CFLAGS) -> 
     folder = Path(folder)
     source, layout = read_generated(folder)
     defaults = read_defaults(folder, layout)
-    library, seconds = compile_source(source, cflags)
+    library, seconds = compile_source(source, cflags, what=f"model {layout.name!r}")
     return Model(folder, library, layout, seconds, defaults, cflags)
 
 
