@@ -76,12 +76,21 @@ def save(fig: Figure, path: Path | str, *, dpi: int = DPI) -> Path:
     return path
 
 
+# Threads that may run while draw_all forks: tqdm's monitor (started with the first progress
+# bar, even a disabled one) only sleeps and, every few seconds, looks at tqdm's own bars,
+# which a worker never touches.
+FORK_SAFE_THREADS = ("tqdm_monitor",)
+
+
 def worker_count(jobs: int) -> int:
     """How many workers :func:`draw_all` uses for ``jobs`` figures: 1 (this process) where
-    forking is not available or not safe (another Python thread is running)."""
+    forking is not available or not safe (a thread other than the main one and
+    :data:`FORK_SAFE_THREADS` is running)."""
     if WORKERS is not None:
         return max(1, min(WORKERS, jobs))
-    if sys.platform != "linux" or threading.active_count() > 1:
+    others = [t for t in threading.enumerate()
+              if t is not threading.main_thread() and t.name not in FORK_SAFE_THREADS]
+    if sys.platform != "linux" or others:
         return 1
     return max(1, min(MAX_WORKERS, jobs, len(os.sched_getaffinity(0))))
 
@@ -97,6 +106,15 @@ def _draw(index: int) -> list[tuple[Path, bytes]]:
         _captured = None
 
 
+def _warm_up() -> None:
+    """Load the fonts and the math-text parser here, once, so that every forked worker
+    inherits them instead of loading its own."""
+    fig, axes = figure(1, 1, 1.0, 1.0)
+    axes[0, 0].set_title("$F_n$ µm")
+    axes[0, 0].set_xlabel("0.5")
+    fig.canvas.draw()
+
+
 def draw_all(jobs: Sequence[FigureJob], *, workers: int | None = None) -> list[Path]:
     """Run every job (each draws and saves one figure) and return the paths in job order.
 
@@ -109,6 +127,7 @@ def draw_all(jobs: Sequence[FigureJob], *, workers: int | None = None) -> list[P
         return [job() for job in jobs]
     import multiprocessing
 
+    _warm_up()
     global _jobs
     _jobs = jobs
     try:
