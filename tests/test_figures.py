@@ -130,3 +130,96 @@ def test_api_figure_helpers_draw_orbits_from_the_dense_output(tmp_path: Path,
     lines = orbit_lines(drawn)
     assert_orbits_bounded(plain, lines[f"{ORBIT_GID}:plain"])
     assert_orbits_bounded(checked, lines[f"{ORBIT_GID}:checked"])
+
+
+# ------------------------------------------------------------------- labels, marks, workers
+
+
+@pytest.fixture(scope="module")
+def synthetic() -> SimulationResult:
+    from test_output import make_result
+
+    return make_result(n=200)
+
+
+def _by_title(figures: list[Any], ending: str) -> Any:
+    return next(fig for fig in figures if fig.get_suptitle().endswith(ending))
+
+
+def test_figures_say_what_they_show(synthetic: SimulationResult, tmp_path: Path,
+                                    drawn: list[Any]) -> None:
+    from jointplay.results.plots import plot_result
+
+    plot_result(synthetic, tmp_path)
+    tip = _by_title(drawn, "end-effector response")
+    labels = [ax.get_ylabel() for ax in tip.axes]
+    assert "position [m]" in labels and not any("displacement" in s for s in labels)
+    forces = _by_title(drawn, "contact forces")
+    for k, joint in enumerate(synthetic.clearance_joints):
+        ax = forces.axes[k]
+        peaks = [ln for ln in ax.get_lines() if ln.get_label().startswith("located peak")]
+        assert len(peaks) == 1
+        rows = synthetic.impacts.for_joint(joint)
+        np.testing.assert_array_equal(peaks[0].get_xdata(), rows.peak_force_time)
+        np.testing.assert_array_equal(peaks[0].get_ydata(), rows.peak_force)
+        assert ax.get_ylim()[1] >= rows.peak_force.max()  # the located peaks are in view
+        sampled = [ln.get_label() for ln in ax.get_lines()]
+        assert any("output samples, every " in s for s in sampled)
+        assert "largest located peak" in ax.get_title()
+    energy = _by_title(drawn, "energy")
+    top, middle, bottom = energy.axes
+    assert {ln.get_label() for ln in middle.get_lines()} == {"contact (elastic)",
+                                                              "dissipated (since t₀)"}
+    assert "gravity" in {ln.get_label() for ln in top.get_lines()}
+    shown = next(ln for ln in middle.get_lines() if ln.get_label().startswith("dissipated"))
+    assert 0.1 <= float(np.max(np.abs(shown.get_ydata()))) < 1000  # on its own SI prefix
+    assert middle.get_ylabel().startswith("energy [") and middle.get_ylabel().endswith("J]")
+    assert "residual" in bottom.get_ylabel()
+
+
+def test_compared_peaks_are_told_apart(synthetic: SimulationResult, tmp_path: Path,
+                                       drawn: list[Any]) -> None:
+    from jointplay.results.look import compare_runs
+
+    compare_runs([("a", synthetic), ("b", synthetic)], tmp_path)
+    impacts = _by_title(drawn, "impacts, runs side by side")
+    peaks = impacts.axes[1]
+    a, b = (ln for ln in peaks.get_lines() if ln.get_label().split(":")[0] in ("a", "b"))
+    np.testing.assert_array_equal(a.get_xydata(), b.get_xydata())  # the same peaks...
+    assert a.get_marker() != b.get_marker()  # ...drawn so that both show
+    assert a.get_markerfacecolor() == "none" and a.get_markersize() > b.get_markersize()
+
+
+def test_forked_workers_draw_the_same_files(synthetic: SimulationResult,
+                                            tmp_path: Path) -> None:
+    from jointplay.results.plots import plot_result
+
+    original = figure_module.WORKERS
+    try:
+        figure_module.WORKERS = 1
+        here = plot_result(synthetic, tmp_path / "here")
+        figure_module.WORKERS = 3
+        forked = plot_result(synthetic, tmp_path / "forked")
+    finally:
+        figure_module.WORKERS = original
+    assert [p.name for p in here] == [p.name for p in forked]
+    for a, b in zip(here, forked, strict=True):
+        assert a.read_bytes() == b.read_bytes(), a.name
+    assert sorted(p.name for p in (tmp_path / "forked").iterdir()) == sorted(
+        p.name for p in forked)  # no temporary left
+
+
+def test_sweep_figure_has_units_and_no_offset_text(tmp_path: Path, drawn: list[Any]) -> None:
+    from test_sweep import GRID, _write
+
+    from jointplay.sweep import run_sweep
+
+    run_sweep(_write(tmp_path, GRID), tmp_path / "out", workers=0)
+    clearance = next(fig for fig in drawn if "against joint2.clearance" in fig.get_suptitle())
+    fig_axes = clearance.axes
+    assert fig_axes[-1].get_xlabel() == "joint2.clearance [mm]"  # 0.02 to 0.1 mm
+    clearance.canvas.draw()
+    for ax in fig_axes:
+        assert ax.yaxis.get_offset_text().get_text() == "", ax.get_title()
+    penetration = next(ax for ax in fig_axes if ax.get_title().startswith("max penetration"))
+    assert penetration.get_ylabel() in ("[µm]", "[nm]", "[mm]", "[m]")
