@@ -159,7 +159,7 @@ def compile_estimate(size: int, cflags: tuple[str, ...], cache: Path | None = No
     :data:`COMPILE_S_PER_BYTE`."""
     import statistics
 
-    rates = []
+    rates: list[float] = []
     markers = ((cache or cache_root()) / "build").glob(f"*/{MARKER_NAME}")
     for marker in markers:
         if len(rates) >= ESTIMATE_SAMPLES:
