@@ -15,6 +15,9 @@ nearer the unloaded cost. Writes ``figures.csv`` and ``figures.md`` into ``--out
 (atomically) and prints the Markdown.
 
     python benchmarks/figures.py --out out/bench/figures --repeats 3 --sweep
+
+``--against DIR`` also times the main job and an animation by another version of the
+package (a folder holding it as ``DIR/jointplay``), alternating with this one.
 """
 
 from __future__ import annotations
@@ -64,10 +67,13 @@ def timed(what: str, work: Callable[[], Any], repeats: int) -> dict[str, Any]:
             "cpu_s": statistics.median(cpus)}
 
 
-def command(argv: list[str], folder: Path) -> Callable[[], None]:
+def command(argv: list[str], folder: Path, package: Path | None = None) -> Callable[[], None]:
     """A run of ``jointplay ARGV`` in ``folder``, in a fresh interpreter that may write byte
-    code (as an installed package has it)."""
+    code (as an installed package has it); ``package``: a folder holding another version's
+    ``jointplay`` package, imported instead of this one."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    if package is not None:
+        env["PYTHONPATH"] = str(package)
 
     def run() -> None:
         subprocess.run([sys.executable, "-m", "jointplay.cli", *argv], cwd=folder, env=env,
@@ -80,6 +86,11 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", required=True, help="folder for the CSV and Markdown")
     parser.add_argument("--repeats", type=int, default=3, help="runs of each row")
+    parser.add_argument("--against", metavar="DIR", type=Path,
+                        help="a folder holding another version's jointplay package (e.g. "
+                             "git main's runtime/ as DIR/jointplay, with derive/ and "
+                             "generated/ inside it): its main job and animation command are "
+                             "timed in the same rounds, alternating")
     parser.add_argument("--sweep", action="store_true",
                         help="also the 12-case example sweep, default engine against "
                              "--workers 0 (about a minute each on a loaded machine)")
@@ -127,6 +138,8 @@ def main() -> None:
                           command(job, folder), args.repeats))
         rows.append(timed("warm main job with --plot plots", command(with_plots, folder),
                           args.repeats))
+        if args.against is not None:
+            _against(rows, folder, args.against, job, args.repeats)
         if args.sweep:
             sweep = ["sweep", str(SWEEP), "--quiet"]
             for label, extra in (("default engine", []), ("--workers 0", ["--workers", "0"])):
@@ -134,6 +147,7 @@ def main() -> None:
                                   lambda extra=extra: _fresh_sweep(folder, sweep, extra), 1))
     md = ["# What the figures of the first command cost", "",
           f"Command: `python benchmarks/figures.py --out {args.out} --repeats {args.repeats}"
+          + (f" --against {args.against}" if args.against else "")
           + (" --sweep`" if args.sweep else "`"), "",
           f"- scene: {scene.name}, {scene.run.t_end:g} s, with its ideal twin; "
           f"{args.repeats} runs per row (the sweeps: one each)",
@@ -142,6 +156,28 @@ def main() -> None:
     atomic_write_text(out / "figures.csv", to_csv(rows, [c[0] for c in COLUMNS]))
     atomic_write_text(out / "figures.md", "\n".join(md))
     print("\n".join(md))
+
+
+def _against(rows: list[dict[str, Any]], folder: Path, package: Path, job: list[str],
+             repeats: int) -> None:
+    """The main job with and without --plot, and a 0.1 s run animated (101 frames), by this
+    version and by the one in ``package``, alternating run by run."""
+    animate = ["simulate", "--t-end", "0.1", "--no-verify", "--quiet", "--animate", "arm.gif"]
+    cases = [("warm main job", job), ("warm main job with --plot plots",
+                                      [*job, "--plot", "plots"]),
+             ("simulate --t-end 0.1 --animate arm.gif (101 frames)", animate)]
+    for what, argv in cases:
+        here, there = command(argv, folder), command(argv, folder, package)
+        there()  # byte code of the other version written
+        pair: dict[str, list[dict[str, Any]]] = {"this": [], "other": []}
+        for _ in range(repeats):
+            pair["this"].append(timed(what, here, 1))
+            pair["other"].append(timed(what, there, 1))
+        for side, label in (("other", f"{what} [{package}]"), ("this", f"{what} [this]")):
+            walls = [r["wall_s"] for r in pair[side]]
+            rows.append({"what": label, "wall_s": statistics.median(walls),
+                         "worst_wall_s": max(walls),
+                         "cpu_s": statistics.median(r["cpu_s"] for r in pair[side])})
 
 
 def _fresh_sweep(folder: Path, sweep: list[str], extra: list[str]) -> None:
