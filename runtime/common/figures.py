@@ -106,6 +106,14 @@ def _draw(index: int) -> list[tuple[Path, bytes]]:
         _captured = None
 
 
+def _ignore_interrupts() -> None:
+    """In a worker: Ctrl-C reaches the whole process group, and this process alone stops
+    the work (leaving the pool terminates the workers), without a traceback from each."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def _warm_up() -> None:
     """Load the fonts and the math-text parser here, once, so that every forked worker
     inherits them instead of loading its own."""
@@ -136,7 +144,8 @@ def draw_all(jobs: Sequence[FigureJob], *, workers: int | None = None) -> list[P
             # pool); a worker only draws with matplotlib and takes none of their locks.
             warnings.filterwarnings("ignore", message=r".*fork\(\) may lead to deadlocks",
                                     category=DeprecationWarning)
-            with multiprocessing.get_context("fork").Pool(count) as pool:
+            with multiprocessing.get_context("fork").Pool(
+                    count, initializer=_ignore_interrupts) as pool:
                 drawn = pool.map(_draw, range(len(jobs)), chunksize=1)
     finally:
         _jobs = ()
