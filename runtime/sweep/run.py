@@ -38,11 +38,11 @@ RETRIES = 2
 CONNECT_TIMEOUT = "20s"
 
 
-# A new local Dask cluster's cost before its first case is done (wall s): start-up of the
-# scheduler and two workers (4.3 s) plus each worker's first import of the simulator and
-# load of the model (2.2 s), measured on 2 cores (docs/results/figure-cost.md). At load 15
-# the start-up alone took 26 s: the estimate is the unloaded machine's, which favours the
-# cluster.
+# A new local Dask cluster's cost before its first case is done (wall s, 2 cores): the
+# start of the scheduler and two workers (4.3 s at load average 6.6, docs/sweeps.md) plus
+# the workers' first import of the simulator (2.2 s at load 15; docs/results/figure-cost.md).
+# At load 15 the start alone took 26 s: the estimate is a lightly loaded machine's, which
+# favours the cluster.
 CLUSTER_START_S = 6.5
 
 
