@@ -25,8 +25,8 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 DPI = 130
-# zlib level of the PNG files: 1 writes them in about half the time of the default 6, for
-# files about 10 % larger (measured on the paper scene's figures).
+# zlib level of the PNG files: 1 encodes the paper scene's largest figure in 0.6x the time
+# of the default 6 (0.083 against 0.137 CPU s), for a file 10 % larger.
 PNG_COMPRESSION = 1
 # The id (``Line2D.get_gid``) of every drawn journal orbit: the data a reader sees, which a
 # check of the figure reads back (compare figures append ":" and the run's label).
