@@ -48,7 +48,9 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     if not quiet:
         where = (f"the cluster at {args.scheduler}" if args.scheduler
                  else "this process" if args.workers == 0
-                 else f"{args.workers or default_workers()} local worker process(es)")
+                 else f"{args.workers} local worker process(es)" if args.workers
+                 else "this process, or a local cluster when the first case shows that it "
+                      "saves time")
         print(f"sweep {sweep.name}: {len(sweep.cases)} case(s) of scene {sweep.scene.name} "
               f"({sweep.mode} of {', '.join(sweep.swept_names)}) on {where}")
     result = run_sweep(sweep, args.out, workers=args.workers, scheduler=args.scheduler,
@@ -68,9 +70,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``sweep`` command to the ``jointplay`` command's subparsers."""
     parser = subparsers.add_parser(
         "sweep", help="simulate a scene for many parameter vectors (Dask), one table out",
-        description="Run every case of a sweep file on a Dask cluster (a local one by "
-                    "default). Finished cases are kept in OUT/cases/ and skipped when the "
-                    "same sweep runs again; the table is OUT/sweep.parquet.")
+        description="Run every case of a sweep file in this process or on a Dask cluster "
+                    "(a local one by default, when that saves time). Finished cases are kept "
+                    "in OUT/cases/ and skipped when the same sweep runs again; the table is "
+                    "OUT/sweep.parquet.")
     parser.add_argument("sweep", help="sweep file (TOML); see docs/how-to/sweep.md")
     parser.add_argument("--out", required=True, help="folder for the table, case files, "
                                                      "plots and series")
@@ -78,8 +81,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         help="use the Dask cluster at this address (tcp://host:8786) instead "
                              "of starting a local one")
     parser.add_argument("--workers", type=int, metavar="N",
-                        help=f"local worker processes (default min(cores, 4) = "
-                             f"{default_workers()}); 0 runs the cases in this process")
+                        help="local worker processes; 0 runs the cases in this process "
+                             "(default: this process runs the first case, and the rest go to "
+                             f"a local cluster of min(cores, 4) = {default_workers()} workers "
+                             "only when that saves more than its start-up; one line says "
+                             "which and why)")
     parser.add_argument("--series", action="store_true",
                         help="also write every case's full time series (OUT/series/KEY.h5)")
     parser.add_argument("--retry-failed", action="store_true",

@@ -5,13 +5,15 @@ invisible. So the arm is drawn to scale, and beside it one inset per clearance j
 the journal centre inside its clearance circle in micrometres, with a trail of the recent
 orbit and every impact onset so far, so a person can watch the journal rattle and settle.
 
-Written through matplotlib's animation writers: Pillow for ``.gif`` (always available),
-ffmpeg for ``.mp4`` (only where an ``ffmpeg`` executable is on PATH). The file is written
-under a temporary name and renamed when complete.
+Written from the canvas buffer: by Pillow for ``.gif`` (always available), by ffmpeg for
+``.mp4`` (only where an ``ffmpeg`` executable is on PATH). The file is written under a
+temporary name and renamed when complete.
 """
 
 from __future__ import annotations
 
+import contextlib
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -124,13 +126,21 @@ def _figure(result: SimulationResult, points: np.ndarray) -> tuple[Any, dict[str
         insets.append((trail, hits, now))
     arm.legend(loc="upper left", fontsize=8)
     title = arm.set_title("")
-    return fig, {"links": links, "markers": markers, "insets": insets, "title": title}
+    # The one text that changes per frame: short, so that each frame renders few glyphs.
+    clock = arm.text(0.98, 0.02, "", transform=arm.transAxes, ha="right", va="bottom",
+                     fontsize=11, bbox={"boxstyle": "round", "fc": "w", "ec": "0.6"})
+    return fig, {"links": links, "markers": markers, "insets": insets, "title": title,
+                 "clock": clock}
 
 
 def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS,
                    max_frames: int = MAX_FRAMES, quiet: bool = True) -> Path:
-    """Write the animation of ``result`` to ``path`` (.gif or .mp4); return the path."""
-    from matplotlib import animation
+    """Write the animation of ``result`` to ``path`` (.gif or .mp4); return the path.
+
+    The figure is drawn once; each frame then restores that background and draws only the
+    artists that move (blitting), and the frame is taken straight from the canvas buffer:
+    about 20x faster than drawing the whole figure per frame.
+    """
     from tqdm import tqdm
 
     path = check_animation_path(path)
@@ -141,9 +151,13 @@ def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS
     span = float(t[-1] - t[0]) if t.size > 1 else 1.0
     speed = (span / max(len(frames) - 1, 1)) * fps  # simulated seconds per video second
     joints = np.asarray(result.impacts.joint)
+    onsets = np.asarray(result.impacts.eccentricity).reshape(-1, 2)
     um = 1e6
+    moving = [art["links"], *art["markers"], art["clock"],
+              *(line for inset in art["insets"] for line in inset)]
+    art["title"].set_text(f"{result.scene_name}: played at {speed:.3g} x real time")
 
-    def draw(i: int) -> list[Any]:
+    def draw(i: int) -> None:
         art["links"].set_data(points[i, :, 0], points[i, :, 1])
         for k, joint in enumerate(result.clearance_joints):
             at = points[i, joint - 1]  # the bearing centre: the end of the previous link
@@ -153,31 +167,102 @@ def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS
             e = um * result.eccentricity[first:i + 1, k]
             trail.set_data(e[:, 0], e[:, 1])
             seen = (joints == joint) & (result.impacts.time <= t[i])
-            onset = um * np.asarray(result.impacts.eccentricity)[seen].reshape(-1, 2)
-            hits.set_data(onset[:, 0], onset[:, 1])
+            hits.set_data(um * onsets[seen, 0], um * onsets[seen, 1])
             now.set_data([e[-1, 0]], [e[-1, 1]])
-        art["title"].set_text(f"{result.scene_name}: t = {t[i]:.4f} s "
-                              f"(played at {speed:.3g} x real time)")
-        return [art["links"], *art["markers"]]
+        art["clock"].set_text(f"t = {t[i]:.4f} s")
 
-    # Lay the figure out once: the constrained layout would be solved again on every frame.
+    # Lay the figure out once (the constrained layout would be solved again on every frame),
+    # then draw everything that does not move as the background.
     draw(int(frames[0]))
     fig.canvas.draw()
     fig.set_layout_engine("none")
-    if path.suffix.lower() == ".gif":
-        writer: Any = animation.PillowWriter(fps=fps)
-    else:
-        writer = animation.FFMpegWriter(fps=fps, codec="libx264",
-                                        extra_args=["-pix_fmt", "yuv420p"])
-    # The writer directly, not FuncAnimation: that draws each frame twice more than needed.
+    for artist in moving:
+        artist.set_animated(True)
+    canvas = fig.canvas
+    canvas.draw()
+    background = canvas.copy_from_bbox(fig.bbox)
+    renderer = canvas.get_renderer()
+    size = canvas.get_width_height()
     with tqdm(total=len(frames), disable=quiet, unit="frame", desc="animation",
               dynamic_ncols=True) as bar, atomic_path(path, suffix=f".part{path.suffix}") as tmp, \
-            writer.saving(fig, str(tmp), DPI):
+            _frame_sink(tmp, size, fps, _colours(moving)) as sink:
         for i in frames:
             draw(int(i))
-            writer.grab_frame()
+            canvas.restore_region(background)
+            for artist in moving:
+                artist.draw(renderer)
+            sink(np.asarray(canvas.buffer_rgba()))
             bar.update(1)
     return path
+
+
+def _colours(artists: list[Any]) -> np.ndarray:
+    """(k, 3) uint8: every colour the moving artists draw with (lines, marker edges and
+    faces, text), some of which the first frame may not show yet."""
+    from matplotlib.colors import to_rgb
+
+    found = []
+    for artist in artists:
+        getters = ("get_color", "get_markeredgecolor", "get_markerfacecolor")
+        for getter in getters:
+            colour = getattr(artist, getter, lambda: "none")()
+            if not (isinstance(colour, str) and colour.lower() == "none"):
+                found.append(to_rgb(colour))
+    return np.round(255 * np.asarray(found or [(0.0, 0.0, 0.0)])).astype(np.uint8)
+
+
+@contextlib.contextmanager
+def _frame_sink(path: Path, size: tuple[int, int], fps: int, colours: np.ndarray
+                ) -> Iterator[Callable[[np.ndarray], None]]:
+    """A function taking each RGBA frame, (height, width, 4) uint8, that writes ``path``:
+    a looping GIF (Pillow; one palette for all frames, from the first frame and the moving
+    artists' ``colours``) or an H.264 mp4 (ffmpeg, fed raw frames through a pipe)."""
+    if path.suffix.lower() == ".gif":
+        from PIL import Image
+
+        images: list[Any] = []
+        palette: list[Any] = []
+        width, height = size
+
+        def add_gif(frame: np.ndarray) -> None:
+            image = Image.frombuffer("RGBA", size, frame, "raw", "RGBA", 0, 1).convert("RGB")
+            if not palette:
+                swatch = np.repeat(colours[None, :, :], 8, axis=0).repeat(8, axis=1)
+                sample = np.zeros((height + 8, max(width, swatch.shape[1]), 3), np.uint8)
+                sample[:height, :width] = np.asarray(image)
+                sample[height:, :swatch.shape[1]] = swatch
+                palette.append(Image.fromarray(sample).quantize(
+                    colors=255, method=Image.Quantize.MEDIANCUT))
+            images.append(image.quantize(palette=palette[0], dither=Image.Dither.NONE))
+
+        yield add_gif
+        images[0].save(path, format="GIF", save_all=True, append_images=images[1:],
+                       duration=round(1000 / fps), loop=0, optimize=False)
+        return
+    import subprocess
+
+    from matplotlib import rcParams
+
+    width, height = size
+    command = [rcParams["animation.ffmpeg_path"], "-y", "-loglevel", "error", "-f", "rawvideo",
+               "-pix_fmt", "rgba", "-s", f"{width}x{height}", "-r", str(fps), "-i", "-",
+               "-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf",
+               "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-f", "mp4", str(path)]
+    with subprocess.Popen(command, stdin=subprocess.PIPE, stderr=subprocess.PIPE) as proc:
+        assert proc.stdin is not None
+
+        def add_mp4(frame: np.ndarray) -> None:
+            assert proc.stdin is not None
+            proc.stdin.write(np.ascontiguousarray(frame).tobytes())
+
+        try:
+            yield add_mp4
+        finally:
+            proc.stdin.close()
+            error = proc.stderr.read().decode(errors="replace") if proc.stderr else ""
+            status = proc.wait()
+    if status:
+        raise OSError(f"ffmpeg failed (exit status {status}): {error.strip()[-300:]}")
 
 
 __all__ = ["animate_result", "arm_points", "check_animation_path", "frame_indices"]

@@ -10,13 +10,14 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.figures import figure, save
+from jointplay.common.figures import ORBIT_GID, FigureJob, draw_all, figure, save
 from jointplay.results.records import SimulationResult
 
 
@@ -171,19 +172,20 @@ def compare_runs(runs: Sequence[tuple[str, SimulationResult]], folder: str | Pat
     """Write the comparison figures into ``folder``; return their paths."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    paths = [plot_tip(runs, folder / "compare_tip.png")]
+    jobs: list[FigureJob] = [partial(plot_tip, runs, folder / "compare_tip.png")]
     joints = sorted({j for _, run in runs for j in run.clearance_joints})
     if joints:
         from jointplay.results.derived import dense_eccentricity
 
+        # Here, once: the dense output lives in this process, not in draw_all's workers.
         dense = {label: dense_eccentricity(run) for label, run in runs if run.clearance_joints}
         for joint in joints:
-            paths.append(plot_orbits(runs, joint, dense,
-                                     folder / f"compare_orbit_joint{joint}.png"))
-        paths.append(plot_forces(runs, joints, folder / "compare_contact_force.png"))
-        paths.append(plot_impacts(runs, joints, folder / "compare_impacts.png"))
-    paths.append(plot_energies(runs, folder / "compare_energy.png"))
-    return paths
+            jobs.append(partial(plot_orbits, runs, joint, dense,
+                                folder / f"compare_orbit_joint{joint}.png"))
+        jobs.append(partial(plot_forces, runs, joints, folder / "compare_contact_force.png"))
+        jobs.append(partial(plot_impacts, runs, joints, folder / "compare_impacts.png"))
+    jobs.append(partial(plot_energies, runs, folder / "compare_energy.png"))
+    return draw_all(jobs)
 
 
 def plot_tip(runs: Sequence[tuple[str, SimulationResult]], path: Path) -> Path:
@@ -239,7 +241,7 @@ def plot_orbits(runs: Sequence[tuple[str, SimulationResult]], joint: int,
         _, ecc, source = dense[label]
         ax.plot(c * np.cos(angle), c * np.sin(angle), color=f"C{i}", lw=0.8, ls=":")
         ax.plot(um * ecc[:, k, 0], um * ecc[:, k, 1], color=f"C{i}", lw=0.6,
-                label=f"{label} ({source}; c = {c:.4g} µm)")
+                gid=f"{ORBIT_GID}:{label}", label=f"{label} ({source}; c = {c:.4g} µm)")
         hits = um * run.impacts.eccentricity[run.impacts.joint == joint].reshape(-1, 2)
         ax.plot(hits[:, 0], hits[:, 1], "o", color=f"C{i}", ms=3.5, mec="k", mew=0.4)
         reach = max(reach, c, float(np.nanmax(np.hypot(ecc[:, k, 0], ecc[:, k, 1])) * um))
@@ -297,16 +299,17 @@ def plot_impacts(runs: Sequence[tuple[str, SimulationResult]], joints: list[int]
             if rows is not None and count:
                 onsets.plot(rows.time, np.full(count, i), "|", color=f"C{i}", ms=14, mew=1.3)
                 located = np.isfinite(rows.peak_force)
-                peaks.plot(rows.peak_force_time[located], rows.peak_force[located], "v",
-                           color=f"C{i}", ms=5, mec="k", mew=0.4,
-                           label=f"{label}: {int(located.sum())} located")
+                peaks.plot(rows.peak_force_time[located], rows.peak_force[located],
+                           label=f"{label}: {int(located.sum())} located",
+                           **_peak_marker(i))
             onsets.text(1.0, i, f" {count}", transform=onsets.get_yaxis_transform(),
                         va="center", fontsize="small")
         onsets.set_yticks(range(len(runs)), [label for label, _ in runs])
         onsets.set_ylim(-0.6, len(runs) - 0.4)
         onsets.set_title(f"joint {joint}: contact onsets (count at the right)",
                          fontsize="medium")
-        peaks.set_title(f"joint {joint}: located peak force of each phase", fontsize="medium")
+        peaks.set_title(f"joint {joint}: located peak force of each phase (first run "
+                        "hollow)", fontsize="medium")
         peaks.set_ylabel("peak force [N]")
         if peaks.get_legend_handles_labels()[0]:
             peaks.legend(fontsize="small")
@@ -315,6 +318,21 @@ def plot_impacts(runs: Sequence[tuple[str, SimulationResult]], joints: list[int]
             ax.grid(True, alpha=0.3)
     fig.suptitle("impacts, runs side by side")
     return save(fig, path)
+
+
+# Each run's located peaks get their own marker; the first run's are large and hollow, the
+# others' smaller and filled, so a peak two runs share shows both (one inside the other).
+_PEAK_MARKERS = ("o", "v", "^", "s", "D", "P", "X")
+
+
+def _peak_marker(i: int) -> dict[str, Any]:
+    """Line2D keywords of run ``i``'s located-peak markers in compare_impacts.png."""
+    marker = _PEAK_MARKERS[i % len(_PEAK_MARKERS)]
+    if i == 0:
+        return {"ls": "none", "marker": marker, "ms": 9, "mfc": "none", "mec": "C0",
+                "mew": 1.4, "zorder": 3}
+    return {"ls": "none", "marker": marker, "ms": 5, "color": f"C{i}", "mec": "k",
+            "mew": 0.4, "zorder": 3 + i}
 
 
 def plot_energies(runs: Sequence[tuple[str, SimulationResult]], path: Path) -> Path:

@@ -7,13 +7,14 @@ pyplot, so ``import jointplay`` stays fast and no global backend state is touche
 from __future__ import annotations
 
 import math
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.figures import figure, save
+from jointplay.common.figures import ORBIT_GID, FigureJob, draw_all, figure, save
 from jointplay.results.records import Impacts, SimulationResult
 
 if TYPE_CHECKING:
@@ -38,25 +39,27 @@ def plot_result(result: SimulationResult, folder: str | Path) -> list[Path]:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise DescriptionError("--plots", f"cannot create folder {folder}: {exc}", None) from exc
-    paths = [plot_end_effector(result, folder / "end_effector.png")]
+    # The costliest first: draw_all hands the jobs out in order as its workers come free.
+    jobs: list[FigureJob] = [partial(plot_end_effector, result, folder / "end_effector.png")]
     if result.clearance_joints:
-        dense = dense_eccentricity(result)
+        dense = dense_eccentricity(result)  # here, once: the dense output lives in this process
         for k, joint in enumerate(result.clearance_joints):
-            paths.append(plot_orbit(result, k, folder / f"orbit_joint{joint}.png", dense))
-        paths.append(plot_contact_force(result, folder / "contact_force.png"))
+            jobs.append(partial(plot_orbit, result, k, folder / f"orbit_joint{joint}.png",
+                                dense))
+        jobs.append(partial(plot_contact_force, result, folder / "contact_force.png"))
         for k, joint in enumerate(result.clearance_joints):
-            paths.append(plot_contact_timeline(result, k,
-                                               folder / f"contact_timeline_joint{joint}.png"))
-        paths.append(plot_eccentricity_ratio(result, folder / "eccentricity_ratio.png"))
+            jobs.append(partial(plot_contact_timeline, result, k,
+                                folder / f"contact_timeline_joint{joint}.png"))
+        jobs.append(partial(plot_eccentricity_ratio, result, folder / "eccentricity_ratio.png"))
         if is_lubricated(result):
-            paths.append(plot_film(result, folder / "film_force.png"))
-    paths.append(plot_energy(result, folder / "energy.png"))
+            jobs.append(partial(plot_film, result, folder / "film_force.png"))
+    jobs.append(partial(plot_energy, result, folder / "energy.png"))
     if result.wear is not None:
         from jointplay.results.wear import plot as plot_wear
 
-        paths.append(plot_wear(result.wear, folder / "wear.png",
-                               f"{result.scene_name}: Archard wear over {result.t[-1]:g} s"))
-    return paths
+        jobs.append(partial(plot_wear, result.wear, folder / "wear.png",
+                            f"{result.scene_name}: Archard wear over {result.t[-1]:g} s"))
+    return draw_all(jobs)
 
 
 def _scale(values: np.ndarray) -> tuple[float, str]:
@@ -92,7 +95,8 @@ def _limits(values: np.ndarray, pad: float = 0.08, clip: float = 0.0) -> tuple[f
 
 
 def plot_end_effector(result: SimulationResult, path: Path) -> Path:
-    """End-effector displacement, velocity and acceleration; with an ideal run, the error too.
+    """End-effector position (absolute, in the base frame), velocity and acceleration; with an
+    ideal run, the error of each too.
 
     When the run begins with a release transient (journals released inside their clearance:
     an impact burst, or a film taking up the load), its accelerations dwarf the rest; a last
@@ -105,7 +109,7 @@ def plot_end_effector(result: SimulationResult, path: Path) -> Path:
     transient = release_transient_end(result)
     after, rule = transient if transient is not None else (None, "")
     rows: list[tuple[str, str, str, float | None]] = [
-        ("displacement", "tip_position", "m", None), ("velocity", "tip_velocity", "m/s", None),
+        ("position", "tip_position", "m", None), ("velocity", "tip_velocity", "m/s", None),
         ("acceleration", "tip_acceleration", "m/s²", None)]
     if after is not None:
         rows.append(("acceleration", "tip_acceleration", "m/s²", after))
@@ -175,7 +179,7 @@ def plot_orbit(result: SimulationResult, k: int, path: Path,
     angle = np.linspace(0.0, 2.0 * np.pi, 361)
     ax.plot(c * np.cos(angle), c * np.sin(angle), color="0.3", lw=1.5,
             label=f"clearance c = {c:.4g} µm")
-    ax.plot(ex, ey, color="C0", lw=0.6, alpha=0.9,
+    ax.plot(ex, ey, color="C0", lw=0.6, alpha=0.9, gid=ORBIT_GID,
             label=f"journal centre, {times.size} points:\n{source}")
     ax.plot(hits[:, 0], hits[:, 1], "o", color="C3", ms=4, label=f"impacts ({len(hits)})")
     ax.plot(ex[0], ey[0], "^", color="C2", ms=9, mec="k", label=f"start, t = {times[0]:.3g} s")
@@ -195,36 +199,53 @@ def plot_orbit(result: SimulationResult, k: int, path: Path,
 
 
 def plot_contact_force(result: SimulationResult, path: Path) -> Path:
-    """Normal and friction force of each clearance joint, and the lubricant film's force
-    where there is one, impacts ticked along the time axis."""
+    """Normal and friction force of each clearance joint at the output samples, and the
+    lubricant film's force where there is one; each contact phase's located peak (from the
+    dense output, :class:`~jointplay.results.records.Impacts`) marked at its located time,
+    since an impact of microseconds falls between samples (the sampled curve shows a
+    fraction of the peak); impacts ticked along the time axis."""
     from matplotlib.transforms import blended_transform_factory
 
     from jointplay.results.derived import film_force, is_lubricated
 
     nc = len(result.clearance_joints)
     film = np.hypot(*np.moveaxis(film_force(result), -1, 0)) if is_lubricated(result) else None
+    step = float(np.median(np.diff(result.t))) if result.n_samples > 1 else 0.0
+    sampled = f"output samples, every {step * 1e3:.3g} ms" if step else "output samples"
     fig, axes = figure(nc, 1, 10, 1.2 + 2.6 * nc, sharex=True)
     for k, joint in enumerate(result.clearance_joints):
         ax: Any = axes[k, 0]
         drawn = [result.normal_force[:, k], result.friction_force[:, k]]
         ax.plot(result.t, result.normal_force[:, k], color="C0", lw=1.2,
-                label="dry normal $F_n$")
+                label=f"dry normal $F_n$ ({sampled})")
         ax.plot(result.t, result.friction_force[:, k], color="C1", lw=0.7,
-                label="dry friction $F_t$")
+                label="dry friction $F_t$ (output samples)")
         if film is not None:
             ax.plot(result.t, film[:, k], color="C2", lw=1.0, label="film |$F_{film}$|")
             drawn.append(film[:, k])
-        times = result.impacts.time[result.impacts.joint == joint]
+        rows = result.impacts.for_joint(joint)
+        located = np.isfinite(rows.peak_force) & np.isfinite(rows.peak_force_time)
+        title = f"joint {joint}: {len(rows)} impacts"
+        if located.any():
+            ax.plot(rows.peak_force_time[located], rows.peak_force[located], "v", color="C3",
+                    ms=5, mec="k", mew=0.4, zorder=4,
+                    label="located peak $F_n$ of each phase (dense output)")
+            drawn.append(rows.peak_force[located])
+            top = int(np.argmax(np.where(located, rows.peak_force, -np.inf)))
+            title += (f"; largest located peak {rows.peak_force[top]:.4g} N at "
+                      f"{rows.peak_force_time[top]:.6g} s, largest sample "
+                      f"{float(np.max(result.normal_force[:, k])):.4g} N")
+        times = rows.time
         if times.size:  # an empty unclipped line has no extent: constrained layout fails
             ticks = blended_transform_factory(ax.transData, ax.transAxes)
             ax.plot(times, np.full(times.shape, 0.0), "|", color="C3", ms=12, mew=1.2,
                     transform=ticks, clip_on=False, label="impact onset")
         ax.set_ylim(*_limits(np.concatenate([*drawn, [0.0]])))
         ax.set_ylabel("force [N]")
-        ax.set_title(f"joint {joint}: {times.size} impacts", fontsize="medium")
+        ax.set_title(title, fontsize="medium")
         _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: contact forces")
-    fig.legend(*_legend_entries(axes), loc="outside lower center", ncols=4)
+    fig.legend(*_legend_entries(axes), loc="outside lower center", ncols=2)
     return save(fig, path)
 
 
@@ -288,25 +309,42 @@ def plot_film(result: SimulationResult, path: Path) -> Path:
     return save(fig, path)
 
 
+# The contact's energy terms, drawn in energy.png below the motion's on their own scale (on
+# the paper scene a thousandth of the motion's).
+_CONTACT_ENERGY = ("contact", "dissipated")
+
+
 def plot_energy(result: SimulationResult, path: Path) -> Path:
-    """Energy components, and the balance residual that is zero for an exact solution."""
-    fig, axes = figure(2, 1, 11, 7, sharex=True)
-    top, bottom = axes[0, 0], axes[1, 0]
-    for name, values in result.energy.items():
-        if name == "total":
-            top.plot(result.t, values, color="k", lw=2.0, label=name)
-        elif name != "balance":
-            top.plot(result.t, values, lw=1.2, label=name.replace("_", " "))
+    """Energy of the motion (kinetic, gravity, total, drive work) at the top; the contact's
+    elastic energy and the energy dissipated in the middle, on their own scale (on the paper
+    scene they are a few mJ beside the gravity term's −7 J); the balance residual, zero for
+    an exact solution, at the bottom."""
+    energy = result.energy
+    fig, axes = figure(3, 1, 11, 9, sharex=True)
+    top, middle, bottom = axes[0, 0], axes[1, 0], axes[2, 0]
+    for name, values in energy.items():
+        if name not in (*_CONTACT_ENERGY, "balance"):
+            style = {"color": "k", "lw": 2.0} if name == "total" else {"lw": 1.2}
+            top.plot(result.t, values, label=name.replace("_", " "), **style)
     top.set_ylabel("energy [J]")
-    top.set_title("energy components")
+    top.set_title("energy of the motion")
     top.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
-    balance = result.energy.get("balance", np.zeros_like(result.t))
+    small = [energy[name] for name in _CONTACT_ENERGY if name in energy]
+    factor, prefix = _scale(np.concatenate([*small, np.zeros(1)]))
+    for name, color in zip(_CONTACT_ENERGY, ("C2", "C4"), strict=True):
+        if name in energy:
+            label = "contact (elastic)" if name == "contact" else "dissipated (since t₀)"
+            middle.plot(result.t, factor * energy[name], color=color, lw=1.2, label=label)
+    middle.set_ylabel(f"energy [{prefix}J]")
+    middle.set_title("contact: elastic energy and energy dissipated (own scale)")
+    middle.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
+    balance = energy.get("balance", np.zeros_like(result.t))
     factor, prefix = _scale(balance)
     bottom.plot(result.t, factor * balance, color="C3", lw=1.0)
     bottom.axhline(0.0, color="0.5", lw=0.6)
     bottom.set_ylabel(f"residual [{prefix}J]")
     bottom.set_title("energy balance: total − total(t₀) − drive work + dissipated")
-    for ax in (top, bottom):
+    for ax in (top, middle, bottom):
         _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: energy")
     return save(fig, path)

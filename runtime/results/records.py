@@ -240,6 +240,17 @@ class SimulationResult:
         object.__setattr__(self, "_dense", solution)
         return self
 
+    def with_accuracy(self, accuracy: Accuracy) -> SimulationResult:
+        """A copy of this result with its accuracy statement. The copy keeps this run's dense
+        output: the statement describes the trajectory, it does not change it (a plain
+        ``dataclasses.replace`` would drop the dense output, and the copy's orbits would be
+        interpolated between samples)."""
+        from dataclasses import replace
+
+        copy = replace(self, accuracy=accuracy)
+        dense = self.__dict__.get("_dense")
+        return copy.with_dense_output(dense) if dense is not None else copy
+
     @property
     def eccentricity_columns(self) -> dict[int, tuple[int, int]]:
         """Columns of (ex, ey) in q, u and udot for each clearance joint.

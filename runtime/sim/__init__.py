@@ -139,6 +139,10 @@ def simulate(scene: Scene, *, model: Model | None = None,
 
         pr.sensitivity = sensitivity_inputs(pr, names, x0, sensitivity_error_control)
     stats = _Accumulated()
+    if run.integrator == "bdf":  # compiled now if the cache lacks it: said before the bar
+        from jointplay.sim.native import driver_library
+
+        driver_library()
     start = time.perf_counter()
     with tqdm(total=n_out, disable=quiet, delay=2.0, unit="out", leave=False,
               desc=f"{scene.name} ({run.integrator})") as progress:
@@ -257,7 +261,6 @@ def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None
     a second run at tolerances 10x tighter: what ``simulate(..., verify=True)`` does, for a
     run already made (the CLI decides after the first run whether the check is affordable)."""
     import warnings
-    from dataclasses import replace
 
     from jointplay.results.accuracy import compare_runs
 
@@ -274,7 +277,7 @@ def with_accuracy(result: SimulationResult, scene: Scene, *, model: Model | None
                             atol=run.atol if adaptive else math.nan,
                             check_rtol=tighter.get("rtol", math.nan),
                             check_atol=tighter.get("atol", math.nan))
-    return replace(result, accuracy=accuracy)
+    return result.with_accuracy(accuracy)
 
 
 

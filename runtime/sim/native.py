@@ -40,6 +40,7 @@ STAT_NAMES = ("steps", "rhs_evaluations", "jacobian_evaluations", "lu_decomposit
 # The driver's own C flags: -O3 (it is small and compiled once; its LU and difference updates
 # vectorise, without reassociation, so the results equal -O2's); -fno-math-errno as for models.
 DRIVER_CFLAGS = ("-O3", "-fPIC", "-shared", "-fno-math-errno")
+DRIVER_WHAT = "the BDF integrator, jointplay/sim/driver.c,"
 
 _int_p = ctypes.POINTER(ctypes.c_int)
 _dbl_p = ctypes.POINTER(ctypes.c_double)
@@ -75,7 +76,7 @@ class _Config(ctypes.Structure):
 def driver_library() -> ctypes.CDLL:
     """driver.c compiled (or taken from the build cache) and loaded."""
     source = resources.files("jointplay.sim").joinpath("driver.c").read_text(encoding="utf-8")
-    path, _ = compile_source(source, DRIVER_CFLAGS)
+    path, _ = compile_source(source, DRIVER_CFLAGS, what=DRIVER_WHAT)
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as err:  # a damaged cache entry: rebuilt once, like a model's
@@ -84,7 +85,7 @@ def driver_library() -> ctypes.CDLL:
 
         note(f"the compiled integrator {path} does not load ({err}); compiling it again")
         discard_entry(path.parent)
-        path, _ = compile_source(source, DRIVER_CFLAGS)
+        path, _ = compile_source(source, DRIVER_CFLAGS, what=DRIVER_WHAT)
         lib = ctypes.CDLL(str(path))
     lib.jp_create.restype = ctypes.c_void_p
     lib.jp_create.argtypes = [ctypes.POINTER(_Config)]

@@ -88,6 +88,7 @@ def _regenerate(robot: Robot, folder: Path) -> None:
                 reason = damage.splitlines()[0].split("; regenerate")[0]
                 reason = reason.replace(f"{folder}/", "").replace(f"{folder}: ", "")
                 note(f"the cached model {folder} does not load ({reason}); generating it again")
+            say_deriving(robot)
             # The one import of the derivation (and of sympy) on the runtime's side.
             from jointplay.derive.codegen import write_generated
 
@@ -97,6 +98,29 @@ def _regenerate(robot: Robot, folder: Path) -> None:
         if isinstance(err, OSError | FileError):
             raise cache_error(folder, err) from None
         raise
+
+
+# Seconds to derive and emit a model with sympy, for the estimate said before a derivation:
+# about DERIVE_BASE_S (importing sympy and CasADi) and DERIVE_S_PER_COORDINATE more per
+# generalised coordinate (the paper robot's ideal twin, 4 coordinates: 1.4 s; README "Build
+# times": 12 clearance joints, 36 coordinates, 7.6 s with gcc).
+DERIVE_BASE_S = 1.0
+DERIVE_S_PER_COORDINATE = 0.2
+
+
+def say_deriving(robot: Robot) -> None:
+    """Say on stderr which model is derived now, and about how long it takes."""
+    import sys
+
+    from jointplay.robot.structure import coordinate_layout
+
+    structure = robot.structure()
+    coordinates = len(coordinate_layout(structure))
+    seconds = DERIVE_BASE_S + DERIVE_S_PER_COORDINATE * coordinates
+    kinds = ", ".join(structure.joints)
+    print(f"jointplay: deriving the model of {structure.links} links (joints: {kinds}; "
+          f"{coordinates} coordinates) with sympy: about {max(1, round(seconds))} s, once "
+          "(then cached)", file=sys.stderr, flush=True)
 
 
 def _discard_failed(folder: Path, fresh: bool) -> None:

@@ -175,7 +175,8 @@ class Model:
                 library = self.deferred_library
             else:
                 source, _ = read_generated(self.folder)
-                self.library, self.compile_seconds = compile_source(source, self.cflags)
+                self.library, self.compile_seconds = compile_source(
+                    source, self.cflags, what=f"model {self.name!r}")
                 self._functions.clear()
                 library = self.library
         try:
@@ -194,26 +195,23 @@ class Model:
         return self.function(name).function
 
     def _compile_deferred(self) -> tuple[Path, float]:
-        import sys
 
         # The eager library first (from the cache, or rebuilt if it was removed): the
         # deferred one is linked against it by its path.
         source, _ = read_generated(self.folder)
-        self.library, seconds = compile_source(source, self.cflags)
+        self.library, seconds = compile_source(source, self.cflags,
+                                               what=f"model {self.name!r}")
         self.compile_seconds += seconds
         deferred = read_deferred(self.folder, self.layout)
 
-        def announce() -> None:
-            print(f"jointplay: compiling the rest of model {self.name!r} "
-                  f"({', '.join(self.layout.deferred[:2])}, ...: not needed to integrate; "
-                  "once, then cached)", file=sys.stderr, flush=True)
-
+        what = (f"the rest of model {self.name!r} ({', '.join(self.layout.deferred[:2])}, "
+                "...: not needed to integrate)")
         # The build holds the eager library (a shared lock) while it links against it; one
         # removed (`jointplay cache clear`) before it was held is compiled again.
         for attempt in range(3):
             try:
                 return compile_source(deferred, self.cflags, libraries=(str(self.library),),
-                                      announce=announce)
+                                      what=what)
             except LibraryGone:
                 if attempt == 2:
                     raise
@@ -371,7 +369,7 @@ def load_model(folder: str | Path, cflags: tuple[str, ...] = DEFAULT_CFLAGS) -> 
     folder = Path(folder)
     source, layout = read_generated(folder)
     defaults = read_defaults(folder, layout)
-    library, seconds = compile_source(source, cflags)
+    library, seconds = compile_source(source, cflags, what=f"model {layout.name!r}")
     return Model(folder, library, layout, seconds, defaults, cflags)
 
 

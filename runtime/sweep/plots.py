@@ -45,7 +45,11 @@ def _plot_against(sweep: Sweep, axis: Axis, data: dict[str, list[Any]], ok: np.n
     """The figure of every metric against one swept name."""
     from matplotlib.ticker import NullFormatter
 
-    x = np.asarray(data[axis.name], dtype=np.float64)
+    from jointplay.results.plots import _scale
+
+    raw_x = np.asarray(data[axis.name], dtype=np.float64)
+    x_factor, x_prefix = _scale(raw_x) if swept_unit(sweep, axis.name) else (1.0, "")
+    x = x_factor * raw_x
     others = [a.name for a in sweep.axes if a.name != axis.name]
     groups: dict[tuple[float, ...], list[int]] = {}
     for i in range(len(x)):
@@ -55,31 +59,48 @@ def _plot_against(sweep: Sweep, axis: Axis, data: dict[str, list[Any]], ok: np.n
     for ax, (col, label, unit) in zip(axs.ravel(), PLOT_METRICS, strict=True):
         y = np.array([np.nan if v is None else v for v in data[col]], dtype=np.float64)
         keep = ok & np.isfinite(y)
+        # An SI prefix instead of matplotlib's offset text, which sits where the title is.
+        factor, prefix = _scale(y[keep]) if unit != "count" else (1.0, "")
+        y = factor * y
         if lines:
             _plot_lines(ax, x, y, keep, groups, others)
         else:
             ax.plot(x[keep], y[keep], "o", ms=3, color="C0", alpha=0.7)
         ax.set_title(label, fontsize=10)
-        ax.set_ylabel(unit)
+        ax.set_ylabel(unit if unit == "count" else f"[{prefix}{unit}]")
+        ax.ticklabel_format(axis="y", style="plain", useOffset=False)
         if not keep.any() and ok.any():  # e.g. peaks of fixed-step runs: never located
             ax.text(0.5, 0.5, "not located\n(see the peak_note column)", ha="center",
                     va="center", transform=ax.transAxes, color="C3")
         if axis.log:
             ax.set_xscale("log")
-            ticks = sorted(set(axis.values))
+            ticks = sorted({x_factor * v for v in axis.values})
             if len(ticks) <= 8:  # label the swept values themselves
                 ax.set_xticks(ticks, [f"{v:.3g}" for v in ticks])
                 ax.tick_params(axis="x", labelrotation=35)
             ax.xaxis.set_minor_formatter(NullFormatter())
         ax.grid(True, alpha=0.3)
+    unit = swept_unit(sweep, axis.name)
     for ax in axs[-1]:
-        ax.set_xlabel(axis.name)
+        ax.set_xlabel(f"{axis.name} [{x_prefix}{unit}]" if unit else axis.name)
     if lines and others:
         axs[0, 0].legend(fontsize=8)
     failed = int(np.sum(~ok))
     note = f", {failed} failed case(s) not shown" if failed else ""
     fig.suptitle(f"{sweep.name}: {len(x)} cases against {axis.name}{note}")
     return save(fig, path, dpi=DPI)
+
+
+def swept_unit(sweep: Sweep, name: str) -> str:
+    """The SI unit of a swept name: its robot parameter's, metres for a clearance alias
+    (``jointN.clearance``), "" for a pure number."""
+    from jointplay.sweep.axes import CLEARANCE_ALIAS
+
+    if CLEARANCE_ALIAS.fullmatch(name):
+        return "m"
+    units = {p.name: p.unit for p in sweep.scene.robot.parameters()}
+    unit = units.get(name, "")
+    return "" if unit in ("1", "-") else unit
 
 
 def _plot_lines(ax: Any, x: np.ndarray, y: np.ndarray, keep: np.ndarray,

@@ -38,6 +38,37 @@ RETRIES = 2
 CONNECT_TIMEOUT = "20s"
 
 
+# A new local Dask cluster's cost before its first case is done (wall s, 2 cores): the
+# start of the scheduler and two workers (4.3 s at load average 6.6, docs/sweeps.md) plus
+# the workers' first import of the simulator (2.2 s at load 15; docs/results/figure-cost.md).
+# At load 15 the start alone took 26 s: the estimate is a lightly loaded machine's, which
+# favours the cluster.
+CLUSTER_START_S = 6.5
+
+
+def engine_choice(first_case_s: float, remaining: int, workers: int) -> tuple[bool, str]:
+    """Whether the ``remaining`` cases go to a new local cluster of ``workers`` processes,
+    and why, in one line, from the wall time of the first case run in this process.
+
+    In this process they take about ``remaining * first_case_s``; a cluster saves at most
+    the share ``1 - 1/workers`` of that, and costs :data:`CLUSTER_START_S` first. The cluster
+    is chosen only when the saving exceeds its start-up.
+    """
+    here = remaining * first_case_s
+    saving = here * (1.0 - 1.0 / workers) if workers > 1 else 0.0
+    first = f"the first case took {first_case_s:.2g} s here"
+    if saving > CLUSTER_START_S:
+        return True, (f"the other {remaining} cases run on a local Dask cluster of {workers} "
+                      f"workers: {first}, so about {here:.3g} s in this process, of which "
+                      f"the cluster saves about {saving:.3g} s for about {CLUSTER_START_S:g} s "
+                      "of start-up (--workers 0 keeps them here)")
+    why = (f"a cluster of {workers} workers would save at most {saving:.3g} s of that for "
+           f"about {CLUSTER_START_S:g} s of start-up" if workers > 1 else
+           "this machine has one core for them")
+    return False, (f"the other {remaining} cases run in this process: {first}, so about "
+                   f"{here:.3g} s, and {why} (--workers N starts one)")
+
+
 @dataclass(frozen=True)
 class SweepResult:
     """How a run of a sweep went; ``table`` is the ``pyarrow.Table`` written to ``path``."""
@@ -50,6 +81,7 @@ class SweepResult:
     failed: int
     wall_time_s: float
     plots: list[Path]
+    engine: str = ""  # where the cases ran, and why when it was chosen
 
 
 def default_workers() -> int:
@@ -202,9 +234,12 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     """Run every case of ``sweep`` not already finished in ``out``; write the table and plots.
 
     Cases run on ``client`` (a ``distributed.Client``) if given, else on the cluster at
-    ``scheduler``, else on a new local cluster of ``workers`` processes (default
-    :func:`default_workers`); ``workers=0`` runs them one by one in this process, without
-    Dask. ``series`` also keeps each case's full time series (``out/series/<key>.h5``).
+    ``scheduler``, else on a new local cluster of ``workers`` processes; ``workers=0`` runs
+    them one by one in this process, without Dask. Given none of these, this process runs
+    the first case and :func:`engine_choice` sends the rest to a local cluster of
+    :func:`default_workers` processes only when that saves more than the cluster's
+    start-up; ``SweepResult.engine`` says which and why. ``series`` also keeps each case's
+    full time series (``out/series/<key>.h5``).
     Failed simulations are kept as ``failed`` rows; ``retry_failed`` runs them again.
     ``hook(case)`` runs before each case, where the case runs. ``verify`` checks every case
     against the same case at tolerances 10x tighter (about doubling its cost) and adds the
@@ -230,11 +265,16 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
                if not is_finished(read_row(out, c.key), out, series=series,
                                    retry_failed=retry_failed, verify=verify)]
     reused = len(sweep.cases) - len(pending)
-    serial = workers == 0 and client is None and not scheduler
+    # Neither --workers nor a cluster given: this process runs the first case, whose cost
+    # decides where the rest go (engine_choice).
+    choose = workers is None and client is None and not scheduler
+    serial = (workers == 0 and client is None and not scheduler) or (choose
+                                                                       and len(pending) <= 1)
+    engine = _engine(client, scheduler, workers, serial)
     with contextlib.ExitStack() as stack:
         cluster = None
-        if pending and not serial:  # before anything is written: it may fail to connect
-            cluster = stack.enter_context(_dask_client(client, scheduler, workers))
+        if pending and not serial and not choose:  # before anything is written: it may
+            cluster = stack.enter_context(_dask_client(client, scheduler, workers))  # fail
         (out / CASES_DIR).mkdir(parents=True, exist_ok=True)
         for folder in (out, out / CASES_DIR, out / SERIES_DIR, out / PLOTS_DIR):
             sweep_stale(folder)  # temporaries of a run that was killed
@@ -244,11 +284,23 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
         progress = stack.enter_context(tqdm(total=len(sweep.cases), initial=reused,
                                             disable=quiet, unit="case", desc=sweep.name,
                                             dynamic_ncols=True))
+        rest = pending
+        if choose and not serial:
+            first = time.perf_counter()
+            record(out, run_case(pending[0], series=series, hook=hook, verify=verify))
+            progress.update(1)
+            use_cluster, engine = engine_choice(time.perf_counter() - first,
+                                                len(pending) - 1, default_workers())
+            if not quiet:
+                progress.write(f"sweep {sweep.name}: {engine}")
+            rest = pending[1:]
+            if use_cluster:
+                cluster = stack.enter_context(_dask_client(None, None, None))
         if cluster is not None:
-            _run_dask(cluster, pending, out, series=series, hook=hook, progress=progress,
+            _run_dask(cluster, rest, out, series=series, hook=hook, progress=progress,
                       verify=verify)
         else:
-            for case in pending:
+            for case in rest:
                 record(out, run_case(case, series=series, hook=hook, verify=verify))
                 progress.update(1)
     # The table and the figures are one output: both appear, or (a full disk) neither.
@@ -263,4 +315,17 @@ def run_sweep(sweep: Sweep | str | Path, out: str | Path, *, client: Any = None,
     failed = sum(1 for s in table.column("status").to_pylist() if s != "ok")
     return SweepResult(table=table, path=out / TABLE_NAME, cases=len(sweep.cases),
                        ran=len(pending), reused=reused, failed=failed,
-                       wall_time_s=time.perf_counter() - started, plots=figures)
+                       wall_time_s=time.perf_counter() - started, plots=figures,
+                       engine=engine)
+
+
+def _engine(client: Any, scheduler: str | None, workers: int | None, serial: bool) -> str:
+    """Where the cases run when that is given (or there is at most one case to run)."""
+    if client is not None:
+        return "the cases run on the given Dask client's cluster"
+    if scheduler:
+        return f"the cases run on the Dask cluster at {scheduler}"
+    if serial:
+        return ("the cases run in this process" + (" (--workers 0)" if workers == 0 else
+                                                   ": at most one case to run"))
+    return f"the cases run on a local Dask cluster of {workers} workers (--workers)"
