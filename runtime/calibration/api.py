@@ -154,7 +154,8 @@ class CalibrationResult:
                               "start": list(s.start), "end": list(s.end),
                               "chi2": number(s.chi2), "dof": s.dof,
                               "evaluations": s.evaluations, "simulations": s.simulations,
-                              "message": s.message} for s in self.stages],
+                              "held": list(s.held), "message": s.message}
+                             for s in self.stages],
             "settings": self.settings,
             "profiles": self.profiles,
         }

@@ -99,13 +99,16 @@ def _stages(result: CalibrationResult) -> list[str]:
     lines = ["## Horizon continuation", "",
              "Fitted on a leading window of the data first, the window doubled (or as set) "
              "each stage, each fit started at the previous estimate; the last stage is the "
-             "whole record, and its covariance is the one reported.", "",
+             "whole record, and its covariance is the one reported. A parameter the window "
+             "cannot see is held at its value in that stage; a window that sees none is "
+             "skipped.", "",
              "| window end (s) | samples | " + " | ".join(f"`{n}`" for n in result.names)
-             + " | chi² | dof | evaluations |", "|---" * (len(result.names) + 5) + "|"]
+             + " | chi² | dof | evaluations | held |", "|---" * (len(result.names) + 6) + "|"]
     for s in result.stages:
         lines.append(f"| {s.window_end:g} | {s.samples} | "
                      + " | ".join(f"{v:.8g}" for v in s.end)
-                     + f" | {s.chi2:.5g} | {s.dof} | {s.evaluations} |")
+                     + f" | {s.chi2:.5g} | {s.dof} | {s.evaluations} | "
+                     + (", ".join(f"`{n}`" for n in s.held) or "none") + " |")
     return [*lines, ""]
 
 
