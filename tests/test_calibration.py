@@ -255,6 +255,8 @@ def test_a_fit_that_does_not_explain_the_data_claims_nothing() -> None:
     (["--measured", "absent.csv"], "--measured: absent.csv does not exist"),
     (["--spread", "1.5"], "--spread: must lie between 0 and 1"),
     (["--starts", "0"], "--starts: must be >= 1"),
+    (["--horizon-growth", "1"], "--horizon-growth: must be > 1"),
+    (["--horizon-first", "-0.01"], "--horizon-first: must be >= 0"),
 ])
 def test_bad_flags_exit_2(tmp_path: Path, short_scene: Path,
                           capsys: pytest.CaptureFixture[str], flags: list[str],
