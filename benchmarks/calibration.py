@@ -8,10 +8,13 @@ values (uniform, seeded), at tolerances 1e4 tighter than the scene's (the fit ru
 tighter), with 1 µm of Gaussian noise on each coordinate. Two parts:
 
 - recovery: for each draw, ``jointplay.calibrate`` from the scene's values with its default
-  options (multi-start, scan of the weakest direction): the relative error of each estimate,
+  options (horizon continuation from a 5 ms window; exchanged clearances, scan of the weakest
+  direction and multi-start where the whole-record fit does not explain the data): the
+  relative error of each estimate,
   whether its 95 % interval holds the truth, chi²/dof, runs, wall and CPU seconds;
 - coverage: the first draw's truth measured with ``--seeds`` noise seeds, each fit started at
-  the truth (one local fit: the global search is the recovery part's), counting the seeds
+  the truth (one local fit on the whole record, no continuation: the global search is the
+  recovery part's), counting the seeds
   whose 95 % interval holds the truth, and the reported std against the estimates' spread.
 
 Writes OUT/recovery.csv, OUT/coverage.csv and OUT/calibration.md (with the machine, its load
@@ -53,11 +56,14 @@ def draw_truth(scene: jp.Scene, rng: np.random.Generator) -> dict[str, float]:
     return {n: scene_value(n, scene) * (1 + rng.uniform(-0.5, 0.5)) for n in NAMES}
 
 
-def recovery(scene: jp.Scene, model: Any, draws: int) -> list[dict[str, Any]]:
+def recovery(scene: jp.Scene, model: Any, draws: int, first: int = 0
+             ) -> list[dict[str, Any]]:
     rows = []
     rng = np.random.default_rng(2026)
     for draw in range(draws):
         truth = draw_truth(scene, rng)
+        if draw < first:
+            continue
         measured = synthetic(scene, model, truth, seed=draw)
         result = calibrate(scene, measured, list(NAMES), noise=NOISE, model=model,
                            options=CalibrationOptions(profile_points=0))
@@ -70,8 +76,10 @@ def recovery(scene: jp.Scene, model: Any, draws: int) -> list[dict[str, Any]]:
             row[f"{name} covered"] = bool(e.low95 <= truth[name] <= e.high95)
             row[f"{name} determined"] = e.determined
         row.update(chi2_dof=result.residuals["normalised_chi2"], runs=result.simulations,
-                   local_fits=len(result.starts), wall_s=result.wall_time_s,
-                   cpu_s=result.cpu_time_s, warnings=len(result.warnings))
+                   window_runs=result.simulations_by_kind.get("continuation windows", 0),
+                   stages=len(result.stages), local_fits=len(result.starts),
+                   wall_s=result.wall_time_s, cpu_s=result.cpu_time_s,
+                   warnings=len(result.warnings))
         print(row, flush=True)
         rows.append(row)
     return rows
@@ -79,7 +87,7 @@ def recovery(scene: jp.Scene, model: Any, draws: int) -> list[dict[str, Any]]:
 
 def coverage(scene: jp.Scene, model: Any, seeds: int) -> list[dict[str, Any]]:
     truth = draw_truth(scene, np.random.default_rng(2026))
-    options = CalibrationOptions(starts=1, scan_points=0, profile_points=0)
+    options = CalibrationOptions(starts=1, scan_points=0, profile_points=0, horizon_first=0)
     rows = []
     for seed in range(seeds):
         measured = synthetic(scene, model, truth, seed=1000 + seed)
@@ -153,6 +161,9 @@ def main() -> None:
     parser.add_argument("--out", required=True, help="folder for the CSV and Markdown")
     parser.add_argument("--draws", type=int, default=3, help="truths drawn for recovery")
     parser.add_argument("--seeds", type=int, default=20, help="noise seeds for coverage")
+    parser.add_argument("--first-draw", type=int, default=0,
+                        help="skip the draws before this one (their truths are still drawn, "
+                             "so draw N is the same truth in every run)")
     args = parser.parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -162,11 +173,12 @@ def main() -> None:
     cov = coverage(scene, model, args.seeds) if args.seeds else []
     if cov:
         _write_csv(out / "coverage.csv", cov)
-    rec = recovery(scene, model, args.draws) if args.draws else []
+    rec = recovery(scene, model, args.draws, args.first_draw) if args.draws else []
     if rec:
         _write_csv(out / "recovery.csv", rec)
     command = (f"python benchmarks/calibration.py --out {args.out} --draws {args.draws} "
-               f"--seeds {args.seeds}")
+               f"--seeds {args.seeds}"
+               + (f" --first-draw {args.first_draw}" if args.first_draw else ""))
     (out / "calibration.md").write_text(summary(rec, cov, command))
     print(summary(rec, cov, command))
     print(f"total {time.perf_counter() - start:.0f} s wall")

@@ -10,6 +10,7 @@ the locked joint 4) are flagged. Every bad input exits 2 with one line and write
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 from pathlib import Path
@@ -19,6 +20,8 @@ import pytest
 
 import jointplay as jp
 from jointplay.calibration import CalibrationOptions, Measured, calibrate
+from jointplay.calibration.continuation import horizon_windows
+from jointplay.calibration.report import report_text
 from jointplay.cli import main
 from jointplay.common.errors import DescriptionError
 
@@ -60,6 +63,43 @@ def test_recovers_parameters_with_intervals_that_cover() -> None:
     assert result.simulations == sum(result.simulations_by_kind.values()) > 0
     profile = result.profiles["payload.mass"]
     assert len(profile["value"]) == 5 and min(profile["chi2"]) >= result.residuals["chi2"] - 1e-6
+
+
+def test_horizon_continuation_grows_the_window_from_the_previous_estimate() -> None:
+    """Windows of 0.05, 0.1, 0.2 s, then the whole 0.4 s record: each stage starts where the
+    previous one ended, the last stage is the reported fit, and it recovers the truth."""
+    scene = _ideal_scene()
+    truth = {"payload.mass": 2.3, "link2.com": 0.19}
+    options = CalibrationOptions(tighten=1.0, starts=1, scan_points=0, profile_points=0,
+                                 horizon_first=0.05, horizon_growth=2.0)
+    result = calibrate(scene, _synthetic(scene, truth, seed=3), list(truth), noise=NOISE,
+                       options=options)
+    stages = result.stages
+    assert [s.window_end for s in stages] == pytest.approx([0.05, 0.1, 0.2, 0.4])
+    assert [s.samples for s in stages] == [51, 101, 201, 401]
+    assert stages[0].start == pytest.approx((2.0, 0.175))
+    for before, after in itertools.pairwise(stages):
+        assert after.start == before.end
+    assert stages[-1].end == tuple(result.values)
+    for name, value in truth.items():
+        estimate = result.estimates[name]
+        assert abs(estimate.value - value) <= 1e-3 * value
+        assert estimate.low95 <= value <= estimate.high95 and estimate.determined
+    assert result.simulations_by_kind["continuation windows"] > 0
+    saved = result.to_dict()["continuation"]
+    assert [s["window_end"] for s in saved] == pytest.approx([0.05, 0.1, 0.2, 0.4])
+    assert "## Horizon continuation" in report_text(result)
+
+
+def test_horizon_windows() -> None:
+    t = np.arange(0, 2.0005, 1e-3)
+    assert horizon_windows(t, 2, 3, 0.005, 2.0) == pytest.approx(
+        [0.005 * 2**k for k in range(9)])
+    assert horizon_windows(t, 2, 3, 0.005, 4.0) == pytest.approx([0.005, 0.02, 0.08, 0.32,
+                                                                  1.28])
+    # a first window holding too few numbers for the free parameters is lengthened
+    assert horizon_windows(t, 1, 3, 0.001, 2.0)[0] == pytest.approx(0.008)
+    assert horizon_windows(t[:4], 2, 3, 0.005, 2.0) == []
 
 
 def test_parameters_the_data_cannot_separate_are_flagged() -> None:
@@ -215,6 +255,8 @@ def test_a_fit_that_does_not_explain_the_data_claims_nothing() -> None:
     (["--measured", "absent.csv"], "--measured: absent.csv does not exist"),
     (["--spread", "1.5"], "--spread: must lie between 0 and 1"),
     (["--starts", "0"], "--starts: must be >= 1"),
+    (["--horizon-growth", "1"], "--horizon-growth: must be > 1"),
+    (["--horizon-first", "-0.01"], "--horizon-first: must be >= 0"),
 ])
 def test_bad_flags_exit_2(tmp_path: Path, short_scene: Path,
                           capsys: pytest.CaptureFixture[str], flags: list[str],

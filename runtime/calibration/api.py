@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from jointplay.calibration.continuation import Stage, continuation
 from jointplay.calibration.fit import (
     CHI2_SIGMAS,
     Scan,
@@ -36,7 +37,12 @@ class CalibrationOptions:
     it, run only while the best fit does not explain the data within the stated noise.
     ``scan_points``: runs along the weakest direction of the first optimum (0: no scan),
     local fits from the ``refine`` lowest minima along it. ``max_evaluations``: least-squares
-    evaluations per start. ``profile_points``: points of each cost profile (0: none)."""
+    evaluations per start. ``profile_points``: points of each cost profile (0: none).
+    ``horizon_first``: the first window (s) of the horizon continuation, grown by
+    ``horizon_growth`` each stage up to the whole record, each stage started at the last one's
+    estimate (0: no continuation, the fit starts on the whole record); the starts, the
+    exchanged clearances and the scan are the fallback where the whole-record fit does not
+    explain the data."""
 
     tighten: float = 1000.0
     starts: int = 6
@@ -46,6 +52,8 @@ class CalibrationOptions:
     profile_points: int = 13
     scan_points: int = 201
     refine: int = 3
+    horizon_first: float = 0.005
+    horizon_growth: float = 2.0
 
     def __post_init__(self) -> None:
         checks = (("tighten", self.tighten >= 1, "must be >= 1"),
@@ -53,6 +61,9 @@ class CalibrationOptions:
                   ("scan_points", self.scan_points == 0 or self.scan_points >= 3,
                    "must be 0 (no scan) or >= 3"),
                   ("refine", self.refine >= 1, "must be >= 1"),
+                  ("horizon_first", self.horizon_first >= 0,
+                   "must be >= 0 (s; 0: no continuation)"),
+                  ("horizon_growth", self.horizon_growth > 1, "must be > 1"),
                   ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
                   ("max_evaluations", self.max_evaluations >= 1, "must be >= 1"),
                   ("profile_points", self.profile_points == 0 or self.profile_points >= 3,
@@ -99,6 +110,7 @@ class CalibrationResult:
     warnings: tuple[str, ...]
     settings: dict[str, Any]
     fit_explains_data: bool | None = None
+    stages: tuple[Stage, ...] = ()
     profiles: dict[str, dict[str, list[float]]] = field(default_factory=dict)
 
     @property
@@ -138,6 +150,12 @@ class CalibrationResult:
             "cpu_time_s": self.cpu_time_s,
             "warnings": list(self.warnings),
             "fit_explains_data": self.fit_explains_data,
+            "continuation": [{"window_end": s.window_end, "samples": s.samples,
+                              "start": list(s.start), "end": list(s.end),
+                              "chi2": number(s.chi2), "dof": s.dof,
+                              "evaluations": s.evaluations, "simulations": s.simulations,
+                              "held": list(s.held), "message": s.message}
+                             for s in self.stages],
             "settings": self.settings,
             "profiles": self.profiles,
         }
@@ -200,7 +218,22 @@ def run(problem: Problem) -> CalibrationResult:
     predictor = Predictor(problem.scene, problem.model, problem.free, problem.measured)
     starts = starts_around(problem.free, opts.starts, opts.spread, opts.seed)
     scan = Scan(opts.scan_points, opts.spread, opts.refine)
+    stages: list[Stage] = []
+    stage_runs = 0
+    if opts.horizon_first > 0:
+        weights = problem.sigma if problem.sigma is not None else np.ones(
+            len(problem.measured.columns))
+        first, stages, stage_runs = continuation(
+            predictor, weights, starts, problem.sigma is not None, opts.max_evaluations,
+            opts.horizon_first, opts.horizon_growth)
+        starts = np.vstack([first, starts[1:]])
     optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan)
+    if stages:
+        whole = optimum.starts[0]
+        stages.append(Stage(float(problem.measured.t[-1]), int(problem.measured.t.size),
+                            whole.start, whole.end, whole.chi2,
+                            max(problem.measured.size - problem.free.size, 1),
+                            whole.evaluations, whole.evaluations, whole.message))
     free = problem.free
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     fitted = predictor.outputs(optimum.values)
@@ -212,13 +245,14 @@ def run(problem: Problem) -> CalibrationResult:
     profiles = cost_profiles(predictor, optimum, spread, opts.profile_points)
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   wall1 - wall0, cpu1 - cpu0, explains)
+                   wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs)
 
 
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
             fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
             profiles: dict[str, dict[str, list[float]]], wall: float,
-            cpu: float, explains: bool | None) -> CalibrationResult:
+            cpu: float, explains: bool | None, stages: tuple[Stage, ...] = (),
+            stage_runs: int = 0) -> CalibrationResult:
     free = problem.free
     # A fit that does not explain the data within the stated noise determines nothing: its
     # optimum may be a local one, and its intervals are not valid.
@@ -237,16 +271,19 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
         condition_number=spread.condition_number, residuals=stats,
         noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
         noise_stated=problem.sigma is not None, fitted=fitted, starts=optimum.starts,
-        simulations=predictor.counter.simulations,
-        simulations_by_kind=dict(predictor.counter.by_kind), jacobian_source=source,
+        simulations=predictor.counter.simulations + stage_runs,
+        simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs},
+        jacobian_source=source,
         wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
         settings={"rtol": run_settings.rtol, "atol": run_settings.atol,
                   "t_end": run_settings.t_end, "output_step": run_settings.output_step,
                   "starts": problem.options.starts, "spread": problem.options.spread,
                   "seed": problem.options.seed,
                   "max_evaluations": problem.options.max_evaluations,
+                  "horizon_first": problem.options.horizon_first,
+                  "horizon_growth": problem.options.horizon_growth,
                   "profile": "others fixed at their estimates"},
-        fit_explains_data=explains, profiles=profiles)
+        fit_explains_data=explains, profiles=profiles, stages=stages)
 
 
 def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) -> Scene:

@@ -75,29 +75,29 @@ def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np
     stated = sigma is not None
     weights: np.ndarray = sigma if sigma is not None else np.ones(
         len(predictor.measured.columns))
-    best, record = _multi_start(predictor, weights, starts[:1], max_evaluations,
+    best, record = multi_start(predictor, weights, starts[:1], max_evaluations,
                                 stop_early=stated)
     exchanged = exchanged_clearances(predictor.free.names, best)
     if len(exchanged) and not (stated and _explains(record[-1], predictor)):
-        more_best, more = _multi_start(predictor, weights, np.vstack([best, exchanged]),
+        more_best, more = multi_start(predictor, weights, np.vstack([best, exchanged]),
                                        max_evaluations, stop_early=stated)
         record += more[1:]
         best = more_best
     if scan is not None and scan.points > 0 and not (stated and _explains(
             min(record, key=_chi2), predictor)):
         seeds = scan_weakest_direction(predictor, weights, best, starts[0], scan)
-        more_best, more = _multi_start(predictor, weights, np.vstack([best, seeds]),
+        more_best, more = multi_start(predictor, weights, np.vstack([best, seeds]),
                                        max_evaluations, stop_early=stated)
         record += more[1:]
         best = more_best
     if len(starts) > 1 and not (stated and _explains(min(record, key=_chi2), predictor)):
-        more_best, more = _multi_start(predictor, weights, np.vstack([best, starts[1:]]),
+        more_best, more = multi_start(predictor, weights, np.vstack([best, starts[1:]]),
                                        max_evaluations, stop_early=stated)
         record += more[1:]
         best = more_best
     if not stated:
         weights = column_noise(predictor, best, predictor.free.size)
-        best, more = _multi_start(predictor, weights, best[None, :], max_evaluations,
+        best, more = multi_start(predictor, weights, best[None, :], max_evaluations,
                                   stop_early=False)
         record += more
     residuals = whitened(predictor.outputs(best) - predictor.measured.values, weights)
@@ -190,7 +190,7 @@ def column_noise(predictor: Predictor, values: np.ndarray, n_free: int) -> np.nd
     return np.where(rms > 0, rms, np.finfo(float).tiny)
 
 
-def _multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
+def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
                  max_evaluations: int, stop_early: bool) -> tuple[np.ndarray, list[Start]]:
     from scipy.optimize import least_squares
 

@@ -58,7 +58,7 @@ class Predictor:
     measured columns at free-parameter values ``x``; caches the last point."""
 
     def __init__(self, scene: Scene, model: Model, free: FreeParameters,
-                 measured: Measured) -> None:
+                 measured: Measured, compiled: tuple[str, ...] | None = None) -> None:
         self.scene = scene
         self.model = model
         self.free = free
@@ -67,7 +67,8 @@ class Predictor:
         self._grid = grid_indices(measured.t, scene.run.output_step)
         self._angle_index = [model.coordinates.index(c) for c in measured.columns
                              if c not in TIP_COLUMNS]
-        self.compiled = self._compiled_names()
+        # ``compiled``: the names another predictor of the same model already tried
+        self.compiled = self._compiled_names() if compiled is None else compiled
         self._cache: dict[bytes, tuple[np.ndarray, np.ndarray | None]] = {}
 
     # -- the two things a fit asks for ---------------------------------------------------------

@@ -41,6 +41,13 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--scan-points", type=int, default=201,
                    help="runs along the weakest direction of the first fit, where impacts "
                         "make the cost rugged (default 201; 0: no scan)")
+    p.add_argument("--horizon-first", type=float, default=0.005,
+                   help="first window (s) of the horizon continuation: the fit runs on the "
+                        "data up to it, then on windows --horizon-growth times longer, each "
+                        "from the last estimate, up to the whole record (default 0.005; 0: "
+                        "fit the whole record at once)")
+    p.add_argument("--horizon-growth", type=float, default=2.0,
+                   help="factor each window of the continuation grows by (default 2)")
     p.add_argument("--profile-points", type=int, default=13,
                    help="points of each cost profile (default 13; 0: none)")
     p.add_argument("--tighten", type=float, default=1000.0,
@@ -93,11 +100,13 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
 def _options(args: argparse.Namespace, options_type: Any) -> Any:
     flags = {"--starts": args.starts, "--spread": args.spread,
              "--scan-points": args.scan_points, "--profile-points": args.profile_points,
-             "--tighten": args.tighten}
+             "--tighten": args.tighten, "--horizon-first": args.horizon_first,
+             "--horizon-growth": args.horizon_growth}
     try:
         return options_type(tighten=args.tighten, starts=args.starts, spread=args.spread,
                             seed=args.seed, profile_points=args.profile_points,
-                            scan_points=args.scan_points)
+                            scan_points=args.scan_points, horizon_first=args.horizon_first,
+                            horizon_growth=args.horizon_growth)
     except DescriptionError as err:
         flag = "--" + err.field.removeprefix("options.").replace("_", "-")
         if flag not in flags:
