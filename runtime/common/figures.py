@@ -2,8 +2,8 @@
 an atomic PNG write. matplotlib is imported on first use, so importing a plotting module
 costs nothing until a figure is drawn.
 
-A set of figures is drawn by :func:`draw_all`: on Linux in a few forked workers at once (a
-figure costs 0.1-0.7 s of matplotlib, almost all of it Python), each returning its PNG bytes
+A set of figures is drawn by :func:`draw_all`: in this process by default; with
+:data:`WORKERS` None, on Linux in a few forked workers at once, each returning its PNG bytes
 to the parent, which writes every file itself (so an output transaction of
 :func:`jointplay.common.files.all_or_nothing` sees them all).
 """
@@ -32,13 +32,16 @@ PNG_COMPRESSION = 1
 # The id (``Line2D.get_gid``) of every drawn journal orbit: the data a reader sees, which a
 # check of the figure reads back (compare figures append ":" and the run's label).
 ORBIT_GID = "orbit"
-# Most workers :func:`draw_all` forks (a figure set has 6-10 figures); None: up to this many,
-# never more than the CPUs this process may use. 1 draws every figure in this process.
+# Most workers :func:`draw_all` forks (a figure set has 6-10 figures) when WORKERS is None:
+# up to this many, never more than the CPUs this process may use. The default, 1, draws every
+# figure in this process: on two cores the forked workers took more wall and CPU time than
+# the one process (each pays its share of matplotlib's start-up), and a run of them once
+# hung on a worker waiting for the pool's task lock (docs/results/figure-cost.md).
 MAX_WORKERS = 4
-WORKERS: int | None = None
+WORKERS: int | None = 1
 # At most this many intervals between the major ticks of a figure laid out at fixed margins.
-TICKS_X = 6
-TICKS_Y = 5
+TICKS_X = 5
+TICKS_Y = 4
 
 # A figure job draws and saves one figure, returning its path.
 FigureJob = Callable[[], Path]
