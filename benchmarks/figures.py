@@ -2,8 +2,8 @@
 
 On the paper scene (``jointplay.default_scene()``, its ideal twin beside it): each of the
 eight default figures drawn alone in this process; the whole set by ``plot_result`` drawn in
-this process (1 worker) and in its forked workers (the default); ``--animate`` of a 0.5 s
-run (frames per second); and the warm main job ``jointplay simulate --compare-ideal --out
+this process (the default) and in forked workers (``figures.WORKERS = None``); ``--animate``
+of a 0.5 s run (frames per second); and the warm main job ``jointplay simulate --compare-ideal --out
 run.h5 --plot plots`` against the same without ``--plot``, each in a fresh interpreter with
 its byte code cached (as installed). Optionally (``--sweep``) the 12-case example sweep
 (``scenes/sweep_clearance.toml``) with the default engine against ``--workers 0``.
@@ -118,13 +118,14 @@ def main() -> None:
         for name, draw in each:
             rows.append(timed(name, lambda draw=draw, name=name: draw(folder / name),
                               args.repeats))
-        rows.append(timed(f"the {len(each)} figures, plot_result, in this process",
+        rows.append(timed(f"the {len(each)} figures, plot_result, in this process (the default)",
                           lambda: plots.plot_result(result, folder / "serial"), args.repeats))
         figures.WORKERS = None
         workers = figures.worker_count(len(each))
         rows.append(timed(f"the {len(each)} figures, plot_result, {workers} forked workers "
-                          "(the default here)",
+                          "(figures.WORKERS = None)",
                           lambda: plots.plot_result(result, folder / "forked"), args.repeats))
+        figures.WORKERS = 1
         short = simulate(scene.with_run(t_end=0.5))
         row = timed("--animate, 0.5 s run (250 frames, GIF)",
                     lambda: animate_result(short, folder / "arm.gif"), args.repeats)

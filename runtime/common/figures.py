@@ -2,8 +2,8 @@
 an atomic PNG write. matplotlib is imported on first use, so importing a plotting module
 costs nothing until a figure is drawn.
 
-A set of figures is drawn by :func:`draw_all`: on Linux in a few forked workers at once (a
-figure costs 0.1-0.7 s of matplotlib, almost all of it Python), each returning its PNG bytes
+A set of figures is drawn by :func:`draw_all`: in this process by default; with
+:data:`WORKERS` None, on Linux in a few forked workers at once, each returning its PNG bytes
 to the parent, which writes every file itself (so an output transaction of
 :func:`jointplay.common.files.all_or_nothing` sees them all).
 """
@@ -16,6 +16,7 @@ import sys
 import threading
 import warnings
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -31,10 +32,16 @@ PNG_COMPRESSION = 1
 # The id (``Line2D.get_gid``) of every drawn journal orbit: the data a reader sees, which a
 # check of the figure reads back (compare figures append ":" and the run's label).
 ORBIT_GID = "orbit"
-# Most workers :func:`draw_all` forks (a figure set has 6-10 figures); None: up to this many,
-# never more than the CPUs this process may use. 1 draws every figure in this process.
+# Most workers :func:`draw_all` forks (a figure set has 6-10 figures) when WORKERS is None:
+# up to this many, never more than the CPUs this process may use. The default, 1, draws every
+# figure in this process: on two cores the forked workers took more wall and CPU time than
+# the one process (each pays its share of matplotlib's start-up), and a run of them once
+# hung on a worker waiting for the pool's task lock (docs/results/figure-cost.md).
 MAX_WORKERS = 4
-WORKERS: int | None = None
+WORKERS: int | None = 1
+# At most this many intervals between the major ticks of a figure laid out at fixed margins.
+TICKS_X = 5
+TICKS_Y = 4
 
 # A figure job draws and saves one figure, returning its path.
 FigureJob = Callable[[], Path]
@@ -45,15 +52,43 @@ _captured: list[tuple[Path, bytes]] | None = None
 _jobs: Sequence[FigureJob] = ()
 
 
+@dataclass(frozen=True)
+class Margins:
+    """Fixed geometry of a figure's axes grid, in inches: the space left, right, above and
+    below it, and between its rows and columns. A figure laid out this way is drawn once per
+    save; a constrained layout measures every text first and draws twice (twice the cost)."""
+
+    left: float = 0.9
+    right: float = 0.3
+    top: float = 0.6
+    bottom: float = 0.6
+    between_rows: float = 0.6
+    between_cols: float = 0.9
+
+
 def figure(rows: int, cols: int, width: float, height: float, *,
-           sharex: bool = False, **subplot_kw: Any) -> tuple[Figure, Any]:
-    """A constrained-layout figure with a ``rows`` x ``cols`` array of axes (never squeezed)."""
+           sharex: bool = False, margins: Margins | None = None,
+           **subplot_kw: Any) -> tuple[Figure, Any]:
+    """A figure with a ``rows`` x ``cols`` array of axes (never squeezed): at the fixed
+    ``margins`` when given, else in a constrained layout."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(width, height), layout="constrained")
+    fig = Figure(figsize=(width, height), layout=None if margins else "constrained")
     FigureCanvasAgg(fig)
     axes = fig.subplots(rows, cols, squeeze=False, sharex=sharex, subplot_kw=subplot_kw or None)
+    if margins is not None:
+        cell_width = (width - margins.left - margins.right
+                      - (cols - 1) * margins.between_cols) / cols
+        cell_height = (height - margins.top - margins.bottom
+                       - (rows - 1) * margins.between_rows) / rows
+        fig.subplots_adjust(left=margins.left / width, right=1.0 - margins.right / width,
+                            bottom=margins.bottom / height, top=1.0 - margins.top / height,
+                            wspace=margins.between_cols / cell_width,
+                            hspace=margins.between_rows / cell_height)
+        for ax in axes.flat:  # each tick is two lines and a text: few, readable ones
+            ax.locator_params(axis="x", nbins=TICKS_X)
+            ax.locator_params(axis="y", nbins=TICKS_Y)
     return fig, axes
 
 
