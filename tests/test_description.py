@@ -92,7 +92,7 @@ CLEARANCE = ('[[joints]]\nkind = "clearance"\nbearing_radius = 0.01\njournal_rad
         (LINK + "[friction]\nv0 = 0.1\nv1 = 0.01\n", "friction.v1", "must exceed"),
         (LINK + "[friction]\nv0 = -1e-4\n", "friction.v0", "must be >= 0"),
         (LINK + "[friction]\nv0 = 0.0\nv1 = 0.0\n", "friction.v1", "must be > 0"),
-        (LINK + "[contact]\nrestitution = 1.5\n", "contact.restitution", "(0, 1]"),
+        (LINK + "[contact]\nrestitution = 1.5\n", "contact.restitution", "from 0.001 to 1"),
         (LINK + "[contact]\nlaw = \"hertz\"\n", "contact.law", "lankarani-nikravesh"),
         (LINK + "[gravity]\nvector = [0.0]\n", "gravity.vector", "[gx, gy]"),
         (LINK + '[[joints]]\nkind = "locked"\n', "joints", "at least one joint must move"),

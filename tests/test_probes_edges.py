@@ -345,6 +345,7 @@ def test_restitution_range_and_eccentricity_within_the_clearance(
     joint = scene.robot.joints[1]
     c = joint.bearing_radius - joint.journal_radius
     assert scene.with_initial(ex2=c).initial["ex2"] == c  # on the wall: inside
+    assert scene.with_initial(ex2=1.05 * c).initial["ex2"] == 1.05 * c  # pressed in, elastic
     with pytest.raises(DescriptionError, match="must start inside its bearing"):
         scene.with_initial(ex2=1.5 * c)  # 15 um into the wall
 

@@ -20,7 +20,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="CSV with a header: time (s) and any of tip_x, tip_y (m), q2, ... "
                         "(rad); or a results file (.h5)")
     p.add_argument("--free", required=True, metavar="NAME[,NAME...]",
-                   help="parameters to estimate: any name --set accepts (friction.mu, "
+                   help="parameters to estimate: any robot parameter by name (friction.mu, "
                         "link2.mass, ...) or jointN.clearance (bearing radius held)")
     p.add_argument("--out", required=True, metavar="DIR",
                    help="folder for calibration.json, report.md, fit.png, residuals.png, "
@@ -43,7 +43,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "make the cost rugged (default 201; 0: no scan)")
     p.add_argument("--horizon-first", type=float, default=0.005,
                    help="first window (s) of the horizon continuation: the fit runs on the "
-                        "data up to it, then on windows --horizon-growth times longer, each "
+                        "data up to it, then on windows longer by the growth factor below, each "
                         "from the last estimate, up to the whole record (default 0.005; 0: "
                         "fit the whole record at once)")
     p.add_argument("--horizon-growth", type=float, default=2.0,
