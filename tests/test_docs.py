@@ -9,8 +9,8 @@ The fences say what a block is:
   together) must match the lines below it, where ``...`` matches anything;
 * ``text``, ``toml`` and the rest are shown, never run.
 
-Every block of a file runs in one scratch folder in which ``scenes/`` and ``generated/`` are
-the project's, so examples use the paths a user in a checkout would. An HTML comment on the
+Every block of a file runs in one scratch folder in which ``scenes/``, ``generated/`` and
+``benchmarks/`` are the project's, so examples use the paths a user in a checkout would. An HTML comment on the
 line before a fence can say more:
 
 * ``<!-- docs: ci -->``: the block is the README's setup or test command; running it here
@@ -19,7 +19,8 @@ line before a fence can say more:
 * ``<!-- docs: slow -->``: the block takes minutes; it runs in the slow tier;
 * ``<!-- docs: dev -->``: the block needs the ``dev`` extra (ruff, mypy); skipped without it;
 * ``<!-- docs: not run: REASON -->``: the block needs what a test cannot have (several
-  machines); the reason is shown in the test report.
+  machines, the git history of a full clone, or more minutes than the whole suite may take);
+  the reason is shown in the test report.
 """
 
 from __future__ import annotations
@@ -95,7 +96,7 @@ def _scratch(block: Block, root: Path) -> tuple[Path, dict[str, Any]]:
     if block.path not in _SCRATCH:
         folder = root / block.name.removesuffix(".md").replace("/", "__")
         folder.mkdir()
-        for name in ("scenes", "generated"):
+        for name in ("scenes", "generated", "benchmarks"):
             (folder / name).symlink_to(ROOT / name)
         _SCRATCH[block.path] = (folder, {"__name__": f"docs_{folder.name}"})
     return _SCRATCH[block.path]
