@@ -10,8 +10,8 @@ The fences say what a block is:
 * ``text``, ``toml`` and the rest are shown, never run.
 
 Every block of a file runs in one scratch folder in which ``scenes/``, ``generated/`` and
-``benchmarks/`` are the project's, so examples use the paths a user in a checkout would. An HTML comment on the
-line before a fence can say more:
+``benchmarks/`` are the project's, so examples use the paths a user in a checkout would. An
+HTML comment on the line before a fence can say more:
 
 * ``<!-- docs: ci -->``: the block is the README's setup or test command; running it here
   would install the project again or run this suite inside itself, so the test checks instead
