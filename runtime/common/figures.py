@@ -10,6 +10,7 @@ to the parent, which writes every file itself (so an output transaction of
 
 from __future__ import annotations
 
+import functools
 import os
 import struct
 import sys
@@ -43,6 +44,8 @@ WORKERS: int | None = 1
 # At most this many intervals between the major ticks of a figure laid out at fixed margins.
 TICKS_X = 5
 TICKS_Y = 4
+# The tick spacings allowed, as matplotlib's default locator has them (times a power of 10).
+_STEPS = (1, 2, 2.5, 5, 10)
 
 # A figure job draws and saves one figure, returning its path.
 FigureJob = Callable[[], Path]
@@ -88,9 +91,27 @@ def figure(rows: int, cols: int, width: float, height: float, *,
                             wspace=margins.between_cols / cell_width,
                             hspace=margins.between_rows / cell_height)
         for ax in axes.flat:  # each tick is two lines and a text: few, readable ones
-            ax.locator_params(axis="x", nbins=TICKS_X)
-            ax.locator_params(axis="y", nbins=TICKS_Y)
+            ax.xaxis.set_major_locator(_in_view_locator()(nbins=TICKS_X, steps=_STEPS))
+            ax.yaxis.set_major_locator(_in_view_locator()(nbins=TICKS_Y, steps=_STEPS))
     return fig, axes
+
+
+@functools.cache
+def _in_view_locator() -> type:
+    """matplotlib's MaxNLocator without the ticks outside the view: it adds one beyond each
+    end, and the axis makes (then hides) a tick for each, a third of the ticks made."""
+    from matplotlib.ticker import MaxNLocator
+
+    class InViewLocator(MaxNLocator):
+        def __call__(self) -> Any:
+            locs = super().__call__()
+            if self.axis is None:
+                return locs
+            low, high = sorted(self.axis.get_view_interval())
+            slack = 1e-9 * max(high - low, abs(high), abs(low), 1e-300)
+            return locs[(locs >= low - slack) & (locs <= high + slack)]
+
+    return InViewLocator
 
 
 def png_bytes(fig: Figure, *, dpi: int | None = None) -> bytes:
