@@ -40,7 +40,8 @@ from jointplay.common.files import atomic_write_bytes
 TIMEOUT_S = 120.0
 # Loaded by the figure process while it waits for its jobs.
 _PRELOAD = ("jointplay.results.plots", "jointplay.results.derived", "jointplay.results.contacts")
-# False: never start a figure process; every figure is drawn in the calling process.
+# False: never start a figure process; every figure is drawn in the calling process. The
+# environment variable JOINTPLAY_FIGURE_PROCESS=0 does the same for a command (to compare).
 ENABLED = True
 
 # Run by ``python -c``: the package is registered by its folders (argv[1], os.pathsep
@@ -105,7 +106,7 @@ def wanted() -> bool:
         cpus = len(os.sched_getaffinity(0))
     except AttributeError:  # not on Linux
         cpus = os.cpu_count() or 1
-    return ENABLED and cpus >= 2
+    return ENABLED and os.environ.get("JOINTPLAY_FIGURE_PROCESS", "1") != "0" and cpus >= 2
 
 
 class FigureProcess:
