@@ -212,8 +212,8 @@ def plot_orbit(result: SimulationResult, k: int, path: Path,
     ax.set_aspect("equal")
     ax.axhline(0.0, color="0.8", lw=0.6, zorder=0)
     ax.axvline(0.0, color="0.8", lw=0.6, zorder=0)
-    ax.set_xlabel("eccentricity $e_x$ [µm]")
-    ax.set_ylabel("eccentricity $e_y$ [µm]")
+    ax.set_xlabel("eccentricity, x [µm]")
+    ax.set_ylabel("eccentricity, y [µm]")
     ax.set_title(f"{result.scene_name}: journal orbit, joint {joint}", y=1.0)
     ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
     return save(fig, path)
@@ -240,9 +240,9 @@ def plot_contact_force(result: SimulationResult, path: Path) -> Path:
         ax: Any = axes[k, 0]
         drawn = [result.normal_force[:, k], result.friction_force[:, k]]
         ax.plot(result.t, result.normal_force[:, k], color="C0", lw=1.2,
-                label=f"dry normal $F_n$ ({sampled})")
+                label=f"dry normal force ({sampled})")
         ax.plot(result.t, result.friction_force[:, k], color="C1", lw=0.7,
-                label="dry friction $F_t$ (output samples)")
+                label="dry friction force (output samples)")
         if film is not None:
             ax.plot(result.t, film[:, k], color="C2", lw=1.0, label="film |$F_{film}$|")
             drawn.append(film[:, k])
@@ -252,7 +252,7 @@ def plot_contact_force(result: SimulationResult, path: Path) -> Path:
         if located.any():
             ax.plot(rows.peak_force_time[located], rows.peak_force[located], "v", color="C3",
                     ms=5, mec="k", mew=0.4, zorder=4,
-                    label="located peak $F_n$ of each phase (dense output)")
+                    label="located peak normal force of each phase (dense output)")
             drawn.append(rows.peak_force[located])
             top = int(np.argmax(np.where(located, rows.peak_force, -np.inf)))
             title += (f"; largest located peak {rows.peak_force[top]:.4g} N at "
