@@ -114,3 +114,41 @@ def test_the_program_draws_its_figures_in_the_figure_process(tmp_path: Path) -> 
                             "orbit_joint3.png", "contact_force.png",
                             "contact_timeline_joint2.png", "contact_timeline_joint3.png",
                             "eccentricity_ratio.png"])
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().split(")")[-1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"  # a zombie has ended; its parent (or init) has yet to reap it
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc (Linux)")
+def test_ctrl_c_stops_the_figure_process_too(tmp_path: Path) -> None:
+    """Ctrl-C (SIGINT to the whole process group) while the figure process loads matplotlib:
+    the command ends with status 130, writes nothing, and leaves no figure process behind."""
+    import os
+    import signal
+
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "jointplay.cli", "simulate", "--compare-ideal", "--out",
+         "run.h5", "--plot", "plots"], cwd=tmp_path, stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE, start_new_session=True)
+    children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
+    deadline = time.monotonic() + 30.0
+    started: list[int] = []
+    while not started and time.monotonic() < deadline and proc.poll() is None:
+        started = [int(p) for p in children.read_text().split()]
+        time.sleep(0.01)
+    assert started, "no figure process was started"
+    time.sleep(0.3)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert b"jointplay: interrupted" in err
+    deadline = time.monotonic() + 10.0
+    while _alive(started[0]) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not _alive(started[0])
+    assert sorted(p.name for p in tmp_path.iterdir()) == []

@@ -228,11 +228,12 @@ class Pending:
 
 def serve() -> int:
     """The figure process: load matplotlib and its fonts, read the pickled jobs from stdin,
-    draw them, write ``[(path, PNG bytes), ...]`` pickled to stdout. Ctrl-C is left to the
-    command, which kills this process when it stops."""
+    draw them, write ``[(path, PNG bytes), ...]`` pickled to stdout. Ctrl-C (which reaches
+    the command's whole process group) ends it at once and quietly: the command stops too,
+    and says so."""
     import signal
 
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGINT, _leave)
     figures.warm_up()
     # The modules of the default figures, loaded before the jobs arrive (the jobs' own
     # imports would otherwise come after).
@@ -251,6 +252,10 @@ def serve() -> int:
     # Done: leave without the interpreter's teardown of matplotlib's modules (0.1-0.2 s that
     # the command would wait for, since it reads until this process closes its output).
     os._exit(0)
+
+
+def _leave(signum: int, frame: object) -> None:
+    os._exit(128 + signum)
 
 
 def draw(jobs: Sequence[figures.FigureJob], process: FigureProcess | None) -> list[Path]:
