@@ -168,7 +168,7 @@ def _off_scale(ax: Axes, t: np.ndarray, values: np.ndarray, transient: tuple[flo
     end, rule = transient
     after = t >= end
     ax.set_ylim(*_limits(values[after], 0.3, TRANSIENT_CLIP_PERCENT))
-    ax.axvspan(float(t[0]), end, color="0.75", lw=0, zorder=0,
+    ax.axvspan(float(t[0]), end, color="0.87", lw=0, zorder=0,
                label=f"release transient, to {end:.4g} s ({rule});\nacceleration scaled to "
                      f"{100 - 2 * TRANSIENT_CLIP_PERCENT:g} % of the samples after it")
     during = np.abs(values[~after])
