@@ -2,17 +2,22 @@
 
 On the paper scene (``jointplay.default_scene()``, its ideal twin beside it): each of the
 eight default figures drawn alone in this process; the whole set by ``plot_result`` drawn in
-this process (the default) and in forked workers (``figures.WORKERS = None``); ``--animate``
-of a 0.5 s run (frames per second); and the warm main job ``jointplay simulate --compare-ideal --out
-run.h5 --plot plots`` against the same without ``--plot``, each in a fresh interpreter with
-its byte code cached (as installed). Optionally (``--sweep``) the 12-case example sweep
-(``scenes/sweep_clearance.toml``) with the default engine against ``--workers 0``.
+this process, and in a figure process (:mod:`jointplay.common.figure_process`, started and
+given time to load matplotlib first, as the command starts it early: the wall time runs from
+handing it the jobs to the files written, the CPU time is both processes', its start-up
+included); ``--animate`` of a 0.5 s run (frames per second); and the warm main job
+``jointplay simulate --compare-ideal --out run.h5 --plot plots`` against the same without
+``--plot`` and with its figures drawn in its own process (``JOINTPLAY_FIGURE_PROCESS=0``),
+each in a fresh interpreter with its byte code cached (as installed). Optionally
+(``--sweep``) the 12-case example sweep (``scenes/sweep_clearance.toml``) with the default
+engine against ``--workers 0``.
 
 Every row gives the median wall time and the median CPU time (this process and its children:
-the figure workers, the command's interpreter) over ``--repeats`` runs, with the worst wall
-time; on a machine other jobs share, wall time rises with the load while CPU time stays
-nearer the unloaded cost. Writes ``figures.csv`` and ``figures.md`` into ``--out``
-(atomically) and prints the Markdown.
+the figure process, the command's interpreter and its figure process) over ``--repeats``
+runs, with the worst wall time; on a machine other jobs share, wall time rises with the load
+while CPU time stays nearer the unloaded cost. Rows of two versions (``--against``) give the
+ratio of this one's medians to the other's. Writes ``figures.csv`` and ``figures.md`` into
+``--out`` (atomically) and prints the Markdown.
 
     python benchmarks/figures.py --out out/bench/figures --repeats 3 --sweep
 
@@ -36,7 +41,7 @@ from typing import Any
 
 from jointplay import default_scene, simulate
 from jointplay.bench import machine_facts, markdown_table, to_csv
-from jointplay.common import figures
+from jointplay.common import figure_process, figures
 from jointplay.common.files import atomic_write_text
 from jointplay.results import plots
 from jointplay.results.animate import animate_result
@@ -44,7 +49,11 @@ from jointplay.results.derived import dense_eccentricity
 
 COLUMNS = [("what", "what", "{}"), ("wall_s", "wall s (median)", "{:.3f}"),
            ("worst_wall_s", "wall s (worst)", "{:.3f}"),
-           ("cpu_s", "CPU s (median)", "{:.3f}"), ("rate", "frames per s (wall / CPU)", "{}")]
+           ("cpu_s", "CPU s (median)", "{:.3f}"), ("rate", "frames per s (wall / CPU)", "{}"),
+           ("ratio", "this / other (wall, CPU)", "{}")]
+# Seconds a figure process is given to load matplotlib before it is handed the jobs (it
+# takes about 1 s on an idle machine; the command starts it that long before it needs it).
+WARM_S = 4.0
 SWEEP = Path(__file__).resolve().parents[1] / "scenes" / "sweep_clearance.toml"
 
 
@@ -67,13 +76,15 @@ def timed(what: str, work: Callable[[], Any], repeats: int) -> dict[str, Any]:
             "cpu_s": statistics.median(cpus)}
 
 
-def command(argv: list[str], folder: Path, package: Path | None = None) -> Callable[[], None]:
+def command(argv: list[str], folder: Path, package: Path | None = None,
+            extra_env: dict[str, str] | None = None) -> Callable[[], None]:
     """A run of ``jointplay ARGV`` in ``folder``, in a fresh interpreter that may write byte
     code (as an installed package has it); ``package``: a folder holding another version's
     ``jointplay`` package, imported instead of this one."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     if package is not None:
         env["PYTHONPATH"] = str(package)
+    env.update(extra_env or {})
 
     def run() -> None:
         subprocess.run([sys.executable, "-m", "jointplay.cli", *argv], cwd=folder, env=env,
@@ -120,12 +131,7 @@ def main() -> None:
                               args.repeats))
         rows.append(timed(f"the {len(each)} figures, plot_result, in this process (the default)",
                           lambda: plots.plot_result(result, folder / "serial"), args.repeats))
-        figures.WORKERS = None
-        workers = figures.worker_count(len(each))
-        rows.append(timed(f"the {len(each)} figures, plot_result, {workers} forked workers "
-                          "(figures.WORKERS = None)",
-                          lambda: plots.plot_result(result, folder / "forked"), args.repeats))
-        figures.WORKERS = 1
+        rows.append(_in_figure_process(result, folder / "process", len(each), args.repeats))
         short = simulate(scene.with_run(t_end=0.5))
         row = timed("--animate, 0.5 s run (250 frames, GIF)",
                     lambda: animate_result(short, folder / "arm.gif"), args.repeats)
@@ -137,7 +143,11 @@ def main() -> None:
         command(with_plots, folder)()  # byte code and models cached
         rows.append(timed("warm main job: simulate --compare-ideal --out run.h5",
                           command(job, folder), args.repeats))
-        rows.append(timed("warm main job with --plot plots", command(with_plots, folder),
+        rows.append(timed("warm main job with --plot plots (figures in the figure process, "
+                          "the default)", command(with_plots, folder), args.repeats))
+        rows.append(timed("warm main job with --plot plots, figures in the command's process "
+                          "(JOINTPLAY_FIGURE_PROCESS=0)",
+                          command(with_plots, folder, extra_env={"JOINTPLAY_FIGURE_PROCESS": "0"}),
                           args.repeats))
         if args.against is not None:
             _against(rows, folder, args.against, job, args.repeats)
@@ -159,6 +169,24 @@ def main() -> None:
     print("\n".join(md))
 
 
+def _in_figure_process(result: Any, folder: Path, count: int, repeats: int) -> dict[str, Any]:
+    """The row of the figure set drawn by a figure process, started WARM_S earlier."""
+    walls, cpus = [], []
+    for _ in range(repeats):
+        cpu = cpu_seconds()
+        with figure_process.FigureProcess() as process:
+            time.sleep(WARM_S)
+            start = time.perf_counter()
+            plots.plot_result(result, folder, process=process)
+            walls.append(time.perf_counter() - start)
+        cpus.append(cpu_seconds() - cpu)  # the process has ended: its CPU time is counted
+    return {"what": f"the {count} figures, plot_result, in a warm figure process (wall: "
+                    "jobs handed over to files written; CPU: both processes, its start-up "
+                    "included)",
+            "wall_s": statistics.median(walls), "worst_wall_s": max(walls),
+            "cpu_s": statistics.median(cpus)}
+
+
 def _against(rows: list[dict[str, Any]], folder: Path, package: Path, job: list[str],
              repeats: int) -> None:
     """The main job with and without --plot, and a 0.1 s run animated (101 frames), by this
@@ -174,11 +202,16 @@ def _against(rows: list[dict[str, Any]], folder: Path, package: Path, job: list[
         for _ in range(repeats):
             pair["this"].append(timed(what, here, 1))
             pair["other"].append(timed(what, there, 1))
+        medians = {}
         for side, label in (("other", f"{what} [{package}]"), ("this", f"{what} [this]")):
             walls = [r["wall_s"] for r in pair[side]]
-            rows.append({"what": label, "wall_s": statistics.median(walls),
-                         "worst_wall_s": max(walls),
-                         "cpu_s": statistics.median(r["cpu_s"] for r in pair[side])})
+            medians[side] = {"what": label, "wall_s": statistics.median(walls),
+                             "worst_wall_s": max(walls),
+                             "cpu_s": statistics.median(r["cpu_s"] for r in pair[side])}
+            rows.append(medians[side])
+        medians["this"]["ratio"] = (
+            f"{medians['this']['wall_s'] / medians['other']['wall_s']:.2f}, "
+            f"{medians['this']['cpu_s'] / medians['other']['cpu_s']:.2f}")
 
 
 def _fresh_sweep(folder: Path, sweep: list[str], extra: list[str]) -> None:

@@ -9,6 +9,13 @@ from jointplay import _moved
 # Imported first (after _moved, which imports nothing heavy): in the `jointplay` program,
 # Ctrl-C while the rest imports is one line and exit 130 (see interrupts.guard_imports).
 from jointplay.common import interrupts as _interrupts  # noqa: F401
+
+# isort: split
+# Then, in `jointplay simulate ... --plot` only, the process that draws the figures starts,
+# so that it imports matplotlib while this one imports the rest (figure_process.start_early).
+from jointplay.common import figure_process as _figure_process  # noqa: F401
+
+# isort: split
 from jointplay.common.errors import (
     BuildError,
     DescriptionError,

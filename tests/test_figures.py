@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from jointplay.cli import main
+from jointplay.common import figure_process
 from jointplay.common import figures as figure_module
 from jointplay.common.figures import ORBIT_GID
 from jointplay.results.contacts import joint_contact
@@ -27,17 +28,16 @@ ORBIT_SLACK = 0.1e-6
 @pytest.fixture
 def drawn(monkeypatch: pytest.MonkeyPatch) -> list[Any]:
     """Every figure saved while the test runs, in order (the data a reader would see)."""
-    from matplotlib.figure import Figure
-
     figures: list[Any] = []
-    original = Figure.savefig
+    original = figure_module.png_bytes
 
-    def keep(self: Any, *args: Any, **kwargs: Any) -> Any:
-        figures.append(self)
-        return original(self, *args, **kwargs)
+    def keep(fig: Any, **kwargs: Any) -> bytes:
+        figures.append(fig)
+        return original(fig, **kwargs)
 
-    monkeypatch.setattr(Figure, "savefig", keep)
+    monkeypatch.setattr(figure_module, "png_bytes", keep)
     monkeypatch.setattr(figure_module, "WORKERS", 1)  # drawn in this process, not in a worker
+    monkeypatch.setattr(figure_process, "ENABLED", False)  # nor in a figure process
     return figures
 
 

@@ -25,46 +25,44 @@ over the argument helpers they share (:mod:`jointplay.cli.args`).
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 
-from jointplay.cli import (
-    bench,
-    build,
-    cache,
-    calibrate,
-    control,
-    derive,
-    identify,
-    inspect,
-    look,
-    simulate,
-    study,
-    sweep,
-)
 from jointplay.cli.args import EXIT_BAD_INPUT, add_debug_flag, interrupted, report_error
 from jointplay.cli.summary import contact_lines, summary
 from jointplay.common import interrupts
 
+# Each command's module (``jointplay.cli.NAME``, with its ``register``), in the order of the
+# listing. A command imports its own module only: the others are named, not imported (the
+# control commands' modules alone took 0.12 s to import before a simulation could start).
+COMMANDS = {"build": "build", "derive": "derive", "inspect": "inspect",
+            "simulate": "simulate", "plot": "look", "compare": "look", "identify": "identify",
+            "calibrate": "calibrate", "control": "control", "control-study": "study",
+            "sweep": "sweep", "bench": "bench", "cache": "cache"}
 
-def make_parser() -> argparse.ArgumentParser:
+
+def make_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The parser of every command; with ``command`` (one of :data:`COMMANDS`), that
+    command's in full and the others by name only, so that only its module is imported."""
     parser = argparse.ArgumentParser(
         prog="jointplay",
         description="Dynamics of planar serial robots with revolute-joint clearance.")
     parser.add_argument("--version", action="version", version=f"jointplay {_version()}")
     sub = parser.add_subparsers(dest="command", required=True)
-    build.register(sub)
-    derive.register(sub)
-    inspect.register(sub)
-    simulate.register(sub)
-    look.register(sub)
-    identify.register(sub)
-    calibrate.register(sub)
-    control.register(sub)
-    study.register(sub)
-    sweep.register(sub)
-    bench.register(sub)
-    cache.register(sub)
+    chosen = COMMANDS.get(command or "")
+    for module in dict.fromkeys(COMMANDS.values()):
+        if chosen is None or module == chosen:
+            importlib.import_module(f"jointplay.cli.{module}").register(sub)
+        else:
+            for name in (n for n, m in COMMANDS.items() if m == module):
+                sub.add_parser(name)
     return parser
+
+
+def _command_word(argv: list[str]) -> str | None:
+    """The command a command line names: its first word that is not an option (the
+    program's own options take no value)."""
+    return next((word for word in argv if not word.startswith("-")), None)
 
 
 def _version() -> str:
@@ -74,7 +72,7 @@ def _version() -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = make_parser()
+    parser = make_parser(_command_word(sys.argv[1:] if argv is None else argv))
     add_debug_flag(parser)
     args = parser.parse_args(argv)
     with interrupts.installed():

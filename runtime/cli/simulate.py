@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import time
 from pathlib import Path
@@ -22,6 +23,7 @@ from jointplay.common.errors import DescriptionError, SimulationError
 from jointplay.common.hints import did_you_mean
 
 if TYPE_CHECKING:
+    from jointplay.common.figure_process import FigureProcess
     from jointplay.common.files import OutputPlan
     from jointplay.results.records import SimulationResult
     from jointplay.scene.definition import Scene
@@ -87,15 +89,17 @@ def cmd_simulate(args: argparse.Namespace) -> int:
                                "(run.rtol, run.atol or run.step): no tighter run can check "
                                "its accuracy; drop --verify")
     quiet = args.quiet
-    t0 = time.perf_counter()
-    model = load_scene_model(scene)
-    if not quiet:
-        print(f"scene {scene.name}: model {model.name} ready in "
-              f"{time.perf_counter() - t0:.2f} s ({', '.join(model.coordinates)})")
-    with warn_plausibility():
-        result = simulate(scene, model=model, compare_ideal=args.compare_ideal, quiet=quiet)
-    result = _checked(result, scene, model, args.verify, quiet)
-    written = _write(result, args, plan, quiet)
+    with _figure_process(args) as figures:
+        t0 = time.perf_counter()
+        model = load_scene_model(scene)
+        if not quiet:
+            print(f"scene {scene.name}: model {model.name} ready in "
+                  f"{time.perf_counter() - t0:.2f} s ({', '.join(model.coordinates)})")
+        with warn_plausibility():
+            result = simulate(scene, model=model, compare_ideal=args.compare_ideal,
+                              quiet=quiet)
+        result = _checked(result, scene, model, args.verify, quiet)
+        written = _write(result, args, plan, quiet, figures)
     if not quiet:
         print(summary(result))
         for path in written:
@@ -220,20 +224,42 @@ def _check_outputs(args: argparse.Namespace, scene: Scene) -> OutputPlan:
     return plan
 
 
+def _figure_process(args: argparse.Namespace) -> contextlib.AbstractContextManager[Any]:
+    """With ``--plot``, a process that imports matplotlib while this one simulates and then
+    draws the figures while this one writes the other files (killed on leaving the block);
+    otherwise, or where it cannot help (one CPU), nothing."""
+    if args.plot:
+        from jointplay.common import figure_process
+
+        if figure_process.wanted():
+            return figure_process.claim()
+    return contextlib.nullcontext()
+
+
 def _write(result: SimulationResult, args: argparse.Namespace, plan: OutputPlan,
-           quiet: bool) -> list[str]:
+           quiet: bool, figures: FigureProcess | None = None) -> list[str]:
     """Write the files asked for, all or none (see
-    :func:`~jointplay.common.files.all_or_nothing`); their paths."""
+    :func:`~jointplay.common.files.all_or_nothing`); their paths. ``figures``: the process
+    that draws the figures."""
     from jointplay.common.files import all_or_nothing, make_folder
 
     with all_or_nothing(plan):
         if args.plot:
             make_folder(args.plot, "--plot")
-        return _write_each(result, args, quiet)
+        return _write_each(result, args, quiet, figures)
 
 
-def _write_each(result: SimulationResult, args: argparse.Namespace, quiet: bool) -> list[str]:
+def _write_each(result: SimulationResult, args: argparse.Namespace, quiet: bool,
+                figures: FigureProcess | None) -> list[str]:
     written = []
+    pending = None
+    if args.plot:  # handed out first: the figures are drawn while the files are written
+        from jointplay.common.figure_process import draw
+        from jointplay.results.plots import figure_jobs
+
+        jobs = figure_jobs(result, args.plot)
+        if figures is not None:
+            pending = figures.submit(jobs)
     if args.out:
         from jointplay.results.write import write_hdf5
 
@@ -244,9 +270,8 @@ def _write_each(result: SimulationResult, args: argparse.Namespace, quiet: bool)
 
         written += [str(p) for p in write_csv(result, args.csv)]
     if args.plot:
-        from jointplay.results.plots import plot_result
-
-        written += [str(p) for p in plot_result(result, args.plot)]
+        drawn = pending.collect() if pending is not None else draw(jobs, None)
+        written += [str(p) for p in drawn]
     if args.animate:
         from jointplay.results.animate import animate_result
 

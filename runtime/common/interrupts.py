@@ -119,6 +119,12 @@ def _record_only(signum: int, frame: FrameType | None) -> None:
     _state["interrupted"] = 1
 
 
+def is_program() -> bool:
+    """Whether this process is the ``jointplay`` command, not a program that imports
+    jointplay."""
+    return _is_program()
+
+
 def _is_program() -> bool:
     """Whether this process is the ``jointplay`` command (its script, or ``python -m
     jointplay.cli``), not a program that imports jointplay."""

@@ -14,11 +14,13 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.figures import ORBIT_GID, FigureJob, Margins, draw_all, figure, save
+from jointplay.common.figures import ORBIT_GID, FigureJob, Margins, figure, save
 from jointplay.results.records import Impacts, SimulationResult
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
+
+    from jointplay.common.figure_process import FigureProcess
 
 _XY = (("x", "C0"), ("y", "C3"))
 # Titles are set at y=1.0: placed there directly, not moved above whatever the axes draw
@@ -26,14 +28,25 @@ _XY = (("x", "C0"), ("y", "C3"))
 _PREFIXES = ((1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n"))
 
 
-def plot_result(result: SimulationResult, folder: str | Path) -> list[Path]:
+def plot_result(result: SimulationResult, folder: str | Path, *,
+                process: FigureProcess | None = None) -> list[Path]:
     """Write every figure the run's effects call for into ``folder`` (created if missing);
     return the paths.
 
     Always the end effector and the energy; with clearance joints, each journal's orbit (from
     the dense output), the contact forces, each joint's contact timeline and the eccentricity
     ratio; with a lubricant, the film force; with wear, the worn depth around each surface.
+    ``process``: a started :class:`~jointplay.common.figure_process.FigureProcess` to draw
+    them in (else they are drawn here).
     """
+    from jointplay.common.figure_process import draw
+
+    return draw(figure_jobs(result, folder), process)
+
+
+def figure_jobs(result: SimulationResult, folder: str | Path) -> list[FigureJob]:
+    """The jobs of :func:`plot_result`, each drawing and saving one figure into ``folder``
+    (created here if missing), the costliest first."""
     from jointplay.results.derived import dense_eccentricity, is_lubricated
 
     folder = Path(folder)
@@ -61,7 +74,7 @@ def plot_result(result: SimulationResult, folder: str | Path) -> list[Path]:
 
         jobs.append(partial(plot_wear, result.wear, folder / "wear.png",
                             f"{result.scene_name}: Archard wear over {result.t[-1]:g} s"))
-    return draw_all(jobs)
+    return jobs
 
 
 def _scale(values: np.ndarray) -> tuple[float, str]:
@@ -98,67 +111,69 @@ def _limits(values: np.ndarray, pad: float = 0.08, clip: float = 0.0) -> tuple[f
 
 def plot_end_effector(result: SimulationResult, path: Path) -> Path:
     """End-effector position (absolute, in the base frame), velocity and acceleration; with an
-    ideal run, the error of each too.
+    ideal run, the error of each beside it. The panels share the time axis.
 
     When the run begins with a release transient (journals released inside their clearance:
-    an impact burst, or a film taking up the load), its accelerations dwarf the rest; a last
-    row then shows the acceleration after it
-    (:func:`jointplay.results.derived.release_transient_end`) on its own scale.
+    an impact burst, or a film taking up the load,
+    :func:`jointplay.results.derived.release_transient_end`), its accelerations dwarf the
+    rest: the acceleration panels are then scaled to the samples after it, the transient is
+    shaded, and the title gives its largest sample, which lies off that scale.
     """
     from jointplay.results.derived import release_transient_end
 
     ideal = result.ideal
     transient = release_transient_end(result)
-    after, rule = transient if transient is not None else (None, "")
-    rows: list[tuple[str, str, str, float | None]] = [
-        ("position", "tip_position", "m", None), ("velocity", "tip_velocity", "m/s", None),
-        ("acceleration", "tip_acceleration", "m/s²", None)]
-    if after is not None:
-        rows.append(("acceleration", "tip_acceleration", "m/s²", after))
-    fig, axes = figure(len(rows), 2 if ideal else 1, 12 if ideal else 7,
-                       3.2 * len(rows), sharex=False,
-                       margins=Margins(left=0.95, right=0.3, top=0.75, bottom=1.05,
-                                       between_rows=1.05 if after is not None else 0.85,
+    rows = (("position", "tip_position", "m"), ("velocity", "tip_velocity", "m/s"),
+            ("acceleration", "tip_acceleration", "m/s²"))
+    fig, axes = figure(len(rows), 2 if ideal else 1, 12 if ideal else 7, 10.2, sharex=True,
+                       margins=Margins(left=0.95, right=0.3, top=0.75, bottom=1.35,
+                                       between_rows=0.7 if transient else 0.45,
                                        between_cols=1.0))
-    for row, (label, name, unit, start) in enumerate(rows):
-        ax = axes[row, 0]
+    t0, t1 = float(result.t[0]), float(result.t[-1])
+    for row, (label, name, unit) in enumerate(rows):
         values = getattr(result, name)
-        shown = result.t >= start if start is not None else np.ones(result.t.shape, bool)
-        for c, (comp, color) in enumerate(_XY):
-            ax.plot(result.t, values[:, c], color=color, lw=1.4 if start is None else 0.9,
-                    label=f"{comp} (clearance)" if ideal else comp)
-        if ideal is not None:
-            for c in range(2):
-                ax.plot(ideal.t, getattr(ideal, name)[:, c], color="k", lw=0.8, ls="--",
-                        alpha=0.8, label="ideal joints" if c == 0 else None)
-        ax.set_ylabel(f"{label} [{unit}]")
-        title = f"end-effector {label}"
-        if start is not None:
-            ax.set_xlim(start, float(result.t[-1]))
-            ax.set_ylim(*_limits(values[shown], 0.3, TRANSIENT_CLIP_PERCENT))
-            title = (f"{label} after the release transient\n(t ≥ {start:.4g} s, {rule}; "
-                     f"scale: {100 - 2 * TRANSIENT_CLIP_PERCENT:g} % of samples)")
-        ax.set_title(title, fontsize="medium", y=1.0)
+        panels = [(axes[row, 0], values, "", f"end-effector {label}")]
         if ideal is not None:
             error = values - getattr(ideal, name)
-            factor, prefix = _scale(error[shown])
-            ax = axes[row, 1]
-            for c, (_, color) in enumerate(_XY):
-                ax.plot(result.t, factor * error[:, c], color=color, lw=1.0)
-            ax.axhline(0.0, color="0.5", lw=0.6)
-            ax.set_ylabel(f"error [{prefix}{unit}]")
-            ax.set_title(f"{label} error (clearance − ideal)", fontsize="medium", y=1.0)
-            if start is not None:
-                ax.set_xlim(start, float(result.t[-1]))
-                ax.set_ylim(*_limits(factor * error[shown], 0.3, TRANSIENT_CLIP_PERCENT))
-        if start is None:
-            ax.set_xlim(float(result.t[0]), float(result.t[-1]))
-    for ax in axes.ravel():
-        ax.set_xlabel("time [s]")
-        ax.grid(True, alpha=0.3)
+            factor, prefix = _scale(error)
+            panels.append((axes[row, 1], factor * error, prefix,
+                           f"{label} error (clearance − ideal)"))
+        for column, (ax, shown, prefix, title) in enumerate(panels):
+            for c, (comp, color) in enumerate(_XY):
+                ax.plot(result.t, shown[:, c], color=color, lw=1.4 if column == 0 else 1.0,
+                        label=(f"{comp} (clearance)" if ideal else comp) if column == 0
+                        else None)
+            if column == 0 and ideal is not None:
+                for c in range(2):
+                    ax.plot(ideal.t, getattr(ideal, name)[:, c], color="k", lw=0.8, ls="--",
+                            alpha=0.8, label="ideal joints" if c == 0 else None)
+            if column == 1:
+                ax.axhline(0.0, color="0.5", lw=0.6)
+            if label == "acceleration" and transient is not None:
+                title = _off_scale(ax, result.t, shown, transient, f"{prefix}{unit}", title)
+            ax.set_ylabel(f"{label} [{prefix}{unit}]" if column == 0
+                          else f"error [{prefix}{unit}]")
+            ax.set_title(title, fontsize="medium", y=1.0)
+            ax.set_xlim(t0, t1)
+            _time_axis(ax)
     fig.suptitle(f"{result.scene_name}: end-effector response")
-    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center", ncols=3)
+    fig.legend(*_legend_entries(axes), loc="outside lower center", ncols=2)
     return save(fig, path)
+
+
+def _off_scale(ax: Axes, t: np.ndarray, values: np.ndarray, transient: tuple[float, str],
+               unit: str, title: str) -> str:
+    """Scale ``ax`` to the samples after the release transient, shade the transient, and
+    return ``title`` with the transient's largest sample (off that scale) added."""
+    end, rule = transient
+    after = t >= end
+    ax.set_ylim(*_limits(values[after], 0.3, TRANSIENT_CLIP_PERCENT))
+    ax.axvspan(float(t[0]), end, color="0.87", lw=0, zorder=0,
+               label=f"release transient, to {end:.4g} s ({rule});\nacceleration scaled to "
+                     f"{100 - 2 * TRANSIENT_CLIP_PERCENT:g} % of the samples after it")
+    during = np.abs(values[~after])
+    peak = float(np.max(during)) if during.size else 0.0
+    return f"{title}\ntransient (shaded) off scale: largest sample {peak:.4g} {unit}"
 
 
 def impact_positions(result: SimulationResult, k: int) -> np.ndarray:
@@ -197,8 +212,8 @@ def plot_orbit(result: SimulationResult, k: int, path: Path,
     ax.set_aspect("equal")
     ax.axhline(0.0, color="0.8", lw=0.6, zorder=0)
     ax.axvline(0.0, color="0.8", lw=0.6, zorder=0)
-    ax.set_xlabel("eccentricity $e_x$ [µm]")
-    ax.set_ylabel("eccentricity $e_y$ [µm]")
+    ax.set_xlabel("eccentricity, x [µm]")
+    ax.set_ylabel("eccentricity, y [µm]")
     ax.set_title(f"{result.scene_name}: journal orbit, joint {joint}", y=1.0)
     ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
     return save(fig, path)
@@ -225,9 +240,9 @@ def plot_contact_force(result: SimulationResult, path: Path) -> Path:
         ax: Any = axes[k, 0]
         drawn = [result.normal_force[:, k], result.friction_force[:, k]]
         ax.plot(result.t, result.normal_force[:, k], color="C0", lw=1.2,
-                label=f"dry normal $F_n$ ({sampled})")
+                label=f"dry normal force ({sampled})")
         ax.plot(result.t, result.friction_force[:, k], color="C1", lw=0.7,
-                label="dry friction $F_t$ (output samples)")
+                label="dry friction force (output samples)")
         if film is not None:
             ax.plot(result.t, film[:, k], color="C2", lw=1.0, label="film |$F_{film}$|")
             drawn.append(film[:, k])
@@ -237,7 +252,7 @@ def plot_contact_force(result: SimulationResult, path: Path) -> Path:
         if located.any():
             ax.plot(rows.peak_force_time[located], rows.peak_force[located], "v", color="C3",
                     ms=5, mec="k", mew=0.4, zorder=4,
-                    label="located peak $F_n$ of each phase (dense output)")
+                    label="located peak normal force of each phase (dense output)")
             drawn.append(rows.peak_force[located])
             top = int(np.argmax(np.where(located, rows.peak_force, -np.inf)))
             title += (f"; largest located peak {rows.peak_force[top]:.4g} N at "
