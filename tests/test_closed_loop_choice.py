@@ -53,6 +53,11 @@ def _stand_in(monkeypatch: pytest.MonkeyPatch, base: Narx, error: Any) -> list[A
     import jointplay.neural.control.imc as imc
     import jointplay.neural.study.comparison as comparison
 
+    # Modules that the choice imports on first use bind compare by name: imported now, with
+    # the real one, they keep it after this test (else a later test would get the stand-in).
+    import jointplay.neural.study.control_run
+    import jointplay.neural.study.runs  # noqa: F401
+
     calls: list[Any] = []
 
     def compare(scene: Any, model: Narx, settings: Any, **kw: Any) -> Any:
