@@ -68,17 +68,19 @@ def starts_around(free: FreeParameters, count: int, spread: float, seed: int) ->
 
 
 def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np.ndarray,
-                      max_evaluations: int, scan: Scan | None = None) -> Optimum:
+                      max_evaluations: int, scan: Scan | None = None,
+                      leading: int = 1) -> Optimum:
     """The best optimum over ``starts`` (then along the scan of the weakest direction, when
     asked and the fit does not yet explain the data); with ``sigma`` None each column's noise
-    is estimated from the residuals of the best fit and the fit polished with it."""
+    is estimated from the residuals of the best fit and the fit polished with it. The first
+    ``leading`` starts are tried first, in order, the rest (a multi-start's) last."""
     stated = sigma is not None
     weights: np.ndarray = sigma if sigma is not None else np.ones(
         len(predictor.measured.columns))
-    best, record = multi_start(predictor, weights, starts[:1], max_evaluations,
+    best, record = multi_start(predictor, weights, starts[:leading], max_evaluations,
                                 stop_early=stated)
     exchanged = exchanged_clearances(predictor.free.names, best)
-    if len(exchanged) and not (stated and _explains(record[-1], predictor)):
+    if len(exchanged) and not (stated and _explains(min(record, key=_chi2), predictor)):
         more_best, more = multi_start(predictor, weights, np.vstack([best, exchanged]),
                                        max_evaluations, stop_early=stated)
         record += more[1:]
@@ -90,8 +92,9 @@ def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np
                                        max_evaluations, stop_early=stated)
         record += more[1:]
         best = more_best
-    if len(starts) > 1 and not (stated and _explains(min(record, key=_chi2), predictor)):
-        more_best, more = multi_start(predictor, weights, np.vstack([best, starts[1:]]),
+    if len(starts) > leading and not (stated and _explains(min(record, key=_chi2),
+                                                           predictor)):
+        more_best, more = multi_start(predictor, weights, np.vstack([best, starts[leading:]]),
                                        max_evaluations, stop_early=stated)
         record += more[1:]
         best = more_best
