@@ -257,6 +257,8 @@ def test_a_fit_that_does_not_explain_the_data_claims_nothing() -> None:
     (["--starts", "0"], "--starts: must be >= 1"),
     (["--horizon-growth", "1"], "--horizon-growth: must be > 1"),
     (["--horizon-first", "-0.01"], "--horizon-first: must be >= 0"),
+    (["--grid-points", "2"], "--grid-points: must be >= 3"),
+    (["--grid-window", "-1"], "--grid-window: must be >= 0"),
 ])
 def test_bad_flags_exit_2(tmp_path: Path, short_scene: Path,
                           capsys: pytest.CaptureFixture[str], flags: list[str],
@@ -343,16 +345,22 @@ def test_grid_finds_the_true_valley_of_the_clearances() -> None:
     assert abs(best[1] - truth["joint3.clearance"]) <= spacing
     assert best[2] == truth["friction.mu"]
     assert list(found.chi2) == sorted(found.chi2)
+    # the same grid on two forked processes: the same numbers
+    again = grid_candidates(predictor, np.array([NOISE, NOISE]), free.start,
+                            Grid(0.02, 11, 0.5, 3, 100.0), workers=2)
+    assert again is not None and again.simulations == 121
+    assert np.array_equal(again.candidates, found.candidates) and again.chi2 == found.chi2
 
 
 def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
-    """Paper scene, 0.4 s of tip position with 1 µm of noise (seed 3), truth c2 = 23.9 µm,
-    c3 = 44.0 µm, mu = 0.071, calibrated from the scene's values (30 µm, 30 µm, 0.05) with
-    the default global stage: the friction first, the grid, several tracks through the
-    windows, the lines at 0.32 s. On 2 s of this truth the local fits alone ended at
-    +115 % / -58 %. Within 0.5 % each, explained (chi² within 5 sigma), intervals holding
-    the truth."""
-    scene = jp.default_scene().with_run(t_end=0.4)
+    """Paper scene, 2 s of tip position at 1 ms with 1 µm of noise (seed 3), truth
+    c2 = 23.9 µm, c3 = 44.0 µm, mu = 0.071 (benchmark draw 3), calibrated from the scene's
+    values (30 µm, 30 µm, 0.05) with the default global stage: the friction first, the
+    grid, several tracks through the windows, the lines at 0.32 s. The local fits alone
+    had ended at +115 % / -58 % here. Each estimate within 0.2 % (goal: 2 % for the
+    clearances, 5 % for the friction), the fit explaining the data (chi² within 5 sigma of
+    its dof), each interval holding the truth, one local fit on the whole record."""
+    scene = jp.default_scene()
     truth = {"joint2.clearance": 23.949e-6, "joint3.clearance": 44.009e-6,
              "friction.mu": 0.07099}
     exact = jp.simulate(scene.with_run(rtol=2e-10, atol=3e-11), parameters=truth)
@@ -363,9 +371,9 @@ def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
                        options=CalibrationOptions(profile_points=0))
     assert result.grid is not None and result.grid.simulations == 256
     assert max(s.track for s in result.stages) >= 1  # more than one track was carried
-    assert result.fit_explains_data
+    assert result.fit_explains_data and len(result.starts) == 1
     for name, value in truth.items():
         estimate = result.estimates[name]
-        assert abs(estimate.value - value) <= 5e-3 * value, name
-        assert estimate.low95 <= value <= estimate.high95, name
+        assert abs(estimate.value - value) <= 2e-3 * value, name
+        assert estimate.low95 <= value <= estimate.high95 and estimate.determined, name
     assert result.to_dict()["grid"]["axes"] == ["joint2.clearance", "joint3.clearance"]

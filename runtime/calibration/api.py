@@ -54,7 +54,8 @@ class CalibrationOptions:
     the fit's tolerances times ``window_looser`` (as are the runs on every window shorter than
     the record), whose ``grid_candidates`` lowest local minima
     each start a track of the continuation, from ``grid_window`` on (0: no grid; the
-    continuation starts at ``horizon_first`` from the start)."""
+    continuation starts at ``horizon_first`` from the start). ``workers``: processes for the
+    grid's runs, the tracks' fits and the lines' runs (the results do not depend on it)."""
 
     tighten: float = 1000.0
     starts: int = 6
@@ -73,6 +74,7 @@ class CalibrationOptions:
     valley_window: float = 0.32
     valley_points: int = 81
     valley_keep: int = 3
+    workers: int = 2
 
     def __post_init__(self) -> None:
         checks = (("tighten", self.tighten >= 1, "must be >= 1"),
@@ -87,6 +89,7 @@ class CalibrationOptions:
                   ("grid_points", self.grid_points >= 3, "must be >= 3"),
                   ("grid_candidates", self.grid_candidates >= 1, "must be >= 1"),
                   ("window_looser", self.window_looser >= 1, "must be >= 1"),
+                  ("workers", self.workers >= 1, "must be >= 1"),
                   ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
                   ("max_evaluations", self.max_evaluations >= 1, "must be >= 1"),
                   ("profile_points", self.profile_points == 0 or self.profile_points >= 3,
@@ -261,7 +264,7 @@ def run(problem: Problem) -> CalibrationResult:
             stage_runs += runs
             grid = grid_candidates(predictor, weights, centre, Grid(
                 opts.grid_window, opts.grid_points, opts.spread, opts.grid_candidates,
-                opts.window_looser))
+                opts.window_looser), opts.workers)
         valley = None
         if grid is not None and len(grid.candidates):
             tracks, first = grid.candidates, grid.window_end
@@ -272,7 +275,8 @@ def run(problem: Problem) -> CalibrationResult:
                                     grid_scale(problem.free, centre, grid, opts.spread))
         survivors, stages, runs = continuation(
             predictor, weights, tracks, starts, problem.sigma is not None,
-            opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser)
+            opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser,
+            opts.workers)
         stage_runs += runs
         starts = np.vstack([survivors, starts[1:]])
     leading = len(starts) - (opts.starts - 1)
@@ -336,6 +340,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
                   "grid_points": problem.options.grid_points,
                   "grid_candidates": problem.options.grid_candidates,
                   "window_looser": problem.options.window_looser,
+                  "workers": problem.options.workers,
                   "profile": "others fixed at their estimates"},
         fit_explains_data=explains, profiles=profiles, stages=stages, grid=grid)
 

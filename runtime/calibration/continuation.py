@@ -26,7 +26,8 @@ import numpy as np
 from jointplay.calibration.fit import CHI2_SIGMAS, multi_start
 from jointplay.calibration.measured import Measured
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import Predictor, TrialFailed, whitened
+from jointplay.calibration.predict import Predictor, TrialFailed, chi2_at, whitened
+from jointplay.calibration.workers import chunks, parallel_map
 from jointplay.common.errors import SimulationError
 from jointplay.scene.definition import Scene
 
@@ -111,8 +112,8 @@ class ValleyScan:
 
 def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
                  alternatives: np.ndarray, stated: bool, max_evaluations: int, first: float,
-                 growth: float, valley: ValleyScan | None = None, looser: float = 1.0
-                 ) -> tuple[np.ndarray, list[Stage], int]:
+                 growth: float, valley: ValleyScan | None = None, looser: float = 1.0,
+                 workers: int = 1) -> tuple[np.ndarray, list[Stage], int]:
     """The estimates after the windows shorter than the record (the surviving tracks, best
     first), the stages, and the runs they took.
 
@@ -156,7 +157,7 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
                                        np.asarray(valley.scale))
             runs += more
             found, scan_runs = _valley_minima(predictor, stage_scene, part, weights, alive[0],
-                                              directions, valley)
+                                              directions, valley, workers)
             runs += scan_runs
             if found:  # the line passes through the best track's estimate: it replaces it
                 first_label = max(labels) + 1
@@ -166,21 +167,21 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
                       else np.zeros(predictor.free.size, dtype=bool))
         fitted_tracks: list[tuple[int, np.ndarray, float]] = []
         unseen: list[tuple[int, np.ndarray, float]] = []
-        for label, x in zip(labels, alive, strict=True):
-            starts = alternatives if k == 0 and len(alive) == 1 else x[None, :]
-            fitted, stage_runs = _stage_fit(predictor, stage_scene, part, weights,
-                                            np.vstack([x, starts[1:]]),
-                                            min(max_evaluations, WINDOW_EVALUATIONS),
-                                            stated, float(end), label, held_first)
+        jobs = [(x, alternatives if k == 0 and len(alive) == 1 else x[None, :], label)
+                for x, label in zip(alive, labels, strict=True)]
+        for i, (fitted, stage_runs) in enumerate(_fit_tracks(
+                predictor, stage_scene, part, weights, jobs,
+                min(max_evaluations, WINDOW_EVALUATIONS), stated, float(end), held_first,
+                workers)):
             runs += stage_runs
             if fitted is None:
                 continue  # every run of this track stopped: the track ends
             stage, x_next = fitted
             if stage is None:
-                unseen.append((label, x, math.inf))
+                unseen.append((labels[i], alive[i], math.inf))
             else:
                 stages.append(stage)
-                fitted_tracks.append((label, x_next, stage.chi2))
+                fitted_tracks.append((labels[i], x_next, stage.chi2))
         if not fitted_tracks and not unseen:
             break
         kept = _surviving(fitted_tracks, dof, predictor.free) + unseen
@@ -217,28 +218,41 @@ def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: n
 
 def _valley_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
                    weights: np.ndarray, x: np.ndarray, directions: list[np.ndarray],
-                   valley: ValleyScan) -> tuple[list[np.ndarray], int]:
+                   valley: ValleyScan, workers: int) -> tuple[list[np.ndarray], int]:
     """The ``valley.keep`` lowest local minima of the window's chi² along the lines through
     ``x`` (one per direction), and the runs."""
     free = predictor.free
     probe = Predictor(stage_scene, predictor.model, free, part, compiled=predictor.compiled)
     steps = np.linspace(-valley.reach, valley.reach, valley.points)
+    lines = [[np.clip(x + s * direction, free.lower, free.upper) for s in steps]
+             for direction in directions]
+    points = [p for line in lines for p in line]
+    pieces = chunks(len(points), workers)
+    done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
+                        len(pieces), workers)
+    every = [value for values, _ in done for value in values]
     found: list[tuple[float, np.ndarray]] = []
-    for direction in directions:
-        points = [np.clip(x + s * direction, free.lower, free.upper) for s in steps]
-        chi2 = np.full(steps.size, np.inf)
-        for i, point in enumerate(points):
-            try:
-                residual = whitened(probe.outputs(point, with_jacobian=False) - part.values,
-                                    weights)
-            except TrialFailed:
-                continue
-            chi2[i] = float(np.sum(residual**2))
+    for n, line in enumerate(lines):
+        chi2 = np.array(every[n * steps.size:(n + 1) * steps.size])
         padded = np.concatenate([[np.inf], chi2, [np.inf]])
-        found += [(chi2[i], points[i]) for i in range(steps.size)
+        found += [(chi2[i], line[i]) for i in range(steps.size)
                   if np.isfinite(chi2[i]) and chi2[i] <= padded[i] and chi2[i] <= padded[i + 2]]
     found.sort(key=lambda f: f[0])
-    return [point for _, point in found[:valley.keep]], probe.counter.simulations
+    return [point for _, point in found[:valley.keep]], sum(r for _, r in done)
+
+
+def _fit_tracks(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
+                jobs: list[tuple[np.ndarray, np.ndarray, int]], max_evaluations: int,
+                stated: bool, end: float, held_first: np.ndarray, workers: int
+                ) -> list[tuple[tuple[Stage | None, np.ndarray] | None, int]]:
+    """Each track's fit over one window (``jobs``: its estimate, its further starts, its
+    label), on up to ``workers`` processes."""
+    def fit(i: int) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
+        x, starts, label = jobs[i]
+        return _stage_fit(predictor, stage_scene, part, weights, np.vstack([x, starts[1:]]),
+                          max_evaluations, stated, end, label, held_first)
+
+    return parallel_map(fit, len(jobs), workers)
 
 
 def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,

@@ -22,7 +22,8 @@ import numpy as np
 from jointplay.calibration.continuation import _holding, loosened, window
 from jointplay.calibration.fit import multi_start
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import Predictor, TrialFailed, whitened
+from jointplay.calibration.predict import Predictor, chi2_at
+from jointplay.calibration.workers import chunks, parallel_map
 from jointplay.common.errors import SimulationError
 
 CLEARANCE_NAME = re.compile(r"joint\d+\.clearance")
@@ -87,7 +88,7 @@ def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
 
 
 def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
-                    grid: Grid) -> GridResult | None:
+                    grid: Grid, workers: int = 1) -> GridResult | None:
     """The lowest local minima of the window's chi² over a grid of the free clearances,
     the other free parameters at ``start``; None where no clearance is free or the record
     is no longer than the window."""
@@ -108,16 +109,21 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
                       grid.looser)
     probe = Predictor(coarse, predictor.model, free, part, compiled=predictor.compiled)
     shape = (per_axis,) * len(axes)
-    chi2 = np.full(shape, np.inf)
-    for index in itertools.product(range(per_axis), repeat=len(axes)):
+    indices = list(itertools.product(range(per_axis), repeat=len(axes)))
+    points = []
+    for index in indices:
         x = start.copy()
         for a, k in enumerate(axes):
             x[k] = values[a][index[a]]
-        try:
-            residual = whitened(probe.outputs(x, with_jacobian=False) - part.values, weights)
-        except TrialFailed:
-            continue
-        chi2[index] = float(np.sum(residual**2))
+        points.append(x)
+    pieces = chunks(len(points), workers)
+    done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
+                        len(pieces), workers)
+    chi2 = np.full(shape, np.inf)
+    for piece, (values_chi2, _) in zip(pieces, done, strict=True):
+        for j, value in zip(piece, values_chi2, strict=True):
+            chi2[indices[j]] = value
+    runs = sum(r for _, r in done)
     minima = _local_minima(chi2)
     minima.sort(key=lambda index: chi2[index])
     chosen = minima[:grid.candidates]
@@ -130,7 +136,7 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
     return GridResult(np.array(candidates).reshape(-1, free.size),
                       tuple(float(chi2[i]) for i in chosen),
                       tuple(free.names[k] for k in axes), per_axis, float(part.t[-1]),
-                      probe.counter.simulations)
+                      runs)
 
 
 def grid_scale(free: FreeParameters, start: np.ndarray, grid: GridResult,
