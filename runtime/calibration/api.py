@@ -281,7 +281,7 @@ def run(problem: Problem) -> CalibrationResult:
         starts = np.vstack([survivors, starts[1:]])
     leading = len(starts) - (opts.starts - 1)
     optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,
-                                leading=leading)
+                                leading=leading, workers=opts.workers)
     if stages:
         whole = min(optimum.starts[:leading], key=lambda s: s.chi2)
         stages.append(Stage(float(problem.measured.t[-1]), int(problem.measured.t.size),

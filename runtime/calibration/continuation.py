@@ -125,10 +125,11 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     stops ends the continuation at the previous estimates (the full-record fit and its
     fallbacks follow). The windows' runs use the fit's tolerances times ``looser`` (each
     window's fit only has to land in the right valley; the whole-record fit, at the fit's
-    tolerances, sets the estimate), and each window's fit at most WINDOW_EVALUATIONS
-    evaluations. With ``valley``, the stage at its window first adds the lowest minima
-    along a line through the best estimate as tracks: over windows of a few tenths of a
-    second the valleys along the weakest direction are a fraction of a micrometre wide, and
+    tolerances, sets the estimate), and each window's fit before the line scan at most
+    WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first adds the
+    lowest minima along lines through the best estimate as tracks (and so does each later
+    window, its lines reaching ``growth`` times less far): over windows of a few
+    tenths of a second the valleys along c2 - c3 are a fraction of a micrometre wide, and
     the tracks carried from the short windows can each sit a valley or two from the true
     one, which only the longer windows tell apart by their chi². Before the scan's window
     the parameters the lines do not move (fitted over the whole record before) are held: a
@@ -145,19 +146,25 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     stages: list[Stage] = []
     runs = 0
     scanned = valley is None
+    scans = 0
     for k, end in enumerate(ends):
         part = window(measured, end)
         t_end = min(scene.run.t_end, math.ceil(end / step - 1e-9) * step)
         stage_scene = loosened(scene.with_run(t_end=t_end), looser)
         dof = max(part.size - predictor.free.size, 1)
-        if valley is not None and not scanned and end >= valley.window * (1 - 1e-9) \
-                and alive:
+        if valley is not None and end >= valley.window * (1 - 1e-9) and alive:
             scanned = True
             directions, more = _rugged(predictor, stage_scene, part, weights, alive[0],
                                        np.asarray(valley.scale))
             runs += more
+            # each later window's lines reach less far (its valleys are narrower, and the
+            # tracks nearer them) with the same number of runs: finer steps
+            reach = valley.reach / growth**scans
+            scans += 1
             found, scan_runs = _valley_minima(predictor, stage_scene, part, weights, alive[0],
-                                              directions, valley, workers)
+                                              directions,
+                                              dataclasses.replace(valley, reach=reach),
+                                              workers)
             runs += scan_runs
             if found:  # the line passes through the best track's estimate: it replaces it
                 first_label = max(labels) + 1
@@ -171,8 +178,8 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
                 for x, label in zip(alive, labels, strict=True)]
         for i, (fitted, stage_runs) in enumerate(_fit_tracks(
                 predictor, stage_scene, part, weights, jobs,
-                min(max_evaluations, WINDOW_EVALUATIONS), stated, float(end), held_first,
-                workers)):
+                max_evaluations if scanned else min(max_evaluations, WINDOW_EVALUATIONS),
+                stated, float(end), held_first, workers)):
             runs += stage_runs
             if fitted is None:
                 continue  # every run of this track stopped: the track ends
@@ -291,7 +298,9 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
 
 
 WINDOW_EVALUATIONS = 20
-"""Least-squares evaluations at most per window shorter than the record."""
+"""Least-squares evaluations at most per window before the line scan (those windows only
+have to bring each track near its valley; the later ones, whose valleys are a fraction of a
+micrometre wide, get the fit's full count)."""
 
 SAME_ESTIMATE = 1e-4
 """Two tracks whose estimates differ by less than this fraction of each parameter's value
