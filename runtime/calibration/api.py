@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.continuation import Stage, continuation
+from jointplay.calibration.continuation import Stage, ValleyScan, continuation
 from jointplay.calibration.fit import (
     CHI2_SIGMAS,
     Scan,
@@ -19,6 +19,13 @@ from jointplay.calibration.fit import (
     residual_statistics,
     starts_around,
     timed,
+)
+from jointplay.calibration.grid import (
+    Grid,
+    GridResult,
+    grid_candidates,
+    grid_scale,
+    others_first,
 )
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
 from jointplay.calibration.parameters import FreeParameters, free_parameters
@@ -42,7 +49,13 @@ class CalibrationOptions:
     ``horizon_growth`` each stage up to the whole record, each stage started at the last one's
     estimate (0: no continuation, the fit starts on the whole record); the starts, the
     exchanged clearances and the scan are the fallback where the whole-record fit does not
-    explain the data."""
+    explain the data. ``grid_window``: the window (s) of the global stage, a grid of
+    ``grid_points`` values of each free clearance across ±``spread`` of the start, its runs at
+    the fit's tolerances times ``window_looser`` (as are the runs on every window shorter than
+    the record), whose ``grid_candidates`` lowest local minima
+    each start a track of the continuation, from ``grid_window`` on (0: no grid; the
+    continuation starts at ``horizon_first`` from the start). ``workers``: processes for the
+    grid's runs, the tracks' fits and the lines' runs (the results do not depend on it)."""
 
     tighten: float = 1000.0
     starts: int = 6
@@ -54,6 +67,14 @@ class CalibrationOptions:
     refine: int = 3
     horizon_first: float = 0.005
     horizon_growth: float = 2.0
+    grid_window: float = 0.02
+    grid_points: int = 16
+    grid_candidates: int = 4
+    window_looser: float = 100.0
+    valley_window: float = 0.32
+    valley_points: int = 81
+    valley_keep: int = 3
+    workers: int = 2
 
     def __post_init__(self) -> None:
         checks = (("tighten", self.tighten >= 1, "must be >= 1"),
@@ -64,6 +85,11 @@ class CalibrationOptions:
                   ("horizon_first", self.horizon_first >= 0,
                    "must be >= 0 (s; 0: no continuation)"),
                   ("horizon_growth", self.horizon_growth > 1, "must be > 1"),
+                  ("grid_window", self.grid_window >= 0, "must be >= 0 (s; 0: no grid)"),
+                  ("grid_points", self.grid_points >= 3, "must be >= 3"),
+                  ("grid_candidates", self.grid_candidates >= 1, "must be >= 1"),
+                  ("window_looser", self.window_looser >= 1, "must be >= 1"),
+                  ("workers", self.workers >= 1, "must be >= 1"),
                   ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
                   ("max_evaluations", self.max_evaluations >= 1, "must be >= 1"),
                   ("profile_points", self.profile_points == 0 or self.profile_points >= 3,
@@ -112,6 +138,7 @@ class CalibrationResult:
     fit_explains_data: bool | None = None
     stages: tuple[Stage, ...] = ()
     profiles: dict[str, dict[str, list[float]]] = field(default_factory=dict)
+    grid: GridResult | None = None
 
     @property
     def names(self) -> list[str]:
@@ -154,8 +181,14 @@ class CalibrationResult:
                               "start": list(s.start), "end": list(s.end),
                               "chi2": number(s.chi2), "dof": s.dof,
                               "evaluations": s.evaluations, "simulations": s.simulations,
-                              "held": list(s.held), "message": s.message}
+                              "held": list(s.held), "track": s.track,
+                              "message": s.message}
                              for s in self.stages],
+            "grid": None if self.grid is None else {
+                "axes": list(self.grid.axes), "points_per_axis": self.grid.points_per_axis,
+                "window_end": self.grid.window_end, "simulations": self.grid.simulations,
+                "candidates": [list(map(float, c)) for c in self.grid.candidates],
+                "chi2": [number(v) for v in self.grid.chi2]},
             "settings": self.settings,
             "profiles": self.profiles,
         }
@@ -220,16 +253,37 @@ def run(problem: Problem) -> CalibrationResult:
     scan = Scan(opts.scan_points, opts.spread, opts.refine)
     stages: list[Stage] = []
     stage_runs = 0
+    grid = None
     if opts.horizon_first > 0:
         weights = problem.sigma if problem.sigma is not None else np.ones(
             len(problem.measured.columns))
-        first, stages, stage_runs = continuation(
-            predictor, weights, starts, problem.sigma is not None, opts.max_evaluations,
-            opts.horizon_first, opts.horizon_growth)
-        starts = np.vstack([first, starts[1:]])
-    optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan)
+        tracks, first = starts[:1], opts.horizon_first
+        if opts.grid_window > 0:
+            centre, runs = others_first(predictor, weights, starts[0], opts.window_looser,
+                                        opts.max_evaluations)
+            stage_runs += runs
+            grid = grid_candidates(predictor, weights, centre, Grid(
+                opts.grid_window, opts.grid_points, opts.spread, opts.grid_candidates,
+                opts.window_looser), opts.workers)
+        valley = None
+        if grid is not None and len(grid.candidates):
+            tracks, first = grid.candidates, grid.window_end
+            stage_runs += grid.simulations
+            if opts.valley_window > 0:
+                valley = ValleyScan(opts.valley_window, opts.valley_points, 2.0,
+                                    opts.valley_keep,
+                                    grid_scale(problem.free, centre, grid, opts.spread))
+        survivors, stages, runs = continuation(
+            predictor, weights, tracks, starts, problem.sigma is not None,
+            opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser,
+            opts.workers)
+        stage_runs += runs
+        starts = np.vstack([survivors, starts[1:]])
+    leading = len(starts) - (opts.starts - 1)
+    optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,
+                                leading=leading, workers=opts.workers)
     if stages:
-        whole = optimum.starts[0]
+        whole = min(optimum.starts[:leading], key=lambda s: s.chi2)
         stages.append(Stage(float(problem.measured.t[-1]), int(problem.measured.t.size),
                             whole.start, whole.end, whole.chi2,
                             max(problem.measured.size - problem.free.size, 1),
@@ -245,14 +299,14 @@ def run(problem: Problem) -> CalibrationResult:
     profiles = cost_profiles(predictor, optimum, spread, opts.profile_points)
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs)
+                   wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs, grid)
 
 
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
             fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
             profiles: dict[str, dict[str, list[float]]], wall: float,
             cpu: float, explains: bool | None, stages: tuple[Stage, ...] = (),
-            stage_runs: int = 0) -> CalibrationResult:
+            stage_runs: int = 0, grid: GridResult | None = None) -> CalibrationResult:
     free = problem.free
     # A fit that does not explain the data within the stated noise determines nothing: its
     # optimum may be a local one, and its intervals are not valid.
@@ -282,8 +336,13 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
                   "max_evaluations": problem.options.max_evaluations,
                   "horizon_first": problem.options.horizon_first,
                   "horizon_growth": problem.options.horizon_growth,
+                  "grid_window": problem.options.grid_window,
+                  "grid_points": problem.options.grid_points,
+                  "grid_candidates": problem.options.grid_candidates,
+                  "window_looser": problem.options.window_looser,
+                  "workers": problem.options.workers,
                   "profile": "others fixed at their estimates"},
-        fit_explains_data=explains, profiles=profiles, stages=stages)
+        fit_explains_data=explains, profiles=profiles, stages=stages, grid=grid)
 
 
 def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) -> Scene:

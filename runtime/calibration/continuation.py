@@ -18,15 +18,18 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import time
 from dataclasses import dataclass
 
 import numpy as np
 
-from jointplay.calibration.fit import multi_start
+from jointplay.calibration.fit import CHI2_SIGMAS, multi_start
 from jointplay.calibration.measured import Measured
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import Predictor, TrialFailed, whitened
+from jointplay.calibration.predict import Predictor, TrialFailed, chi2_at, whitened
+from jointplay.calibration.workers import chunks, parallel_map
 from jointplay.common.errors import SimulationError
+from jointplay.scene.definition import Scene
 
 
 @dataclass(frozen=True)
@@ -44,6 +47,8 @@ class Stage:
     simulations: int
     message: str
     held: tuple[str, ...] = ()
+    track: int = 0
+    cpu_s: float = 0.0
 
 
 HELD_RELATIVE_STD = 1.0
@@ -69,6 +74,14 @@ def horizon_windows(t: np.ndarray, columns: int, n_free: int, first: float,
     return ends
 
 
+def loosened(scene: Scene, factor: float) -> Scene:
+    """``scene`` with its integrator's tolerances times ``factor`` (where it has them)."""
+    run = scene.run
+    if factor == 1 or run.integrator not in ("bdf", "cvodes", "idas"):
+        return scene
+    return scene.with_run(rtol=run.rtol * factor, atol=run.atol * factor)
+
+
 def window(measured: Measured, end: float) -> Measured:
     """The samples of ``measured`` up to ``end``."""
     keep = measured.t <= end * (1 + 1e-9)
@@ -76,54 +89,241 @@ def window(measured: Measured, end: float) -> Measured:
                     measured.values[keep])
 
 
-def continuation(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
-                 stated: bool, max_evaluations: int, first: float, growth: float
-                 ) -> tuple[np.ndarray, list[Stage], int]:
-    """The estimate after the windows shorter than the record, the stages, and the runs
-    they took. The first window's fit starts at ``starts[0]`` and tries the other starts
-    only while its fit does not explain that window within the stated noise; each later
-    stage starts at the previous estimate. A stage whose every run stops ends the
-    continuation at the previous estimate (the full-record fit and its fallbacks follow)."""
+@dataclass(frozen=True)
+class ValleyScan:
+    """Lines of ``points`` plain runs over the first window of at least ``window`` (s),
+    through the best track's estimate along the directions the impacts make rugged,
+    reaching ``reach`` times ``scale`` (one number per free parameter: for the clearances the
+    grid's spacing) either side; its ``keep``
+    lowest local minima become tracks beside the ones carried."""
+
+    window: float
+    points: int
+    reach: float
+    keep: int
+    scale: tuple[float, ...]
+
+    @property
+    def held_before(self) -> np.ndarray:
+        """The parameters the windows shorter than the scan's hold (those the lines do not
+        move: fitted over the whole record before the grid)."""
+        return np.asarray(self.scale) == 0
+
+
+def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
+                 alternatives: np.ndarray, stated: bool, max_evaluations: int, first: float,
+                 growth: float, valley: ValleyScan | None = None, looser: float = 1.0,
+                 workers: int = 1) -> tuple[np.ndarray, list[Stage], int]:
+    """The estimates after the windows shorter than the record (the surviving tracks, best
+    first), the stages, and the runs they took.
+
+    Each row of ``tracks`` is a start carried through the windows on its own; after each
+    window a track whose chi² lies more than CHI2_SIGMAS sqrt(2 dof) above the best track's,
+    or whose estimate joins a better track's, is dropped (a longer window only sharpens the
+    difference). With a single track the first window's fit tries ``alternatives`` while
+    its fit does not explain that window within the stated noise. A stage whose every run
+    stops ends the continuation at the previous estimates (the full-record fit and its
+    fallbacks follow). The windows' runs use the fit's tolerances times ``looser`` (each
+    window's fit only has to land in the right valley; the whole-record fit, at the fit's
+    tolerances, sets the estimate), and each window's fit before the line scan at most
+    WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first adds the
+    lowest minima along lines through the best estimate as tracks (and so does each later
+    window, its lines reaching ``growth`` times less far): over windows of a few
+    tenths of a second the valleys along c2 - c3 are a fraction of a micrometre wide, and
+    the tracks carried from the short windows can each sit a valley or two from the true
+    one, which only the longer windows tell apart by their chi². Before the scan's window
+    the parameters the lines do not move (fitted over the whole record before) are held: a
+    short window sees them barely and, left free, they absorb the clearances' misfit (on the
+    paper scene the friction drifted 3 % from a value within 1 % of the truth, enough to
+    rank the true track below a wrong one at 0.16 s)."""
     measured = predictor.measured
     ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first,
                            growth)
     scene = predictor.scene
     step = scene.run.output_step
-    x = starts[0]
+    alive = [np.asarray(x, dtype=float) for x in tracks]
+    labels = list(range(len(alive)))
     stages: list[Stage] = []
     runs = 0
+    scanned = valley is None
+    scans = 0
     for k, end in enumerate(ends):
         part = window(measured, end)
         t_end = min(scene.run.t_end, math.ceil(end / step - 1e-9) * step)
-        stage_scene = scene.with_run(t_end=t_end)
-        probe = Predictor(stage_scene, predictor.model, predictor.free, part,
-                          compiled=predictor.compiled)
-        try:
-            held = _unseen(probe, weights, x)
-        except TrialFailed:
-            runs += probe.counter.simulations
+        stage_scene = loosened(scene.with_run(t_end=t_end), looser)
+        dof = max(part.size - predictor.free.size, 1)
+        if valley is not None and end >= valley.window * (1 - 1e-9) and alive:
+            scanned = True
+            directions, more = _rugged(predictor, stage_scene, part, weights, alive[0],
+                                       np.asarray(valley.scale))
+            runs += more
+            # each later window's lines reach less far (its valleys are narrower, and the
+            # tracks nearer them) with the same number of runs: finer steps
+            reach = valley.reach / growth**scans
+            scans += 1
+            found, scan_runs = _valley_minima(predictor, stage_scene, part, weights, alive[0],
+                                              directions,
+                                              dataclasses.replace(valley, reach=reach),
+                                              workers)
+            runs += scan_runs
+            if found:  # the line passes through the best track's estimate: it replaces it
+                first_label = max(labels) + 1
+                alive = found + alive[1:]
+                labels = list(range(first_label, first_label + len(found))) + labels[1:]
+        held_first = (valley.held_before if valley is not None and not scanned
+                      else np.zeros(predictor.free.size, dtype=bool))
+        fitted_tracks: list[tuple[int, np.ndarray, float]] = []
+        unseen: list[tuple[int, np.ndarray, float]] = []
+        jobs = [(x, alternatives if k == 0 and len(alive) == 1 else x[None, :], label)
+                for x, label in zip(alive, labels, strict=True)]
+        for i, (fitted, stage_runs) in enumerate(_fit_tracks(
+                predictor, stage_scene, part, weights, jobs,
+                max_evaluations if scanned else min(max_evaluations, WINDOW_EVALUATIONS),
+                stated, float(end), held_first, workers)):
+            runs += stage_runs
+            if fitted is None:
+                continue  # every run of this track stopped: the track ends
+            stage, x_next = fitted
+            if stage is None:
+                unseen.append((labels[i], alive[i], math.inf))
+            else:
+                stages.append(stage)
+                fitted_tracks.append((labels[i], x_next, stage.chi2))
+        if not fitted_tracks and not unseen:
             break
-        runs += probe.counter.simulations
-        if held.all():
+        kept = _surviving(fitted_tracks, dof, predictor.free) + unseen
+        labels = [r[0] for r in kept]
+        alive = [r[1] for r in kept]
+    return np.array(alive).reshape(-1, predictor.free.size), stages, runs
+
+
+def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
+            x: np.ndarray, scale: np.ndarray) -> tuple[list[np.ndarray], int]:
+    """The directions to scan at ``x`` among the parameters whose ``scale`` is not 0 (a step
+    of 1 moves each by at most its ``scale``): the eigenvectors of the window's scaled
+    information matrix there, all but the weakest where more than one parameter moves; and
+    the runs. Inside one valley the weakest direction is the smooth one the local fit follows
+    (on the paper scene the sum of the clearances, which only the tip's slow sag sets),
+    while the impacts make the cost rugged across the others (the difference of the
+    clearances, whose valleys a local fit cannot leave)."""
+    probe = Predictor(stage_scene, predictor.model, predictor.free, part,
+                      compiled=predictor.compiled)
+    try:
+        jac = whitened(probe.jacobian(x), weights)
+    except TrialFailed:
+        return [], probe.counter.simulations
+    moving = scale > 0
+    scaled = jac[:, moving] * scale[moving]
+    _, vectors = np.linalg.eigh(scaled.T @ scaled)
+    out = []
+    for v in vectors.T[1:] if vectors.shape[1] > 1 else vectors.T:
+        direction = np.zeros(scale.size)
+        direction[moving] = v * scale[moving]
+        out.append(direction / np.max(np.abs(direction[moving]) / scale[moving]))
+    return out, probe.counter.simulations
+
+
+def _valley_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
+                   weights: np.ndarray, x: np.ndarray, directions: list[np.ndarray],
+                   valley: ValleyScan, workers: int) -> tuple[list[np.ndarray], int]:
+    """The ``valley.keep`` lowest local minima of the window's chi² along the lines through
+    ``x`` (one per direction), and the runs."""
+    free = predictor.free
+    probe = Predictor(stage_scene, predictor.model, free, part, compiled=predictor.compiled)
+    steps = np.linspace(-valley.reach, valley.reach, valley.points)
+    lines = [[np.clip(x + s * direction, free.lower, free.upper) for s in steps]
+             for direction in directions]
+    points = [p for line in lines for p in line]
+    pieces = chunks(len(points), workers)
+    done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
+                        len(pieces), workers)
+    every = [value for values, _ in done for value in values]
+    found: list[tuple[float, np.ndarray]] = []
+    for n, line in enumerate(lines):
+        chi2 = np.array(every[n * steps.size:(n + 1) * steps.size])
+        padded = np.concatenate([[np.inf], chi2, [np.inf]])
+        found += [(chi2[i], line[i]) for i in range(steps.size)
+                  if np.isfinite(chi2[i]) and chi2[i] <= padded[i] and chi2[i] <= padded[i + 2]]
+    found.sort(key=lambda f: f[0])
+    return [point for _, point in found[:valley.keep]], sum(r for _, r in done)
+
+
+def _fit_tracks(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
+                jobs: list[tuple[np.ndarray, np.ndarray, int]], max_evaluations: int,
+                stated: bool, end: float, held_first: np.ndarray, workers: int
+                ) -> list[tuple[tuple[Stage | None, np.ndarray] | None, int]]:
+    """Each track's fit over one window (``jobs``: its estimate, its further starts, its
+    label), on up to ``workers`` processes."""
+    def fit(i: int) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
+        x, starts, label = jobs[i]
+        return _stage_fit(predictor, stage_scene, part, weights, np.vstack([x, starts[1:]]),
+                          max_evaluations, stated, end, label, held_first)
+
+    return parallel_map(fit, len(jobs), workers)
+
+
+def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
+               starts: np.ndarray, max_evaluations: int, stated: bool, end: float,
+               label: int, held_first: np.ndarray
+               ) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
+    """One track's fit over one window from ``starts[0]`` (the others tried while it does
+    not explain the window): (its stage record, or None where the window sees none of the
+    parameters, and its estimate), or None where its runs stop; and the runs."""
+    x = starts[0]
+    cpu0 = time.process_time()
+    probe = Predictor(stage_scene, predictor.model, predictor.free, part,
+                      compiled=predictor.compiled)
+    try:
+        held = _unseen(probe, weights, x) | held_first
+    except TrialFailed:
+        return None, probe.counter.simulations
+    runs = probe.counter.simulations
+    if held.all():
+        return (None, x), runs
+    stage = Predictor(stage_scene, predictor.model, _holding(predictor.free, x, held),
+                      part, compiled=predictor.compiled)
+    try:
+        x_next, record = multi_start(stage, weights, starts, max_evaluations,
+                                     stop_early=stated)
+    except SimulationError:
+        return None, runs + stage.counter.simulations
+    runs += stage.counter.simulations
+    best = min(record, key=lambda s: s.chi2)
+    names = predictor.free.names
+    return (Stage(end, int(part.t.size), best.start, tuple(x_next), best.chi2,
+                  max(part.size - predictor.free.size, 1),
+                  sum(s.evaluations for s in record), stage.counter.simulations,
+                  best.message, tuple(n for n, h in zip(names, held, strict=True) if h),
+                  label, time.process_time() - cpu0), np.asarray(x_next, dtype=float)), runs
+
+
+WINDOW_EVALUATIONS = 20
+"""Least-squares evaluations at most per window before the line scan (those windows only
+have to bring each track near its valley; the later ones, whose valleys are a fraction of a
+micrometre wide, get the fit's full count)."""
+
+SAME_ESTIMATE = 1e-4
+"""Two tracks whose estimates differ by less than this fraction of each parameter's value
+(or physical range, where the value is 0) have joined: the worse one is dropped."""
+
+
+def _surviving(results: list[tuple[int, np.ndarray, float]], dof: int,
+               free: FreeParameters) -> list[tuple[int, np.ndarray, float]]:
+    """The tracks worth carrying to the next window, best first."""
+    ordered = sorted(results, key=lambda r: r[2])
+    best = ordered[0][2] if ordered else math.inf
+    margin = CHI2_SIGMAS * math.sqrt(2 * dof)
+    kept: list[tuple[int, np.ndarray, float]] = []
+    if not ordered:
+        return kept
+    for label, x, chi2 in ordered:
+        if chi2 > best + margin:
             continue
-        stage = Predictor(stage_scene, predictor.model, _holding(predictor.free, x, held),
-                          part, compiled=predictor.compiled)
-        try:
-            x_next, record = multi_start(stage, weights, starts if k == 0 else x[None, :],
-                                         max_evaluations, stop_early=stated)
-        except SimulationError:
-            runs += stage.counter.simulations
-            break
-        runs += stage.counter.simulations
-        best = min(record, key=lambda s: s.chi2)
-        stages.append(Stage(float(end), int(part.t.size), best.start, tuple(x_next),
-                            best.chi2, max(part.size - predictor.free.size, 1),
-                            sum(s.evaluations for s in record), stage.counter.simulations,
-                            best.message,
-                            tuple(n for n, h in zip(predictor.free.names, held, strict=True)
-                                  if h)))
-        x = x_next
-    return np.asarray(x, dtype=float), stages, runs
+        scale = np.where(x != 0, np.abs(x), free.upper - free.lower)
+        if any(np.all(np.abs(x - other) <= SAME_ESTIMATE * scale) for _, other, _ in kept):
+            continue
+        kept.append((label, x, chi2))
+    return kept
 
 
 def _unseen(probe: Predictor, weights: np.ndarray, x: np.ndarray) -> np.ndarray:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import os
 import re
 import time
 from dataclasses import dataclass
@@ -25,6 +26,7 @@ import numpy as np
 from jointplay.calibration.measured import Measured
 from jointplay.calibration.parameters import FreeParameters
 from jointplay.calibration.predict import Predictor, TrialFailed, whitened
+from jointplay.calibration.workers import parallel_map
 
 CHI2_SIGMAS = 5.0
 """A fit whose chi² exceeds dof + CHI2_SIGMAS sqrt(2 dof) does not explain the data within
@@ -68,17 +70,20 @@ def starts_around(free: FreeParameters, count: int, spread: float, seed: int) ->
 
 
 def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np.ndarray,
-                      max_evaluations: int, scan: Scan | None = None) -> Optimum:
+                      max_evaluations: int, scan: Scan | None = None,
+                      leading: int = 1, workers: int = 1) -> Optimum:
     """The best optimum over ``starts`` (then along the scan of the weakest direction, when
     asked and the fit does not yet explain the data); with ``sigma`` None each column's noise
-    is estimated from the residuals of the best fit and the fit polished with it."""
+    is estimated from the residuals of the best fit and the fit polished with it. The first
+    ``leading`` starts (where more than one: each fitted, on up to ``workers`` processes,
+    the best kept) come first, the rest (a multi-start's) last."""
     stated = sigma is not None
     weights: np.ndarray = sigma if sigma is not None else np.ones(
         len(predictor.measured.columns))
-    best, record = multi_start(predictor, weights, starts[:1], max_evaluations,
-                                stop_early=stated)
+    best, record = multi_start(predictor, weights, starts[:leading], max_evaluations,
+                               stop_early=stated and leading == 1, workers=workers)
     exchanged = exchanged_clearances(predictor.free.names, best)
-    if len(exchanged) and not (stated and _explains(record[-1], predictor)):
+    if len(exchanged) and not (stated and _explains(min(record, key=_chi2), predictor)):
         more_best, more = multi_start(predictor, weights, np.vstack([best, exchanged]),
                                        max_evaluations, stop_early=stated)
         record += more[1:]
@@ -90,8 +95,9 @@ def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np
                                        max_evaluations, stop_early=stated)
         record += more[1:]
         best = more_best
-    if len(starts) > 1 and not (stated and _explains(min(record, key=_chi2), predictor)):
-        more_best, more = multi_start(predictor, weights, np.vstack([best, starts[1:]]),
+    if len(starts) > leading and not (stated and _explains(min(record, key=_chi2),
+                                                           predictor)):
+        more_best, more = multi_start(predictor, weights, np.vstack([best, starts[leading:]]),
                                        max_evaluations, stop_early=stated)
         record += more[1:]
         best = more_best
@@ -191,9 +197,11 @@ def column_noise(predictor: Predictor, values: np.ndarray, n_free: int) -> np.nd
 
 
 def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
-                 max_evaluations: int, stop_early: bool) -> tuple[np.ndarray, list[Start]]:
-    from scipy.optimize import least_squares
-
+                max_evaluations: int, stop_early: bool, workers: int = 1
+                ) -> tuple[np.ndarray, list[Start]]:
+    """Local fits from ``starts`` in turn, the best kept; with ``stop_early``, none after
+    one that explains the data. Without it the fits are independent and run on up to
+    ``workers`` forked processes (their runs added to ``predictor``'s count)."""
     measured = predictor.measured
     free = predictor.free
     dof = max(measured.size - free.size, 1)
@@ -202,24 +210,30 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
     best: np.ndarray | None = None
     best_chi2 = math.inf
     failures = []
-    for x0 in starts:
-        x0 = np.clip(x0, free.lower, free.upper)
-        try:
-            fit = least_squares(
-                lambda x: whitened(predictor.outputs(x) - measured.values, weights), x0,
-                jac=lambda x: whitened(predictor.jacobian(x), weights),
-                bounds=(free.lower, free.upper), x_scale="jac", method="trf",
-                max_nfev=max_evaluations)
-        except TrialFailed as err:
-            failures.append(str(err))
-            record.append(Start(tuple(x0), tuple(x0), math.inf, 0, str(err), failed=True))
-            continue
-        chi2 = 2.0 * float(fit.cost)
-        record.append(Start(tuple(x0), tuple(fit.x), chi2, int(fit.nfev), str(fit.message)))
-        if chi2 < best_chi2:
-            best, best_chi2 = fit.x.copy(), chi2
-        if stop_early and chi2 <= accept:
-            break
+    if stop_early or workers <= 1:
+        done = []
+        for x0 in starts:
+            done.append(_local_fit(predictor, weights, x0, max_evaluations))
+            if stop_early and done[-1].chi2 <= accept:
+                break
+    else:
+        before = dict(predictor.counter.by_kind)
+        pieces = parallel_map(
+            lambda i: (_local_fit(predictor, weights, starts[i], max_evaluations),
+                       {k: v - before.get(k, 0) for k, v in predictor.counter.by_kind.items()}),
+            len(starts), workers)
+        done = []
+        for start, counts in pieces:
+            done.append(start)
+            for kind, n in counts.items():
+                predictor.counter.simulations += n
+                predictor.counter.by_kind[kind] = predictor.counter.by_kind.get(kind, 0) + n
+    for start in done:
+        record.append(start)
+        if start.failed:
+            failures.append(start.message)
+        elif start.chi2 < best_chi2:
+            best, best_chi2 = np.array(start.end), start.chi2
     if best is None:
         from jointplay.common.errors import SimulationError
 
@@ -228,8 +242,31 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
     return best, record
 
 
+def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
+               max_evaluations: int) -> Start:
+    from scipy.optimize import least_squares
+
+    free = predictor.free
+    measured = predictor.measured
+    x0 = np.clip(x0, free.lower, free.upper)
+    try:
+        fit = least_squares(
+            lambda x: whitened(predictor.outputs(x) - measured.values, weights), x0,
+            jac=lambda x: whitened(predictor.jacobian(x), weights),
+            bounds=(free.lower, free.upper), x_scale="jac", method="trf",
+            max_nfev=max_evaluations)
+    except TrialFailed as err:
+        return Start(tuple(x0), tuple(x0), math.inf, 0, str(err), failed=True)
+    return Start(tuple(x0), tuple(fit.x), 2.0 * float(fit.cost), int(fit.nfev),
+                 str(fit.message))
+
+
 def timed() -> tuple[float, float]:
-    return time.perf_counter(), time.process_time()
+    """Wall and CPU seconds; the CPU seconds include the worker processes that have ended
+    (the grid's, the tracks' and the lines' pieces run in forked processes)."""
+    children = os.times()
+    return (time.perf_counter(),
+            time.process_time() + children.children_user + children.children_system)
 
 
 def residual_statistics(measured: Measured, fitted: np.ndarray, sigma: np.ndarray,

@@ -193,6 +193,22 @@ class Predictor:
         return True
 
 
+def chi2_at(probe: Predictor, weights: np.ndarray, points: list[np.ndarray]
+            ) -> tuple[list[float], int]:
+    """chi² of ``probe``'s window at each point (inf where the run stops), and the runs."""
+    before = probe.counter.simulations
+    out = []
+    for x in points:
+        try:
+            residual = whitened(probe.outputs(x, with_jacobian=False)
+                                - probe.measured.values, weights)
+        except TrialFailed:
+            out.append(math.inf)
+            continue
+        out.append(float(np.sum(residual**2)))
+    return out, probe.counter.simulations - before
+
+
 def _describe(names: tuple[str, ...], x: np.ndarray) -> str:
     return ", ".join(f"{n} = {v:.6g}" for n, v in zip(names, x, strict=True))
 

@@ -101,15 +101,31 @@ def _stages(result: CalibrationResult) -> list[str]:
              "each stage, each fit started at the previous estimate; the last stage is the "
              "whole record, and its covariance is the one reported. A parameter the window "
              "cannot see is held at its value in that stage; a window that sees none is "
-             "skipped.", "",
-             "| window end (s) | samples | " + " | ".join(f"`{n}`" for n in result.names)
-             + " | chi² | dof | evaluations | held |", "|---" * (len(result.names) + 6) + "|"]
+             "skipped.", "", *_grid(result),
+             "| window end (s) | track | samples | "
+             + " | ".join(f"`{n}`" for n in result.names)
+             + " | chi² | dof | evaluations | held |", "|---" * (len(result.names) + 7) + "|"]
     for s in result.stages:
-        lines.append(f"| {s.window_end:g} | {s.samples} | "
+        lines.append(f"| {s.window_end:g} | {s.track} | {s.samples} | "
                      + " | ".join(f"{v:.8g}" for v in s.end)
                      + f" | {s.chi2:.5g} | {s.dof} | {s.evaluations} | "
                      + (", ".join(f"`{n}`" for n in s.held) or "none") + " |")
     return [*lines, ""]
+
+
+def _grid(result: CalibrationResult) -> list[str]:
+    """A line on the global stage's grid (none where it did not run)."""
+    grid = result.grid
+    if grid is None:
+        return []
+    return [f"Global stage: a grid of {grid.points_per_axis} values of each of "
+            + ", ".join(f"`{a}`" for a in grid.axes)
+            + f" on the data up to {grid.window_end:g} s ({grid.simulations} runs); its "
+            f"{len(grid.candidates)} lowest local minima (chi² "
+            + ", ".join(f"{c:.4g}" for c in grid.chi2)
+            + ") started the tracks; a track far above the best one after a window is "
+            "dropped, and the best one is replaced by the lowest minima along lines across "
+            "the rugged directions at the line scan's window.", ""]
 
 
 def _correlations(result: CalibrationResult) -> str:

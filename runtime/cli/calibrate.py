@@ -48,6 +48,13 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "fit the whole record at once)")
     p.add_argument("--horizon-growth", type=float, default=2.0,
                    help="factor each window of the continuation grows by (default 2)")
+    p.add_argument("--grid-window", type=float, default=0.02,
+                   help="window (s) of the global stage: a grid of the free clearances on the "
+                        "data up to it, its lowest minima carried as tracks through the "
+                        "continuation (default 0.02; 0: no grid)")
+    p.add_argument("--grid-points", type=int, default=16,
+                   help="values of each free clearance in the grid, across --spread of the "
+                        "start (default 16)")
     p.add_argument("--profile-points", type=int, default=13,
                    help="points of each cost profile (default 13; 0: none)")
     p.add_argument("--tighten", type=float, default=1000.0,
@@ -101,12 +108,14 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
     flags = {"--starts": args.starts, "--spread": args.spread,
              "--scan-points": args.scan_points, "--profile-points": args.profile_points,
              "--tighten": args.tighten, "--horizon-first": args.horizon_first,
-             "--horizon-growth": args.horizon_growth}
+             "--horizon-growth": args.horizon_growth, "--grid-window": args.grid_window,
+             "--grid-points": args.grid_points}
     try:
         return options_type(tighten=args.tighten, starts=args.starts, spread=args.spread,
                             seed=args.seed, profile_points=args.profile_points,
                             scan_points=args.scan_points, horizon_first=args.horizon_first,
-                            horizon_growth=args.horizon_growth)
+                            horizon_growth=args.horizon_growth,
+                            grid_window=args.grid_window, grid_points=args.grid_points)
     except DescriptionError as err:
         flag = "--" + err.field.removeprefix("options.").replace("_", "-")
         if flag not in flags:
