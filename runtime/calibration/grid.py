@@ -110,12 +110,15 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
     probe = Predictor(coarse, predictor.model, free, part, compiled=predictor.compiled)
     shape = (per_axis,) * len(axes)
     indices = list(itertools.product(range(per_axis), repeat=len(axes)))
-    points = []
-    for index in indices:
+
+    def point(index: tuple[int, ...]) -> np.ndarray:
+        """The start with the grid's axes set to the values at ``index``."""
         x = start.copy()
         for a, k in enumerate(axes):
             x[k] = values[a][index[a]]
-        points.append(x)
+        return x
+
+    points = [point(index) for index in indices]
     pieces = chunks(len(points), workers)
     done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
                         len(pieces), workers)
@@ -127,12 +130,7 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
     minima = _local_minima(chi2)
     minima.sort(key=lambda index: chi2[index])
     chosen = minima[:grid.candidates]
-    candidates = []
-    for index in chosen:
-        x = start.copy()
-        for a, k in enumerate(axes):
-            x[k] = values[a][index[a]]
-        candidates.append(x)
+    candidates = [point(index) for index in chosen]
     return GridResult(np.array(candidates).reshape(-1, free.size),
                       tuple(float(chi2[i]) for i in chosen),
                       tuple(free.names[k] for k in axes), per_axis, float(part.t[-1]),
