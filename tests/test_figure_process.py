@@ -152,3 +152,32 @@ def test_ctrl_c_stops_the_figure_process_too(tmp_path: Path) -> None:
         time.sleep(0.05)
     assert not _alive(started[0])
     assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+def _fake_job(index: int, parent: int, die_in_copy: bool) -> Path:
+    """A figure job without matplotlib: it saves known bytes as figures.save would (and,
+    with ``die_in_copy``, ends the process at once when it runs in the forked copy)."""
+    import os
+
+    if die_in_copy and os.getpid() != parent:
+        os._exit(3)
+    path = Path(f"figure{index}.png")
+    assert figure_module._captured is not None
+    figure_module._captured.append((path, f"bytes of {index}".encode() * (index + 1)))
+    return path
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="forks")
+@pytest.mark.parametrize("die_in_copy", [False, True])
+def test_the_two_drawers_return_every_figure_in_job_order(die_in_copy: bool) -> None:
+    """The figure process shares its jobs with a forked copy of itself; whatever each takes,
+    and even when the copy dies mid-way (its jobs then drawn by the first), the figures come
+    back once each, in job order, as one process would draw them."""
+    import functools
+    import os
+
+    jobs = [functools.partial(_fake_job, i, os.getpid(), die_in_copy and i % 3 == 1)
+            for i in range(9)]
+    expected = figure_module.capture(
+        [functools.partial(_fake_job, i, os.getpid(), False) for i in range(9)])
+    assert figure_process.drawn_on_two_cpus(jobs) == expected
