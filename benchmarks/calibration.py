@@ -130,12 +130,15 @@ def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str) 
              f"NumPy {np.__version__}.", ""]
     if rec:
         lines += ["## Recovery from the scene's values", "",
-                  "| draw | " + " | ".join(f"{n} truth → rel. error (covered)" for n in NAMES)
+                  "| draw | " + " | ".join(f"{n} truth → rel. error (covered, verdict)"
+                                           for n in NAMES)
                   + " | chi²/dof | runs | wall s | CPU s |",
                   "|---" * (len(NAMES) + 5) + "|"]
         for r in rec:
             cells = [f"{r[f'{n} truth']:.4g} → {r[f'{n} rel error']:+.2e} "
-                     f"({'yes' if r[f'{n} covered'] else 'no'})" for n in NAMES]
+                     f"({'yes' if r[f'{n} covered'] else 'no'}, "
+                     f"{'determined' if r[f'{n} determined'] else 'not determined'})"
+                     for n in NAMES]
             lines.append(f"| {r['draw']} | " + " | ".join(cells)
                          + f" | {r['chi2_dof']:.3g} | {r['runs']} | {r['wall_s']:.1f} | "
                          f"{r['cpu_s']:.1f} |")
@@ -143,7 +146,10 @@ def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str) 
                   + " s, CPU " + _median_worst([r["cpu_s"] for r in rec]) + " s, runs "
                   + _median_worst([r["runs"] for r in rec]) + "; |rel. error| "
                   + ", ".join(f"{n} " + _median_worst([abs(r[f'{n} rel error']) for r in rec])
-                              for n in NAMES) + ".", ""]
+                              for n in NAMES) + ".", "",
+                  f"Intervals holding the truth: {_count(rec, 'covered')} of "
+                  f"{len(rec) * len(NAMES)}; reported determined but missing it: "
+                  f"{_count(rec, 'determined', 'covered')}.", ""]
     if cov:
         lines += ["## Coverage of the 95 % intervals (fits started at the truth)", "",
                   "| parameter | covered | median reported std | spread of estimates |",
@@ -156,6 +162,12 @@ def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str) 
         lines += ["", "chi²/dof median / worst " + _median_worst([r["chi2_dof"] for r in cov])
                   + "; CPU s " + _median_worst([r["cpu_s"] for r in cov]) + ".", ""]
     return "\n".join(lines)
+
+
+def _count(rows: list[dict[str, Any]], key: str, unless: str | None = None) -> int:
+    """How many (row, parameter) have ``key`` true (and ``unless`` false, when given)."""
+    return sum(bool(r[f"{n} {key}"]) and not (unless and r[f"{n} {unless}"])
+               for r in rows for n in NAMES)
 
 
 def main() -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -10,9 +11,11 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.continuation import Stage, ValleyScan, continuation
+from jointplay.calibration.basins import Basins, neighbouring_basins, widened
+from jointplay.calibration.continuation import TRACK_MARGIN, Stage, ValleyScan, continuation
 from jointplay.calibration.fit import (
     CHI2_SIGMAS,
+    Optimum,
     Scan,
     Start,
     least_squares_fit,
@@ -29,8 +32,9 @@ from jointplay.calibration.grid import (
 )
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
 from jointplay.calibration.parameters import FreeParameters, free_parameters
-from jointplay.calibration.predict import Predictor
+from jointplay.calibration.predict import Predictor, chi2_at, whitened
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
+from jointplay.calibration.workers import chunks, parallel_map
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
 
@@ -54,7 +58,10 @@ class CalibrationOptions:
     the fit's tolerances times ``window_looser`` (as are the runs on every window shorter than
     the record), whose ``grid_candidates`` lowest local minima
     each start a track of the continuation, from ``grid_window`` on (0: no grid; the
-    continuation starts at ``horizon_first`` from the start). ``workers``: processes for the
+    continuation starts at ``horizon_first`` from the start). ``basins``: look for the
+    other minima of the whole record's cost near the best fit, which the data cannot tell
+    from it, and widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
+    ``workers``: processes for the
     grid's runs, the tracks' fits and the lines' runs (the results do not depend on it)."""
 
     tighten: float = 1000.0
@@ -74,6 +81,7 @@ class CalibrationOptions:
     valley_window: float = 0.32
     valley_points: int = 81
     valley_keep: int = 3
+    basins: bool = True
     workers: int = 2
 
     def __post_init__(self) -> None:
@@ -278,6 +286,8 @@ def run(problem: Problem) -> CalibrationResult:
             opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser,
             opts.workers)
         stage_runs += runs
+        survivors, runs = _ranked(predictor, weights, survivors, opts.workers)
+        stage_runs += runs
         starts = np.vstack([survivors, starts[1:]])
     leading = len(starts) - (opts.starts - 1)
     optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,
@@ -290,6 +300,20 @@ def run(problem: Problem) -> CalibrationResult:
                             whole.evaluations, whole.evaluations, whole.message))
     free = problem.free
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
+    line_runs = 0
+    if opts.basins:
+        found = neighbouring_basins(predictor, optimum.sigma, optimum.values,
+                                    float(np.sum(optimum.residuals**2)), spread.covariance,
+                                    opts.max_evaluations, opts.workers)
+        line_runs = found.line_runs
+        moved = not np.array_equal(found.best, optimum.values)
+        optimum = _after_basins(predictor, optimum, found, moved)
+        if moved:
+            spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
+                                 free.names)
+        low, high, determined, rival_warnings = widened(spread, found, free.names)
+        spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
+                                     warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
     stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
     warnings = list(spread.warnings)
@@ -299,14 +323,49 @@ def run(problem: Problem) -> CalibrationResult:
     profiles = cost_profiles(predictor, optimum, spread, opts.profile_points)
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs, grid)
+                   wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs, grid,
+                   line_runs)
+
+
+def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, workers: int
+            ) -> tuple[np.ndarray, int]:
+    """The tracks worth a local fit on the whole record, best first: each ranked by one
+    run there (its chi² at the last window's estimate), those more than TRACK_MARGIN above
+    the best dropped; and the runs. A single track is kept without a run."""
+    if len(tracks) <= 1:
+        return tracks, 0
+    points = list(tracks)
+    pieces = chunks(len(points), workers)
+    done = parallel_map(lambda i: chi2_at(predictor, weights, [points[j] for j in pieces[i]]),
+                        len(pieces), workers)
+    chi2 = np.array([v for values, _ in done for v in values])
+    runs = sum(r for _, r in done)
+    if not np.isfinite(chi2).any():
+        return tracks, runs
+    order = np.argsort(chi2)
+    keep = [i for i in order if chi2[i] <= chi2[order[0]] + TRACK_MARGIN]
+    return tracks[keep], runs
+
+
+def _after_basins(predictor: Predictor, optimum: Optimum, found: Basins, moved: bool
+                  ) -> Optimum:
+    """``optimum`` with the basin check's local fits added to its record, and moved to the
+    lower minimum the check found (its residuals and Jacobian there), if it found one."""
+    record = optimum.starts + found.fits
+    if not moved:
+        return dataclasses.replace(optimum, starts=record)
+    residuals = whitened(predictor.outputs(found.best) - predictor.measured.values,
+                         optimum.sigma)
+    jacobian = whitened(predictor.jacobian(found.best), optimum.sigma)
+    return Optimum(found.best, optimum.sigma, residuals, jacobian, record)
 
 
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
             fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
             profiles: dict[str, dict[str, list[float]]], wall: float,
             cpu: float, explains: bool | None, stages: tuple[Stage, ...] = (),
-            stage_runs: int = 0, grid: GridResult | None = None) -> CalibrationResult:
+            stage_runs: int = 0, grid: GridResult | None = None,
+            line_runs: int = 0) -> CalibrationResult:
     free = problem.free
     # A fit that does not explain the data within the stated noise determines nothing: its
     # optimum may be a local one, and its intervals are not valid.
@@ -325,8 +384,9 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
         condition_number=spread.condition_number, residuals=stats,
         noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
         noise_stated=problem.sigma is not None, fitted=fitted, starts=optimum.starts,
-        simulations=predictor.counter.simulations + stage_runs,
-        simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs},
+        simulations=predictor.counter.simulations + stage_runs + line_runs,
+        simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs,
+                             "basin lines": line_runs},
         jacobian_source=source,
         wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
         settings={"rtol": run_settings.rtol, "atol": run_settings.atol,
@@ -340,6 +400,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
                   "grid_points": problem.options.grid_points,
                   "grid_candidates": problem.options.grid_candidates,
                   "window_looser": problem.options.window_looser,
+                  "basins": problem.options.basins,
                   "workers": problem.options.workers,
                   "profile": "others fixed at their estimates"},
         fit_explains_data=explains, profiles=profiles, stages=stages, grid=grid)

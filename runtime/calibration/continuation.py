@@ -118,7 +118,7 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     first), the stages, and the runs they took.
 
     Each row of ``tracks`` is a start carried through the windows on its own; after each
-    window a track whose chi² lies more than CHI2_SIGMAS sqrt(2 dof) above the best track's,
+    window a track whose chi² lies more than TRACK_MARGIN above the best track's,
     or whose estimate joins a better track's, is dropped (a longer window only sharpens the
     difference). With a single track the first window's fit tries ``alternatives`` while
     its fit does not explain that window within the stated noise. A stage whose every run
@@ -302,6 +302,15 @@ WINDOW_EVALUATIONS = 20
 have to bring each track near its valley; the later ones, whose valleys are a fraction of a
 micrometre wide, get the fit's full count)."""
 
+TRACK_MARGIN = 50.0
+"""A track whose chi² over a window lies more than this above the best track's is dropped
+(or more than CHI2_SIGMAS sqrt(2 dof), where that is less). Two fits of the same data differ
+in chi² by the model's difference, not by the noise: the true parameters lie above the best
+fit by a chi² of 3 degrees of freedom for three free parameters (over 21 once in 10⁴), and
+the windows' fits, at looser tolerances and a bounded number of evaluations, stop short of
+their floor by a few more. A longer window only sharpens the difference. The whole-record
+stage ranks the surviving tracks by the same margin (one run each) before fitting them."""
+
 SAME_ESTIMATE = 1e-4
 """Two tracks whose estimates differ by less than this fraction of each parameter's value
 (or physical range, where the value is 0) have joined: the worse one is dropped."""
@@ -312,7 +321,7 @@ def _surviving(results: list[tuple[int, np.ndarray, float]], dof: int,
     """The tracks worth carrying to the next window, best first."""
     ordered = sorted(results, key=lambda r: r[2])
     best = ordered[0][2] if ordered else math.inf
-    margin = CHI2_SIGMAS * math.sqrt(2 * dof)
+    margin = min(TRACK_MARGIN, CHI2_SIGMAS * math.sqrt(2 * dof))
     kept: list[tuple[int, np.ndarray, float]] = []
     if not ordered:
         return kept

@@ -217,11 +217,14 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
             if stop_early and done[-1].chi2 <= accept:
                 break
     else:
-        before = dict(predictor.counter.by_kind)
-        pieces = parallel_map(
-            lambda i: (_local_fit(predictor, weights, starts[i], max_evaluations),
-                       {k: v - before.get(k, 0) for k, v in predictor.counter.by_kind.items()}),
-            len(starts), workers)
+        def fit(i: int) -> tuple[Start, dict[str, int]]:
+            # counted here, in the worker: one worker may run several fits in turn
+            before = dict(predictor.counter.by_kind)
+            start = _local_fit(predictor, weights, starts[i], max_evaluations)
+            return start, {k: v - before.get(k, 0)
+                           for k, v in predictor.counter.by_kind.items()}
+
+        pieces = parallel_map(fit, len(starts), workers)
         done = []
         for start, counts in pieces:
             done.append(start)

@@ -55,6 +55,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--grid-points", type=int, default=16,
                    help="values of each free clearance in the grid, across --spread of the "
                         "start (default 16)")
+    p.add_argument("--no-basin-check", dest="basins", action="store_false",
+                   help="skip the search for the other minima of the whole record's cost "
+                        "near the best fit (lines along the axes of its confidence "
+                        "ellipsoid, local fits from their lowest minima), which the "
+                        "intervals are otherwise widened to hold")
     p.add_argument("--profile-points", type=int, default=13,
                    help="points of each cost profile (default 13; 0: none)")
     p.add_argument("--tighten", type=float, default=1000.0,
@@ -115,7 +120,8 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
                             seed=args.seed, profile_points=args.profile_points,
                             scan_points=args.scan_points, horizon_first=args.horizon_first,
                             horizon_growth=args.horizon_growth,
-                            grid_window=args.grid_window, grid_points=args.grid_points)
+                            grid_window=args.grid_window, grid_points=args.grid_points,
+                            basins=args.basins)
     except DescriptionError as err:
         flag = "--" + err.field.removeprefix("options.").replace("_", "-")
         if flag not in flags:

@@ -1,0 +1,207 @@
+"""Neighbouring basins: the other minima of the whole record's cost that the data cannot
+tell from the best one, and the points of the cost's rugged floor they share it with.
+
+Impacts make the cost a field of basins: an impact that moves past a sample changes the
+residual abruptly. On the paper scene, with 2 s of tip position at 1 ms and 1 µm of noise,
+the minima lie two to three standard deviations apart (about 25 nm in the clearances), and
+along the direction the impacts make most rugged the floor of the basins can stay flat far
+beyond one basin's own curvature: on benchmark draw 6 the fit ended in a basin 23 nm from
+the one that holds the truth, 26 higher in chi²; on draw 4 the floor stays within 2.5 of
+the best fit's chi² 32 standard deviations away along that direction. The covariance at the
+best fit describes its own basin only, so its interval misses the others.
+
+The check: lines through the best fit along each principal axis of its confidence
+ellipsoid, finely out to :data:`REACH_SIGMAS` standard deviations, then at
+:data:`FAR_SIGMAS`, one plain run per point; a local fit from each of the lowest minima
+along the lines (at most :data:`FITS`) whose chi² lies within the threshold plus
+:data:`SLACK` of the best's (a line passes beside its basin's floor, not through it). A fit
+that ends lower than the best replaces it. Every point found (a line's point or another
+fit's minimum) whose chi² lies within ``chi2.ppf(0.95, 1)`` = 3.84 of the lowest lies inside
+each parameter's 95 % profile-likelihood interval, since the profile at its value can only
+be lower: the intervals are widened to hold them, and a parameter in which another basin's
+minimum lies outside the best's own interval is not determined.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from jointplay.calibration.continuation import loosened
+from jointplay.calibration.fit import Start, multi_start
+from jointplay.calibration.predict import Predictor, chi2_at
+from jointplay.calibration.uncertainty import Uncertainty
+from jointplay.calibration.workers import chunks, parallel_map
+
+CONFIDENCE = 0.95
+"""The confidence level of the intervals: a point whose chi² lies within
+``chi2.ppf(CONFIDENCE, 1)`` (3.84) of the lowest lies inside every parameter's
+profile-likelihood interval at that level (the profile at its value can only be lower)."""
+REACH_SIGMAS = 5.0
+"""How far each line's fine part reaches either side of the best fit, in standard
+deviations."""
+STEP_SIGMAS = 0.5
+"""The fine part's spacing in standard deviations (a basin is two to three wide)."""
+FAR_SIGMAS = (6.0, 8.0, 11.0, 16.0, 22.0, 32.0)
+"""The lines' points beyond the fine part, in standard deviations: along the direction the
+impacts make most rugged the cost's envelope can stay flat far beyond the best basin's own
+curvature (on benchmark draw 4, within 2.5 of the best at 32 standard deviations)."""
+SLACK = 10.0
+"""chi² above the threshold still worth a local fit from a line's minimum."""
+FITS = 2
+"""Local fits from the lines' minima at most."""
+LOOSER = 10.0
+"""The lines' runs use the fit's tolerances times this (they only pick the starts of the
+local fits, which run at the fit's tolerances)."""
+
+
+@dataclass(frozen=True)
+class Basins:
+    """What the check found: the best fit (the given one or a lower one it found), the
+    rivals (other basins' minima within ``threshold`` of the best's chi²), every local fit
+    it made, its runs, and the lines' points within the threshold."""
+
+    best: np.ndarray
+    best_chi2: float
+    rivals: tuple[Start, ...]
+    threshold: float
+    fits: tuple[Start, ...]
+    line_runs: int
+    fit_runs: int
+    region: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros((0, 0)))
+    """The lines' points within ``threshold`` of the lowest chi² found (one per row)."""
+
+
+def threshold() -> float:
+    """The chi² rise that bounds each parameter's profile-likelihood interval."""
+    from scipy.stats import chi2
+
+    return float(chi2.ppf(CONFIDENCE, 1))
+
+
+def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
+                        best_chi2: float, covariance: np.ndarray, max_evaluations: int,
+                        workers: int) -> Basins:
+    """The check described above, around ``best`` (chi² ``best_chi2``, ``covariance`` its
+    estimates' covariance)."""
+    free = predictor.free
+    limit = threshold()
+    points = _line_points(best, covariance, free.lower, free.upper)
+    if not points:
+        return Basins(best, best_chi2, (), limit, (), 0, 0)
+    probe = Predictor(loosened(predictor.scene, LOOSER), predictor.model, free,
+                      predictor.measured, compiled=predictor.compiled)
+    every = [best, *(p for line in points for p in line)]
+    pieces = chunks(len(every), workers)
+    done = parallel_map(lambda i: chi2_at(probe, weights, [every[j] for j in pieces[i]]),
+                        len(pieces), workers)
+    values = [v for chi2, _ in done for v in chi2]
+    line_runs = sum(r for _, r in done)
+    centre, rest = values[0], values[1:]
+    lowest = min(v for v in values if math.isfinite(v)) if any(
+        math.isfinite(v) for v in values) else centre
+    region = np.array([x for x, v in zip(every, values, strict=True)
+                       if math.isfinite(v) and v <= lowest + limit]).reshape(-1, free.size)
+    found: list[tuple[float, np.ndarray]] = []
+    offset = 0
+    for line in points:
+        chi2 = np.array(rest[offset:offset + len(line)])
+        offset += len(line)
+        padded = np.concatenate([[np.inf], chi2, [np.inf]])
+        found += [(float(chi2[i]), line[i]) for i in range(len(line))
+                  if np.isfinite(chi2[i]) and chi2[i] <= padded[i] and chi2[i] <= padded[i + 2]
+                  and chi2[i] <= centre + limit + SLACK]
+    found.sort(key=lambda f: f[0])
+    starts = np.array([x for _, x in found[:FITS]]).reshape(-1, free.size)
+    if not len(starts):
+        return Basins(best, best_chi2, (), limit, (), line_runs, 0, region)
+    before = predictor.counter.simulations
+    _, fits = multi_start(predictor, weights, starts, max_evaluations, stop_early=False,
+                          workers=workers)
+    fit_runs = predictor.counter.simulations - before
+    std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
+    candidates = [(best_chi2, np.asarray(best, dtype=float))]
+    candidates += [(s.chi2, np.asarray(s.end, dtype=float)) for s in fits if not s.failed]
+    candidates.sort(key=lambda c: c[0])
+    new_chi2, new_best = candidates[0]
+    rivals: list[Start] = []
+    kept: list[np.ndarray] = [new_best]
+    for chi2_value, x in candidates[1:]:
+        if chi2_value > new_chi2 + limit:
+            continue
+        if any(np.all(np.abs(x - other) <= 0.5 * std) for other in kept):
+            continue  # the same basin as one already counted
+        kept.append(x)
+        rivals.append(Start(tuple(new_best), tuple(x), chi2_value, 0, "rival basin"))
+    return Basins(new_best, new_chi2, tuple(rivals), limit, tuple(fits), line_runs, fit_runs,
+                  region)
+
+
+def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,
+                 upper: np.ndarray) -> list[list[np.ndarray]]:
+    """The points of the lines along the principal axes of ``covariance`` (the centre left
+    out), inside the bounds; none where the covariance is not finite."""
+    if not np.all(np.isfinite(covariance)):
+        return []
+    eigenvalues, vectors = np.linalg.eigh(covariance)
+    side = np.concatenate([np.arange(STEP_SIGMAS, REACH_SIGMAS + 1e-9, STEP_SIGMAS),
+                           [s for s in FAR_SIGMAS if s > REACH_SIGMAS]])
+    steps = np.concatenate([-side[::-1], side])
+    lines = []
+    for value, vector in zip(eigenvalues, vectors.T, strict=True):
+        if not value > 0:
+            continue
+        axis = math.sqrt(value) * vector
+        lines.append([np.clip(best + s * axis, lower, upper) for s in steps])
+    return lines
+
+
+def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...]
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
+    """The 95 % intervals widened to hold every point found inside them: each rival's basin
+    (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations:
+    the part of its basin below the threshold, its curvature taken as the best's) and every
+    point of the lines within the threshold; which parameters stay determined (no rival
+    outside the best's own interval); a warning for each interval widened."""
+    low, high = spread.low95.copy(), spread.high95.copy()
+    determined = spread.determined.copy()
+    warnings: list[str] = []
+    std = np.where(np.isfinite(spread.std), spread.std, 0.0)
+    ends = np.array([r.end for r in basins.rivals]).reshape(-1, len(names))
+    region = basins.region.reshape(-1, len(names))
+    rival_outside = (ends < spread.low95) | (ends > spread.high95)
+    region_outside = (region < spread.low95) | (region > spread.high95)
+    if len(ends):
+        rise = np.array([r.chi2 - basins.best_chi2 for r in basins.rivals])
+        half = np.sqrt(np.clip(basins.threshold - rise, 0.0, None))[:, None] * std[None, :]
+        low = np.minimum(low, np.min(ends - half, axis=0))
+        high = np.maximum(high, np.max(ends + half, axis=0))
+    if len(region):
+        low = np.minimum(low, np.min(region, axis=0))
+        high = np.maximum(high, np.max(region, axis=0))
+    best = basins.best
+    inside = f"inside its {CONFIDENCE:.0%} profile-likelihood interval"
+    for k, name in enumerate(names):
+        if rival_outside[:, k].any():
+            determined[k] = False
+            rows = np.flatnonzero(rival_outside[:, k])
+            far = float(np.max(np.abs(ends[rows, k] - best[k])))
+            partners = sorted({names[j] for j in range(len(names)) if j != k
+                               and rival_outside[rows, j].any()})
+            with_ = (f"; they differ in {', '.join(partners)} too, which cannot be told "
+                     "apart from it" if partners else "")
+            warnings.append(
+                f"{name} is not determined by the data: {len(rows)} other minimum(s) of the "
+                f"cost lie within chi² + {basins.threshold:.3g} of the best ({inside}), up "
+                f"to {far:.4g} from the estimate{with_}; its interval spans them")
+        elif region_outside[:, k].any():
+            far = float(np.max(np.abs(region[region_outside[:, k], k] - best[k])))
+            warnings.append(
+                f"{name}: the impacts make the cost rugged; points within chi² + "
+                f"{basins.threshold:.3g} of the best ({inside}) lie up to {far:.4g} from the "
+                f"estimate, {far / std[k] if std[k] > 0 else math.inf:.3g} of its standard "
+                "deviations: its interval is widened to hold them")
+    return low, high, determined, warnings
