@@ -457,8 +457,13 @@ def test_basins_widen_the_intervals_to_every_point_found_inside_them() -> None:
     assert len(warnings) == 3
     assert warnings[0].startswith("joint2.clearance is not determined") and \
         "joint3.clearance" in warnings[0]
-    assert warnings[2].startswith("friction.mu: the impacts make the cost rugged") and \
+    assert warnings[2].startswith("friction.mu: the cost is not the quadratic") and \
         "2.5 of its standard deviations" in warnings[2]
+    # a point just outside (a smooth cost's departure from its quadratic): widened, silently
+    near = values + np.array([0.0, 0.0, 2.1 * std[2]])
+    found = Basins(values, 4000.0, (), limit, (), 10, 0, near[None, :])
+    low, high, determined, warnings = widened(spread, found, names)
+    assert high[2] == pytest.approx(near[2]) and determined.all() and warnings == []
 
 
 def test_on_a_quadratic_cost_the_basin_lines_stay_inside_the_intervals() -> None:

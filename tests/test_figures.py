@@ -223,3 +223,19 @@ def test_sweep_figure_has_units_and_no_offset_text(tmp_path: Path, drawn: list[A
         assert ax.yaxis.get_offset_text().get_text() == "", ax.get_title()
     penetration = next(ax for ax in fig_axes if ax.get_title().startswith("max penetration"))
     assert penetration.get_ylabel() in ("[µm]", "[nm]", "[mm]", "[m]")
+
+
+def test_the_transient_peak_in_a_title_is_the_norm_the_summary_gives() -> None:
+    """The end-effector figure's off-scale transient: its title gives the largest x-y norm
+    of the samples before the transient's end (what the run's summary reports as the
+    largest error against the ideal joints), not the largest single component."""
+    from jointplay.common.figures import figure
+    from jointplay.results.plots import _off_scale
+
+    t = np.linspace(0.0, 1.0, 101)
+    values = np.zeros((101, 2))
+    values[3] = (30.0, 40.0)  # norm 50; largest component 40
+    values[50:] = np.column_stack([np.sin(t[50:]), np.cos(t[50:])])
+    _, axes = figure(1, 1, 4.0, 3.0)
+    title = _off_scale(axes[0, 0], t, values, (0.2, "first impact burst"), "m/s²", "error")
+    assert title.endswith("largest |sample| 50 m/s²"), title

@@ -53,6 +53,10 @@ SLACK = 10.0
 """chi² above the threshold still worth a local fit from a line's minimum."""
 FITS = 2
 """Local fits from the lines' minima at most."""
+WARN_WIDENING = 1.25
+"""The lines' points widen an interval silently up to this factor of its half-width (a
+smooth cost departs that little from its quadratic: on the paper arm without clearance, a
+point at 2.0 standard deviations within the threshold); beyond it a warning says so."""
 LOOSER = 10.0
 """The lines' runs use the fit's tolerances times this (they only pick the starts of the
 local fits, which run at the fit's tolerances)."""
@@ -165,7 +169,8 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...]
     (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations:
     the part of its basin below the threshold, its curvature taken as the best's) and every
     point of the lines within the threshold; which parameters stay determined (no rival
-    outside the best's own interval); a warning for each interval widened."""
+    outside the best's own interval); a warning for each interval a rival widens, or a
+    line's point by more than WARN_WIDENING."""
     low, high = spread.low95.copy(), spread.high95.copy()
     determined = spread.determined.copy()
     warnings: list[str] = []
@@ -199,8 +204,11 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...]
                 f"to {far:.4g} from the estimate{with_}; its interval spans them")
         elif region_outside[:, k].any():
             far = float(np.max(np.abs(region[region_outside[:, k], k] - best[k])))
+            if far <= WARN_WIDENING * (spread.high95[k] - spread.low95[k]) / 2:
+                continue
             warnings.append(
-                f"{name}: the impacts make the cost rugged; points within chi² + "
+                f"{name}: the cost is not the quadratic its covariance describes (impacts make "
+                f"it rugged); points within chi² + "
                 f"{basins.threshold:.3g} of the best ({inside}) lie up to {far:.4g} from the "
                 f"estimate, {far / std[k] if std[k] > 0 else math.inf:.3g} of its standard "
                 "deviations: its interval is widened to hold them")
