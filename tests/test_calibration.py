@@ -188,6 +188,18 @@ def test_command_writes_every_file(tmp_path: Path, capsys: pytest.CaptureFixture
     assert data["simulations"] > 0 and data["wall_time_s"] > 0
     assert "payload.mass" in (out / "report.md").read_text()
     assert capsys.readouterr().out == ""
+    # the basin check runs by default; --no-basin-check skips it (no lines run)
+    assert data["settings"]["basins"] is True
+    assert data["simulations_by_kind"]["basin lines"] > 0
+    skipped = tmp_path / "without"
+    assert main(["calibrate", str(scene_path), "--measured", str(measured), "--free",
+                 "payload.mass", "--noise", "1e-6", "--out", str(skipped), "--starts", "1",
+                 "--scan-points", "0", "--profile-points", "0", "--no-basin-check",
+                 "--quiet"]) == 0
+    without = json.loads((skipped / "calibration.json").read_text())
+    assert without["settings"]["basins"] is False
+    assert without["simulations_by_kind"]["basin lines"] == 0
+    assert without["estimates"]["payload.mass"]["value"] == pytest.approx(2.2, rel=1e-4)
 
 
 BAD_INPUTS = [
@@ -378,7 +390,7 @@ def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
     assert result.grid is not None and result.grid.simulations == 256
     assert max(s.track for s in result.stages) >= 1  # more than one track was carried
     assert result.fit_explains_data
-    basin_fits = sum(s.message != "rival basin" for s in result.starts) - 1
+    basin_fits = len(result.starts) - 1
     assert 0 <= basin_fits <= 2  # one whole-record fit, then the basin check's (at most 2)
     for name, value in truth.items():
         estimate = result.estimates[name]
@@ -437,7 +449,7 @@ def test_basins_widen_the_intervals_to_every_point_found_inside_them() -> None:
     spread = _spread(values, std)
     limit = threshold()
     assert limit == pytest.approx(3.841458820694124)
-    nothing = Basins(values, 4000.0, (), limit, (), 10, 0, values[None, :])
+    nothing = Basins(values, 4000.0, (), limit, (), 10, values[None, :])
     low, high, determined, warnings = widened(spread, nothing, names)
     assert np.array_equal(low, spread.low95) and np.array_equal(high, spread.high95)
     assert determined.all() and warnings == []
@@ -445,7 +457,7 @@ def test_basins_widen_the_intervals_to_every_point_found_inside_them() -> None:
     rival_end = values + np.array([25e-9, -25e-9, 0.0])
     rival = Start(tuple(values), tuple(rival_end), 4001.5, 0, "rival basin")
     far_point = values + np.array([0.0, 0.0, 5e-6])
-    found = Basins(values, 4000.0, (rival,), limit, (), 10, 0,
+    found = Basins(values, 4000.0, (rival,), limit, (), 10,
                    np.vstack([values, far_point]))
     low, high, determined, warnings = widened(spread, found, names)
     half = np.sqrt(limit - 1.5) * std
@@ -461,7 +473,7 @@ def test_basins_widen_the_intervals_to_every_point_found_inside_them() -> None:
         "2.5 of its standard deviations" in warnings[2]
     # a point just outside (a smooth cost's departure from its quadratic): widened, silently
     near = values + np.array([0.0, 0.0, 2.1 * std[2]])
-    found = Basins(values, 4000.0, (), limit, (), 10, 0, near[None, :])
+    found = Basins(values, 4000.0, (), limit, (), 10, near[None, :])
     low, high, determined, warnings = widened(spread, found, names)
     assert high[2] == pytest.approx(near[2]) and determined.all() and warnings == []
 

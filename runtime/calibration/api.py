@@ -32,9 +32,8 @@ from jointplay.calibration.grid import (
 )
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
 from jointplay.calibration.parameters import FreeParameters, free_parameters
-from jointplay.calibration.predict import Predictor, chi2_at, whitened
+from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
-from jointplay.calibration.workers import chunks, parallel_map
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
 
@@ -334,12 +333,8 @@ def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, worke
     the best dropped; and the runs. A single track is kept without a run."""
     if len(tracks) <= 1:
         return tracks, 0
-    points = list(tracks)
-    pieces = chunks(len(points), workers)
-    done = parallel_map(lambda i: chi2_at(predictor, weights, [points[j] for j in pieces[i]]),
-                        len(pieces), workers)
-    chi2 = np.array([v for values, _ in done for v in values])
-    runs = sum(r for _, r in done)
+    values, runs = chi2_at_points(predictor, weights, list(tracks), workers)
+    chi2 = np.array(values)
     if not np.isfinite(chi2).any():
         return tracks, runs
     order = np.argsort(chi2)

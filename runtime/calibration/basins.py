@@ -32,9 +32,8 @@ import numpy as np
 
 from jointplay.calibration.continuation import loosened
 from jointplay.calibration.fit import Start, multi_start
-from jointplay.calibration.predict import Predictor, chi2_at
+from jointplay.calibration.predict import Predictor, chi2_at_points, line_minima
 from jointplay.calibration.uncertainty import Uncertainty
-from jointplay.calibration.workers import chunks, parallel_map
 
 CONFIDENCE = 0.95
 """The confidence level of the intervals: a point whose chi² lies within
@@ -66,7 +65,8 @@ local fits, which run at the fit's tolerances)."""
 class Basins:
     """What the check found: the best fit (the given one or a lower one it found), the
     rivals (other basins' minima within ``threshold`` of the best's chi²), every local fit
-    it made, its runs, and the lines' points within the threshold."""
+    it made (their runs are counted by the predictor), the lines' runs, and the lines'
+    points within the threshold."""
 
     best: np.ndarray
     best_chi2: float
@@ -74,7 +74,6 @@ class Basins:
     threshold: float
     fits: tuple[Start, ...]
     line_runs: int
-    fit_runs: int
     region: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros((0, 0)))
     """The lines' points within ``threshold`` of the lowest chi² found (one per row)."""
 
@@ -95,15 +94,11 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     limit = threshold()
     points = _line_points(best, covariance, free.lower, free.upper)
     if not points:
-        return Basins(best, best_chi2, (), limit, (), 0, 0)
+        return Basins(best, best_chi2, (), limit, (), 0)
     probe = Predictor(loosened(predictor.scene, LOOSER), predictor.model, free,
                       predictor.measured, compiled=predictor.compiled)
     every = [best, *(p for line in points for p in line)]
-    pieces = chunks(len(every), workers)
-    done = parallel_map(lambda i: chi2_at(probe, weights, [every[j] for j in pieces[i]]),
-                        len(pieces), workers)
-    values = [v for chi2, _ in done for v in chi2]
-    line_runs = sum(r for _, r in done)
+    values, line_runs = chi2_at_points(probe, weights, every, workers)
     centre, rest = values[0], values[1:]
     lowest = min(v for v in values if math.isfinite(v)) if any(
         math.isfinite(v) for v in values) else centre
@@ -114,18 +109,14 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     for line in points:
         chi2 = np.array(rest[offset:offset + len(line)])
         offset += len(line)
-        padded = np.concatenate([[np.inf], chi2, [np.inf]])
-        found += [(float(chi2[i]), line[i]) for i in range(len(line))
-                  if np.isfinite(chi2[i]) and chi2[i] <= padded[i] and chi2[i] <= padded[i + 2]
-                  and chi2[i] <= centre + limit + SLACK]
+        found += [(float(chi2[i]), line[i]) for i in line_minima(chi2)
+                  if chi2[i] <= centre + limit + SLACK]
     found.sort(key=lambda f: f[0])
     starts = np.array([x for _, x in found[:FITS]]).reshape(-1, free.size)
     if not len(starts):
-        return Basins(best, best_chi2, (), limit, (), line_runs, 0, region)
-    before = predictor.counter.simulations
+        return Basins(best, best_chi2, (), limit, (), line_runs, region)
     _, fits = multi_start(predictor, weights, starts, max_evaluations, stop_early=False,
                           workers=workers)
-    fit_runs = predictor.counter.simulations - before
     std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     candidates = [(best_chi2, np.asarray(best, dtype=float))]
     candidates += [(s.chi2, np.asarray(s.end, dtype=float)) for s in fits if not s.failed]
@@ -140,8 +131,7 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
             continue  # the same basin as one already counted
         kept.append(x)
         rivals.append(Start(tuple(new_best), tuple(x), chi2_value, 0, "rival basin"))
-    return Basins(new_best, new_chi2, tuple(rivals), limit, tuple(fits), line_runs, fit_runs,
-                  region)
+    return Basins(new_best, new_chi2, tuple(rivals), limit, tuple(fits), line_runs, region)
 
 
 def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,

@@ -26,8 +26,14 @@ import numpy as np
 from jointplay.calibration.fit import CHI2_SIGMAS, multi_start
 from jointplay.calibration.measured import Measured
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import Predictor, TrialFailed, chi2_at, whitened
-from jointplay.calibration.workers import chunks, parallel_map
+from jointplay.calibration.predict import (
+    Predictor,
+    TrialFailed,
+    chi2_at_points,
+    line_minima,
+    whitened,
+)
+from jointplay.calibration.workers import parallel_map
 from jointplay.common.errors import SimulationError
 from jointplay.scene.definition import Scene
 
@@ -233,19 +239,13 @@ def _valley_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
     steps = np.linspace(-valley.reach, valley.reach, valley.points)
     lines = [[np.clip(x + s * direction, free.lower, free.upper) for s in steps]
              for direction in directions]
-    points = [p for line in lines for p in line]
-    pieces = chunks(len(points), workers)
-    done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
-                        len(pieces), workers)
-    every = [value for values, _ in done for value in values]
+    every, runs = chi2_at_points(probe, weights, [p for line in lines for p in line], workers)
     found: list[tuple[float, np.ndarray]] = []
     for n, line in enumerate(lines):
         chi2 = np.array(every[n * steps.size:(n + 1) * steps.size])
-        padded = np.concatenate([[np.inf], chi2, [np.inf]])
-        found += [(chi2[i], line[i]) for i in range(steps.size)
-                  if np.isfinite(chi2[i]) and chi2[i] <= padded[i] and chi2[i] <= padded[i + 2]]
+        found += [(chi2[i], line[i]) for i in line_minima(chi2)]
     found.sort(key=lambda f: f[0])
-    return [point for _, point in found[:valley.keep]], sum(r for _, r in done)
+    return [point for _, point in found[:valley.keep]], runs
 
 
 def _fit_tracks(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,

@@ -25,7 +25,13 @@ import numpy as np
 
 from jointplay.calibration.measured import Measured
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import Predictor, TrialFailed, whitened
+from jointplay.calibration.predict import (
+    Predictor,
+    TrialFailed,
+    chi2_at,
+    line_minima,
+    whitened,
+)
 from jointplay.calibration.workers import parallel_map
 
 CHI2_SIGMAS = 5.0
@@ -160,19 +166,9 @@ def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.n
                 step = min(step, (bound - best[k]) / (sign * direction[k]))
         ends.append(sign * min(step, 1.0))
     line = np.linspace(ends[0], ends[1], scan.points)
-    chi2 = np.full(line.size, np.inf)
-    for i, s in enumerate(line):
-        x = np.clip(best + s * direction, free.lower, free.upper)
-        try:
-            residual = whitened(predictor.outputs(x, with_jacobian=False)
-                                - predictor.measured.values, weights)
-        except TrialFailed:
-            continue
-        chi2[i] = float(np.sum(residual**2))
-    padded = np.concatenate([[np.inf], chi2, [np.inf]])
-    minima = [i for i in range(line.size)
-              if np.isfinite(chi2[i]) and chi2[i] <= padded[i] and chi2[i] <= padded[i + 2]]
-    minima.sort(key=lambda i: chi2[i])
+    points = [np.clip(best + s * direction, free.lower, free.upper) for s in line]
+    chi2, _ = chi2_at(predictor, weights, points)
+    minima = line_minima(np.array(chi2))
     return np.array([np.clip(best + line[i] * direction, free.lower, free.upper)
                      for i in minima[:scan.refine]]).reshape(-1, free.size)
 

@@ -22,8 +22,7 @@ import numpy as np
 from jointplay.calibration.continuation import _holding, loosened, window
 from jointplay.calibration.fit import multi_start
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import Predictor, chi2_at
-from jointplay.calibration.workers import chunks, parallel_map
+from jointplay.calibration.predict import Predictor, chi2_at_points
 from jointplay.common.errors import SimulationError
 
 CLEARANCE_NAME = re.compile(r"joint\d+\.clearance")
@@ -119,14 +118,10 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
         return x
 
     points = [point(index) for index in indices]
-    pieces = chunks(len(points), workers)
-    done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
-                        len(pieces), workers)
+    values_chi2, runs = chi2_at_points(probe, weights, points, workers)
     chi2 = np.full(shape, np.inf)
-    for piece, (values_chi2, _) in zip(pieces, done, strict=True):
-        for j, value in zip(piece, values_chi2, strict=True):
-            chi2[indices[j]] = value
-    runs = sum(r for _, r in done)
+    for index, value in zip(indices, values_chi2, strict=True):
+        chi2[index] = value
     minima = _local_minima(chi2)
     minima.sort(key=lambda index: chi2[index])
     chosen = minima[:grid.candidates]

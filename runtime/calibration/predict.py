@@ -20,6 +20,7 @@ import numpy as np
 
 from jointplay.calibration.measured import TIP_COLUMNS, Measured, grid_indices
 from jointplay.calibration.parameters import FreeParameters
+from jointplay.calibration.workers import chunks, parallel_map
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
 from jointplay.store.model import Model
@@ -207,6 +208,25 @@ def chi2_at(probe: Predictor, weights: np.ndarray, points: list[np.ndarray]
             continue
         out.append(float(np.sum(residual**2)))
     return out, probe.counter.simulations - before
+
+
+def chi2_at_points(probe: Predictor, weights: np.ndarray, points: list[np.ndarray],
+                   workers: int) -> tuple[list[float], int]:
+    """:func:`chi2_at` of every point, in order, the points cut into pieces run on up to
+    ``workers`` forked processes; and the runs."""
+    pieces = chunks(len(points), workers)
+    done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
+                        len(pieces), workers)
+    return [value for values, _ in done for value in values], sum(runs for _, runs in done)
+
+
+def line_minima(chi2: np.ndarray) -> list[int]:
+    """The indices of the finite values along a line no higher than either neighbour, the
+    lowest first."""
+    padded = np.concatenate([[np.inf], chi2, [np.inf]])
+    minima = [i for i in range(len(chi2))
+              if np.isfinite(chi2[i]) and chi2[i] <= padded[i] and chi2[i] <= padded[i + 2]]
+    return sorted(minima, key=lambda i: chi2[i])
 
 
 def _describe(names: tuple[str, ...], x: np.ndarray) -> str:
