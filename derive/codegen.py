@@ -35,6 +35,8 @@ from jointplay.common.files import atomic_write_text
 from jointplay.derive.deferred import (
     DEFERRED_EXPORTS,
     DEFERRED_FUNCTIONS,
+    INPUT_DIRECTIONAL,
+    INPUT_DIRECTIONS,
     INPUT_JACOBIANS,
     deferred_wrappers,
 )
@@ -133,8 +135,8 @@ def build_functions(model: SymbolicModel, formulation: str | None = None
     fn_rk4, fn_radau = fixed_step_functions(fn_fd, fn_jac_state)
     add_step_slots(functions, fn_rk4.name(), fn_radau.name(), RADAU_NEWTON_ITERATIONS, model,
                    slots)
-    return [fn_mass, fn_forcing, fn_fd, fn_jac, fn_jac_state, fn_contact, fn_normal, fn_energy,
-            fn_tip, fn_rk4, fn_radau, *extra], layout
+    return [fn_mass, fn_forcing, fn_fd, fn_jac, _input_directions(fn_fd), fn_jac_state,
+            fn_contact, fn_normal, fn_energy, fn_tip, fn_rk4, fn_radau, *extra], layout
 
 
 def _symbolic_inputs(model: SymbolicModel) -> _Inputs:
@@ -240,6 +242,23 @@ def _input_jacobians(xm: Any, taum: Any, pm: Any, vm: Any, blocks: list[Any]) ->
     Jacobian that integration never calls; they go into the deferred library."""
     return emitted_function(INPUT_JACOBIANS, [xm, taum, pm, vm], blocks, ["x", "tau", "p", "v_imp"],
                      ["jac_xdot_tau", "jac_xdot_p", "jac_xdot_v_imp"])
+
+
+def _input_directions(fn_fd: ca.Function) -> ca.Function:
+    """``forward_dynamics_input_directions(x, tau, p, v_imp, seeds) -> d_xdot``: the
+    derivative of ``forward_dynamics`` along each column of ``seeds`` in (p, v_imp), by
+    forward-mode AD (what a forward sensitivity step needs: d xdot / d p times the named
+    parameters' directions, plus d xdot / d v_imp times the impact speeds' derivatives),
+    dense, INPUT_DIRECTIONS columns; it goes into the deferred library."""
+    shapes = [fn_fd.size_in(i) for i in range(4)]
+    xm, taum, pm, vm = (ca.MX.sym(name, *shape)
+                        for name, shape in zip(("x", "tau", "p", "v_imp"), shapes, strict=True))
+    inputs = ca.vertcat(pm, vm)
+    seeds = ca.MX.sym("seeds", inputs.shape[0], INPUT_DIRECTIONS)
+    derivative = ca.jtimes(fn_fd(xm, taum, pm, vm), inputs, seeds)
+    return emitted_function(INPUT_DIRECTIONAL, [xm, taum, pm, vm, seeds],
+                            [ca.densify(derivative)], ["x", "tau", "p", "v_imp", "seeds"],
+                            ["d_xdot"])
 
 
 def _law_values(law: Any) -> list[Any]:

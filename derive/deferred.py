@@ -11,9 +11,15 @@ from __future__ import annotations
 # ``differentiable_forward_dynamics``, ``forward_dynamics`` beside that Jacobian, for CasADi's
 # integrators (a compiled function's Jacobian is looked up in its own library).
 INPUT_JACOBIANS = "jac_forward_dynamics_inputs"
-DEFERRED_FUNCTIONS = (INPUT_JACOBIANS,)
-DEFERRED_EXPORTS = (INPUT_JACOBIANS, "jac_forward_dynamics", "differentiable_forward_dynamics",
-                    "jac_differentiable_forward_dynamics")
+# Forward sensitivities need d xdot / d (p, v_imp) only along the named parameters'
+# directions: this function gives it by forward-mode AD for INPUT_DIRECTIONS directions at a
+# time (seeds, (np + nc) x INPUT_DIRECTIONS, a zero column for none), at under half the cost
+# of the full input blocks of INPUT_JACOBIANS (docs/results/calibration.md, "Cost").
+INPUT_DIRECTIONAL = "forward_dynamics_input_directions"
+INPUT_DIRECTIONS = 4
+DEFERRED_FUNCTIONS = (INPUT_JACOBIANS, INPUT_DIRECTIONAL)
+DEFERRED_EXPORTS = (INPUT_JACOBIANS, INPUT_DIRECTIONAL, "jac_forward_dynamics",
+                    "differentiable_forward_dynamics", "jac_differentiable_forward_dynamics")
 
 
 _FULL_JACOBIAN_IN = ("x", "tau", "p", "v_imp", "out_xdot")

@@ -438,3 +438,29 @@ def test_reciprocal_sqrt_only_in_the_recursion() -> None:
         values[formulation] = float(fn(2.0))
     assert values["recursive"] == pytest.approx(values["closed"], rel=2.3e-16)
     assert values["recursive"] == pytest.approx(2.0 ** -0.5, rel=2.3e-16)
+
+
+@pytest.mark.parametrize("formulation", ("closed", "recursive"))
+@pytest.mark.parametrize("case", [CASES[1], CASES[3]], ids=_case_id)
+def test_input_directions_are_the_input_jacobians_times_the_seeds(
+        case: tuple[tuple[str, ...], Effects], formulation: str) -> None:
+    """forward_dynamics_input_directions (forward-mode AD, what a sensitivity step calls) is
+    d xdot / d p times the seeds' p rows plus d xdot / d v_imp times their v_imp rows, from
+    the full input blocks of jac_forward_dynamics_inputs (reverse mode), column by column."""
+    from jointplay.derive.deferred import INPUT_DIRECTIONAL, INPUT_DIRECTIONS, INPUT_JACOBIANS
+
+    kinds, effects = case
+    functions = _functions(kinds, effects, formulation)
+    directional, blocks = functions[INPUT_DIRECTIONAL], functions[INPUT_JACOBIANS]
+    rng = np.random.default_rng(11)
+    for _ in range(STATES_PER_CASE):
+        inputs = _random_inputs(kinds, effects, rng)
+        _, d_p, d_v = (np.asarray(b.full() if hasattr(b, "full") else b, dtype=float)
+                       for b in _evaluate(blocks, inputs))
+        n_p = d_p.shape[1]
+        seeds = rng.standard_normal((n_p + d_v.shape[1], INPUT_DIRECTIONS))
+        seeds[:, -1] = 0.0  # an unused column gives zeros
+        actual = _evaluate(directional, {**inputs, "seeds": seeds})[0]
+        expected = d_p @ seeds[:n_p] + d_v @ seeds[n_p:]
+        _assert_close(actual, expected, f"{INPUT_DIRECTIONAL} ({formulation})")
+        np.testing.assert_array_equal(actual[:, -1], 0.0)

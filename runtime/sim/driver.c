@@ -118,6 +118,10 @@ typedef struct {
    * and the state's steps are those of a run without sensitivities. */
   int sens_errcon;
   const double *sens_scale;
+  /* The model's forward_dynamics_input_directions (eval NULL: not generated; jac_in's blocks
+   * are read instead): d xdot along dir_k seed columns in (p, v_imp) at a time, dense. */
+  jp_function dir_in;
+  int dir_k;
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -185,6 +189,7 @@ typedef struct {
   int sens_col, sens_record;
   double *Js, *LUs, *LTs; int *pivs;
   double *bz, *fp_sparse, *fv_sparse, *v_sens, *sens_tmp, *f_minus, *f_plus;
+  double *seeds, *dir_out; /* dir_in's seeds ((np + nc) x dir_k) and output (nx x dir_k) */
   double *phase_sens;
   long n_sens_jac;
 } jp_sim;
@@ -615,12 +620,37 @@ static int model_rates(jp_sim *s, double t, const double *z, double *dz) {
   return all_finite(c->nx, dz) ? 0 : 1;
 }
 
-/* bz (ns x nx, scaled): f_p dp + f_v dv_imp/dp at (t, z), from jac_forward_dynamics_inputs. */
+/* bz as sens_forcing's, from forward_dynamics_input_directions: dir_k directions a call, each
+ * seed column a parameter's direction dp and its impact speeds' derivatives. */
+static int sens_forcing_directional(jp_sim *s) {
+  const jp_config *c = &s->c;
+  int nx = c->nx, ns = c->ns, np = c->np, nc = c->nc, k = c->dir_k, rows = np + nc;
+  for (int q0 = 0; q0 < ns; q0 += k) {
+    memset(s->seeds, 0, (size_t)rows * k * sizeof(double));
+    for (int col = 0; col < k && q0 + col < ns; ++col) {
+      int q = q0 + col;
+      memcpy(s->seeds + (size_t)col * rows, c->dp + (size_t)q * np, (size_t)np * sizeof(double));
+      for (int j = 0; j < nc; ++j) s->seeds[(size_t)col * rows + np + j] = s->v_sens[j * ns + q];
+    }
+    s->arg[0] = s->xs; s->arg[1] = s->tau; s->arg[2] = c->p; s->arg[3] = s->v_imp;
+    s->arg[4] = s->seeds;
+    s->res[0] = s->dir_out;
+    if (call(s, &c->dir_in)) return 1;
+    for (int col = 0; col < k && q0 + col < ns; ++col)
+      for (int r = 0; r < nx; ++r)
+        s->bz[(q0 + col) * nx + r] = s->dir_out[(size_t)col * nx + r] / c->scale[r];
+  }
+  return all_finite(ns * nx, s->bz) ? 0 : 1;
+}
+
+/* bz (ns x nx, scaled): f_p dp + f_v dv_imp/dp at (t, z), from jac_forward_dynamics_inputs
+ * (or along the directions alone, where the model has forward_dynamics_input_directions). */
 static int sens_forcing(jp_sim *s, double t, const double *z) {
   const jp_config *c = &s->c;
   int nx = c->nx, ns = c->ns, np = c->np, nc = c->nc;
   if (torques_at(s, t)) return 1;
   unscale(s, z);
+  if (c->dir_in.eval) return sens_forcing_directional(s);
   s->arg[0] = s->xs; s->arg[1] = s->tau; s->arg[2] = c->p; s->arg[3] = s->v_imp;
   for (int k = 0; k < c->jac_in.n_out; ++k) s->res[k] = NULL;
   s->res[1] = s->fp_sparse;
@@ -1459,9 +1489,9 @@ jp_sim *jp_create(const jp_config *config) {
   s->fn_carry = calloc(nc + 1, sizeof(double));
   s->fn_quad_t = s->fn_carry_t = NAN;
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
-  const jp_function *fns[6] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal,
-                               &c->jac_in};
-  for (int k = 0; k < 6; ++k) {
+  const jp_function *fns[7] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal,
+                               &c->jac_in, &c->dir_in};
+  for (int k = 0; k < 7; ++k) {
     if (!fns[k]->eval) continue;
     if (fns[k]->sz_arg > sz_arg) sz_arg = fns[k]->sz_arg;
     if (fns[k]->sz_res > sz_res) sz_res = fns[k]->sz_res;
@@ -1494,9 +1524,12 @@ jp_sim *jp_create(const jp_config *config) {
     s->v_sens = calloc((size_t)nc * c->ns + 1, sizeof(double));
     s->sens_tmp = calloc(N, sizeof(double));
     s->f_minus = calloc(nx, sizeof(double)); s->f_plus = calloc(nx, sizeof(double));
+    int k = c->dir_in.eval ? c->dir_k : 0;
+    s->seeds = calloc((size_t)(c->np + nc) * k + 1, sizeof(double));
+    s->dir_out = calloc((size_t)nx * k + 1, sizeof(double));
     if (!s->Js || !s->LUs || !s->LTs || !s->pivs || !s->bz || !s->fp_sparse ||
         !s->fv_sparse || !s->v_sens || !s->sens_tmp || !s->f_minus || !s->f_plus ||
-        !c->jac_in.eval) {
+        !s->seeds || !s->dir_out || !c->jac_in.eval || (c->dir_in.eval && k < 1)) {
       jp_free(s);
       return NULL;
     }
@@ -1523,7 +1556,7 @@ void jp_free(jp_sim *s) {
                   s->c_out, s->samples, s->fn_quad, s->fn_carry, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
                   s->wear_out, s->wear_volume, s->wear_depth, s->Js, s->LUs, s->LTs,
                   s->pivs, s->bz, s->fp_sparse, s->fv_sparse, s->v_sens, s->sens_tmp,
-                  s->f_minus, s->f_plus, s->phase_sens};
+                  s->f_minus, s->f_plus, s->seeds, s->dir_out, s->phase_sens};
   for (size_t k = 0; k < sizeof(ptrs) / sizeof(ptrs[0]); ++k) free(ptrs[k]);
   free(s);
 }

@@ -69,7 +69,8 @@ class _Config(ctypes.Structure):
                 ("wear", _Function), ("wear_bins", ctypes.c_int), ("normal", _Function),
                 ("ns", ctypes.c_int), ("dp", _dbl_p), ("dc", _dbl_p), ("s0", _dbl_p),
                 ("jac_in", _Function), ("sp_p", _i64_p), ("sp_v", _i64_p),
-                ("sens_errcon", ctypes.c_int), ("sens_scale", _dbl_p)]
+                ("sens_errcon", ctypes.c_int), ("sens_scale", _dbl_p),
+                ("dir_in", _Function), ("dir_k", ctypes.c_int)]
 
 
 @functools.cache
@@ -248,7 +249,7 @@ class NativeIntegrator:
                             sens: SensitivityInputs) -> None:
         """Point the loop at the sensitivity inputs and the model's parameter Jacobians (its
         deferred library, compiled on first use)."""
-        from jointplay.derive.deferred import INPUT_JACOBIANS
+        from jointplay.derive.deferred import INPUT_DIRECTIONAL, INPUT_JACOBIANS
 
         self._sens = sens
         self.n_sensitivities = sens.count
@@ -265,6 +266,13 @@ class NativeIntegrator:
         cfg.sp_v = pattern(ctypes.c_longlong(2))
         cfg.sens_errcon = int(sens.error_control)
         cfg.sens_scale = _ptr(sens.sizes, _dbl_p)
+        # The forcing along the named directions by forward-mode AD, where the model has it
+        # (generated since; without it the loop reads the full input blocks of jac_in).
+        if INPUT_DIRECTIONAL in model.layout.deferred:
+            cfg.dir_in, _ = _function(model, INPUT_DIRECTIONAL, library)
+            seeds = getattr(lib, f"{INPUT_DIRECTIONAL}_sparsity_in")
+            seeds.restype = _i64_p
+            cfg.dir_k = int(seeds(ctypes.c_longlong(4))[1])
 
     def sensitivity_rows(self, values: np.ndarray) -> np.ndarray:
         """d state / d parameter (rows, nx, ns), unscaled, from output rows of integrate."""
