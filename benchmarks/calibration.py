@@ -68,7 +68,7 @@ def recovery(scene: jp.Scene, model: Any, draws: int, first: int = 0
             continue
         measured = synthetic(scene, model, truth, seed=draw)
         result = calibrate(scene, measured, list(NAMES), noise=NOISE, model=model,
-                           options=CalibrationOptions(profile_points=0))
+                           options=CalibrationOptions())
         row: dict[str, Any] = {"draw": draw}
         for name in NAMES:
             e = result.estimates[name]

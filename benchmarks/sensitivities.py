@@ -6,7 +6,11 @@ it (``sensitivity_error_control``), each ``--repeats`` times: median CPU seconds
 ``simulate`` call (``time.process_time``: integration, the derived outputs and, with
 sensitivities, the tip's and peaks'), min and max, and the ratio to the run without. Outside
 the error test the steps are those of the run without; the last column counts the Jacobians
-the sensitivities take.
+the sensitivities take. Each row with sensitivities outside the error test is run twice, the
+step's forcing along the named directions by forward-mode AD (``directions``, what the
+integrator uses) and from the full input blocks over every parameter (``blocks``, what a
+model generated before the directional function uses). ``--tighten F`` divides the scene's
+tolerances by F (the calibration's runs: 1000).
 
 Accuracy (``--accuracy``): the sensitivities of runs at several tolerances, outside the error
 test and in it, against central differences of runs at rtol = atol = 1e-13
@@ -16,6 +20,7 @@ the largest over the parameters (``--detail``: each), on the scene's first 5 ms 
 impacts of the two joints) and on a journal falling in its bearing (three impacts).
 
     python benchmarks/sensitivities.py --repeats 5
+    python benchmarks/sensitivities.py --repeats 5 --tighten 1000
     python benchmarks/sensitivities.py --accuracy
 """
 
@@ -30,6 +35,7 @@ from importlib.metadata import version
 from typing import Any
 
 import jointplay
+from jointplay.derive import deferred
 from jointplay.scene.definition import Scene, scene_from_dict
 
 NAMES = ("joint2.clearance", "joint3.clearance", "friction.mu", "payload.mass",
@@ -54,27 +60,33 @@ def cost(scene: Scene, repeats: int) -> None:
                        sensitivities=NAMES)  # the model and its parameter Jacobian, once
     print(f"Paper scene, {scene.run.t_end:g} s at rtol {scene.run.rtol:g}, atol "
           f"{scene.run.atol:g}; {machine()}\n")
-    print("| sensitivities | in the error test | CPU s (median) | min | max | ratio | steps "
-          "| impacts | sensitivity Jacobians |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| sensitivities | in the error test | forcing | CPU s (median) | min | max | ratio "
+          "| steps | impacts | sensitivity Jacobians |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     base = None
+    generated = deferred.INPUT_DIRECTIONAL
     for control in (False, True):
         for count in COUNTS if not control else COUNTS[1:]:
-            names = NAMES[:count] or None
-            times, result = [], None
-            for _ in range(repeats):
-                start = time.process_time()
-                result = jointplay.simulate(scene, sensitivities=names,
-                                            sensitivity_error_control=control)
-                times.append(time.process_time() - start)
-            assert result is not None
-            median = statistics.median(times)
-            base = base or median
-            label = ", ".join(NAMES[:count]) if count else "none"
-            print(f"| {count} ({label}) | {'yes' if control else 'no'} | {median:.3f} | "
-                  f"{min(times):.3f} | {max(times):.3f} | {median / base:.2f} | "
-                  f"{result.stats['steps']} | {len(result.impacts)} | "
-                  f"{result.stats.get('sensitivity_jacobians', 0)} |")
+            for forcing in ("directions", "blocks") if count and not control else ("directions",):
+                names = NAMES[:count] or None
+                # the blocks: as for a model without the directional function
+                deferred.INPUT_DIRECTIONAL = generated if forcing == "directions" else "none"
+                times, result = [], None
+                for _ in range(repeats):
+                    start = time.process_time()
+                    result = jointplay.simulate(scene, sensitivities=names,
+                                                sensitivity_error_control=control)
+                    times.append(time.process_time() - start)
+                deferred.INPUT_DIRECTIONAL = generated
+                assert result is not None
+                median = statistics.median(times)
+                base = base or median
+                label = ", ".join(NAMES[:count]) if count else "none"
+                print(f"| {count} ({label}) | {'yes' if control else 'no'} | "
+                      f"{forcing if count else ''} | {median:.3f} | "
+                      f"{min(times):.3f} | {max(times):.3f} | {median / base:.2f} | "
+                      f"{result.stats['steps']} | {len(result.impacts)} | "
+                      f"{result.stats.get('sensitivity_jacobians', 0)} |")
 
 
 def falling_journal(tolerance: float) -> Scene:
@@ -137,6 +149,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--t-end", type=float, default=None, help="simulated time (s)")
     parser.add_argument("--repeats", type=int, default=5, help="runs per row")
+    parser.add_argument("--tighten", type=float, default=1.0,
+                        help="the scene's tolerances divided by this (the calibration's: 1000)")
     parser.add_argument("--accuracy", action="store_true",
                         help="the accuracy tables instead of the cost table")
     parser.add_argument("--detail", action="store_true",
@@ -150,6 +164,8 @@ def main() -> None:
     scene = jointplay.default_scene()
     if args.t_end is not None:
         scene = scene.with_run(t_end=args.t_end)
+    scene = scene.with_run(rtol=scene.run.rtol / args.tighten,
+                           atol=scene.run.atol / args.tighten)
     cost(scene, args.repeats)
 
 

@@ -14,7 +14,7 @@ INPUT_JACOBIANS = "jac_forward_dynamics_inputs"
 # Forward sensitivities need d xdot / d (p, v_imp) only along the named parameters'
 # directions: this function gives it by forward-mode AD for INPUT_DIRECTIONS directions at a
 # time (seeds, (np + nc) x INPUT_DIRECTIONS, a zero column for none), at under half the cost
-# of the full input blocks of INPUT_JACOBIANS (docs/results/calibration.md, "Cost").
+# of the full input blocks of INPUT_JACOBIANS (docs/explanation/sensitivities.md, "Cost").
 INPUT_DIRECTIONAL = "forward_dynamics_input_directions"
 INPUT_DIRECTIONS = 4
 DEFERRED_FUNCTIONS = (INPUT_JACOBIANS, INPUT_DIRECTIONAL)

@@ -2,9 +2,9 @@
  * Regenerate: `jointplay derive robot.toml --out <this folder>`, or for the models
  * checked in under generated/: `pytest tests/test_generated.py --update-generated`.
  * model: paper_4dof
- * generator: jointplay.derive 0.1.0+eac8f10b0414, casadi 3.8.2, sympy 1.14.0
+ * generator: jointplay.derive 0.1.0+6235263689d5, casadi 3.8.2, sympy 1.14.0
  * formulation: closed
- * input hash: 5e2a5a1b6661af19837f7879d251ac67eab74fdf3e5a5d701f3f54f6419c9415
+ * input hash: b7ef2896db5fe14ac39070c635dc9aef476bf3b6c97d931d67a3e5f2442f0012
  * Every input and output slot is described, with names and units, in layout.json.
  * Functions (inputs -> outputs; column vectors, dense, float64):
  *   mass_matrix(q[6], p[39]) -> M[6x6]

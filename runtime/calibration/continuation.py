@@ -280,8 +280,7 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
     runs = probe.counter.simulations
     if held.all():
         return (None, x), runs
-    stage = Predictor(stage_scene, predictor.model, _holding(predictor.free, x, held),
-                      part, compiled=predictor.compiled)
+    stage = probe.for_free(_holding(predictor.free, x, held))
     try:
         x_next, record = multi_start(stage, weights, starts, max_evaluations,
                                      stop_early=stated)

@@ -72,6 +72,14 @@ class Predictor:
         self.compiled = self._compiled_names() if compiled is None else compiled
         self._cache: dict[bytes, tuple[np.ndarray, np.ndarray | None]] = {}
 
+    def for_free(self, free: FreeParameters) -> Predictor:
+        """This predictor for ``free`` (the same names, other bounds: some held), sharing its
+        last run (a fit from the point it was asked at takes no run there again) but not its
+        count."""
+        other = Predictor(self.scene, self.model, free, self.measured, compiled=self.compiled)
+        other._cache = self._cache
+        return other
+
     # -- the two things a fit asks for ---------------------------------------------------------
 
     def outputs(self, x: np.ndarray, *, with_jacobian: bool = True) -> np.ndarray:

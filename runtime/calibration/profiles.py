@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.predict import Predictor, TrialFailed, whitened
+from jointplay.calibration.predict import Predictor, chi2_at_points
 from jointplay.calibration.uncertainty import Uncertainty
 
 PROFILE_SIGMAS = 4.0
@@ -23,35 +23,36 @@ UNDETERMINED_SPAN = 0.5
 
 
 def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty,
-                  points: int) -> dict[str, dict[str, list[float]]]:
-    """``{name: {"value": [...], "chi2": [...], "quadratic": [...]}}`` (empty if points=0)."""
+                  points: int, workers: int = 1
+                  ) -> tuple[dict[str, dict[str, list[float]]], int]:
+    """``{name: {"value": [...], "chi2": [...], "quadratic": [...]}}`` (empty if points=0;
+    chi² NaN where the run stops), and the runs, made on up to ``workers`` processes."""
     if points == 0:
-        return {}
+        return {}, 0
     free = predictor.free
-    measured = predictor.measured
     best = optimum.values
     chi2_min = float(np.sum(optimum.residuals**2))
     jtj_diag = np.sum(optimum.jacobian**2, axis=0)
-    out: dict[str, dict[str, list[float]]] = {}
-    for k, name in enumerate(free.names):
-        sigma_held = 1.0 / math.sqrt(jtj_diag[k]) if jtj_diag[k] > 0 else math.inf
+    grids = []
+    for k in range(free.size):
         if math.isfinite(spread.std[k]):
             half = PROFILE_SIGMAS * float(spread.std[k])
         else:
             half = UNDETERMINED_SPAN * (abs(best[k]) or 1.0)
-        grid = np.linspace(max(best[k] - half, free.lower[k]),
-                           min(best[k] + half, free.upper[k]), points)
-        chi2 = []
-        for value in grid:
-            x = best.copy()
-            x[k] = value
-            try:
-                residual = whitened(predictor.outputs(x, with_jacobian=False) - measured.values,
-                                    optimum.sigma)
-                chi2.append(float(np.sum(residual**2)))
-            except TrialFailed:
-                chi2.append(math.nan)
-        quadratic = chi2_min + ((grid - best[k]) / sigma_held) ** 2
-        out[name] = {"value": grid.tolist(), "chi2": chi2, "quadratic": quadratic.tolist(),
-                     "estimate": [float(best[k])], "chi2_min": [chi2_min]}
-    return out
+        grids.append(np.linspace(max(best[k] - half, free.lower[k]),
+                                 min(best[k] + half, free.upper[k]), points))
+    every = [np.where(np.arange(free.size) == k, value, best)
+             for k, grid in enumerate(grids) for value in grid]
+    probe = Predictor(predictor.scene, predictor.model, free, predictor.measured,
+                      compiled=predictor.compiled)
+    values, runs = chi2_at_points(probe, optimum.sigma, every, workers)
+    out: dict[str, dict[str, list[float]]] = {}
+    for k, name in enumerate(free.names):
+        sigma_held = 1.0 / math.sqrt(jtj_diag[k]) if jtj_diag[k] > 0 else math.inf
+        chi2 = [v if math.isfinite(v) else math.nan
+                for v in values[k * points:(k + 1) * points]]
+        quadratic = chi2_min + ((grids[k] - best[k]) / sigma_held) ** 2
+        out[name] = {"value": grids[k].tolist(), "chi2": chi2,
+                     "quadratic": quadratic.tolist(), "estimate": [float(best[k])],
+                     "chi2_min": [chi2_min]}
+    return out, runs

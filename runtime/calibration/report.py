@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from jointplay.calibration.api import CalibrationResult
+from jointplay.calibration.api import CONSISTENT, CalibrationResult
 from jointplay.common.files import OutputPlan
 
 FILES = ("calibration.json", "report.md", "fit.png", "residuals.png", "profiles.png")
@@ -60,6 +60,11 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
         lines += ["**The fit does not explain the data within the stated noise: the estimates "
                   "below are the best optimum found, not established values, and their "
                   "intervals are not valid.**", ""]
+    elif result.fit_consistent is False:
+        lines += ["**The fit's chi² is higher than a fit in the basin of the true parameters "
+                  f"would reach in {100 * CONSISTENT:g} % of noise draws: it may be a "
+                  "neighbouring basin's, and no parameter is reported as determined (see the "
+                  "warnings).**", ""]
     lines += ["| parameter | start | estimate | std | 95 % interval | determined |",
               "|---|---|---|---|---|---|"]
     for e in result.estimates.values():
