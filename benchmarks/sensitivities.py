@@ -27,10 +27,12 @@ impacts of the two joints) and on a journal falling in its bearing (three impact
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import platform
 import statistics
 import time
+from collections.abc import Iterator
 from importlib.metadata import version
 from typing import Any
 
@@ -64,29 +66,50 @@ def cost(scene: Scene, repeats: int) -> None:
           "| steps | impacts | sensitivity Jacobians |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     base = None
-    generated = deferred.INPUT_DIRECTIONAL
+    paired = []
     for control in (False, True):
         for count in COUNTS if not control else COUNTS[1:]:
-            for forcing in ("directions", "blocks") if count and not control else ("directions",):
-                names = NAMES[:count] or None
-                # the blocks: as for a model without the directional function
-                deferred.INPUT_DIRECTIONAL = generated if forcing == "directions" else "none"
-                times, result = [], None
-                for _ in range(repeats):
-                    start = time.process_time()
-                    result = jointplay.simulate(scene, sensitivities=names,
-                                                sensitivity_error_control=control)
-                    times.append(time.process_time() - start)
-                deferred.INPUT_DIRECTIONAL = generated
-                assert result is not None
-                median = statistics.median(times)
+            names = NAMES[:count] or None
+            forcings = ("directions", "blocks") if count and not control else ("directions",)
+            times: dict[str, list[float]] = {f: [] for f in forcings}
+            results: dict[str, Any] = {}
+            for _ in range(repeats):  # the two forcings in turn: the machine's drift shared
+                for forcing in forcings:
+                    with _forcing(forcing):
+                        start = time.process_time()
+                        results[forcing] = jointplay.simulate(
+                            scene, sensitivities=names, sensitivity_error_control=control)
+                        times[forcing].append(time.process_time() - start)
+            for forcing in forcings:
+                median = statistics.median(times[forcing])
                 base = base or median
+                result = results[forcing]
                 label = ", ".join(NAMES[:count]) if count else "none"
                 print(f"| {count} ({label}) | {'yes' if control else 'no'} | "
                       f"{forcing if count else ''} | {median:.3f} | "
-                      f"{min(times):.3f} | {max(times):.3f} | {median / base:.2f} | "
-                      f"{result.stats['steps']} | {len(result.impacts)} | "
+                      f"{min(times[forcing]):.3f} | {max(times[forcing]):.3f} | "
+                      f"{median / base:.2f} | {result.stats['steps']} | "
+                      f"{len(result.impacts)} | "
                       f"{result.stats.get('sensitivity_jacobians', 0)} |")
+            if len(forcings) == 2:
+                ratios = [a / b for a, b in zip(times["directions"], times["blocks"],
+                                                strict=True)]
+                paired.append((count, statistics.median(ratios), max(ratios)))
+    print("\nDirections against blocks, run for run (median and worst of the ratios):")
+    for count, median, worst in paired:
+        print(f"- {count} sensitivities: {median:.2f} (worst {worst:.2f})")
+
+
+@contextlib.contextmanager
+def _forcing(forcing: str) -> Iterator[None]:
+    """The step's forcing from the directional function, or from the full blocks (as for a
+    model generated without it)."""
+    generated = deferred.INPUT_DIRECTIONAL
+    deferred.INPUT_DIRECTIONAL = generated if forcing == "directions" else "not generated"
+    try:
+        yield
+    finally:
+        deferred.INPUT_DIRECTIONAL = generated
 
 
 def falling_journal(tolerance: float) -> Scene:
