@@ -598,6 +598,79 @@ def test_other_tracks_whole_record_fits_are_rivals_and_centres() -> None:
     assert _other_centres(best, 4000.0, covariance, (same_basin, failed), limit + SLACK) == []
 
 
+def test_the_basin_lines_also_go_through_another_track_fit(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """On the arm with ideal joints: another whole-record fit within the threshold plus
+    SLACK, in another basin, doubles the basin check's line runs (the same lines through it); one
+    above that, or in the best's own basin, adds none. The earlier fits reach the check only
+    where the noise is stated (without it their chi² is in other units)."""
+    from jointplay.calibration import api
+    from jointplay.calibration.api import prepare
+    from jointplay.calibration.basins import SLACK, neighbouring_basins, threshold
+    from jointplay.calibration.fit import Start, least_squares_fit
+    from jointplay.calibration.predict import Predictor
+    from jointplay.calibration.uncertainty import uncertainty
+
+    scene = _ideal_scene(0.2)
+    truth = {"payload.mass": 2.3, "link2.com": 0.19}
+    measured = _synthetic(scene, truth, seed=6)
+    problem = prepare(scene, measured, list(truth), noise=NOISE,
+                      options=CalibrationOptions(tighten=1.0))
+    free = problem.free
+    predictor = Predictor(problem.scene, problem.model, free, problem.measured)
+    optimum = least_squares_fit(predictor, problem.sigma, free.start[None, :], 40)
+    chi2 = float(np.sum(optimum.residuals**2))
+    spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
+
+    def check(others: tuple[Start, ...]) -> int:
+        return neighbouring_basins(predictor, optimum.sigma, optimum.values, chi2,
+                                   spread.covariance, 40, 1, others=others).line_runs
+
+    alone = check(())
+    away = optimum.values + 3 * spread.std * np.array([1.0, 0.0])
+    near = Start(tuple(away), tuple(away), chi2 + 5.0, 3, "")
+    high = Start(tuple(away), tuple(away), chi2 + threshold() + SLACK + 1.0, 3, "")
+    same = Start(tuple(optimum.values), tuple(optimum.values + 0.1 * spread.std), chi2, 3, "")
+    assert alone > 1 and check((near,)) - 1 == 2 * (alone - 1)  # the best's own run once
+    assert check((high, same)) == alone
+
+    given: list[tuple[Start, ...]] = []
+    real = api.neighbouring_basins
+
+    def recorded(*args: Any, others: tuple[Start, ...] = (), **kwargs: Any) -> Any:
+        given.append(others)
+        return real(*args, others=others, **kwargs)
+
+    monkeypatch.setattr(api, "neighbouring_basins", recorded)
+    options = CalibrationOptions(tighten=1.0, starts=1, scan_points=0, profile_points=0,
+                                 horizon_first=0)
+    calibrate(scene, measured, list(truth), noise=NOISE, options=options)
+    calibrate(scene, measured, list(truth), options=options)
+    assert len(given) == 2 and len(given[0]) >= 1 and given[1] == ()
+
+
+def test_at_least_two_tracks_reach_the_whole_record(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Before the whole-record fits the tracks are ranked by one run each: those more than
+    TRACK_MARGIN above the best are dropped, but never the WHOLE_RECORD_TRACKS best; that
+    many tracks or fewer are kept without a run."""
+    from jointplay.calibration import api
+    from jointplay.calibration.continuation import TRACK_MARGIN
+
+    values = {0: 4000.0, 1: 4000.0 + 3 * TRACK_MARGIN, 2: 4000.0 + 2 * TRACK_MARGIN,
+              3: 4000.0 + TRACK_MARGIN / 2}
+    monkeypatch.setattr(api, "chi2_at_points", lambda predictor, weights, points, workers: (
+        [values[int(p[0])] for p in points], len(points)))
+    tracks = np.array([[0.0], [1.0], [2.0], [3.0]])
+    kept, runs = api._ranked(None, np.ones(1), tracks, 1)  # type: ignore[arg-type]
+    assert api.WHOLE_RECORD_TRACKS == 2
+    assert kept[:, 0].tolist() == [0.0, 3.0] and runs == 4
+    far = np.array([[0.0], [1.0], [2.0]])
+    kept, runs = api._ranked(None, np.ones(1), far, 1)  # type: ignore[arg-type]
+    assert kept[:, 0].tolist() == [0.0, 2.0] and runs == 3
+    kept, runs = api._ranked(None, np.ones(1), far[:2], 1)  # type: ignore[arg-type]
+    assert kept[:, 0].tolist() == [0.0, 1.0] and runs == 0
+
+
 def test_on_a_quadratic_cost_the_basin_lines_stay_inside_the_intervals() -> None:
     """Where the cost is the quadratic its covariance describes (no impacts), every point of
     the lines within the threshold lies inside each parameter's Wald interval: the check
