@@ -14,10 +14,10 @@ import numpy as np
 from jointplay.calibration.basins import Basins, neighbouring_basins, widened
 from jointplay.calibration.continuation import TRACK_MARGIN, Stage, ValleyScan, continuation
 from jointplay.calibration.fit import (
-    CHI2_SIGMAS,
     Optimum,
     Scan,
     Start,
+    explaining_limit,
     least_squares_fit,
     residual_statistics,
     starts_around,
@@ -331,18 +331,18 @@ def run(problem: Problem) -> CalibrationResult:
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
     stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
-    warnings = list(spread.warnings)
-    warnings += _fit_warnings(stats, problem.sigma is not None, optimum.values, free)
     explains = consistent = None
     if problem.sigma is not None:
         from scipy.stats import chi2
 
         dof = max(stats["dof"], 1)
-        explains = bool(stats["chi2"] <= dof + CHI2_SIGMAS * math.sqrt(2 * dof))
+        explains = bool(stats["chi2"] <= explaining_limit(dof))
         consistent = bool(stats["chi2"] <= chi2.ppf(CONSISTENT, dof))
         stats["chi2_upper_tail"] = float(chi2.sf(stats["chi2"], dof))
-        if explains and not consistent:
-            warnings.append(_inconsistent_warning(stats))
+    warnings = list(spread.warnings)
+    warnings += _fit_warnings(stats, explains, optimum.values, free)
+    if explains and not consistent:
+        warnings.append(_inconsistent_warning(stats))
     profiles, profile_runs = cost_profiles(predictor, optimum, spread, opts.profile_points,
                                            opts.workers)
     wall1, cpu1 = timed()
@@ -460,11 +460,10 @@ def _inconsistent_warning(stats: dict[str, Any]) -> str:
             "determined; more --starts, or a noise level you trust, may settle it")
 
 
-def _fit_warnings(stats: dict[str, Any], stated: bool, values: np.ndarray,
+def _fit_warnings(stats: dict[str, Any], explains: bool | None, values: np.ndarray,
                   free: FreeParameters) -> list[str]:
     out = []
-    dof = stats["dof"]
-    if stated and dof > 0 and stats["chi2"] > dof + CHI2_SIGMAS * math.sqrt(2 * dof):
+    if explains is False and stats["dof"] > 0:
         out.append(f"the fit does not explain the data within the stated noise (chi²/dof = "
                    f"{stats['normalised_chi2']:.3g}): a local minimum (impacts make the cost "
                    "rugged; more --starts or --scan-points may find a better one), a model "

@@ -177,9 +177,15 @@ def _chi2(start: Start) -> float:
     return start.chi2
 
 
+def explaining_limit(dof: int) -> float:
+    """The highest chi² that explains the data within the stated noise on ``dof`` degrees of
+    freedom (at least one): dof + CHI2_SIGMAS sqrt(2 dof)."""
+    dof = max(dof, 1)
+    return dof + CHI2_SIGMAS * math.sqrt(2 * dof)
+
+
 def _explains(start: Start, predictor: Predictor) -> bool:
-    dof = max(predictor.measured.size - predictor.free.size, 1)
-    return start.chi2 <= dof + CHI2_SIGMAS * math.sqrt(2 * dof)
+    return start.chi2 <= explaining_limit(predictor.measured.size - predictor.free.size)
 
 
 def column_noise(predictor: Predictor, values: np.ndarray, n_free: int) -> np.ndarray:
@@ -200,8 +206,7 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
     ``workers`` forked processes (their runs added to ``predictor``'s count)."""
     measured = predictor.measured
     free = predictor.free
-    dof = max(measured.size - free.size, 1)
-    accept = dof + CHI2_SIGMAS * math.sqrt(2 * dof)
+    accept = explaining_limit(measured.size - free.size)
     record: list[Start] = []
     best: np.ndarray | None = None
     best_chi2 = math.inf
