@@ -46,6 +46,11 @@ basin of the rugged cost whose chi² lies 2-4 standard deviations above its expe
 (benchmark draws 1 and 6: chi²/dof 1.05 and 1.08 on 3997 degrees of freedom, the friction
 15 and 6 of its standard deviations from the truth) and whose intervals miss the truth."""
 
+GRID_LINE_REACH = 1.5
+"""How far the grid window's line reaches either side of the best track's fit, in grid
+spacings: the true valley lies within half a spacing of some grid point, and the best one
+can be a neighbour of that point."""
+
 
 @dataclass(frozen=True)
 class CalibrationOptions:
@@ -66,7 +71,15 @@ class CalibrationOptions:
     the fit's tolerances times ``window_looser`` (as are the runs on every window shorter than
     the record), whose ``grid_candidates`` lowest local minima
     each start a track of the continuation, from ``grid_window`` on (0: no grid; the
-    continuation starts at ``horizon_first`` from the start). ``basins``: look for the
+    continuation starts at ``horizon_first`` from the start). ``grid_line_points``: runs on
+    the grid's window along the clearances' rugged directions (those of the valley lines,
+    below) through the best track's fit over the grid's window, GRID_LINE_REACH grid
+    spacings either side, whose ``valley_keep`` lowest minima join the tracks (0: no line):
+    over 20 ms the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's
+    the lowest by about 20, and a fit from a grid point 2 µm from the next stays in the one
+    it starts in. ``valley_window``, ``valley_points``, ``valley_keep``: the valley lines'
+    first window (s), runs per line and minima kept (see :func:`continuation`).
+    ``basins``: look for the
     other minima of the whole record's cost near the best fit, which the data cannot tell
     from it, and widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
     ``workers``: processes for the
@@ -89,6 +102,7 @@ class CalibrationOptions:
     valley_window: float = 0.32
     valley_points: int = 81
     valley_keep: int = 3
+    grid_line_points: int = 151
     basins: bool = True
     workers: int = 2
 
@@ -104,6 +118,8 @@ class CalibrationOptions:
                   ("grid_window", self.grid_window >= 0, "must be >= 0 (s; 0: no grid)"),
                   ("grid_points", self.grid_points >= 3, "must be >= 3"),
                   ("grid_candidates", self.grid_candidates >= 1, "must be >= 1"),
+                  ("grid_line_points", self.grid_line_points == 0
+                   or self.grid_line_points >= 3, "must be 0 (no line) or >= 3"),
                   ("window_looser", self.window_looser >= 1, "must be >= 1"),
                   ("workers", self.workers >= 1, "must be >= 1"),
                   ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
@@ -284,18 +300,21 @@ def run(problem: Problem) -> CalibrationResult:
             grid = grid_candidates(predictor, weights, centre, Grid(
                 opts.grid_window, opts.grid_points, opts.spread, opts.grid_candidates,
                 opts.window_looser), opts.workers)
-        valley = None
+        valley = opening = None
         if grid is not None and len(grid.candidates):
             tracks, first = grid.candidates, grid.window_end
             stage_runs += grid.simulations
+            scale = grid_scale(problem.free, centre, grid, opts.spread)
             if opts.valley_window > 0:
                 valley = ValleyScan(opts.valley_window, opts.valley_points, 2.0,
-                                    opts.valley_keep,
-                                    grid_scale(problem.free, centre, grid, opts.spread))
+                                    opts.valley_keep, scale)
+            if opts.grid_line_points > 0:
+                opening = ValleyScan(grid.window_end, opts.grid_line_points, GRID_LINE_REACH,
+                                     opts.valley_keep, scale)
         survivors, stages, runs = continuation(
             predictor, weights, tracks, starts, problem.sigma is not None,
             opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser,
-            opts.workers)
+            opts.workers, opening)
         stage_runs += runs
         survivors, runs = _ranked(predictor, weights, survivors, opts.workers)
         stage_runs += runs
@@ -430,6 +449,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
                   "grid_window": problem.options.grid_window,
                   "grid_points": problem.options.grid_points,
                   "grid_candidates": problem.options.grid_candidates,
+                  "grid_line_points": problem.options.grid_line_points,
                   "window_looser": problem.options.window_looser,
                   "basins": problem.options.basins,
                   "workers": problem.options.workers,

@@ -119,7 +119,8 @@ class ValleyScan:
 def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
                  alternatives: np.ndarray, stated: bool, max_evaluations: int, first: float,
                  growth: float, valley: ValleyScan | None = None, looser: float = 1.0,
-                 workers: int = 1) -> tuple[np.ndarray, list[Stage], int]:
+                 workers: int = 1, opening: ValleyScan | None = None
+                 ) -> tuple[np.ndarray, list[Stage], int]:
     """The estimates after the windows shorter than the record (the surviving tracks, best
     first), the stages, and the runs they took.
 
@@ -141,7 +142,10 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     the parameters the lines do not move (fitted over the whole record before) are held: a
     short window sees them barely and, left free, they absorb the clearances' misfit (on the
     paper scene the friction drifted 3 % from a value within 1 % of the truth, enough to
-    rank the true track below a wrong one at 0.16 s)."""
+    rank the true track below a wrong one at 0.16 s). With ``opening``, lines of the same
+    kind through the best track's start, with their own reach and points, put their lowest
+    minima in its place before the first window's fits (see
+    ``CalibrationOptions.grid_line_points``)."""
     measured = predictor.measured
     ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first,
                            growth)
@@ -158,49 +162,86 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
         t_end = min(scene.run.t_end, math.ceil(end / step - 1e-9) * step)
         stage_scene = loosened(scene.with_run(t_end=t_end), looser)
         dof = max(part.size - predictor.free.size, 1)
-        if valley is not None and end >= valley.window * (1 - 1e-9) and alive:
+        scans_here = []
+        if k == 0 and opening is not None:
+            scans_here.append(opening)  # through the best grid point, its minima fitted
+            # over this window, where their valleys are widest, before the next one
+        if valley is not None and end >= valley.window * (1 - 1e-9):
             scanned = True
-            directions, more = _rugged(predictor, stage_scene, part, weights, alive[0],
-                                       np.asarray(valley.scale))
-            runs += more
             # each later window's lines reach less far (its valleys are narrower, and the
             # tracks nearer them) with the same number of runs: finer steps
-            reach = valley.reach / growth**scans
+            scans_here.append(dataclasses.replace(valley, reach=valley.reach / growth**scans))
             scans += 1
-            found, scan_runs = _valley_minima(predictor, stage_scene, part, weights, alive[0],
-                                              directions,
-                                              dataclasses.replace(valley, reach=reach),
-                                              workers)
-            runs += scan_runs
+        for scan in scans_here:
+            if not alive:
+                break
+            found, more = _line_minima(predictor, stage_scene, part, weights, alive[0], scan,
+                                       workers)
+            runs += more
             if found:  # the line passes through the best track's estimate: it replaces it
                 first_label = max(labels) + 1
                 alive = found + alive[1:]
                 labels = list(range(first_label, first_label + len(found))) + labels[1:]
         held_first = (valley.held_before if valley is not None and not scanned
                       else np.zeros(predictor.free.size, dtype=bool))
-        fitted_tracks: list[tuple[int, np.ndarray, float]] = []
-        unseen: list[tuple[int, np.ndarray, float]] = []
-        jobs = [(x, alternatives if k == 0 and len(alive) == 1 else x[None, :], label)
-                for x, label in zip(alive, labels, strict=True)]
-        for i, (fitted, stage_runs) in enumerate(_fit_tracks(
-                predictor, stage_scene, part, weights, jobs,
-                max_evaluations if scanned else min(max_evaluations, WINDOW_EVALUATIONS),
-                stated, float(end), held_first, workers)):
-            runs += stage_runs
-            if fitted is None:
-                continue  # every run of this track stopped: the track ends
-            stage, x_next = fitted
-            if stage is None:
-                unseen.append((labels[i], alive[i], math.inf))
-            else:
-                stages.append(stage)
-                fitted_tracks.append((labels[i], x_next, stage.chi2))
-        if not fitted_tracks and not unseen:
+        evaluations = max_evaluations if scanned else min(max_evaluations, WINDOW_EVALUATIONS)
+        fitted, more = _window_fits(predictor, stage_scene, part, weights, alive, labels,
+                                    alternatives if k == 0 and len(alive) == 1 else None,
+                                    evaluations, stated, float(end), held_first, workers)
+        runs += more
+        stages += fitted[2]
+        if not fitted[0] and not fitted[1]:
             break
-        kept = _surviving(fitted_tracks, dof, predictor.free) + unseen
+        kept = _surviving(fitted[0], dof, predictor.free) + fitted[1]
         labels = [r[0] for r in kept]
         alive = [r[1] for r in kept]
     return np.array(alive).reshape(-1, predictor.free.size), stages, runs
+
+
+def _line_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
+                 weights: np.ndarray, x: np.ndarray, scan: ValleyScan, workers: int
+                 ) -> tuple[list[np.ndarray], int]:
+    """The ``scan.keep`` lowest minima of the window's chi² along ``scan``'s lines through
+    ``x`` (across the directions :func:`_rugged` finds there), and the runs."""
+    directions, runs = _rugged(predictor, stage_scene, part, weights, x,
+                               np.asarray(scan.scale))
+    found, more = _valley_minima(predictor, stage_scene, part, weights, x, directions, scan,
+                                 workers)
+    return found, runs + more
+
+
+Fitted = tuple[list[tuple[int, np.ndarray, float]], list[tuple[int, np.ndarray, float]],
+               list[Stage]]
+"""A window's fits: (label, estimate, chi²) of each track fitted, those of the tracks the
+window does not see (chi² inf, estimate unchanged), and the stages."""
+
+
+def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
+                 weights: np.ndarray, alive: list[np.ndarray], labels: list[int],
+                 alternatives: np.ndarray | None, max_evaluations: int, stated: bool,
+                 end: float, held_first: np.ndarray, workers: int) -> tuple[Fitted, int]:
+    """Each track's fit over one window (a track whose every run stops ends there), and the
+    runs. With ``alternatives`` (a single track), its fit tries them while it does not
+    explain the window."""
+    jobs = [(x, alternatives if alternatives is not None else x[None, :], label)
+            for x, label in zip(alive, labels, strict=True)]
+    fitted: list[tuple[int, np.ndarray, float]] = []
+    unseen: list[tuple[int, np.ndarray, float]] = []
+    stages: list[Stage] = []
+    runs = 0
+    for i, (result, stage_runs) in enumerate(_fit_tracks(
+            predictor, stage_scene, part, weights, jobs, max_evaluations, stated, end,
+            held_first, workers)):
+        runs += stage_runs
+        if result is None:
+            continue
+        stage, x_next = result
+        if stage is None:
+            unseen.append((labels[i], alive[i], math.inf))
+        else:
+            stages.append(stage)
+            fitted.append((labels[i], x_next, stage.chi2))
+    return (fitted, unseen, stages), runs
 
 
 def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,

@@ -55,6 +55,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--grid-points", type=int, default=16,
                    help="values of each free clearance in the grid, across --spread of the "
                         "start (default 16)")
+    p.add_argument("--grid-line-points", type=int, default=151,
+                   help="runs on the grid's window along the clearances' rugged directions "
+                        "through the best track's fit there, 1.5 grid spacings either side; "
+                        "their lowest minima join the tracks (default 151; 0: no line)")
     p.add_argument("--no-basin-check", dest="basins", action="store_false",
                    help="skip the search for the other minima of the whole record's cost "
                         "near the best fit (lines along the axes of its confidence "
@@ -114,13 +118,14 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
              "--scan-points": args.scan_points, "--profile-points": args.profile_points,
              "--tighten": args.tighten, "--horizon-first": args.horizon_first,
              "--horizon-growth": args.horizon_growth, "--grid-window": args.grid_window,
-             "--grid-points": args.grid_points}
+             "--grid-points": args.grid_points, "--grid-line-points": args.grid_line_points}
     try:
         return options_type(tighten=args.tighten, starts=args.starts, spread=args.spread,
                             seed=args.seed, profile_points=args.profile_points,
                             scan_points=args.scan_points, horizon_first=args.horizon_first,
                             horizon_growth=args.horizon_growth,
                             grid_window=args.grid_window, grid_points=args.grid_points,
+                            grid_line_points=args.grid_line_points,
                             basins=args.basins)
     except DescriptionError as err:
         flag = "--" + err.field.removeprefix("options.").replace("_", "-")
