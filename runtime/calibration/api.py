@@ -47,7 +47,7 @@ basin of the rugged cost whose chi² lies 2-4 standard deviations above its expe
 15 and 6 of its standard deviations from the truth) and whose intervals miss the truth."""
 
 GRID_LINE_REACH = 1.5
-"""How far the grid window's line reaches either side of the best track's fit, in grid
+"""How far the grid window's line reaches either side of the best grid point, in grid
 spacings: the true valley lies within half a spacing of some grid point, and the best one
 can be a neighbour of that point."""
 
@@ -73,10 +73,10 @@ class CalibrationOptions:
     each start a track of the continuation, from ``grid_window`` on (0: no grid; the
     continuation starts at ``horizon_first`` from the start). ``grid_line_points``: runs on
     the grid's window along the clearances' rugged directions (those of the valley lines,
-    below) through the best track's fit over the grid's window, GRID_LINE_REACH grid
-    spacings either side, whose ``valley_keep`` lowest minima join the tracks (0: no line):
-    over 20 ms the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's
-    the lowest by about 20, and a fit from a grid point 2 µm from the next stays in the one
+    below) through the best grid point, GRID_LINE_REACH grid spacings either side, whose
+    ``valley_keep`` lowest minima take that point's place as tracks (0: no line): over 20 ms
+    the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's the lowest
+    by about 20, and a fit from a grid point 2 µm from the next stays in the one
     it starts in. ``valley_window``, ``valley_points``, ``valley_keep``: the valley lines'
     first window (s), runs per line and minima kept (see :func:`continuation`).
     ``basins``: look for the

@@ -57,8 +57,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "start (default 16)")
     p.add_argument("--grid-line-points", type=int, default=151,
                    help="runs on the grid's window along the clearances' rugged directions "
-                        "through the best track's fit there, 1.5 grid spacings either side; "
-                        "their lowest minima join the tracks (default 151; 0: no line)")
+                        "through the best grid point, 1.5 grid spacings either side; their "
+                        "lowest minima take its place as tracks (default 151; 0: no line)")
     p.add_argument("--no-basin-check", dest="basins", action="store_false",
                    help="skip the search for the other minima of the whole record's cost "
                         "near the best fit (lines along the axes of its confidence "
