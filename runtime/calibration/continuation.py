@@ -164,8 +164,9 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
         dof = max(part.size - predictor.free.size, 1)
         scans_here = []
         if k == 0 and opening is not None:
-            scans_here.append(opening)  # through the best grid point, its minima fitted
-            # over this window, where their valleys are widest, before the next one
+            # through the best grid point; its minima are fitted over this window, where
+            # their valleys are widest
+            scans_here.append(opening)
         if valley is not None and end >= valley.window * (1 - 1e-9):
             scanned = True
             # each later window's lines reach less far (its valleys are narrower, and the
@@ -185,14 +186,15 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
         held_first = (valley.held_before if valley is not None and not scanned
                       else np.zeros(predictor.free.size, dtype=bool))
         evaluations = max_evaluations if scanned else min(max_evaluations, WINDOW_EVALUATIONS)
-        fitted, more = _window_fits(predictor, stage_scene, part, weights, alive, labels,
-                                    alternatives if k == 0 and len(alive) == 1 else None,
-                                    evaluations, stated, float(end), held_first, workers)
+        (fitted, unseen, window_stages), more = _window_fits(
+            predictor, stage_scene, part, weights, alive, labels,
+            alternatives if k == 0 and len(alive) == 1 else None, evaluations, stated,
+            float(end), held_first, workers)
         runs += more
-        stages += fitted[2]
-        if not fitted[0] and not fitted[1]:
+        stages += window_stages
+        if not fitted and not unseen:
             break
-        kept = _surviving(fitted[0], dof, predictor.free) + fitted[1]
+        kept = _surviving(fitted, dof, predictor.free) + unseen
         labels = [r[0] for r in kept]
         alive = [r[1] for r in kept]
     return np.array(alive).reshape(-1, predictor.free.size), stages, runs
