@@ -76,10 +76,9 @@ class CalibrationOptions:
     below) through the best grid point, GRID_LINE_REACH grid spacings either side, whose
     ``valley_keep`` lowest minima take that point's place as tracks (0: no line): over 20 ms
     the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's the lowest
-    by about 20, and a fit from a grid point 2 µm from the next stays in the one
-    it starts in. ``valley_window``, ``valley_points``, ``valley_keep``: the valley lines'
-    first window (s), runs per line and minima kept (see :func:`continuation`).
-    ``basins``: look for the
+    by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
+    in. ``valley_window``, ``valley_points``, ``valley_keep``: the valley lines' first window
+    (s), runs per line and minima kept (see :func:`continuation`). ``basins``: look for the
     other minima of the whole record's cost near the best fit, which the data cannot tell
     from it, and widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
     ``workers``: processes for the

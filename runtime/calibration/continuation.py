@@ -222,21 +222,23 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
                  weights: np.ndarray, alive: list[np.ndarray], labels: list[int],
                  alternatives: np.ndarray | None, max_evaluations: int, stated: bool,
                  end: float, held_first: np.ndarray, workers: int) -> tuple[Fitted, int]:
-    """Each track's fit over one window (a track whose every run stops ends there), and the
-    runs. With ``alternatives`` (a single track), its fit tries them while it does not
-    explain the window."""
-    jobs = [(x, alternatives if alternatives is not None else x[None, :], label)
-            for x, label in zip(alive, labels, strict=True)]
+    """Each track's fit over one window, on up to ``workers`` processes (a track whose every
+    run stops ends there), and the runs. With ``alternatives`` (a single track), its fit
+    tries them after its estimate while it does not explain the window."""
+    def fit(i: int) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
+        starts = alternatives if alternatives is not None else alive[i][None, :]
+        return _stage_fit(predictor, stage_scene, part, weights,
+                          np.vstack([alive[i], starts[1:]]), max_evaluations, stated, end,
+                          labels[i], held_first)
+
     fitted: list[tuple[int, np.ndarray, float]] = []
     unseen: list[tuple[int, np.ndarray, float]] = []
     stages: list[Stage] = []
     runs = 0
-    for i, (result, stage_runs) in enumerate(_fit_tracks(
-            predictor, stage_scene, part, weights, jobs, max_evaluations, stated, end,
-            held_first, workers)):
+    for i, (result, stage_runs) in enumerate(parallel_map(fit, len(alive), workers)):
         runs += stage_runs
         if result is None:
-            continue
+            continue  # every run of this track stopped: the track ends
         stage, x_next = result
         if stage is None:
             unseen.append((labels[i], alive[i], math.inf))
@@ -289,20 +291,6 @@ def _valley_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
         found += [(chi2[i], line[i]) for i in line_minima(chi2)]
     found.sort(key=lambda f: f[0])
     return [point for _, point in found[:valley.keep]], runs
-
-
-def _fit_tracks(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
-                jobs: list[tuple[np.ndarray, np.ndarray, int]], max_evaluations: int,
-                stated: bool, end: float, held_first: np.ndarray, workers: int
-                ) -> list[tuple[tuple[Stage | None, np.ndarray] | None, int]]:
-    """Each track's fit over one window (``jobs``: its estimate, its further starts, its
-    label), on up to ``workers`` processes."""
-    def fit(i: int) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
-        x, starts, label = jobs[i]
-        return _stage_fit(predictor, stage_scene, part, weights, np.vstack([x, starts[1:]]),
-                          max_evaluations, stated, end, label, held_first)
-
-    return parallel_map(fit, len(jobs), workers)
 
 
 def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
