@@ -42,9 +42,11 @@ profile-likelihood interval at that level (the profile at its value can only be 
 REACH_SIGMAS = 5.0
 """How far each line's fine part reaches either side of the best fit, in standard
 deviations."""
-STEP_SIGMAS = 0.5
-"""The fine part's spacing in standard deviations (a basin is two to three wide)."""
-FAR_SIGMAS = (6.0, 8.0, 11.0, 16.0, 22.0, 32.0)
+STEP_SIGMAS = 1.0
+"""The fine part's spacing in standard deviations: a basin is two to three wide, so each
+gets a point at most half a standard deviation from its floor (a quarter above it in chi²,
+where its curvature is the best's)."""
+FAR_SIGMAS = (8.0, 16.0, 32.0)
 """The lines' points beyond the fine part, in standard deviations: along the direction the
 impacts make most rugged the cost's envelope can stay flat far beyond the best basin's own
 curvature (on benchmark draw 4, within 2.5 of the best at 32 standard deviations)."""
@@ -59,9 +61,12 @@ point at 2.0 standard deviations within the threshold); beyond it a warning says
 OTHER_CENTRES = 1
 """Other whole-record minima (within the threshold plus SLACK of the best) the lines also
 go through, at most."""
-LOOSER = 10.0
-"""The lines' runs use the fit's tolerances times this (they only pick the starts of the
-local fits, which run at the fit's tolerances)."""
+LOOSER = 1.0
+"""The lines' runs use the fit's tolerances times this. Their chi² decide which points widen
+the intervals (those within 3.84 of the lowest), so they must be accurate to well under
+that: on benchmark draw 15, 13 points near the best fit, the chi² at the fit's tolerances
+differ from those at tolerances ten times tighter by -1.3 ± 0.4 (a common offset and a
+spread of 0.4), at ten times looser by 5.9-18 (a spread of ±4, the threshold's size)."""
 
 
 @dataclass(frozen=True)
