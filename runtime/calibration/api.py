@@ -12,7 +12,15 @@ from typing import Any
 import numpy as np
 
 from jointplay.calibration.basins import Basins, neighbouring_basins, widened
-from jointplay.calibration.continuation import TRACK_MARGIN, Stage, ValleyScan, continuation
+from jointplay.calibration.basins import threshold as basin_threshold
+from jointplay.calibration.continuation import (
+    TRACK_MARGIN,
+    Stage,
+    ValleyCheck,
+    ValleyScan,
+    continuation,
+    valley_check,
+)
 from jointplay.calibration.fit import (
     Optimum,
     Scan,
@@ -45,6 +53,18 @@ reported as determined: on the paper scene a fit from 50 % away can end in a nei
 basin of the rugged cost whose chi² lies 2-4 standard deviations above its expectation
 (benchmark draws 1 and 6: chi²/dof 1.05 and 1.08 on 3997 degrees of freedom, the friction
 15 and 6 of its standard deviations from the truth) and whose intervals miss the truth."""
+
+VALLEY_CHECK_REACH = 0.2
+"""How far the valley check's line reaches either side of the best fit, in grid spacings
+(on the paper scene 0.4 µm: the benchmark's fits that ended in a wrong valley lay 0.1-0.3 µm
+from the truth's along c2 - c3)."""
+
+VALLEY_CHECK_LOOSER = 3.0
+"""The valley check's runs use the fit's tolerances times this: their chi² are compared with
+the threshold (3.84). Over 0.32 s on benchmark draw 0, at 17 points 5 nm apart through the
+fit, chi² at 3, 10, 30 and 100 times the fit's tolerances differ from those at the fit's by
+up to 0.3, 1.3, 3.1 and 4.9 (the windows' own tolerances, 100 times), each run costing 1.08,
+0.96, 0.78 and 0.71 times one at the fit's."""
 
 GRID_LINE_REACH = 1.5
 """How far the grid window's line reaches either side of the best grid point, in grid
@@ -81,8 +101,13 @@ class CalibrationOptions:
     (s), runs per line and minima kept (see :func:`continuation`). ``basins``: look for the
     other minima of the whole record's cost near the best fit, which the data cannot tell
     from it, and widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
-    ``workers``: processes for the
-    grid's runs, the tracks' fits and the lines' runs (the results do not depend on it)."""
+    ``valley_check_points``: with the noise stated and the basin check on, runs over the
+    valley lines' first window along the clearances' rugged direction through the best fit,
+    VALLEY_CHECK_REACH grid spacings either side; a parameter the line moves whose interval
+    misses another valley there within the basin threshold of the fit's own is not
+    determined, its interval widened to hold it (:func:`valley_check`; 0: no check).
+    ``workers``: processes for the grid's runs, the tracks' fits and the lines' runs (the
+    results do not depend on it)."""
 
     tighten: float = 1000.0
     starts: int = 6
@@ -102,6 +127,7 @@ class CalibrationOptions:
     valley_points: int = 81
     valley_keep: int = 3
     grid_line_points: int = 151
+    valley_check_points: int = 161
     basins: bool = True
     workers: int = 2
 
@@ -119,6 +145,8 @@ class CalibrationOptions:
                   ("grid_candidates", self.grid_candidates >= 1, "must be >= 1"),
                   ("grid_line_points", self.grid_line_points == 0
                    or self.grid_line_points >= 3, "must be 0 (no line) or >= 3"),
+                  ("valley_check_points", self.valley_check_points == 0
+                   or self.valley_check_points >= 3, "must be 0 (no check) or >= 3"),
                   ("window_looser", self.window_looser >= 1, "must be >= 1"),
                   ("workers", self.workers >= 1, "must be >= 1"),
                   ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
@@ -288,9 +316,10 @@ def run(problem: Problem) -> CalibrationResult:
     stages: list[Stage] = []
     stage_runs = 0
     grid = None
+    valley = None
+    weights = problem.sigma if problem.sigma is not None else np.ones(
+        len(problem.measured.columns))
     if opts.horizon_first > 0:
-        weights = problem.sigma if problem.sigma is not None else np.ones(
-            len(problem.measured.columns))
         tracks, first = starts[:1], opts.horizon_first
         if opts.grid_window > 0:
             centre, runs = others_first(predictor, weights, starts[0], opts.window_looser,
@@ -328,6 +357,14 @@ def run(problem: Problem) -> CalibrationResult:
                             max(problem.measured.size - problem.free.size, 1),
                             whole.evaluations, whole.evaluations, whole.message))
     free = problem.free
+    check: ValleyCheck | None = None
+    if opts.basins and valley is not None and opts.valley_check_points > 0 \
+            and problem.sigma is not None:
+        # with the noise stated (the threshold is in chi² of the stated noise)
+        check = valley_check(predictor, weights, optimum.values, ValleyScan(
+            opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1,
+            valley.scale), VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(),
+            opts.workers)
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     line_runs = 0
     if opts.basins:
@@ -344,7 +381,7 @@ def run(problem: Problem) -> CalibrationResult:
         if moved:
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
-        low, high, determined, rival_warnings = widened(spread, found, free.names)
+        low, high, determined, rival_warnings = widened(spread, found, free.names, check)
         spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
@@ -366,7 +403,8 @@ def run(problem: Problem) -> CalibrationResult:
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
                    wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs, grid,
-                   line_runs, profile_runs, consistent)
+                   line_runs, profile_runs, consistent,
+                   check.runs if check is not None else 0)
 
 
 WHOLE_RECORD_TRACKS = 2
@@ -413,7 +451,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
             cpu: float, explains: bool | None, stages: tuple[Stage, ...] = (),
             stage_runs: int = 0, grid: GridResult | None = None,
             line_runs: int = 0, profile_runs: int = 0,
-            consistent: bool | None = None) -> CalibrationResult:
+            consistent: bool | None = None, check_runs: int = 0) -> CalibrationResult:
     free = problem.free
     # A fit that does not explain the data within the stated noise determines nothing: its
     # optimum may be a local one, and its intervals are not valid; nor does one whose chi²
@@ -433,9 +471,11 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
         condition_number=spread.condition_number, residuals=stats,
         noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
         noise_stated=problem.sigma is not None, fitted=fitted, starts=optimum.starts,
-        simulations=predictor.counter.simulations + stage_runs + line_runs + profile_runs,
+        simulations=(predictor.counter.simulations + stage_runs + line_runs + profile_runs
+                     + check_runs),
         simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs,
-                             "basin lines": line_runs, "cost profiles": profile_runs},
+                             "valley check": check_runs, "basin lines": line_runs,
+                             "cost profiles": profile_runs},
         jacobian_source=source,
         wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
         settings={"rtol": run_settings.rtol, "atol": run_settings.atol,
@@ -449,6 +489,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
                   "grid_points": problem.options.grid_points,
                   "grid_candidates": problem.options.grid_candidates,
                   "grid_line_points": problem.options.grid_line_points,
+                  "valley_check_points": problem.options.valley_check_points,
                   "window_looser": problem.options.window_looser,
                   "basins": problem.options.basins,
                   "workers": problem.options.workers,

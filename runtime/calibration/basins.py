@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jointplay.calibration.continuation import loosened
+from jointplay.calibration.continuation import ValleyCheck, loosened
 from jointplay.calibration.fit import Start, multi_start
 from jointplay.calibration.predict import Predictor, chi2_at_points, line_minima
 from jointplay.calibration.uncertainty import Uncertainty
@@ -189,14 +189,18 @@ def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,
     return lines
 
 
-def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...]
+def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
+            check: ValleyCheck | None = None
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """The 95 % intervals widened to hold every point found inside them: each rival's basin
     (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations:
     the part of its basin below the threshold, its curvature taken as the best's) and every
     point of the lines within the threshold; which parameters stay determined (no rival
     outside the best's own interval); a warning for each interval a rival widens, or a
-    line's point by more than WARN_WIDENING."""
+    line's point by more than WARN_WIDENING; and, with ``check``, each parameter its line
+    moves whose interval misses one of its rivals is not determined, its interval widened to
+    hold that rival's point give or take the line's spacing (the search cannot tell which
+    valley holds the lowest minimum of the whole record's cost)."""
     low, high = spread.low95.copy(), spread.high95.copy()
     determined = spread.determined.copy()
     warnings: list[str] = []
@@ -238,4 +242,37 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...]
                 f"{basins.threshold:.3g} of the best ({inside}) lie up to {far:.4g} from the "
                 f"estimate, {far / std[k] if std[k] > 0 else math.inf:.3g} of its standard "
                 "deviations: its interval is widened to hold them")
+    if check is not None:
+        _unexcluded(check, names, basins.threshold, (low, high, determined, warnings),
+                    spread.low95, spread.high95)
     return low, high, determined, warnings
+
+
+def _unexcluded(check: ValleyCheck, names: tuple[str, ...], limit: float,
+                verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]],
+                low95: np.ndarray, high95: np.ndarray) -> None:
+    """``verdict`` (low, high, determined, warnings) changed in place for the valley check's
+    rivals outside the intervals ``low95`` to ``high95``."""
+    low, high, determined, warnings = verdict
+    points = np.array([point for point, _ in check.rivals]).reshape(-1, len(names))
+    rise = np.array([r for _, r in check.rivals])
+    moved = check.spacing > 0
+    outside = ((points < low95) | (points > high95)) & moved
+    for k, name in enumerate(names):
+        rows = np.flatnonzero(outside[:, k])
+        if not rows.size:
+            continue
+        determined[k] = False
+        low[k] = min(low[k], float(np.min(points[rows, k])) - check.spacing[k])
+        high[k] = max(high[k], float(np.max(points[rows, k])) + check.spacing[k])
+        nearest = rows[np.argmin(rise[rows])]
+        far = float(np.max(np.abs(points[rows, k] - (low95[k] + high95[k]) / 2)))
+        partners = sorted(names[j] for j in np.flatnonzero(moved) if j != k)
+        along = f" along {name} and {', '.join(partners)}" if partners else ""
+        warnings.append(
+            f"{name} is not determined by the search: over the first {check.window_end:g} s "
+            f"{rows.size} other valley(s) of the cost{along} lie within chi² + {limit:.3g} "
+            f"of the fit's own (the lowest {rise[nearest]:+.3g}), up to {far:.4g} from the "
+            "estimate; over the whole record those valleys are too narrow for the search to "
+            "tell which holds the lowest minimum: its interval spans them (the other "
+            "parameters' estimates and intervals are those of the fit's valley)")

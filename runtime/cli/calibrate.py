@@ -59,6 +59,12 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="runs on the grid's window along the clearances' rugged directions "
                         "through the best grid point, 1.5 grid spacings either side; their "
                         "lowest minima take its place as tracks (default 151; 0: no line)")
+    p.add_argument("--valley-check-points", type=int, default=161,
+                   help="runs over 0.32 s along the clearances' rugged direction through the "
+                        "best fit, 0.2 grid spacings either side; a clearance whose interval "
+                        "misses another valley within chi² + 3.84 of the fit's there is "
+                        "reported not determined, its interval spanning it (default 161; 0: "
+                        "no check; needs --noise)")
     p.add_argument("--no-basin-check", dest="basins", action="store_false",
                    help="skip the search for the other minima of the whole record's cost "
                         "near the best fit (lines along the axes of its confidence "
@@ -118,7 +124,8 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
              "--scan-points": args.scan_points, "--profile-points": args.profile_points,
              "--tighten": args.tighten, "--horizon-first": args.horizon_first,
              "--horizon-growth": args.horizon_growth, "--grid-window": args.grid_window,
-             "--grid-points": args.grid_points, "--grid-line-points": args.grid_line_points}
+             "--grid-points": args.grid_points, "--grid-line-points": args.grid_line_points,
+             "--valley-check-points": args.valley_check_points}
     try:
         return options_type(tighten=args.tighten, starts=args.starts, spread=args.spread,
                             seed=args.seed, profile_points=args.profile_points,
@@ -126,6 +133,7 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
                             horizon_growth=args.horizon_growth,
                             grid_window=args.grid_window, grid_points=args.grid_points,
                             grid_line_points=args.grid_line_points,
+                            valley_check_points=args.valley_check_points,
                             basins=args.basins)
     except DescriptionError as err:
         flag = "--" + err.field.removeprefix("options.").replace("_", "-")
