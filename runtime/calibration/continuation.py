@@ -149,8 +149,6 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     measured = predictor.measured
     ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first,
                            growth)
-    scene = predictor.scene
-    step = scene.run.output_step
     alive = [np.asarray(x, dtype=float) for x in tracks]
     labels = list(range(len(alive)))
     stages: list[Stage] = []
@@ -158,9 +156,7 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     scanned = valley is None
     scans = 0
     for k, end in enumerate(ends):
-        part = window(measured, end)
-        t_end = min(scene.run.t_end, math.ceil(end / step - 1e-9) * step)
-        stage_scene = loosened(scene.with_run(t_end=t_end), looser)
+        part, stage_scene = _window_problem(predictor, end, looser)
         dof = max(part.size - predictor.free.size, 1)
         scans_here = []
         if k == 0 and opening is not None:
@@ -251,22 +247,15 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
                            growth)
     if not ends:
         return ValleyCheck(0.0, (), np.zeros(free.size), 0)
-    scene = predictor.scene
-    step = scene.run.output_step
-    part = window(measured, ends[0])
-    t_end = min(scene.run.t_end, math.ceil(ends[0] / step - 1e-9) * step)
-    stage_scene = loosened(scene.with_run(t_end=t_end), looser)
+    part, stage_scene = _window_problem(predictor, ends[0], looser)
     directions, runs = _rugged(predictor, stage_scene, part, weights, best,
                                np.asarray(scan.scale))
-    probe = Predictor(stage_scene, predictor.model, free, part, compiled=predictor.compiled)
     steps = np.linspace(-scan.reach, scan.reach, 2 * (scan.points // 2) + 1)
-    lines = [[np.clip(best + s * direction, free.lower, free.upper) for s in steps]
-             for direction in directions]
-    every, more = chi2_at_points(probe, weights, [p for line in lines for p in line], workers)
+    lines, values, more = _lines_chi2(predictor, stage_scene, part, weights, best,
+                                      directions, steps, workers)
     rivals: list[tuple[np.ndarray, float]] = []
     spacing = np.zeros(free.size)
-    for n, line in enumerate(lines):
-        chi2 = np.array(every[n * steps.size:(n + 1) * steps.size])
+    for n, (line, chi2) in enumerate(zip(lines, values, strict=True)):
         own = _valley_floor(chi2, steps.size // 2)
         rivals += [(line[i], float(chi2[i] - chi2[own])) for i in line_minima(chi2)
                    if i != own and chi2[i] <= chi2[own] + within]
@@ -354,18 +343,38 @@ def _valley_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
                    valley: ValleyScan, workers: int) -> tuple[list[np.ndarray], int]:
     """The ``valley.keep`` lowest local minima of the window's chi² along the lines through
     ``x`` (one per direction), and the runs."""
-    free = predictor.free
-    probe = Predictor(stage_scene, predictor.model, free, part, compiled=predictor.compiled)
     steps = np.linspace(-valley.reach, valley.reach, valley.points)
-    lines = [[np.clip(x + s * direction, free.lower, free.upper) for s in steps]
-             for direction in directions]
-    every, runs = chi2_at_points(probe, weights, [p for line in lines for p in line], workers)
+    lines, values, runs = _lines_chi2(predictor, stage_scene, part, weights, x, directions,
+                                      steps, workers)
     found: list[tuple[float, np.ndarray]] = []
-    for n, line in enumerate(lines):
-        chi2 = np.array(every[n * steps.size:(n + 1) * steps.size])
+    for line, chi2 in zip(lines, values, strict=True):
         found += [(chi2[i], line[i]) for i in line_minima(chi2)]
     found.sort(key=lambda f: f[0])
     return [point for _, point in found[:valley.keep]], runs
+
+
+def _window_problem(predictor: Predictor, end: float, looser: float) -> tuple[Measured, Scene]:
+    """The samples up to ``end`` and the scene whose runs end at the output step holding it,
+    at the fit's tolerances times ``looser``."""
+    scene = predictor.scene
+    step = scene.run.output_step
+    t_end = min(scene.run.t_end, math.ceil(end / step - 1e-9) * step)
+    return window(predictor.measured, end), loosened(scene.with_run(t_end=t_end), looser)
+
+
+def _lines_chi2(predictor: Predictor, stage_scene: Scene, part: Measured,
+                weights: np.ndarray, x: np.ndarray, directions: list[np.ndarray],
+                steps: np.ndarray, workers: int
+                ) -> tuple[list[list[np.ndarray]], list[np.ndarray], int]:
+    """The lines through ``x`` (``x + s direction`` for each of ``steps``, inside the
+    bounds, one per direction), the window's chi² along each, and the runs."""
+    free = predictor.free
+    probe = Predictor(stage_scene, predictor.model, free, part, compiled=predictor.compiled)
+    lines = [[np.clip(x + s * direction, free.lower, free.upper) for s in steps]
+             for direction in directions]
+    every, runs = chi2_at_points(probe, weights, [p for line in lines for p in line], workers)
+    values = [np.array(every[n * steps.size:(n + 1) * steps.size]) for n in range(len(lines))]
+    return lines, values, runs
 
 
 def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
