@@ -161,3 +161,42 @@ def test_fixed_step_blocks_change_nothing(monkeypatch: pytest.MonkeyPatch) -> No
     np.testing.assert_array_equal(blocks.u, whole.u)
     np.testing.assert_array_equal(blocks.impacts.time, whole.impacts.time)
     assert whole.impacts.time.size > 0  # the blocks met contact onsets
+
+
+# A Ctrl-C delivered while Python runs the fork hooks (where logging releases its lock): a hook
+# registered after logging's sends SIGINT, and the loop gives the handler a place to run
+# inside the hook, as a real press landing there does.
+_PRESS_WHILE_FORKING = """
+import os, signal, sys
+from jointplay.common import interrupts
+from jointplay.calibration.workers import parallel_map
+
+def press():
+    os.kill(os.getpid(), signal.SIGINT)
+    for _ in range(100):
+        pass
+
+os.register_at_fork(after_in_parent=press)
+with interrupts.installed():
+    try:
+        {call}
+        print("not interrupted")
+    except KeyboardInterrupt:
+        print("interrupted", interrupts.interrupted())
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the pool's own forks are over
+"""
+
+
+@pytest.mark.parametrize("call", [
+    "pid = interrupts.fork()\n        if pid == 0: os._exit(0)",
+    "parallel_map(abs, 4, 2)",
+])
+def test_a_press_during_a_fork_is_raised_after_it(call: str) -> None:
+    """Python prints an error raised in a fork hook as "Exception ignored" with a traceback,
+    and drops it: the press would be lost. Forks go through interrupts.fork() or deferred(),
+    and the press is raised once the fork has returned (in the parent only)."""
+    proc = subprocess.run([sys.executable, "-c", _PRESS_WHILE_FORKING.format(call=call)],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert "Traceback" not in proc.stderr and "Exception ignored" not in proc.stderr, proc.stderr
+    assert proc.stdout.split() == ["interrupted", "True"], proc.stdout

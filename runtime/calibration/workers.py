@@ -15,10 +15,13 @@ yet back run here in turn, which gives the same numbers.
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
 import sys
 from collections.abc import Callable, Sequence
 from typing import Any
+
+from jointplay.common import interrupts
 
 _JOB: Callable[[int], Any] | None = None
 # The longest a calibration waits for the next piece from its worker processes (s). A piece
@@ -42,7 +45,10 @@ def parallel_map(job: Callable[[int], Any], count: int, workers: int) -> list[An
     _JOB = job
     done: list[Any] = []
     try:
-        with multiprocessing.get_context("fork").Pool(min(workers, count)) as pool:
+        with contextlib.ExitStack() as stack:
+            with interrupts.deferred():  # a Ctrl-C while it forks: after, see its fork()
+                pool = stack.enter_context(
+                    multiprocessing.get_context("fork").Pool(min(workers, count)))
             pieces = pool.imap(_call, range(count), chunksize=1)
             try:
                 for _ in range(count):

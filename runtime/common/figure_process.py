@@ -266,7 +266,7 @@ def drawn_on_two_cpus(jobs: Sequence[figures.FigureJob]) -> list[tuple[Path, byt
     os.write(queue_write, bytes(range(len(jobs))))
     os.close(queue_write)
     answer_read, answer_write = os.pipe()
-    pid = os.fork()
+    pid = interrupts.fork()
     if pid == 0:  # the copy: draw what it takes, send it, and leave without any teardown
         status = 1
         try:

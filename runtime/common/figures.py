@@ -10,6 +10,7 @@ to the parent, which writes every file itself (so an output transaction of
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import os
 import struct
@@ -22,6 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from jointplay.common import interrupts
 from jointplay.common.files import atomic_write_bytes
 
 if TYPE_CHECKING:
@@ -251,8 +253,10 @@ def draw_all(jobs: Sequence[FigureJob], *, workers: int | None = None) -> list[P
             # pool); a worker only draws with matplotlib and takes none of their locks.
             warnings.filterwarnings("ignore", message=r".*fork\(\) may lead to deadlocks",
                                     category=DeprecationWarning)
-            with multiprocessing.get_context("fork").Pool(
-                    count, initializer=_ignore_interrupts) as pool:
+            with contextlib.ExitStack() as stack:
+                with interrupts.deferred():  # a Ctrl-C while it forks: after, see fork()
+                    pool = stack.enter_context(multiprocessing.get_context("fork").Pool(
+                        count, initializer=_ignore_interrupts))
                 drawn = pool.map(_draw, range(len(jobs)), chunksize=1)
     finally:
         _jobs = ()

@@ -23,12 +23,14 @@ import sys
 import threading
 from collections.abc import Iterator
 from types import FrameType
-from typing import NoReturn
+from typing import Any, NoReturn
 
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
 EXIT_TERMINATED = 143  # 128 + SIGTERM
 
 _state: dict[str, int] = {"interrupted": 0, "status": EXIT_INTERRUPTED, "installed": 0}
+# The Ctrl-C handlers that deferred() and fork() have put aside, outermost first.
+_replaced: list[Any] = []
 
 
 def _on_sigint(signum: int, frame: FrameType | None) -> None:
@@ -156,21 +158,66 @@ def guard_imports() -> None:
 @contextlib.contextmanager
 def deferred() -> Iterator[None]:
     """Within: a SIGINT is recorded but raised only on the way out, so that work which must
-    not be cut in the middle (starting a cluster, whose half-made state nothing could close)
-    finishes first."""
+    not be cut in the middle (starting a cluster, whose half-made state nothing could close;
+    a pool forking its workers, see :func:`fork`) finishes first. Processes forked within
+    keep the handler from before."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
     before = _state["interrupted"]
     previous = signal.signal(signal.SIGINT, _record_only)
+    _replaced.append(previous)
     try:
         yield
     finally:
+        if _replaced:
+            _replaced.pop()
         signal.signal(signal.SIGINT, previous)
     if _state["interrupted"] and not before:
         if not _state["installed"]:  # a library caller: raise it once, remember nothing
             _state["interrupted"] = 0
         interrupt()
+
+
+def fork() -> int:
+    """``os.fork()``, with a Ctrl-C that arrives meanwhile raised here once it has returned
+    (the copy, which has done nothing yet, killed and reaped first); the copy gets 0, and the
+    handler this process had.
+
+    Python runs the libraries' fork hooks (logging's lock) around a fork, and an error raised
+    inside one is printed as "Exception ignored", with a traceback, and dropped: a Ctrl-C
+    handled there would show a traceback and be lost. So every fork from the main thread goes
+    through here, or, for a pool, happens inside :func:`deferred`."""
+    if threading.current_thread() is not threading.main_thread():
+        return os.fork()
+    before = _state["interrupted"]
+    previous = signal.signal(signal.SIGINT, _record_only)
+    _replaced.append(previous)
+    try:
+        pid = os.fork()
+    finally:
+        if _replaced:  # (the copy's fork hook has emptied it)
+            _replaced.pop()
+        signal.signal(signal.SIGINT, previous)
+    if pid != 0 and _state["interrupted"] and not before:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+        if not _state["installed"]:  # a library caller: raise it once, remember nothing
+            _state["interrupted"] = 0
+        interrupt()
+    return pid
+
+
+def _restore_in_copy() -> None:
+    """After a fork, in the copy: the Ctrl-C handler :func:`deferred` or :func:`fork` had put
+    aside is the copy's again (a pool's workers keep to what they would have had)."""
+    if _replaced and threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, _replaced[0])
+    _replaced.clear()
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_restore_in_copy)
 
 
 @contextlib.contextmanager
@@ -196,6 +243,6 @@ def ignore_in_child() -> None:
 
 guard_imports()  # on the first import, which `import jointplay` makes before any other
 
-__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "guard_imports",
-           "ignore_in_child", "ignoring", "installed", "interrupt", "interrupted",
+__all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "fork",
+           "guard_imports", "ignore_in_child", "ignoring", "installed", "interrupt", "interrupted",
            "raise_if_interrupted"]

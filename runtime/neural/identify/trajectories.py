@@ -269,7 +269,9 @@ def _pool_run(tasks: Sequence[_Task], workers: int, bar: Any) -> list[Trajectory
                                initializer=interrupts.ignore_in_child)
     results: list[Trajectory] = []
     try:
-        for traj in pool.map(run_task, tasks):
+        with interrupts.deferred():  # it forks the workers: a Ctrl-C meanwhile, after
+            mapped = pool.map(run_task, tasks)
+        for traj in mapped:
             results.append(traj)
             bar.update(1)
     except BaseException:

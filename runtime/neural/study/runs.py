@@ -8,6 +8,7 @@ from functools import partial
 from pathlib import Path
 from typing import Any
 
+from jointplay.common import interrupts
 from jointplay.neural.control.loop_accuracy import accuracy_columns, check_tolerance, loop_accuracy
 from jointplay.neural.control.metrics import SPLIT_METRICS
 from jointplay.neural.model.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_identity
@@ -123,7 +124,9 @@ def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[
             methods = multiprocessing.get_all_start_methods()
             context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
             with ProcessPoolExecutor(workers, mp_context=context) as pool:
-                for rows in pool.map(_run_unit, indices):
+                with interrupts.deferred():  # it forks the workers: a Ctrl-C, after
+                    mapped = pool.map(_run_unit, indices)
+                for rows in mapped:
                     out.append(rows)
                     bar.update(1)
     return out
