@@ -13,6 +13,7 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 from test_probes import check_contract
@@ -153,18 +154,25 @@ def test_no_space_while_writing_the_cache(tmp_path: Path, monkeypatch: pytest.Mo
 
     monkeypatch.setattr(Path, "write_text", full_disk)
     if phase == "compiler":
-        real_run = subprocess.run
+        real_popen = subprocess.Popen
 
-        def compiler_out_of_space(command: list[str], *args: object,
-                                  **kwargs: object) -> subprocess.CompletedProcess[str]:
+        class CompilerOutOfSpace:
+            """The compiler's process, out of space as it links."""
+
+            def __init__(self, command: list[str], **kwargs: Any) -> None:
+                output = Path(command[command.index("-o") + 1])
+                output.write_bytes(b"\x7fELF partly")
+                self.returncode = 1
+
+            def communicate(self) -> tuple[str, str]:
+                return "", "/usr/bin/ld: final link failed: No space left on device\n"
+
+        def compiler_out_of_space(command: list[str], *args: Any, **kwargs: Any) -> Any:
             if command[0] != "gcc" or "-o" not in command:
-                return real_run(command, *args, **kwargs)  # type: ignore[call-overload]
-            output = Path(command[command.index("-o") + 1])
-            output.write_bytes(b"\x7fELF partly")
-            return subprocess.CompletedProcess(command, 1, "", "/usr/bin/ld: final link "
-                                               "failed: No space left on device\n")
+                return real_popen(command, *args, **kwargs)
+            return CompilerOutOfSpace(command, **kwargs)
 
-        monkeypatch.setattr(build_module.subprocess, "run", compiler_out_of_space)
+        monkeypatch.setattr(build_module.subprocess, "Popen", compiler_out_of_space)
     code = main(["build"])
     err = capsys.readouterr().err
     check_contract(code, err)

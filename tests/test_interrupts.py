@@ -190,7 +190,11 @@ with interrupts.installed():
 @pytest.mark.parametrize("call", [
     "pid = interrupts.fork()\n        if pid == 0: os._exit(0)",
     "parallel_map(abs, 4, 2)",
-])
+    # the compiler's start (its preexec function makes Python run the fork hooks)
+    "import tempfile, pathlib; from jointplay.store.build import _compile\n        "
+    "d = pathlib.Path(tempfile.mkdtemp()); (d / 'm.c').write_text('int f(void) {return 1;}')"
+    "\n        _compile('gcc', ('-shared', '-fPIC'), d / 'm.c', d / 'm.so')",
+], ids=["fork", "pool", "compiler"])
 def test_a_press_during_a_fork_is_raised_after_it(call: str) -> None:
     """Python prints an error raised in a fork hook as "Exception ignored" with a traceback,
     and drops it: the press would be lost. Forks go through interrupts.fork() or deferred(),

@@ -32,6 +32,7 @@ import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
+from jointplay.common import interrupts
 from jointplay.common.errors import BuildError, FileError
 from jointplay.common.files import atomic_write_text
 
@@ -326,16 +327,28 @@ _OUT_OF_SPACE = ("No space left on device", "Disk quota exceeded", "File too lar
 def _compile(cc: str, cflags: tuple[str, ...], c_file: Path, output: Path,
              libraries: tuple[str, ...] = ()) -> None:
     preexec = _die_with_parent if sys.platform.startswith("linux") else None
-    proc = subprocess.run([cc, *cflags, str(c_file), "-o", str(output), *libraries, "-lm"],
-                          capture_output=True, text=True, preexec_fn=preexec)
+    proc: subprocess.Popen[str] | None = None
+    try:
+        # A start with a preexec function runs Python's fork hooks, where a Ctrl-C would be
+        # swallowed (see interrupts.fork): it is raised once the compiler has started.
+        with interrupts.deferred():
+            proc = subprocess.Popen(
+                [cc, *cflags, str(c_file), "-o", str(output), *libraries, "-lm"],
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, preexec_fn=preexec)
+        _, stderr = proc.communicate()
+    except BaseException:
+        if proc is not None:
+            proc.kill()
+            proc.communicate()
+        raise
     if proc.returncode == 0:
         return
     for cause in _OUT_OF_SPACE:  # the compiler could not write: an I/O error, one line
-        if cause in proc.stderr:
+        if cause in stderr:
             number = {"No space left on device": errno.ENOSPC, "File too large": errno.EFBIG,
                       "Disk quota exceeded": errno.EDQUOT}.get(cause, errno.EROFS)
             raise OSError(number, os.strerror(number), str(output))
-    raise BuildError(f"{cc} failed on {c_file}:\n{proc.stderr[-4000:]}")
+    raise BuildError(f"{cc} failed on {c_file}:\n{stderr[-4000:]}")
 
 
 def _build(source: str, cflags: tuple[str, ...], cc: str, entry: Path,
