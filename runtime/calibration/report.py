@@ -12,7 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
-from jointplay.calibration.api import CONSISTENT, CalibrationResult
+from jointplay.calibration.api import CONSISTENT
+from jointplay.calibration.result import CalibrationResult
 from jointplay.common.files import OutputPlan
 
 FILES = ("calibration.json", "report.md", "fit.png", "residuals.png", "profiles.png")
