@@ -15,7 +15,6 @@ yet back run here in turn, which gives the same numbers.
 
 from __future__ import annotations
 
-import contextlib
 import multiprocessing
 import sys
 from collections.abc import Callable, Sequence
@@ -45,10 +44,8 @@ def parallel_map(job: Callable[[int], Any], count: int, workers: int) -> list[An
     _JOB = job
     done: list[Any] = []
     try:
-        with contextlib.ExitStack() as stack:
-            with interrupts.deferred():  # a Ctrl-C while it forks: after, see its fork()
-                pool = stack.enter_context(
-                    multiprocessing.get_context("fork").Pool(min(workers, count)))
+        with interrupts.started(
+                lambda: multiprocessing.get_context("fork").Pool(min(workers, count))) as pool:
             pieces = pool.imap(_call, range(count), chunksize=1)
             try:
                 for _ in range(count):

@@ -10,7 +10,6 @@ to the parent, which writes every file itself (so an output transaction of
 
 from __future__ import annotations
 
-import contextlib
 import functools
 import os
 import struct
@@ -253,10 +252,8 @@ def draw_all(jobs: Sequence[FigureJob], *, workers: int | None = None) -> list[P
             # pool); a worker only draws with matplotlib and takes none of their locks.
             warnings.filterwarnings("ignore", message=r".*fork\(\) may lead to deadlocks",
                                     category=DeprecationWarning)
-            with contextlib.ExitStack() as stack:
-                with interrupts.deferred():  # a Ctrl-C while it forks: after, see fork()
-                    pool = stack.enter_context(multiprocessing.get_context("fork").Pool(
-                        count, initializer=_ignore_interrupts))
+            with interrupts.started(lambda: multiprocessing.get_context("fork").Pool(
+                    count, initializer=_ignore_interrupts)) as pool:
                 drawn = pool.map(_draw, range(len(jobs)), chunksize=1)
     finally:
         _jobs = ()

@@ -21,9 +21,9 @@ import os
 import signal
 import sys
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from types import FrameType
-from typing import Any, NoReturn
+from typing import Any, NoReturn, TypeVar
 
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
 EXIT_TERMINATED = 143  # 128 + SIGTERM
@@ -31,6 +31,7 @@ EXIT_TERMINATED = 143  # 128 + SIGTERM
 _state: dict[str, int] = {"interrupted": 0, "status": EXIT_INTERRUPTED, "installed": 0}
 # The Ctrl-C handlers that deferred() and fork() have put aside, outermost first.
 _replaced: list[Any] = []
+T = TypeVar("T")
 
 
 def _on_sigint(signum: int, frame: FrameType | None) -> None:
@@ -159,24 +160,14 @@ def guard_imports() -> None:
 def deferred() -> Iterator[None]:
     """Within: a SIGINT is recorded but raised only on the way out, so that work which must
     not be cut in the middle (starting a cluster, whose half-made state nothing could close;
-    a pool forking its workers, see :func:`fork`) finishes first. Processes forked within
-    keep the handler from before."""
+    a pool forking its workers, see :func:`fork` and :func:`started`) finishes first.
+    Processes forked within keep the handler from before."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    before = _state["interrupted"]
-    previous = signal.signal(signal.SIGINT, _record_only)
-    _replaced.append(previous)
-    try:
+    with _recording() as before:
         yield
-    finally:
-        if _replaced:
-            _replaced.pop()
-        signal.signal(signal.SIGINT, previous)
-    if _state["interrupted"] and not before:
-        if not _state["installed"]:  # a library caller: raise it once, remember nothing
-            _state["interrupted"] = 0
-        interrupt()
+    _raise_recorded(before)
 
 
 def fork() -> int:
@@ -187,25 +178,50 @@ def fork() -> int:
     Python runs the libraries' fork hooks (logging's lock) around a fork, and an error raised
     inside one is printed as "Exception ignored", with a traceback, and dropped: a Ctrl-C
     handled there would show a traceback and be lost. So every fork from the main thread goes
-    through here, or, for a pool, happens inside :func:`deferred`."""
+    through here, or, for a pool, happens inside :func:`deferred` (see :func:`started`)."""
     if threading.current_thread() is not threading.main_thread():
         return os.fork()
+    with _recording() as before:
+        pid = os.fork()
+    if pid != 0 and _state["interrupted"] and not before:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+        _raise_recorded(before)
+    return pid
+
+
+@contextlib.contextmanager
+def started(start: Callable[[], contextlib.AbstractContextManager[T]]) -> Iterator[T]:
+    """``with start() as it``, with ``start`` (a pool that forks its workers) inside
+    :func:`deferred`: a Ctrl-C meanwhile is raised once it has started, and leaving closes
+    it (a pool is terminated)."""
+    with contextlib.ExitStack() as stack:
+        with deferred():
+            it = stack.enter_context(start())
+        yield it
+
+
+@contextlib.contextmanager
+def _recording() -> Iterator[int]:
+    """Within (main thread only): SIGINT only recorded, the handler put aside (see
+    :func:`_restore_in_copy`); yields whether an interrupt was recorded before."""
     before = _state["interrupted"]
     previous = signal.signal(signal.SIGINT, _record_only)
     _replaced.append(previous)
     try:
-        pid = os.fork()
+        yield before
     finally:
-        if _replaced:  # (the copy's fork hook has emptied it)
+        if _replaced:  # (a copy's fork hook has emptied it)
             _replaced.pop()
         signal.signal(signal.SIGINT, previous)
-    if pid != 0 and _state["interrupted"] and not before:
-        os.kill(pid, signal.SIGKILL)
-        os.waitpid(pid, 0)
+
+
+def _raise_recorded(before: int) -> None:
+    """Raise the interrupt recorded since ``before`` was read, if one was."""
+    if _state["interrupted"] and not before:
         if not _state["installed"]:  # a library caller: raise it once, remember nothing
             _state["interrupted"] = 0
         interrupt()
-    return pid
 
 
 def _restore_in_copy() -> None:
@@ -245,4 +261,4 @@ guard_imports()  # on the first import, which `import jointplay` makes before an
 
 __all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "fork",
            "guard_imports", "ignore_in_child", "ignoring", "installed", "interrupt", "interrupted",
-           "raise_if_interrupted"]
+           "raise_if_interrupted", "started"]
