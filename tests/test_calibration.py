@@ -392,12 +392,12 @@ def test_a_fit_runs_sensitivities_only_where_it_asks_for_the_jacobian(
     assert held.counter.simulations == 0 and held.free.upper[1] < problem.free.upper[1]
 
 
-def test_a_fit_settles_within_a_tenth_of_a_standard_deviation(
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    """A local fit ends once its next step lies within SETTLED_SIGMAS standard deviations
-    of its best point: at fewer runs than SciPy's own tolerances take, within that distance
-    (in the metric of the Jacobian) of where they end and at a chi² a hundredth from
-    theirs, on the arm with ideal joints (a smooth cost)."""
+def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> None:
+    """A whole-record fit ends once its next step lies within SETTLED_SIGMAS standard
+    deviations of its best point: at fewer runs than SciPy's own tolerances take (those a
+    window's fit keeps), within that distance (in the metric of the Jacobian) of where they
+    end and at a chi² a hundredth from theirs, on the arm with ideal joints (a smooth
+    cost)."""
     from jointplay.calibration import fit as fit_module
     from jointplay.calibration.api import prepare
     from jointplay.calibration.predict import Predictor, whitened
@@ -407,19 +407,19 @@ def test_a_fit_settles_within_a_tenth_of_a_standard_deviation(
     problem = prepare(scene, _synthetic(scene, truth, seed=5), list(truth), noise=NOISE)
     weights = np.full(2, NOISE)
 
-    def fitted(settle: float) -> tuple[Any, Predictor]:
-        monkeypatch.setattr(fit_module, "SETTLED_SIGMAS", settle)
+    def fitted(settle: bool) -> tuple[Any, Predictor]:
         predictor = Predictor(problem.scene, problem.model, problem.free, problem.measured)
-        return fit_module._local_fit(predictor, weights, problem.free.start, 40), predictor
+        _, record = fit_module.multi_start(predictor, weights, problem.free.start[None, :],
+                                           40, stop_early=False, settle=settle)
+        return record[0], predictor
 
-    settled, _ = fitted(fit_module.SETTLED_SIGMAS)
-    tolerance = fit_module.SETTLED_SIGMAS
-    full, predictor = fitted(0.0)  # never settled: SciPy's ftol or xtol ends it
+    settled, _ = fitted(True)
+    full, predictor = fitted(False)  # a window's fit: SciPy's ftol or xtol ends it
     assert settled.message.startswith("settled") and not full.message.startswith("settled")
     assert settled.evaluations < full.evaluations
     jacobian = whitened(predictor.jacobian(np.array(full.end)), weights)
     distance = np.linalg.norm(jacobian @ (np.array(settled.end) - np.array(full.end)))
-    assert distance < tolerance
+    assert distance < fit_module.SETTLED_SIGMAS
     assert abs(settled.chi2 - full.chi2) < 0.01
 
 
