@@ -269,7 +269,7 @@ class _Settled(Exception):
 
 
 def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
-               max_evaluations: int, settle: bool = True) -> Start:
+               max_evaluations: int, settle: bool = False) -> Start:
     from scipy.optimize import least_squares
 
     free = predictor.free
@@ -283,11 +283,11 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
     first = [True]
     evaluations = [0]
     last: list[Any] = [None, math.inf]  # the last point evaluated and its chi²
-    best: list[Any] = [None]  # the accepted point: (x, whitened Jacobian, chi²)
+    # the accepted point: (x, whitened Jacobian, chi²)
+    best: list[tuple[np.ndarray, np.ndarray, float] | None] = [None]
 
     def residuals(x: np.ndarray) -> np.ndarray:
-        if settle and best[0] is not None and \
-                _within(x, best[0][0], best[0][1], best[0][2], dof):
+        if settle and best[0] is not None and _within(x, best[0], dof):
             raise _Settled
         wanted, first[0] = first[0], False
         evaluations[0] += 1
@@ -310,6 +310,7 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
     except TrialFailed as err:
         return Start(tuple(x0), tuple(x0), math.inf, 0, str(err), failed=True)
     except _Settled:
+        assert best[0] is not None  # only raised once a point was accepted
         x, _, chi2 = best[0]
         return Start(tuple(x0), tuple(x), chi2, evaluations[0],
                      f"settled: the next step lies within {SETTLED_SIGMAS} standard "
@@ -318,10 +319,11 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
                  str(fit.message))
 
 
-def _within(x: np.ndarray, centre: np.ndarray, jac: np.ndarray, chi2: float, dof: int
-            ) -> bool:
-    """Whether ``x`` lies within SETTLED_SIGMAS standard deviations of ``centre`` in the
-    metric of ``jac`` (whitened), scaled by the misfit sqrt(chi²/dof) where above one."""
+def _within(x: np.ndarray, best: tuple[np.ndarray, np.ndarray, float], dof: int) -> bool:
+    """Whether ``x`` lies within SETTLED_SIGMAS standard deviations of the best point in the
+    metric of its (whitened) Jacobian, scaled by the misfit sqrt(chi²/dof) where above one;
+    ``best``: that point, its Jacobian and its chi²."""
+    centre, jac, chi2 = best
     if not math.isfinite(chi2):
         return False
     moved = float(np.linalg.norm(jac @ (np.asarray(x, float) - centre)))
