@@ -21,7 +21,12 @@ tighter), with 1 µm of Gaussian noise on each coordinate. Two parts:
 
 Writes OUT/recovery.csv, OUT/coverage.csv and OUT/calibration.md (with the machine, its load
 average and the package versions). Times: wall (``time.perf_counter``) and CPU
-(``time.process_time``) of each calibration.
+(``time.process_time``) of each calibration. Wall times depend on the machine as much as on
+the code (two 2-core machines here differed 1.9x per run), so the summary also gives the
+machine's *reference run*, the fastest of 7 plain runs of the paper scene over the whole
+record at the fit's tolerances (the fastest: the one least disturbed by whatever else the
+machine does), measured before the calibrations and again after them, and each
+calibration's wall time in such runs (the one before).
 """
 
 from __future__ import annotations
@@ -41,6 +46,7 @@ from jointplay.calibration import CalibrationOptions, Measured, calibrate
 from jointplay.calibration.parameters import scene_value
 
 NAMES = ("joint2.clearance", "joint3.clearance", "friction.mu")
+REFERENCE_RUNS = 7
 NOISE = 1e-6
 TRUTH_TIGHTEN = 1e4
 
@@ -52,6 +58,19 @@ def synthetic(scene: jp.Scene, model: Any, truth: dict[str, float], seed: int) -
     rng = np.random.default_rng(seed)
     tip = exact.tip_position + NOISE * rng.standard_normal(exact.tip_position.shape)
     return Measured(f"synthetic seed {seed}", exact.t.copy(), ("tip_x", "tip_y"), tip)
+
+
+def reference_run_s(scene: jp.Scene, model: Any) -> float:
+    """The machine's reference run (s): the fastest of REFERENCE_RUNS plain runs of
+    ``scene`` over the whole record at the fit's tolerances (the default ``tighten``)."""
+    tighten = CalibrationOptions().tighten
+    fit_scene = scene.with_run(rtol=scene.run.rtol / tighten, atol=scene.run.atol / tighten)
+    times = []
+    for _ in range(REFERENCE_RUNS):
+        start = time.perf_counter()
+        jp.simulate(fit_scene, model=model)
+        times.append(time.perf_counter() - start)
+    return min(times)
 
 
 def draw_truth(scene: jp.Scene, rng: np.random.Generator) -> dict[str, float]:
@@ -119,7 +138,8 @@ def _median_worst(values: list[float]) -> str:
     return f"{np.median(values):.3g} / {np.max(values):.3g}"
 
 
-def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str) -> str:
+def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str,
+            reference_s: tuple[float, float]) -> str:
     import casadi
     import scipy
 
@@ -127,13 +147,16 @@ def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str) 
              f"Machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
              f"load average {', '.join(f'{v:.2f}' for v in os.getloadavg())}; jointplay "
              f"{jp.__version__}, SciPy {scipy.__version__}, CasADi {casadi.__version__}, "
-             f"NumPy {np.__version__}.", ""]
+             f"NumPy {np.__version__}. Reference run (one plain run of the whole record at "
+             f"the fit's tolerances, the fastest of {REFERENCE_RUNS}): "
+             f"{1e3 * reference_s[0]:.1f} ms before the calibrations, "
+             f"{1e3 * reference_s[1]:.1f} ms after.", ""]
     if rec:
         lines += ["## Recovery from the scene's values", "",
                   "| draw | " + " | ".join(f"{n} truth → rel. error (covered, verdict)"
                                            for n in NAMES)
-                  + " | chi²/dof | runs | wall s | CPU s |",
-                  "|---" * (len(NAMES) + 5) + "|"]
+                  + " | chi²/dof | runs | wall s | wall in reference runs | CPU s |",
+                  "|---" * (len(NAMES) + 6) + "|"]
         for r in rec:
             cells = [f"{r[f'{n} truth']:.4g} → {r[f'{n} rel error']:+.2e} "
                      f"({'yes' if r[f'{n} covered'] else 'no'}, "
@@ -141,7 +164,7 @@ def summary(rec: list[dict[str, Any]], cov: list[dict[str, Any]], command: str) 
                      for n in NAMES]
             lines.append(f"| {r['draw']} | " + " | ".join(cells)
                          + f" | {r['chi2_dof']:.3g} | {r['runs']} | {r['wall_s']:.1f} | "
-                         f"{r['cpu_s']:.1f} |")
+                         f"{r['wall_s'] / reference_s[0]:.0f} | {r['cpu_s']:.1f} |")
         lines += ["", "Median / worst: wall " + _median_worst([r["wall_s"] for r in rec])
                   + " s, CPU " + _median_worst([r["cpu_s"] for r in rec]) + " s, runs "
                   + _median_worst([r["runs"] for r in rec]) + "; |rel. error| "
@@ -183,6 +206,7 @@ def main() -> None:
     out.mkdir(parents=True, exist_ok=True)
     scene = jp.default_scene()
     model = jp.load_scene_model(scene)
+    before = reference_run_s(scene, model)
     start = time.perf_counter()
     cov = coverage(scene, model, args.seeds) if args.seeds else []
     if cov:
@@ -193,9 +217,11 @@ def main() -> None:
     command = (f"python benchmarks/calibration.py --out {args.out} --draws {args.draws} "
                f"--seeds {args.seeds}"
                + (f" --first-draw {args.first_draw}" if args.first_draw else ""))
-    (out / "calibration.md").write_text(summary(rec, cov, command))
-    print(summary(rec, cov, command))
-    print(f"total {time.perf_counter() - start:.0f} s wall")
+    total = time.perf_counter() - start
+    reference_s = (before, reference_run_s(scene, model))
+    (out / "calibration.md").write_text(summary(rec, cov, command, reference_s))
+    print(summary(rec, cov, command, reference_s))
+    print(f"total {total:.0f} s wall")
 
 
 if __name__ == "__main__":

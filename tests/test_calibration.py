@@ -673,6 +673,9 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
                          ValleyScan(0.32, 161, 0.2, 1, (2e-6, 2e-6, 0.0)), 3.0, 2.0,
                          threshold(), workers=2)
     assert check.window_end == pytest.approx(0.32) and check.runs == 162
+    assert check.extent is not None  # the line's ends, 80 steps of its spacing either side
+    assert np.all(check.extent[1] - check.extent[0]
+                  == pytest.approx(160 * check.spacing, rel=1e-6, abs=1e-15))
     assert check.spacing[2] == 0 and 4e-9 <= max(check.spacing) <= 5e-9 * (1 + 1e-9)
     difference = lambda x: (x[0] - x[1]) / 2  # noqa: E731  (half of c2 - c3)
     x_truth = np.array(list(truth.values()))
@@ -685,9 +688,10 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
 def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     """A valley the check found along the clearances' line within the threshold of the
     fit's own, outside their intervals, leaves both clearances not determined, each interval
-    widened to hold its point give or take the line's spacing and a warning naming the
-    window and the partner; one inside the intervals, or a parameter the line does not move
-    (the friction), changes nothing."""
+    widened to hold its point give or take the line's spacing, and to span the whole line
+    where the check knows its extent, and a warning naming the window, the partner and the
+    interval; one inside the intervals, or a parameter the line does not move (the
+    friction), changes nothing."""
     from jointplay.calibration.basins import Basins, threshold, widened
     from jointplay.calibration.continuation import ValleyCheck
 
@@ -714,6 +718,20 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     assert warnings[0].startswith("joint2.clearance is not determined by the search: over "
                                   "the first 0.32 s 1 other valley(s)")
     assert "joint3.clearance" in warnings[0] and "(the lowest -6.1)" in warnings[0]
+    # the line's extent (0.2 grid spacings of 2 µm either side along c2 - c3, as the check
+    # runs it): both clearances' intervals span it, the friction's stays its own
+    extent = (values + np.array([-400e-9, -336e-9, 0.0]), values + np.array([400e-9, 336e-9,
+                                                                            0.0]))
+    lined = ValleyCheck(0.32, ((inside, 0.9), (far, -6.1)), spacing, 162, extent)
+    low, high, determined, warnings = widened(spread, nothing, names, lined)
+    assert list(determined) == [False, False, True]
+    assert low[:2] == pytest.approx(extent[0][:2]) and high[:2] == pytest.approx(extent[1][:2])
+    assert low[2] == spread.low95[2] and high[2] == spread.high95[2]
+    assert f"spans the check's line, {extent[0][0]:.4g} to {extent[1][0]:.4g}" in warnings[0]
+    # a quiet check changes nothing, its extent whatever it is
+    quiet = ValleyCheck(0.32, ((inside, 0.9),), spacing, 162, extent)
+    low, high, determined, _ = widened(spread, nothing, names, quiet)
+    assert np.array_equal(low, spread.low95) and determined.all()
 
 
 def test_the_valley_floor_is_reached_downhill() -> None:

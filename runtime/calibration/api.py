@@ -105,7 +105,7 @@ class CalibrationOptions:
     valley lines' first window along the clearances' rugged direction through the best fit,
     VALLEY_CHECK_REACH grid spacings either side; a parameter the line moves whose interval
     misses another valley there within the basin threshold of the fit's own is not
-    determined, its interval widened to hold it (:func:`valley_check`; 0: no check).
+    determined, its interval widened to span the line (:func:`valley_check`; 0: no check).
     ``workers``: processes for the grid's runs, the tracks' fits and the lines' runs (the
     results do not depend on it)."""
 

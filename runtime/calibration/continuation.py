@@ -212,12 +212,14 @@ def _line_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
 class ValleyCheck:
     """What :func:`valley_check` found: the window (s) its line ran over, the other valleys'
     floors along it (a point of the line and its chi² there minus the floor of the best
-    fit's own valley), the line's spacing in each parameter, and its runs."""
+    fit's own valley), the line's spacing in each parameter, its runs, and the extent of
+    its points in each parameter (lowest, highest; None where it ran no line)."""
 
     window_end: float
     rivals: tuple[tuple[np.ndarray, float], ...]
     spacing: np.ndarray
     runs: int
+    extent: tuple[np.ndarray, np.ndarray] | None = None
 
 
 def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
@@ -260,7 +262,9 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
         rivals += [(line[i], float(chi2[i] - chi2[own])) for i in line_minima(chi2)
                    if i != own and chi2[i] <= chi2[own] + within]
         spacing = np.maximum(spacing, np.abs(directions[n]) * (steps[1] - steps[0]))
-    return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more)
+    points = np.array([p for line in lines for p in line]).reshape(-1, free.size)
+    extent = (points.min(axis=0), points.max(axis=0)) if len(points) else None
+    return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more, extent)
 
 
 def _valley_floor(chi2: np.ndarray, i: int) -> int:
