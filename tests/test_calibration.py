@@ -705,11 +705,11 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     inside = values + np.array([5e-9, -4.2e-9, 0.0])
     far = values + np.array([-100e-9, 84e-9, 0.0])
     quiet = ValleyCheck(0.32, ((inside, 0.9),), spacing, 162)
-    low, high, determined, warnings = widened(spread, nothing, names, quiet)
+    low, high, determined, warnings = widened(spread, nothing, names, (quiet,))
     assert np.array_equal(low, spread.low95) and np.array_equal(high, spread.high95)
     assert determined.all() and warnings == []
     check = ValleyCheck(0.32, ((inside, 0.9), (far, -6.1)), spacing, 162)
-    low, high, determined, warnings = widened(spread, nothing, names, check)
+    low, high, determined, warnings = widened(spread, nothing, names, (check,))
     assert list(determined) == [False, False, True]
     assert low[0] == pytest.approx(far[0] - spacing[0]) and high[0] == spread.high95[0]
     assert high[1] == pytest.approx(far[1] + spacing[1]) and low[1] == spread.low95[1]
@@ -723,14 +723,14 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     extent = (values + np.array([-400e-9, -336e-9, 0.0]), values + np.array([400e-9, 336e-9,
                                                                             0.0]))
     lined = ValleyCheck(0.32, ((inside, 0.9), (far, -6.1)), spacing, 162, extent)
-    low, high, determined, warnings = widened(spread, nothing, names, lined)
+    low, high, determined, warnings = widened(spread, nothing, names, (lined,))
     assert list(determined) == [False, False, True]
     assert low[:2] == pytest.approx(extent[0][:2]) and high[:2] == pytest.approx(extent[1][:2])
     assert low[2] == spread.low95[2] and high[2] == spread.high95[2]
     assert f"spans the check's line, {extent[0][0]:.4g} to {extent[1][0]:.4g}" in warnings[0]
     # a quiet check changes nothing, its extent whatever it is
     quiet = ValleyCheck(0.32, ((inside, 0.9),), spacing, 162, extent)
-    low, high, determined, _ = widened(spread, nothing, names, quiet)
+    low, high, determined, _ = widened(spread, nothing, names, (quiet,))
     assert np.array_equal(low, spread.low95) and determined.all()
 
 

@@ -19,6 +19,7 @@ from jointplay.calibration.continuation import (
     ValleyCheck,
     ValleyScan,
     continuation,
+    follow_rivals,
     valley_check,
 )
 from jointplay.calibration.fit import (
@@ -260,14 +261,32 @@ def run(problem: Problem) -> CalibrationResult:
                             max(problem.measured.size - problem.free.size, 1),
                             whole.evaluations, whole.evaluations, whole.message))
     free = problem.free
-    check: ValleyCheck | None = None
+    checks: list[ValleyCheck] = []
+    check_runs = 0
+    followed = 0.0  # how much lower the fit ended by following the checks' rivals
     if opts.basins and valley is not None and opts.valley_check_points > 0 \
             and problem.sigma is not None:
         # with the noise stated (the threshold is in chi² of the stated noise)
-        check = valley_check(predictor, weights, optimum.values, ValleyScan(
-            opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1,
-            valley.scale), VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(),
-            opts.workers)
+        check_scan = ValleyScan(opts.valley_window, opts.valley_check_points,
+                                VALLEY_CHECK_REACH, 1, valley.scale)
+        for round_ in range(FOLLOW_ROUNDS + 1):
+            check = valley_check(predictor, weights, optimum.values, check_scan,
+                                 VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(),
+                                 opts.workers)
+            checks.append(check)
+            check_runs += check.runs
+            if round_ == FOLLOW_ROUNDS or not check.rivals:
+                break
+            fits, runs = follow_rivals(predictor, weights, check, opts.max_evaluations,
+                                       opts.horizon_growth, opts.window_looser, opts.workers)
+            check_runs += runs
+            optimum = dataclasses.replace(optimum, starts=optimum.starts + tuple(fits))
+            lowest = min(fits, key=lambda f: f.chi2, default=None)
+            current = float(np.sum(optimum.residuals**2))
+            if lowest is None or not lowest.chi2 < current:
+                break
+            followed += current - lowest.chi2
+            optimum = _moved_to(predictor, optimum, np.asarray(lowest.end, dtype=float))
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     line_runs = 0
     if opts.basins:
@@ -284,7 +303,8 @@ def run(problem: Problem) -> CalibrationResult:
         if moved:
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
-        low, high, determined, rival_warnings = widened(spread, found, free.names, check)
+        low, high, determined, rival_warnings = widened(spread, found, free.names, checks,
+                                                         followed)
         spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
@@ -306,9 +326,13 @@ def run(problem: Problem) -> CalibrationResult:
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
                    wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs, grid,
-                   line_runs, profile_runs, consistent,
-                   check.runs if check is not None else 0)
+                   line_runs, profile_runs, consistent, check_runs)
 
+
+FOLLOW_ROUNDS = 2
+"""How many times at most the valley check's rivals are followed to the whole record
+(:func:`follow_rivals`), the check run again around each fit that ends lower: the valley a
+rival leads to can have rivals of its own, lower still."""
 
 WHOLE_RECORD_TRACKS = 2
 """The tracks fitted on the whole record at least (where that many reach it): a track's
@@ -339,13 +363,16 @@ def _after_basins(predictor: Predictor, optimum: Optimum, found: Basins, moved: 
                   ) -> Optimum:
     """``optimum`` with the basin check's local fits added to its record, and moved to the
     lower minimum the check found (its residuals and Jacobian there), if it found one."""
-    record = optimum.starts + found.fits
-    if not moved:
-        return dataclasses.replace(optimum, starts=record)
-    residuals = whitened(predictor.outputs(found.best) - predictor.measured.values,
-                         optimum.sigma)
-    jacobian = whitened(predictor.jacobian(found.best), optimum.sigma)
-    return Optimum(found.best, optimum.sigma, residuals, jacobian, record)
+    optimum = dataclasses.replace(optimum, starts=optimum.starts + found.fits)
+    return _moved_to(predictor, optimum, found.best) if moved else optimum
+
+
+def _moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
+    """``optimum`` moved to ``x`` (a lower minimum found after the fit): its residuals and
+    Jacobian there, its record kept."""
+    residuals = whitened(predictor.outputs(x) - predictor.measured.values, optimum.sigma)
+    jacobian = whitened(predictor.jacobian(x), optimum.sigma)
+    return Optimum(x, optimum.sigma, residuals, jacobian, optimum.starts)
 
 
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,

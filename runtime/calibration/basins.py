@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -190,17 +191,19 @@ def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,
 
 
 def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
-            check: ValleyCheck | None = None
+            checks: Sequence[ValleyCheck] = (), followed: float = 0.0
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """The 95 % intervals widened to hold every point found inside them: each rival's basin
     (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations:
     the part of its basin below the threshold, its curvature taken as the best's) and every
     point of the lines within the threshold; which parameters stay determined (no rival
     outside the best's own interval); a warning for each interval a rival widens, or a
-    line's point by more than WARN_WIDENING; and, with ``check``, each parameter its line
-    moves whose interval misses one of its rivals is not determined, its interval widened to
-    span the check's whole line (the search cannot tell which valley holds the lowest
-    minimum of the whole record's cost)."""
+    line's point by more than WARN_WIDENING; and, with ``checks`` (the valley checks, one
+    per round of :func:`~jointplay.calibration.continuation.follow_rivals`), each parameter
+    their lines move whose interval misses one of their rivals, or every such parameter
+    where the fit moved to a lower valley they led to (``followed``: how much lower), is not
+    determined, its interval widened to span the checks' whole lines (the search cannot tell
+    which valley holds the lowest minimum of the whole record's cost)."""
     low, high = spread.low95.copy(), spread.high95.copy()
     determined = spread.determined.copy()
     warnings: list[str] = []
@@ -242,44 +245,64 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
                 f"{basins.threshold:.3g} of the best ({inside}) lie up to {far:.4g} from the "
                 f"estimate, {far / std[k] if std[k] > 0 else math.inf:.3g} of its standard "
                 "deviations: its interval is widened to hold them")
-    if check is not None:
-        _unexcluded(check, names, basins.threshold, (low, high, determined, warnings),
-                    spread.low95, spread.high95)
+    _unexcluded(checks, followed, names, basins.threshold, (low, high, determined, warnings),
+                spread.low95, spread.high95)
     return low, high, determined, warnings
 
 
-def _unexcluded(check: ValleyCheck, names: tuple[str, ...], limit: float,
-                verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]],
+def _unexcluded(checks: Sequence[ValleyCheck], followed: float, names: tuple[str, ...],
+                limit: float, verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]],
                 low95: np.ndarray, high95: np.ndarray) -> None:
-    """``verdict`` (low, high, determined, warnings) changed in place for the valley check's
-    rivals outside the intervals ``low95`` to ``high95``: such a parameter's interval spans
-    the check's whole line. Why the whole line and not only the rivals' valleys: where two
-    valleys along it lie within the threshold, the comb's floors are level to within the
-    noise's reach, and the line resolves only the valleys it crosses near their floors; on
-    benchmark draw 15 it crossed the truth's valley 60 nm off its floor and saw no minimum
-    there, 0.29 µm from a fit whose rival it found 37 nm away."""
+    """``verdict`` (low, high, determined, warnings) changed in place for the valley
+    checks' rivals outside the intervals ``low95`` to ``high95``: such a parameter's
+    interval spans the checks' whole lines. Why the whole line and not only the rivals'
+    valleys: where two valleys along it lie within the threshold, the comb's floors are
+    level to within the noise's reach, and the line resolves only the valleys it crosses
+    near their floors; on benchmark draw 15 it crossed the truth's valley 60 nm off its
+    floor and saw no minimum there, 0.29 µm from a fit whose rival it found 37 nm away.
+    Where the fit moved to a lower valley a rival led to (``followed``: how much lower its
+    chi² over the whole record ended, 0 where it did not move), every parameter the lines
+    move is not determined, its interval spanning every check's line: the search had
+    missed a lower valley once and cannot exclude another (on draw 15 the valley it moved
+    to, 30 lower, lies as far from the truth's, whose floor is 53 lower still, and the
+    check around it finds no rival)."""
     low, high, determined, warnings = verdict
-    points = np.array([point for point, _ in check.rivals]).reshape(-1, len(names))
-    rise = np.array([r for _, r in check.rivals])
-    moved = check.spacing > 0
+    if not checks:
+        return
+    spacing = np.max([c.spacing for c in checks], axis=0)
+    moved = spacing > 0
+    rivals = [(point, rise, c.window_end) for c in checks for point, rise in c.rivals]
+    points = np.array([p for p, _, _ in rivals]).reshape(-1, len(names))
+    rise = np.array([r for _, r, _ in rivals])
     outside = ((points < low95) | (points > high95)) & moved
+    extents = [c.extent for c in checks if c.extent is not None]
     for k, name in enumerate(names):
         rows = np.flatnonzero(outside[:, k])
-        if not rows.size:
+        if not rows.size and not (followed > 0 and moved[k]):
             continue
         determined[k] = False
-        low[k] = min(low[k], float(np.min(points[rows, k])) - check.spacing[k])
-        high[k] = max(high[k], float(np.max(points[rows, k])) + check.spacing[k])
-        if check.extent is not None:
-            low[k] = min(low[k], float(check.extent[0][k]))
-            high[k] = max(high[k], float(check.extent[1][k]))
-        nearest = rows[np.argmin(rise[rows])]
-        far = float(np.max(np.abs(points[rows, k] - (low95[k] + high95[k]) / 2)))
+        if rows.size:
+            low[k] = min(low[k], float(np.min(points[rows, k])) - spacing[k])
+            high[k] = max(high[k], float(np.max(points[rows, k])) + spacing[k])
+        for lowest, highest in extents:
+            low[k] = min(low[k], float(lowest[k]))
+            high[k] = max(high[k], float(highest[k]))
         partners = sorted(names[j] for j in np.flatnonzero(moved) if j != k)
         along = f" along {name} and {', '.join(partners)}" if partners else ""
+        if followed > 0:
+            warnings.append(
+                f"{name} is not determined by the search: the fit moved to a valley of the "
+                f"cost{along} that another valley over the first {checks[0].window_end:g} s "
+                f"led to, {followed:.3g} lower in chi² over the whole record; a search that "
+                "missed a lower valley once cannot exclude another: its interval spans the "
+                f"checks' lines, {low[k]:.4g} to {high[k]:.4g} (the other parameters' "
+                "estimates and intervals are those of the fit's valley)")
+            continue
+        nearest = rows[np.argmin(rise[rows])]
+        far = float(np.max(np.abs(points[rows, k] - (low95[k] + high95[k]) / 2)))
         warnings.append(
-            f"{name} is not determined by the search: over the first {check.window_end:g} s "
-            f"{rows.size} other valley(s) of the cost{along} lie within chi² + {limit:.3g} "
+            f"{name} is not determined by the search: over the first {checks[0].window_end:g} "
+            f"s {rows.size} other valley(s) of the cost{along} lie within chi² + {limit:.3g} "
             f"of the fit's own (the lowest {rise[nearest]:+.3g}), up to {far:.4g} from the "
             "estimate; over the whole record those valleys are too narrow for the search to "
             "tell which holds the lowest minimum: its interval spans the check's line, "
