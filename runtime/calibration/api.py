@@ -264,6 +264,8 @@ def run(problem: Problem) -> CalibrationResult:
     checks: list[ValleyCheck] = []
     check_runs = 0
     followed = 0.0  # how much lower the fit ended by following the checks' rivals
+    # the valleys the fit left and those it was led to: (estimate, chi² over the record)
+    visited: list[tuple[np.ndarray, float]] = []
     if opts.basins and valley is not None and opts.valley_check_points > 0 \
             and problem.sigma is not None:
         # with the noise stated (the threshold is in chi² of the stated noise)
@@ -281,11 +283,13 @@ def run(problem: Problem) -> CalibrationResult:
                                        opts.horizon_growth, opts.window_looser, opts.workers)
             check_runs += runs
             optimum = dataclasses.replace(optimum, starts=optimum.starts + tuple(fits))
+            visited += [(np.asarray(f.end, dtype=float), f.chi2) for f in fits]
             lowest = min(fits, key=lambda f: f.chi2, default=None)
             current = float(np.sum(optimum.residuals**2))
             if lowest is None or not lowest.chi2 < current:
                 break
             followed += current - lowest.chi2
+            visited.append((optimum.values, current))
             optimum = _moved_to(predictor, optimum, np.asarray(lowest.end, dtype=float))
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     line_runs = 0
@@ -303,8 +307,12 @@ def run(problem: Problem) -> CalibrationResult:
         if moved:
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
+        # the valleys visited that the whole record's chi² does not rule out as tracks are
+        # ruled out (TRACK_MARGIN)
+        close = [x for x, chi2 in visited
+                 if chi2 <= float(np.sum(optimum.residuals**2)) + TRACK_MARGIN]
         low, high, determined, rival_warnings = widened(spread, found, free.names, checks,
-                                                         followed)
+                                                         followed, np.array(close))
         spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)

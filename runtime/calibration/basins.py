@@ -34,7 +34,7 @@ import numpy as np
 from jointplay.calibration.continuation import ValleyCheck, loosened
 from jointplay.calibration.fit import Start, multi_start
 from jointplay.calibration.predict import Predictor, chi2_at_points, line_minima
-from jointplay.calibration.uncertainty import Uncertainty
+from jointplay.calibration.uncertainty import Z95, Uncertainty
 
 CONFIDENCE = 0.95
 """The confidence level of the intervals: a point whose chi² lies within
@@ -191,7 +191,8 @@ def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,
 
 
 def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
-            checks: Sequence[ValleyCheck] = (), followed: float = 0.0
+            checks: Sequence[ValleyCheck] = (), followed: float = 0.0,
+            visited: np.ndarray | None = None
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """The 95 % intervals widened to hold every point found inside them: each rival's basin
     (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations:
@@ -203,7 +204,9 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
     their lines move whose interval misses one of their rivals, or every such parameter
     where the fit moved to a lower valley they led to (``followed``: how much lower), is not
     determined, its interval widened to span the checks' whole lines (the search cannot tell
-    which valley holds the lowest minimum of the whole record's cost)."""
+    which valley holds the lowest minimum of the whole record's cost); where the fit so
+    moved, every interval widened to hold the ``visited`` valleys' estimates too (one per
+    row: see :func:`_valleys_visited`)."""
     low, high = spread.low95.copy(), spread.high95.copy()
     determined = spread.determined.copy()
     warnings: list[str] = []
@@ -247,6 +250,9 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
                 "deviations: its interval is widened to hold them")
     _unexcluded(checks, followed, names, basins.threshold, (low, high, determined, warnings),
                 spread.low95, spread.high95)
+    if followed > 0 and visited is not None and len(visited):
+        _valleys_visited(np.asarray(visited).reshape(-1, len(names)), basins.best, names,
+                         spread, (low, high, determined, warnings))
     return low, high, determined, warnings
 
 
@@ -295,7 +301,7 @@ def _unexcluded(checks: Sequence[ValleyCheck], followed: float, names: tuple[str
                 f"cost{along} that another valley over the first {checks[0].window_end:g} s "
                 f"led to, {followed:.3g} lower in chi² over the whole record; a search that "
                 "missed a lower valley once cannot exclude another: its interval spans the "
-                f"checks' lines, {low[k]:.4g} to {high[k]:.4g} (the other parameters' "
+                f"checks' lines, {low[k]:.6g} to {high[k]:.6g} (the other parameters' "
                 "estimates and intervals are those of the fit's valley)")
             continue
         nearest = rows[np.argmin(rise[rows])]
@@ -306,5 +312,44 @@ def _unexcluded(checks: Sequence[ValleyCheck], followed: float, names: tuple[str
             f"of the fit's own (the lowest {rise[nearest]:+.3g}), up to {far:.4g} from the "
             "estimate; over the whole record those valleys are too narrow for the search to "
             "tell which holds the lowest minimum: its interval spans the check's line, "
-            f"{low[k]:.4g} to {high[k]:.4g} (the other parameters' estimates and intervals "
+            f"{low[k]:.6g} to {high[k]:.6g} (the other parameters' estimates and intervals "
             "are those of the fit's valley)")
+
+
+def _valleys_visited(visited: np.ndarray, best: np.ndarray, names: tuple[str, ...],
+                     spread: Uncertainty,
+                     verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]) -> None:
+    """``verdict`` (low, high, determined, warnings) changed in place where the fit moved to
+    a lower valley the valley checks' rivals led to: each interval widened to hold every
+    ``visited`` valley's estimate (the fits the search left and those the rivals led to,
+    within TRACK_MARGIN of the best's chi²: a fit further above is ruled out as a track of
+    the continuation is) give or take Z95 of the best's standard deviations, and a parameter
+    with such an estimate outside the best's own interval not determined. Why: each valley's
+    estimates of the other parameters (the friction) are conditional on its clearances, and
+    a search that missed a lower valley once may have missed the true one; the valleys it
+    visited show by how much the estimates move from one valley to the next (on benchmark
+    draw 4, five fits in valleys 0.65-1.4 % from the true clearances put the friction 0.4 to
+    9.9e-5 of its value off, 0.2 to 2.3 standard deviations)."""
+    low, high, determined, warnings = verdict
+    std = np.where(np.isfinite(spread.std), spread.std, 0.0)
+    for k, name in enumerate(names):
+        lowest, highest = float(np.min(visited[:, k])), float(np.max(visited[:, k]))
+        before = high[k] - low[k]
+        low[k] = min(low[k], lowest - Z95 * float(std[k]))
+        high[k] = max(high[k], highest + Z95 * float(std[k]))
+        far = max(abs(lowest - best[k]), abs(highest - best[k]))
+        if not determined[k]:
+            continue
+        if lowest < spread.low95[k] or highest > spread.high95[k]:
+            determined[k] = False
+            warnings.append(
+                f"{name} is not determined by the search: the fit moved to a lower valley of "
+                f"the cost, and the valleys the search visited on the way put {name} up to "
+                f"{far:.4g} from the estimate, outside its own interval; its interval spans "
+                f"them, {low[k]:.6g} to {high[k]:.6g}")
+        elif high[k] - low[k] > WARN_WIDENING * before:
+            warnings.append(
+                f"{name}: the fit moved to a lower valley of the cost, and the valleys the "
+                f"search visited on the way put {name} up to {far:.4g} from the estimate "
+                f"(inside its own interval): its interval is widened to hold each of them "
+                f"with its own, {low[k]:.6g} to {high[k]:.6g}")
