@@ -106,7 +106,9 @@ class CalibrationOptions:
     valley lines' first window along the clearances' rugged direction through the best fit,
     VALLEY_CHECK_REACH grid spacings either side; a parameter the line moves whose interval
     misses another valley there within the basin threshold of the fit's own is not
-    determined, its interval widened to span the line (:func:`valley_check`; 0: no check).
+    determined, its interval widened to span the line, and the lowest such valleys are
+    followed to the whole record, a fit that ends lower replacing the best
+    (:func:`valley_check`, :func:`follow_rivals`; 0: no check).
     ``workers``: processes for the grid's runs, the tracks' fits and the lines' runs (the
     results do not depend on it)."""
 
