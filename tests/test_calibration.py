@@ -657,9 +657,10 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
     The check's line over 0.32 s (161 runs 5 nm apart, and one for its direction) finds a
     valley lower than the fit's own within 10 nm of the truth along c2 - c3."""
     from jointplay.calibration.basins import threshold
-    from jointplay.calibration.continuation import ValleyScan, valley_check
+    from jointplay.calibration.continuation import ValleyScan
     from jointplay.calibration.parameters import free_parameters
     from jointplay.calibration.predict import Predictor
+    from jointplay.calibration.valleys import valley_check
 
     scene = jp.default_scene().with_run(t_end=0.4)
     truth = {"joint2.clearance": 2.6115015813241887e-05,
@@ -686,8 +687,8 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
     # followed over this record (0.32 s, then the whole 0.4 s), the rivals lead to a valley
     # lower over the record than the fit and at most 20 nm from the truth along c2 - c3
     # (the fit: 95 nm; measured 11.5 nm, the friction, which 0.4 s barely sees, 0.3 % off)
-    from jointplay.calibration.continuation import FOLLOWED_RIVALS, follow_rivals
     from jointplay.calibration.predict import chi2_at
+    from jointplay.calibration.valleys import FOLLOWED_RIVALS, follow_rivals
 
     fits, runs = follow_rivals(predictor, np.array([NOISE, NOISE]), check, 20, 2.0, 100.0,
                                workers=2)
@@ -705,7 +706,7 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     interval; one inside the intervals, or a parameter the line does not move (the
     friction), changes nothing."""
     from jointplay.calibration.basins import Basins, threshold, widened
-    from jointplay.calibration.continuation import ValleyCheck
+    from jointplay.calibration.valleys import ValleyCheck
 
     names = ("joint2.clearance", "joint3.clearance", "friction.mu")
     values = np.array([26.21e-6, 25.55e-6, 0.0645])
@@ -755,8 +756,8 @@ def test_a_fit_moved_by_the_valley_checks_rivals_is_not_determined_along_their_l
     visited estimate lies outside its own interval is not determined; one inside it stays
     determined, its interval widened with a warning."""
     from jointplay.calibration.basins import Basins, threshold, widened
-    from jointplay.calibration.continuation import ValleyCheck
     from jointplay.calibration.uncertainty import Z95
+    from jointplay.calibration.valleys import ValleyCheck
 
     names = ("joint2.clearance", "joint3.clearance", "friction.mu")
     values = np.array([30.11e-6, 32.08e-6, 0.0344437])
@@ -798,7 +799,7 @@ def test_the_valley_floor_is_reached_downhill() -> None:
     """From a point on a line, the floor of its own valley: downhill through the steepest
     neighbour, stopping where neither neighbour is lower; a point that is not finite is
     its own."""
-    from jointplay.calibration.continuation import _valley_floor
+    from jointplay.calibration.valleys import _valley_floor
 
     chi2 = np.array([5.0, 1.0, 3.0, 4.0, 2.5, 0.5, 6.0])
     assert _valley_floor(chi2, 3) == 5  # through the lower neighbour: 4 -> 2.5 -> 0.5

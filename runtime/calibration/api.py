@@ -13,15 +13,7 @@ import numpy as np
 
 from jointplay.calibration.basins import Basins, neighbouring_basins, widened
 from jointplay.calibration.basins import threshold as basin_threshold
-from jointplay.calibration.continuation import (
-    TRACK_MARGIN,
-    Stage,
-    ValleyCheck,
-    ValleyScan,
-    continuation,
-    follow_rivals,
-    valley_check,
-)
+from jointplay.calibration.continuation import TRACK_MARGIN, Stage, ValleyScan, continuation
 from jointplay.calibration.fit import (
     Optimum,
     Scan,
@@ -43,6 +35,7 @@ from jointplay.calibration.parameters import FreeParameters, free_parameters
 from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
 from jointplay.calibration.result import CalibrationResult, Estimate
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
+from jointplay.calibration.valleys import ValleyCheck, follow_rivals, valley_check
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
 

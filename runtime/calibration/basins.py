@@ -31,10 +31,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jointplay.calibration.continuation import ValleyCheck, loosened
+from jointplay.calibration.continuation import loosened
 from jointplay.calibration.fit import Start, multi_start
 from jointplay.calibration.predict import Predictor, chi2_at_points, line_minima
 from jointplay.calibration.uncertainty import Z95, Uncertainty
+from jointplay.calibration.valleys import ValleyCheck
 
 CONFIDENCE = 0.95
 """The confidence level of the intervals: a point whose chi² lies within
@@ -200,7 +201,7 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
     point of the lines within the threshold; which parameters stay determined (no rival
     outside the best's own interval); a warning for each interval a rival widens, or a
     line's point by more than WARN_WIDENING; and, with ``checks`` (the valley checks, one
-    per round of :func:`~jointplay.calibration.continuation.follow_rivals`), each parameter
+    per round of :func:`~jointplay.calibration.valleys.follow_rivals`), each parameter
     their lines move whose interval misses one of their rivals, or every such parameter
     where the fit moved to a lower valley they led to (``followed``: how much lower), is not
     determined, its interval widened to span the checks' whole lines (the search cannot tell
@@ -277,9 +278,9 @@ def _unexcluded(checks: Sequence[ValleyCheck], followed: float, names: tuple[str
         return
     spacing = np.max([c.spacing for c in checks], axis=0)
     moved = spacing > 0
-    rivals = [(point, rise, c.window_end) for c in checks for point, rise in c.rivals]
-    points = np.array([p for p, _, _ in rivals]).reshape(-1, len(names))
-    rise = np.array([r for _, r, _ in rivals])
+    rivals = [rival for c in checks for rival in c.rivals]
+    points = np.array([p for p, _ in rivals]).reshape(-1, len(names))
+    rise = np.array([r for _, r in rivals])
     outside = ((points < low95) | (points > high95)) & moved
     extents = [c.extent for c in checks if c.extent is not None]
     for k, name in enumerate(names):
