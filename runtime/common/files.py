@@ -19,7 +19,6 @@ import re
 import shutil
 import socket
 import stat
-import tempfile
 import time
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
@@ -81,18 +80,13 @@ def atomic_path(path: str | Path, suffix: str = ".part") -> Iterator[Path]:
     there (e.g. ``".part.gif"``); it must start with ``.part``, which marks it temporary.
     """
     path = Path(path)
+    # The name is chosen before the file exists and the file is created inside the ``try``
+    # that removes it: an interrupt at any moment, even right after the creation, leaves
+    # nothing behind. O_EXCL makes the name this call's own; the mode is a plain open()'s.
+    tmp_path = path.with_name(f".{temp_stem(path.name)}.{temp_tag()}.{os.urandom(4).hex()}"
+                              f"{suffix}")
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{temp_stem(path.name)}.{temp_tag()}.", suffix=suffix,
-                                   dir=path.parent)
-    except OSError as err:
-        raise file_error(path, err) from None
-    os.close(fd)
-    # mkstemp creates the file 0600; give the result the mode a plain open() would.
-    umask = os.umask(0)
-    os.umask(umask)
-    tmp_path = Path(tmp)
-    try:
-        os.chmod(tmp, 0o666 & ~umask)
+        os.close(os.open(tmp_path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
         yield tmp_path
         interrupts.raise_if_interrupted()
         with open(tmp_path, "rb") as fh:
@@ -104,14 +98,20 @@ def atomic_path(path: str | Path, suffix: str = ".part") -> Iterator[Path]:
         else:
             os.replace(tmp_path, path)
     except FileError:
-        tmp_path.unlink(missing_ok=True)
+        _discard(tmp_path)
         raise
     except OSError as err:
-        tmp_path.unlink(missing_ok=True)
+        _discard(tmp_path)
         raise file_error(path, err) from None
     except BaseException:
-        tmp_path.unlink(missing_ok=True)
+        _discard(tmp_path)
         raise
+
+
+def _discard(tmp: Path) -> None:
+    """Remove a temporary file (it may not exist yet, or be gone already)."""
+    with contextlib.suppress(OSError):
+        tmp.unlink(missing_ok=True)
 
 
 def atomic_write_text(path: str | Path, text: str) -> None:

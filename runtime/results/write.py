@@ -14,15 +14,16 @@ arrays at the root with attrs "unit" and "doc", the phase table in ``/impacts``,
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
-import tempfile
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from jointplay.common import interrupts
 from jointplay.common.errors import DescriptionError
 from jointplay.common.files import atomic_path
 from jointplay.results import wear as wear_files
@@ -90,12 +91,15 @@ def check_output_path(path: str | Path, flag: str = "--out",
         raise DescriptionError(flag, f"folder {parent} does not exist", None)
     if not os.access(parent, os.W_OK | os.X_OK):
         raise DescriptionError(flag, f"cannot write to {parent}: permission denied", None)
+    probe = parent / f".{temp_stem(path.name)}.{temp_tag()}.{os.urandom(4).hex()}.part"
     try:
-        fd, probe = tempfile.mkstemp(prefix=f".{temp_stem(path.name)}.{temp_tag()}.",
-                                     suffix=".part",
-                                     dir=parent)
-        os.close(fd)
-        os.unlink(probe)
+        # Made and removed with Ctrl-C deferred: an interrupt in between leaves no probe.
+        with interrupts.deferred():
+            try:
+                os.close(os.open(probe, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
+            finally:
+                with contextlib.suppress(FileNotFoundError):
+                    os.unlink(probe)
     except OSError as err:
         raise DescriptionError(flag, f"cannot write to {parent}: {describe_os_error(err)}",
                                None) from None

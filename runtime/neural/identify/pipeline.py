@@ -34,8 +34,8 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import json
+import os
 import shutil
-import tempfile
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, replace
@@ -159,12 +159,14 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False,
     sweep_stale(out)  # the staging folder of a run that was killed
     # Everything is written into a staging folder and moved into ``out`` only once training
     # and evaluation succeeded: a failed run leaves a previous model folder as it was.
+    # Named first and made inside the ``try`` that removes it: an interrupt right after it
+    # is made leaves nothing behind.
+    stage = out / f".identify.{temp_tag()}.{os.urandom(4).hex()}.part"
     try:
-        stage = Path(tempfile.mkdtemp(prefix=f".identify.{temp_tag()}.", suffix=".part",
-                                      dir=out))
-    except OSError as err:
-        raise file_error(out, err) from None
-    try:
+        try:
+            stage.mkdir()
+        except OSError as err:
+            raise file_error(out, err) from None
         metrics = _identify_into(scene, stage, config, inner, limits, quiet, closed_loop)
         _move_in(stage, out, rejected="rejected" in metrics)
     except BaseException as err:
