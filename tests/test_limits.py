@@ -60,6 +60,15 @@ def _identify(*flags: str) -> Probe:
     return lambda tmp: (["identify", "--out", str(tmp / "m"), *flags], 2, flags[0])
 
 
+def _calibrate(tmp: Path, row: str, *flags: str) -> list[str]:
+    """calibrate on the short paper scene, the measured file's second row ``row``."""
+    scene = _scene(tmp, **{"t_end = 2.0 ": "t_end = 0.02 "})
+    measured = tmp / "m.csv"
+    measured.write_text(f"time,tip_x\n0.0,0.1\n{row}\n0.002,0.1\n", encoding="utf-8")
+    return ["calibrate", scene, "--measured", str(measured), "--free", "friction.mu", "--out",
+            str(tmp / "cal"), *flags]
+
+
 PROBES: dict[str, Probe] = {
     "MAX_T_END": lambda tmp: (["simulate", "--t-end", f"{limits.MAX_T_END * 10:g}"], 2,
                               "--t-end"),
@@ -94,6 +103,13 @@ PROBES: dict[str, Probe] = {
     "MAX_ITERATIONS": _identify("--iterations", str(limits.MAX_ITERATIONS + 1)),
     "MIN_WINDOW": _identify("--window", str(limits.MIN_WINDOW - 1)),
     "MAX_WINDOW": _identify("--window", str(limits.MAX_WINDOW + 1)),
+    "MAX_MEASURED": lambda tmp: (_calibrate(tmp, f"0.001,{limits.MAX_MEASURED * 2:g}"), 2,
+                                 "row 3 column tip_x"),
+    "MIN_NOISE": lambda tmp: (_calibrate(tmp, "0.001,0.1", "--noise",
+                                         f"{limits.MIN_NOISE / 2:g}"), 2, "--noise"),
+    "MAX_CALIBRATION_RUNS": lambda tmp: (_calibrate(
+        tmp, "0.001,0.1", "--scan-points", str(limits.MAX_CALIBRATION_RUNS + 1)), 2,
+        "--scan-points"),
     "MIN_RADIAL_CLEARANCE": lambda tmp: (["simulate", "--set", "joint2.clearance="
                                           f"{limits.MIN_RADIAL_CLEARANCE / 2:g}"], 2,
                                          "--set joint2"),

@@ -37,6 +37,7 @@ from jointplay.calibration.result import CalibrationResult, Estimate
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
 from jointplay.calibration.valleys import ValleyCheck, follow_rivals, valley_check
 from jointplay.common.errors import DescriptionError
+from jointplay.common.limits import MAX_CALIBRATION_RUNS
 from jointplay.scene.definition import Scene
 
 CONSISTENT = 0.975
@@ -153,6 +154,19 @@ class CalibrationOptions:
             if not ok:
                 raise DescriptionError(f"options.{name}",
                                        f"{allowed}, got {getattr(self, name)!r}")
+        # Each stage's runs bounded before any work (10**10 scan points once ran a fit and
+        # then out of memory); the grid runs at most grid_points squared.
+        bounds = (("starts", self.starts), ("scan_points", self.scan_points),
+                  ("grid_line_points", self.grid_line_points),
+                  ("valley_check_points", self.valley_check_points),
+                  ("profile_points", self.profile_points), ("valley_points", self.valley_points),
+                  ("grid_points", self.grid_points ** 2))
+        for name, runs in bounds:
+            if runs > MAX_CALIBRATION_RUNS:
+                most = math.isqrt(MAX_CALIBRATION_RUNS) if name == "grid_points" \
+                    else MAX_CALIBRATION_RUNS
+                raise DescriptionError(f"options.{name}", f"must be at most {most} (runs of "
+                                       f"one stage of the fit), got {getattr(self, name)!r}")
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ import numpy as np
 
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
-from jointplay.common.limits import MAX_TABLE_BYTES
+from jointplay.common.limits import MAX_MEASURED, MAX_TABLE_BYTES, MIN_NOISE
 from jointplay.scene.definition import Scene
 from jointplay.store.model import Model
 
@@ -104,6 +104,10 @@ def noise_levels(noise: float | Mapping[str, float] | None,
                 or not math.isfinite(level) or level <= 0:
             raise DescriptionError(name if name == "noise" else f"noise {name}",
                                    f"must be a finite standard deviation > 0, got {level!r}")
+        if level < MIN_NOISE:
+            raise DescriptionError(name if name == "noise" else f"noise {name}",
+                                   f"must be at least {MIN_NOISE:g} (a standard deviation in "
+                                   f"m or rad; no sensor resolves less), got {level!r}")
     return np.asarray(levels, dtype=float)
 
 
@@ -121,7 +125,8 @@ def _from_csv(path: Path, model: Model) -> Measured:
         raise DescriptionError("measured", f"is larger than {MAX_TABLE_BYTES >> 20} MiB; "
                                "give fewer samples", source)
     try:
-        text = path.read_text(encoding="utf-8")
+        # utf-8-sig: spreadsheet programs start a CSV with a byte-order mark
+        text = path.read_text(encoding="utf-8-sig")
     except UnicodeDecodeError:
         raise DescriptionError("measured", "is not a UTF-8 text table; give a CSV with a "
                                "header row, or a results file (.h5)", source) from None
@@ -174,6 +179,11 @@ def _cell(text: str, row: int, column: str, source: str) -> float:
     if not math.isfinite(value):
         raise DescriptionError(f"row {row} column {column}", f"is {text.strip()}; every cell "
                                "must be a finite number (drop or fill missing samples)", source)
+    if column != "time" and abs(value) > MAX_MEASURED:
+        unit = "m" if column in TIP_COLUMNS else "rad"
+        raise DescriptionError(f"row {row} column {column}", f"is {value:g} {unit}; a measured "
+                               f"value must lie within ±{MAX_MEASURED:g} {unit} (check the "
+                               "units: metres and radians)", source)
     return value
 
 
@@ -212,5 +222,8 @@ def _from_results(path: Path, model: Model) -> Measured:
                                 for c in angles)])
     if not np.all(np.isfinite(values)):
         raise DescriptionError("measured", "holds values that are not finite", str(path))
+    if np.any(np.abs(values) > MAX_MEASURED):
+        raise DescriptionError("measured", f"holds values beyond ±{MAX_MEASURED:g} (m or rad); "
+                               "give a run of a real robot", str(path))
     return _checked_times(Measured(str(path), np.asarray(result.t, float), tuple(columns),
                                    values))

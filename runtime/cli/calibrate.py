@@ -9,6 +9,7 @@ from typing import Any
 
 from jointplay.cli.args import check_writable_dir, command_line, scene_argument, scene_from_args
 from jointplay.common.errors import DescriptionError
+from jointplay.common.names import check_output_name
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
@@ -87,6 +88,7 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
     from jointplay.calibration.api import CalibrationOptions, prepare, run
     from jointplay.calibration.report import output_plan, write_report
 
+    check_output_name("--out", args.out, "folder")
     scene = scene_from_args(args)
     out = Path(args.out)
     check_writable_dir(out, "--out")
@@ -167,6 +169,8 @@ def _pairs(text: str, flag: str) -> list[tuple[str, str]]:
         if not sep or not name.strip():
             raise DescriptionError(flag, f"expects NAME=VALUE pairs separated by commas, got "
                                    f"{item!r}")
+        if any(name.strip() == seen for seen, _ in out):
+            raise DescriptionError(flag, f"gives {name.strip()} twice; give each name once")
         out.append((name.strip(), value.strip()))
     if not out:
         raise DescriptionError(flag, "no values given")

@@ -58,6 +58,18 @@ MAX_WINDOW = 1_000_000
 MAX_WORKERS = 1024
 """--workers of identify and sweep."""
 
+# ---- calibration ----------------------------------------------------------------------------
+MAX_MEASURED = 1.0e6
+"""A measured tip coordinate (m) or joint angle (rad), in absolute value: beyond any robot's
+reach or turning (a scene's initial angles lie within 1e3 rad); larger numbers overflow the
+fit's squared residuals."""
+MIN_NOISE = 1.0e-15
+"""calibrate --noise, the least standard deviation (m or rad): no sensor resolves a
+femtometre, and residuals divided by less overflow float64 (1e-320 makes them infinite)."""
+MAX_CALIBRATION_RUNS = 100_000
+"""Runs of one stage of calibrate: --scan-points, --grid-line-points, --valley-check-points,
+--profile-points and --starts each, and the grid's --grid-points squared."""
+
 # ---- physical plausibility ------------------------------------------------------------------
 # Every physical number of a robot or scene, whichever door it comes through (a TOML file,
 # --set, a sweep, or the Python API's overrides), is checked against these ranges with the

@@ -38,11 +38,12 @@ def check_output_name(flag: str, path: str | Path, kind: str = "file") -> None:
     if kind == "file" and text.endswith(("/", os.sep)):
         raise DescriptionError(flag, f"{text!r} ends in '/', which names a folder; give a "
                                f"file name (e.g. {text.rstrip('/' + os.sep) or '.'}/NAME)")
-    name = os.fsencode(Path(text).name)
-    if len(name) > NAME_MAX:
-        raise DescriptionError(flag, f"the name {Path(text).name[:40]!r}... is {len(name)} "
-                               f"bytes; a file system takes at most {NAME_MAX}: give a "
-                               "shorter name")
+    for part in Path(text).parts:  # the folders on the way too, not only the last name
+        name = os.fsencode(part)
+        if len(name) > NAME_MAX:
+            raise DescriptionError(flag, f"the name {part[:40]!r}... is {len(name)} bytes; a "
+                                   f"file system takes at most {NAME_MAX}: give a shorter "
+                                   "name")
     try:
         text.encode("utf-8")
     except UnicodeEncodeError:

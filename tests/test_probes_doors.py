@@ -1,0 +1,118 @@
+"""Probes of the newest doors: calibrate's measured files and flags, the settings files of
+identify, control and control-study, the extras a command needs, the cache's folder, the
+figure process, and the units of a results file.
+
+Each probe satisfies the contract of :mod:`test_probes` (exit 0, 1, 2 or 130, one error line,
+no traceback); a refusal is exit 2 before any work, naming the input, and leaves nothing it
+made behind."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from test_probes import ROOT, bad_input
+
+from jointplay.common import limits
+
+SHORT_SCENE = (ROOT / "scenes" / "paper_4dof.toml").read_text(encoding="utf-8").replace(
+    "t_end = 2.0 ", "t_end = 0.02 ")
+GOOD_ROWS = "0.0,0.1\n0.001,0.1\n0.002,0.1\n"
+
+
+def _calibrate(tmp: Path, csv: str | bytes = "time,tip_x\n" + GOOD_ROWS,
+               *flags: str) -> list[str]:
+    scene = tmp / "short.toml"
+    scene.write_text(SHORT_SCENE, encoding="utf-8")
+    measured = tmp / "m.csv"
+    if isinstance(csv, bytes):
+        measured.write_bytes(csv)
+    else:
+        measured.write_text(csv, encoding="utf-8")
+    argv = ["calibrate", str(scene), "--measured", str(measured), "--out", str(tmp / "cal")]
+    return argv + (list(flags) if "--free" in flags else ["--free", "friction.mu", *flags])
+
+
+def _nothing_written(tmp: Path) -> None:
+    assert sorted(p.name for p in tmp.iterdir()) == ["m.csv", "short.toml"]
+
+
+# ---- calibrate: the measured file -------------------------------------------------------------
+
+@pytest.mark.parametrize("cell", ["1e200", "1e308", "-1e7", "1.0000001e6"])
+def test_calibrate_refuses_a_huge_finite_cell(tmp_path: Path, cell: str,
+                                              capsys: pytest.CaptureFixture[str]) -> None:
+    argv = _calibrate(tmp_path, f"time,tip_x\n0.0,0.1\n0.001,{cell}\n0.002,0.1\n")
+    bad_input(capsys, argv, "row 3 column tip_x", "within", "m.csv")
+    _nothing_written(tmp_path)
+
+
+def test_calibrate_a_huge_angle_is_named_in_radians(tmp_path: Path,
+                                                    capsys: pytest.CaptureFixture[str]) -> None:
+    argv = _calibrate(tmp_path, "time,q2\n0.0,0.1\n0.001,2e6\n0.002,0.1\n")
+    bad_input(capsys, argv, "row 3 column q2", "rad")
+
+
+def test_calibrate_reads_a_byte_order_mark(tmp_path: Path) -> None:
+    """A spreadsheet's CSV starts with a UTF-8 byte-order mark: read as without one."""
+    from jointplay.calibration.measured import read_measured
+    from jointplay.scene.definition import load_scene
+    from jointplay.sim import load_scene_model
+
+    path = tmp_path / "m.csv"
+    path.write_bytes(b"\xef\xbb\xbf" + ("time,tip_x\n" + GOOD_ROWS).encode())
+    plain = tmp_path / "plain.csv"
+    plain.write_text("time,tip_x\n" + GOOD_ROWS, encoding="utf-8")
+    scene = tmp_path / "short.toml"
+    scene.write_text(SHORT_SCENE, encoding="utf-8")
+    model = load_scene_model(load_scene(str(scene)))
+    marked, unmarked = read_measured(path, model), read_measured(plain, model)
+    assert marked.columns == unmarked.columns == ("tip_x",)
+    assert (marked.t == unmarked.t).all() and (marked.values == unmarked.values).all()
+
+
+@pytest.mark.parametrize(("noise", "field"), [
+    ("1e-320", "--noise"), ("5e-324", "--noise"), (f"{limits.MIN_NOISE / 2:g}", "--noise"),
+    ("tip_x=1e-300", "--noise tip_x")])
+def test_calibrate_refuses_a_noise_below_the_floor(tmp_path: Path, noise: str, field: str,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    bad_input(capsys, _calibrate(tmp_path, "time,tip_x\n" + GOOD_ROWS, "--noise", noise),
+              field, "at least")
+    _nothing_written(tmp_path)
+
+
+@pytest.mark.parametrize(("flag", "value", "field"), [
+    ("--start", "friction.mu=0.1,friction.mu=0.2", "--start"),
+    ("--start", "friction.mu=0.1, friction.mu =0.1", "--start"),
+    ("--noise", "tip_x=1e-6,tip_x=2e-6", "--noise"),
+])
+def test_calibrate_refuses_a_name_given_twice(tmp_path: Path, flag: str, value: str, field: str,
+                                              capsys: pytest.CaptureFixture[str]) -> None:
+    bad_input(capsys, _calibrate(tmp_path, "time,tip_x\n" + GOOD_ROWS, flag, value), field,
+              "twice")
+    _nothing_written(tmp_path)
+
+
+@pytest.mark.parametrize(("flag", "value"), [
+    ("--scan-points", "10000000000"), ("--scan-points", str(limits.MAX_CALIBRATION_RUNS + 1)),
+    ("--grid-points", "1000000"), ("--grid-points", "317"),
+    ("--grid-line-points", "100001"), ("--valley-check-points", "10000000"),
+    ("--profile-points", "1000000"), ("--starts", "1000000")])
+def test_calibrate_bounds_each_stage_before_any_work(tmp_path: Path, flag: str, value: str,
+                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    bad_input(capsys, _calibrate(tmp_path, "time,tip_x\n" + GOOD_ROWS, flag, value), flag,
+              "at most")
+    _nothing_written(tmp_path)
+
+
+@pytest.mark.parametrize(("out", "words"), [
+    ("-", ("standard output",)), ("x" * 300, ("300 bytes",)), ("x" * 300 + "/cal", ("300",)),
+    ("", ("empty",))])
+def test_calibrate_refuses_an_out_no_folder_can_take(
+        tmp_path: Path, out: str, words: tuple[str, ...], monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    monkeypatch.chdir(tmp_path)
+    argv = _calibrate(tmp_path, "time,tip_x\n" + GOOD_ROWS)
+    argv[argv.index("--out") + 1] = out
+    bad_input(capsys, argv, "--out", *words)
+    _nothing_written(tmp_path)
