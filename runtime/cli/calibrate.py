@@ -161,7 +161,7 @@ def _start(text: str | None) -> dict[str, float] | None:
 
 
 def _pairs(text: str, flag: str) -> list[tuple[str, str]]:
-    out = []
+    out: list[tuple[str, str]] = []
     for item in text.split(","):
         if not item.strip():
             continue
