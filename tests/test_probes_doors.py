@@ -116,3 +116,72 @@ def test_calibrate_refuses_an_out_no_folder_can_take(
     argv[argv.index("--out") + 1] = out
     bad_input(capsys, argv, "--out", *words)
     _nothing_written(tmp_path)
+
+
+# ---- identify, control-study and their settings -------------------------------------------------
+
+def _settings(tmp: Path, text: str) -> Path:
+    path = tmp / "settings.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize(("argv", "field", "words"), [
+    (["--set", "identify.transient=5", "--duration", "0.3"], "identify.transient",
+     ("too few samples",)),
+    (["--set", "identify.transient=2.0", "--duration", "2.0"], "identify.transient",
+     ("too few samples",)),
+    (["--set", "identify.transient=0.299", "--duration", "0.3"], "identify.transient", ()),
+    (["--set", "control.tracked=q9"], "control.tracked", ("'q9'", "q2, q3")),
+    (["--set", "control.tracked=tip_z"], "control.tracked", ("did you mean 'tip_y'",)),
+    (["--set", "control.tracked=tip_x,tip_x"], "control.tracked", ("twice",)),
+    (["--set", "control.tracked=ex2"], "control.tracked", ("'ex2'",)),
+])
+def test_identify_checks_its_settings_before_any_work(
+        tmp_path: Path, argv: list[str], field: str, words: tuple[str, ...],
+        capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("torch")
+    out = tmp_path / "deep" / "er" / "model"
+    bad_input(capsys, ["identify", "--out", str(out), "--quiet", *argv], field, *words)
+    assert list(tmp_path.iterdir()) == []  # no folder made, not even a parent
+
+
+@pytest.mark.parametrize(("text", "field", "words"), [
+    ('scene = "default"\npresett = "best"\n', "presett", ("did you mean 'preset'",)),
+    ('scene = "default"\n[identfy]\nseed = 1\n', "identfy", ("did you mean 'identify'",)),
+    ('presett = "best"\n[identify]\nseed = 1\n', "presett", ("did you mean 'preset'",)),
+    ('[study]\ncases = ["scene", "scene"]\n', "study.cases", ("'scene' twice",)),
+    ('[control]\ntracked = ["q9"]\n', "control.tracked", ("'q9'",)),
+    ('[control]\nmeasurement_noise = "q2=1e-6,q2=2e-6"\n', "control.measurement_noise", ()),
+])
+def test_control_study_settings_file_is_checked_before_any_work(
+        tmp_path: Path, text: str, field: str, words: tuple[str, ...],
+        capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("torch")
+    settings = _settings(tmp_path, text)
+    out = tmp_path / "study" / "out"
+    bad_input(capsys, ["control-study", str(settings), "--out", str(out), "--quiet"], field,
+              *words)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["settings.toml"]
+
+
+def test_cases_given_twice_on_the_command_line(tmp_path: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("torch")
+    bad_input(capsys, ["control-study", "--cases", "scene,fast,scene", "--out",
+                       str(tmp_path / "o"), "--quiet"], "--cases", "twice")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(("text", "field", "words"), [
+    ('scene = "default"\npresett = "best"\n', "presett", ("did you mean 'preset'",)),
+    ('scene = "default"\n[identfy]\nseed = 1\n', "identfy", ("did you mean 'identify'",)),
+    ('scene = "default"\n[parameterz."friction.mu"]\nvalues = [0.1]\n', "parameterz",
+     ("did you mean 'parameters'",)),
+])
+def test_simulate_names_a_misspelt_key_of_a_settings_or_sweep_file(
+        tmp_path: Path, text: str, field: str, words: tuple[str, ...],
+        capsys: pytest.CaptureFixture[str]) -> None:
+    path = _settings(tmp_path, text)
+    bad_input(capsys, ["simulate", str(path), "--out", str(tmp_path / "r.h5")], field, *words)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["settings.toml"]

@@ -15,6 +15,7 @@ from jointplay.cli.args import check_writable_dir
 from jointplay.cli.neural_args import (
     add_identify_arguments,
     check_identify_for,
+    check_tracked_for,
     neural_scene_argument,
 )
 from jointplay.cli.neural_settings import (
@@ -68,6 +69,7 @@ def cmd_identify(args: argparse.Namespace) -> int:
     output_plan(args, scene)
     check_writable_dir(out, "--out")
     config = check_identify_for(settings.identify, scene, given)
+    check_tracked_for(settings.control.tracked, scene, config.contact_outputs, given)
     check_scene_for(config, scene, given.get("identify.duration", "identify.duration"))
     # What this model folder was identified with: `jointplay identify settings.toml` again.
     record = settings_toml(replace(settings, identify=config), scene_file,

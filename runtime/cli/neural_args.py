@@ -181,9 +181,36 @@ def check_identify_for(config: IdentifyConfig, scene: Scene,
     if sum(counts) > size_limits.MAX_TRAJECTORIES:
         raise DescriptionError(COUNTS_FLAG, f"{sum(counts)} trajectories in all; at most "
                                f"{size_limits.MAX_TRAJECTORIES} are allowed")
-    check_duration(config.duration, counts, (config.output_lags, config.input_lags),
-                   scene.run.output_step, name("duration"))
+    lags = (config.output_lags, config.input_lags)
+    dt = scene.run.output_step
+    if round((config.duration - config.transient) / dt) < max(lags) + 2:
+        raise DescriptionError(name("transient"), f"{config.transient:g} s of trajectories of "
+                               f"{config.duration:g} s leaves too few samples for lags {lags} "
+                               f"at {dt:g} s per sample (at least {max(lags) + 2}); shorten "
+                               f"it or lengthen {name('duration')}")
+    check_duration(config.duration, counts, lags, dt, name("duration"))
     return replace(config, **joints)
+
+
+def check_tracked_for(tracked: tuple[str, ...], scene: Scene, contact_outputs: bool,
+                      given: dict[str, str]) -> None:
+    """The tracked outputs named in the settings, checked before any work against the
+    outputs every model identified on ``scene`` will have (the moving joints' angles and
+    speeds, the tip's signals, the journals' eccentricities when measured)."""
+    from jointplay.common.hints import did_you_mean
+    from jointplay.neural.model.inner_loop import output_names
+
+    field = given.get("control.tracked", "control.tracked")
+    contact = scene.robot.clearance_joints if contact_outputs else ()
+    names, _ = output_names(scene.robot.moving_joints, contact)
+    for name in tracked:
+        if name not in names:
+            raise DescriptionError(field, f"{name!r} is not an output of the models this scene "
+                                   f"gives (outputs: {', '.join(names)})"
+                                   + did_you_mean(name, names))
+    if len(set(tracked)) != len(tracked):
+        twice = next(n for n in tracked if tracked.count(n) > 1)
+        raise DescriptionError(field, f"names {twice!r} twice; name each output once")
 
 
 def check_duration(duration: float, counts: tuple[int, ...], lags: tuple[int, ...],

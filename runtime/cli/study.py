@@ -20,6 +20,7 @@ from jointplay.cli.neural_args import (
     add_controller_arguments,
     add_identify_arguments,
     check_identify_for,
+    check_tracked_for,
     neural_scene_argument,
 )
 from jointplay.cli.neural_settings import (
@@ -263,6 +264,7 @@ def study_plan(args: argparse.Namespace) -> StudyPlan:
             "leave them untold; `jointplay control --measurement-noise` runs one model under "
             "noise of your choice")
     config = check_identify_for(settings.identify, scene, given)
+    check_tracked_for(settings.control.tracked, scene, config.contact_outputs, given)
     study = settings.study
     nominal = nominal_clearance(scene)
     # Every model's identification: the settings' [identify] table but its seed (one per

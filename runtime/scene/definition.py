@@ -409,6 +409,16 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                          "[study]), not a scene; run it with: jointplay control-study FILE "
                          "--out DIR (or identify, control)", source)
         if ("scene" in data or "parameters" in data) and "robot" not in data:
+            from jointplay.sweep.spec import TOP_KEYS as SWEEP_KEYS
+
+            # A key neither a sweep's nor a settings file's: a misspelling, named with the
+            # nearest key rather than calling the file a sweep.
+            stray = [k for k in data if k not in SWEEP_KEYS and k not in _SETTINGS_KEYS]
+            if stray:
+                raise _error(stray[0], "is a key of neither a sweep file nor a settings file"
+                             + (did_you_mean(stray[0], (*SWEEP_KEYS, *_SETTINGS_KEYS))
+                                or f" (sweep: {', '.join(SWEEP_KEYS)}; settings: scene, "
+                                f"{', '.join(_SETTINGS_KEYS)})"), source)
             raise _error("(file)", "is a sweep file (it has scene = ... or [parameters]), not "
                          "a scene; run it with: jointplay sweep FILE --out DIR", source)
         check_keys(data, _TOP_KEYS, "", source)

@@ -151,7 +151,9 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False,
     scene = control_plant(scene)  # the plant the controllers are judged on
     inner = inner_loop_for(scene, config.kp, config.kd)
     limits = np.asarray(config.torque_limit) if config.torque_limit else default_limits(scene)
-    created = not out.exists()
+    # The folders this call makes (out and any missing parents, deepest first): a failed run
+    # removes those still empty, so no empty folder it made is left behind.
+    created = [folder for folder in (out, *out.parents) if not folder.exists()]
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as err:
@@ -171,9 +173,9 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False,
         _move_in(stage, out, rejected="rejected" in metrics)
     except BaseException as err:
         shutil.rmtree(stage, ignore_errors=True)
-        if created:  # leave no empty model folder behind
+        for folder in created:  # leave no empty folder behind
             with contextlib.suppress(OSError):
-                out.rmdir()
+                folder.rmdir()
         if isinstance(err, FileError) and Path(err.path).parent == stage:
             # the file the user asked for, not its hidden staging copy
             raise FileError(str(out / Path(err.path).name), err.cause) from None

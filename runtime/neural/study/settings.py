@@ -142,7 +142,17 @@ def with_overrides(settings: Settings, **sections: Mapping[str, Any]) -> Setting
 
 def is_settings_document(data: Mapping[str, Any]) -> bool:
     """A settings file (its keys among FILE_KEYS), not a scene with settings tables."""
-    return "robot" not in data and bool(data) and all(k in FILE_KEYS for k in data)
+    if "robot" in data or not data:
+        return False
+    if all(k in FILE_KEYS for k in data):
+        return True
+    # A misspelt key (``presett``, ``[identfy]``) beside ``scene = ...``, or close to a
+    # settings key: read as a settings file, whose key check names it and the nearest key.
+    from jointplay.sweep.spec import TOP_KEYS as SWEEP_KEYS
+
+    unknown = [k for k in data if k not in FILE_KEYS]
+    return ("scene" in data and not all(k in SWEEP_KEYS for k in unknown)) \
+        or all(did_you_mean(k, FILE_KEYS) for k in unknown)
 
 
 def settings_tables(data: Mapping[str, Any]) -> dict[str, Any]:

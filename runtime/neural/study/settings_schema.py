@@ -139,7 +139,12 @@ def checked(where: str, key: Key, value: Any) -> Any:
             raise DescriptionError(where, f"needs at least {key.least}{most} entries, got "
                                    f"{len(value)}")
         item = Key(key.kind[:-1], key.low, key.high, key.low_open, key.high_open, key.choices)
-        return tuple(checked(f"{where}[{i}]", item, v) for i, v in enumerate(value))
+        values = tuple(checked(f"{where}[{i}]", item, v) for i, v in enumerate(value))
+        if key.kind == "strs":  # names (cases, tracked outputs): one would run or count twice
+            twice = [v for i, v in enumerate(values) if v in values[:i]]
+            if twice:
+                raise DescriptionError(where, f"names {twice[0]!r} twice; name each once")
+        return values
     if key.kind == "noise":
         if not isinstance(value, dict):
             raise DescriptionError(where, "must be a table of output name = standard "
@@ -226,6 +231,8 @@ def _noise_pairs(where: str, text: str) -> dict[str, Any]:
         if not sep or not name.strip():
             raise DescriptionError(where, f"{item!r}: give NAME=STD pairs, e.g. "
                                    "q2=3e-6,dq2=4e-3 (STD >= 0, in the output's unit)")
+        if name.strip() in out:
+            raise DescriptionError(where, f"gives {name.strip()} twice; give each output once")
         out[name.strip()] = _scalar(value.strip())
     return out
 
