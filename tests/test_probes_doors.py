@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 from test_probes import ROOT, bad_input
 
+from jointplay.cli import main
 from jointplay.common import limits
 
 SHORT_SCENE = (ROOT / "scenes" / "paper_4dof.toml").read_text(encoding="utf-8").replace(
@@ -185,3 +186,21 @@ def test_simulate_names_a_misspelt_key_of_a_settings_or_sweep_file(
     path = _settings(tmp_path, text)
     bad_input(capsys, ["simulate", str(path), "--out", str(tmp_path / "r.h5")], field, *words)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["settings.toml"]
+
+
+@pytest.mark.parametrize(("argv", "usage", "hint"), [
+    (["simulate", "--t-edn", "0.1"], "jointplay simulate", "did you mean '--t-end'?"),
+    (["simulate", "--out=r.h5", "--plto", "p"], "jointplay simulate", "did you mean '--plot'?"),
+    (["calibrate", "--measured", "m.csv", "--free", "friction.mu", "--out", "o", "--nosie",
+      "1e-6"], "jointplay calibrate", "did you mean '--noise'?"),
+    (["cache", "prune", "--max-sise", "1G"], "jointplay cache prune", "'--max-size'"),
+    (["simulate", "a.toml", "b.toml"], "jointplay simulate", ""),
+])
+def test_a_misspelt_option_gets_the_command_usage_and_the_nearest_option(
+        argv: list[str], usage: str, hint: str, capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err
+    assert stop.value.code == 2
+    assert f"usage: {usage}" in err and "unrecognized arguments" in err, err
+    assert hint in err and "Traceback" not in err

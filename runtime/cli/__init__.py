@@ -74,7 +74,9 @@ def _version() -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = make_parser(_command_word(sys.argv[1:] if argv is None else argv))
     add_debug_flag(parser)
-    args = parser.parse_args(argv)
+    args, extras = parser.parse_known_args(argv)
+    if extras:
+        refuse_unknown(parser, args, extras)
     with interrupts.installed():
         try:
             refuse_empty_values(parser, args)
@@ -88,6 +90,32 @@ def main(argv: list[str] | None = None) -> int:
             if interrupts.interrupted():
                 return interrupted(args)
             return report_error(err, args)
+
+
+def refuse_unknown(parser: argparse.ArgumentParser, args: argparse.Namespace,
+                   extras: list[str]) -> None:
+    """Words no argument took: argparse's error (exit 2) with the usage of the command
+    given, not the program's, and for a misspelt option the nearest of that command's
+    (``simulate --t-edn``: did you mean '--t-end'?)."""
+    from jointplay.common.hints import did_you_mean
+
+    command = parser
+    while True:  # the deepest subcommand chosen (``cache clear``, ``bench scaling``)
+        chosen = next((action.choices.get(getattr(args, action.dest, None) or "")
+                       for action in command._actions
+                       if isinstance(action, argparse._SubParsersAction)), None)
+        if chosen is None:
+            break
+        command = chosen
+    options = [o for action in command._actions for o in action.option_strings
+               if o.startswith("--")]
+    hint = ""
+    for word in extras:
+        if word.startswith("-"):
+            hint = did_you_mean(word.split("=", 1)[0], options)
+            if hint:
+                break
+    command.error(f"unrecognized arguments: {' '.join(extras)}{hint}")
 
 
 def refuse_empty_values(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:
