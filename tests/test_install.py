@@ -87,7 +87,7 @@ def test_regular_install_layout(tmp_path: Path) -> None:
     assert (target / "jointplay" / "generated" / "paper_4dof" / "model.c").is_file()
 
 
-OPTIONAL = ("torch", "dask", "distributed", "pyarrow", "pandas", "xarray")
+OPTIONAL = ("torch", "dask", "distributed", "pyarrow", "pandas", "xarray", "h5netcdf")
 
 
 def test_simulate_imports_no_optional_dependency(tmp_path: Path) -> None:
@@ -160,7 +160,7 @@ def test_extras_match_pyproject() -> None:
     declared = tomllib.loads((REPO / "pyproject.toml").read_text())["project"][
         "optional-dependencies"]
     dists = {"dask": "dask[distributed]", "distributed": "dask[distributed]", "pyarrow": "pyarrow",
-             "pandas": "pandas", "torch": "torch", "xarray": "xarray"}
+             "pandas": "pandas", "torch": "torch", "xarray": "xarray", "h5netcdf": "h5netcdf"}
     for extra, modules in EXTRAS.items():
         names = [d.split(">")[0].split("=")[0].split("<")[0] for d in declared[extra]]
         for module in modules:

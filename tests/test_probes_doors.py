@@ -204,3 +204,31 @@ def test_a_misspelt_option_gets_the_command_usage_and_the_nearest_option(
     assert stop.value.code == 2
     assert f"usage: {usage}" in err and "unrecognized arguments" in err, err
     assert hint in err and "Traceback" not in err
+
+
+# ---- the cache's folder ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("action", [["clear"], ["list"], ["prune", "--older-than", "0s"]])
+@pytest.mark.parametrize("under", [False, True])
+def test_cache_refuses_a_cache_that_is_a_file(
+        tmp_path: Path, action: list[str], under: bool, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    plain = tmp_path / "plain"
+    plain.write_text("mine\n", encoding="utf-8")
+    monkeypatch.setenv("JOINTPLAY_CACHE", str(plain / "c" if under else plain))
+    bad_input(capsys, ["cache", *action], "JOINTPLAY_CACHE", "not a folder" if not under
+              else "which is a file")
+    assert plain.read_text(encoding="utf-8") == "mine\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["plain"]
+
+
+def test_cache_says_an_empty_variable_counts_as_unset(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    monkeypatch.setenv("JOINTPLAY_CACHE", "")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert main(["cache", "list"]) == 0
+    out = capsys.readouterr().out
+    assert f"cache {tmp_path / 'jointplay'} (default: JOINTPLAY_CACHE is empty" in out
+    assert main(["cache", "clear"]) == 0
+    assert "JOINTPLAY_CACHE is empty, which counts as unset" in capsys.readouterr().out

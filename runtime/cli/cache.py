@@ -35,11 +35,23 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def cmd_cache(args: argparse.Namespace) -> int:
     from jointplay.common.errors import DescriptionError
+    from jointplay.common.names import file_above
     from jointplay.store import cache
     from jointplay.store.build import cache_root
 
     root = cache_root()
-    source = "JOINTPLAY_CACHE" if os.environ.get("JOINTPLAY_CACHE") else "default"
+    env = os.environ.get("JOINTPLAY_CACHE")
+    source = "JOINTPLAY_CACHE" if env else "default"
+    if env == "":  # set but empty counts as unset: say which cache that leaves
+        source = "default: JOINTPLAY_CACHE is empty, which counts as unset"
+    where = "JOINTPLAY_CACHE" if env else "cache"
+    if root.exists() and not root.is_dir():
+        raise DescriptionError(where, f"{root} is not a folder; point JOINTPLAY_CACHE at a "
+                               "folder (or unset it for the default)")
+    blocker = file_above(root)
+    if blocker is not None:
+        raise DescriptionError(where, f"{root} lies under {blocker}, which is a file, not a "
+                               "folder; point JOINTPLAY_CACHE at a folder")
     if args.action == "list":
         listed = cache.entries(root)
         print(f"cache {root} ({source})")
@@ -66,7 +78,8 @@ def cmd_cache(args: argparse.Namespace) -> int:
     _report_foreign(cache.foreign(root))
     left = cache.entries(root)
     print(f"removed {len(removed)} entries, {cache.format_size(sum(e.size for e in removed))}; "
-          f"{len(left)} left, {cache.format_size(sum(e.size for e in left))} ({root})")
+          f"{len(left)} left, {cache.format_size(sum(e.size for e in left))} ({root}, "
+          f"{source})")
     return 0
 
 

@@ -13,11 +13,12 @@ from importlib.util import find_spec
 from jointplay.common.errors import JointplayError
 
 EXTRAS: dict[str, tuple[str, ...]] = {
-    "control": ("torch",),
+    "control": ("torch", "h5netcdf"),
     "sweep": ("dask", "distributed", "pyarrow", "pandas"),
-    "xarray": ("xarray", "pandas"),
+    "xarray": ("xarray", "pandas", "h5netcdf"),
 }
-"""Each extra and the modules it installs (the ones the code imports)."""
+"""Each extra and the modules it installs (the ones the code imports: h5netcdf writes
+``control --out``; xarray reads results files through it)."""
 
 
 class MissingExtra(JointplayError, ImportError):

@@ -146,7 +146,7 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False,
         raise DescriptionError("residual_by", f"{config.residual_by!r} runs the controller in "
                                "closed loop: call jointplay.neural.study.closed_loop_choice."
                                "identify_model, or pass closed_loop=choose_residual")
-    require("control", "identify()")  # training needs torch: say so before any work
+    require("control", "identify()", modules=("torch",))  # training needs torch: say so first
 
     scene = control_plant(scene)  # the plant the controllers are judged on
     inner = inner_loop_for(scene, config.kp, config.kd)
