@@ -38,7 +38,7 @@ def _nothing_written(tmp: Path) -> None:
     assert sorted(p.name for p in tmp.iterdir()) == ["m.csv", "short.toml"]
 
 
-# ---- calibrate: the measured file -------------------------------------------------------------
+# ---- calibrate: the measured file -----------------------------------------------------------
 
 @pytest.mark.parametrize("cell", ["1e200", "1e308", "-1e7", "1.0000001e6"])
 def test_calibrate_refuses_a_huge_finite_cell(tmp_path: Path, cell: str,
@@ -119,7 +119,7 @@ def test_calibrate_refuses_an_out_no_folder_can_take(
     _nothing_written(tmp_path)
 
 
-# ---- identify, control-study and their settings -------------------------------------------------
+# ---- identify, control-study and their settings ---------------------------------------------
 
 def _settings(tmp: Path, text: str) -> Path:
     path = tmp / "settings.toml"
@@ -206,7 +206,7 @@ def test_a_misspelt_option_gets_the_command_usage_and_the_nearest_option(
     assert hint in err and "Traceback" not in err
 
 
-# ---- the cache's folder ---------------------------------------------------------------------------
+# ---- the cache's folder ---------------------------------------------------------------------
 
 @pytest.mark.parametrize("action", [["clear"], ["list"], ["prune", "--older-than", "0s"]])
 @pytest.mark.parametrize("under", [False, True])
