@@ -181,3 +181,25 @@ def test_the_two_drawers_return_every_figure_in_job_order(die_in_copy: bool) -> 
     expected = figure_module.capture(
         [functools.partial(_fake_job, i, os.getpid(), False) for i in range(9)])
     assert figure_process.drawn_on_two_cpus(jobs) == expected
+
+
+def test_a_stopped_process_is_killed_and_said_so(
+        synthetic: SimulationResult, here: list[Path], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
+    """The figure process stopped (SIGSTOP) while the command waits: after STOPPED_S it is
+    killed, one line says why, and the figures are drawn here, not after TIMEOUT_S."""
+    import os
+    import signal
+
+    monkeypatch.setattr(figure_process, "STOPPED_S", 1.0)
+    start = time.perf_counter()
+    with FigureProcess() as process:
+        proc = process._proc
+        assert proc is not None
+        os.kill(proc.pid, signal.SIGSTOP)
+        drawn = plot_result(synthetic, tmp_path / "stopped", process=process)
+    assert time.perf_counter() - start < figure_process.TIMEOUT_S / 2
+    assert proc.poll() is not None  # killed, not left behind
+    _same_files(here, drawn)
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "it was stopped (SIGSTOP) for 1 s" in err, err

@@ -9,9 +9,9 @@ writes its results file meanwhile; :meth:`Pending.collect` waits for the PNG byt
 :data:`TIMEOUT_S`, and the command writes every file itself (so an output transaction of
 :func:`jointplay.common.files.all_or_nothing` sees them all).
 
-The figures always get drawn: if the process cannot start, fails, sends something unreadable
-or runs past the timeout, it is killed, one line on stderr says why, and the jobs run in this
-process instead. Nothing waits without a bound.
+The figures always get drawn: if the process cannot start, fails, sends something unreadable,
+runs past the timeout or stays stopped (SIGSTOP) for :data:`STOPPED_S`, it is killed, one line
+on stderr says why, and the jobs run in this process instead. Nothing waits without a bound.
 
 The process imports only the modules the figures need, not the whole package
 (``jointplay/__init__`` loads the simulator, CasADi and h5py: a second more before it could
@@ -22,6 +22,7 @@ draw): the bootstrap below registers the package by its folders without running 
 from __future__ import annotations
 
 import atexit
+import contextlib
 import gc
 import importlib
 import os
@@ -29,6 +30,7 @@ import pickle
 import subprocess
 import sys
 import threading
+import time
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -39,6 +41,12 @@ from jointplay.common.files import atomic_write_bytes
 # figures are drawn in the command's own process. The paper scene's eight figures take 1-3 s
 # there; the bound leaves room for a machine many times busier.
 TIMEOUT_S = 120.0
+# The longest the figure process may stay stopped (SIGSTOP, a debugger, Ctrl-Z sent to it
+# alone) while the command waits for it (s): then it is killed, one line says so, and the
+# figures are drawn here, rather than waiting out TIMEOUT_S without a word.
+STOPPED_S = 5.0
+# How often the wait looks at the process's state (s).
+_POLL_S = 0.25
 # Loaded by the figure process while it waits for its jobs.
 _PRELOAD = ("jointplay.results.plots", "jointplay.results.derived", "jointplay.results.contacts")
 # False: never start a figure process; every figure is drawn in the calling process. The
@@ -166,6 +174,7 @@ class Pending:
         self._jobs = jobs
         self._outcome: tuple[bytes, bytes, int] | str = process.failure
         self._thread: threading.Thread | None = None
+        self._stopped = ""
         if process._proc is None:
             return
         try:
@@ -191,9 +200,9 @@ class Pending:
         """Wait for the figures, write every file here, and return the paths in job order;
         on any failure of the process, draw the figures in this process instead."""
         if self._thread is not None:
-            self._thread.join()
+            self._wait(self._thread)
         self._process.close()
-        drawn = self._decoded()
+        drawn = self._stopped or self._decoded()
         if isinstance(drawn, str):
             print(f"jointplay: the figure process failed: {drawn}; drawing the figures here",
                   file=sys.stderr)
@@ -203,6 +212,26 @@ class Pending:
             atomic_write_bytes(path, data)
             paths.append(path)
         return paths
+
+    def _wait(self, thread: threading.Thread) -> None:
+        """Wait for the exchange; a process stopped for STOPPED_S is killed (which ends the
+        exchange) and the reason kept."""
+        proc = self._process._proc
+        stopped_since: float | None = None
+        while thread.is_alive():
+            thread.join(_POLL_S)
+            if not thread.is_alive() or proc is None:
+                continue
+            if not _is_stopped(proc.pid):
+                stopped_since = None
+                continue
+            now = time.monotonic()
+            stopped_since = now if stopped_since is None else stopped_since
+            if now - stopped_since >= STOPPED_S:
+                self._stopped = f"it was stopped (SIGSTOP) for {STOPPED_S:g} s"
+                with contextlib.suppress(OSError):
+                    proc.kill()  # SIGKILL ends a stopped process too
+                thread.join()
 
     def _decoded(self) -> list[tuple[Path, bytes]] | str:
         """The (path, PNG bytes) the process sent, or why there are none."""
@@ -312,6 +341,17 @@ def _cpus() -> int:
         return os.cpu_count() or 1
 
 
+def _is_stopped(pid: int) -> bool:
+    """Whether the process is stopped (state T or t in /proc; False where there is no
+    /proc: there the wait is bounded by TIMEOUT_S alone)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as fh:
+            state = fh.read().rsplit(b")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return False
+    return state in (b"T", b"t")
+
+
 def _leave(signum: int, frame: object) -> None:
     os._exit(128 + signum)
 
@@ -323,8 +363,8 @@ def draw(jobs: Sequence[figures.FigureJob], process: FigureProcess | None) -> li
     return process.submit(jobs).collect()
 
 
-__all__ = ["ENABLED", "TIMEOUT_S", "FigureProcess", "Pending", "claim", "draw", "serve",
-           "start_early", "wanted"]
+__all__ = ["ENABLED", "STOPPED_S", "TIMEOUT_S", "FigureProcess", "Pending", "claim", "draw",
+           "serve", "start_early", "wanted"]
 
 
 start_early()  # on the first import, which `import jointplay` makes right after the guard
