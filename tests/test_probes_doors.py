@@ -232,3 +232,82 @@ def test_cache_says_an_empty_variable_counts_as_unset(
     assert f"cache {tmp_path / 'jointplay'} (default: JOINTPLAY_CACHE is empty" in out
     assert main(["cache", "clear"]) == 0
     assert "JOINTPLAY_CACHE is empty, which counts as unset" in capsys.readouterr().out
+
+
+# ---- the units of a results file --------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def results_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    import jointplay
+    from jointplay.results.write import write_hdf5
+
+    path = tmp_path_factory.mktemp("units") / "run.h5"
+    write_hdf5(jointplay.simulate(jointplay.default_scene().with_run(t_end=0.01)), path)
+    return path
+
+
+def _with_units(base: Path, target: Path, changes: dict[str, str]) -> Path:
+    """A copy of ``base`` with the units of variables changed and its checksum stamped again
+    over the edit (as a tool that rescaled them would)."""
+    import shutil
+
+    import h5py
+
+    from jointplay.results import integrity
+
+    shutil.copyfile(base, target)
+    with h5py.File(target, "r+") as fh:
+        for name, unit in changes.items():
+            fh[name].attrs["units"] = unit
+        fh.attrs[integrity.DIGEST_ATTRIBUTE] = integrity.digest(integrity.load(fh, target))
+    return target
+
+
+@pytest.mark.parametrize(("variable", "unit", "attribute", "scale"), [
+    ("tip_position", "mm", "tip_position", 1e-3),
+    ("tip_velocity", "mm s-1", "tip_velocity", 1e-3),
+    ("tip_acceleration", "m/s^2", "tip_acceleration", 1.0),
+    ("joint_angle", "deg", "q", None),
+    ("eccentricity", "um", "eccentricity", 1e-6),
+    ("drive_torque", "kN m", "tau", 1e3),
+])
+def test_a_units_attribute_of_the_same_kind_is_converted(
+        results_file: Path, tmp_path: Path, variable: str, unit: str, attribute: str,
+        scale: float | None) -> None:
+    import math
+
+    import numpy as np
+
+    import jointplay
+
+    original = jointplay.read(results_file)
+    edited = jointplay.read(_with_units(results_file, tmp_path / "e.h5", {variable: unit}))
+    before, after = getattr(original, attribute), getattr(edited, attribute)
+    if scale is None:  # the angles: only the angle columns are in degrees
+        angles = [i for i, n in enumerate(original.coordinate_names) if n.startswith("q")]
+        np.testing.assert_allclose(after[:, angles], before[:, angles] * math.pi / 180,
+                                   rtol=1e-15)
+    else:
+        np.testing.assert_allclose(after, before * scale, rtol=1e-15)
+
+
+@pytest.mark.parametrize(("variable", "unit"), [
+    ("tip_position", "kg"), ("time", "m"), ("joint_angle", "furlong"), ("tip_position", ""),
+    ("impact_joint", "m"), ("energy_total", "N"), ("tip_velocity", "m s-2")])
+def test_a_units_attribute_of_another_kind_is_refused(
+        results_file: Path, tmp_path: Path, variable: str, unit: str) -> None:
+    import jointplay
+    from jointplay.common.errors import DescriptionError
+
+    edited = _with_units(results_file, tmp_path / "e.h5", {variable: unit})
+    with pytest.raises(DescriptionError, match=f"{variable}@units") as caught:
+        jointplay.read(edited)
+    assert str(edited) in str(caught.value)
+
+
+def test_units_parse_the_writer_s_every_unit() -> None:
+    from jointplay.results.units import expected_units, parse
+
+    for unit in set(expected_units().values()):
+        assert parse(unit) is not None, unit
+        assert parse(unit)[0] == 1.0, unit  # type: ignore[index]

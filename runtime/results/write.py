@@ -171,7 +171,7 @@ def read_checked(path: str | Path) -> tuple[SimulationResult, bool]:
     """
     import h5py
 
-    from jointplay.results import checks, integrity, netcdf
+    from jointplay.results import checks, integrity, netcdf, units
 
     integrity.regular_file(path)
     try:
@@ -199,6 +199,7 @@ def read_checked(path: str | Path) -> tuple[SimulationResult, bool]:
             return _read_group(root, ideal), checked
         for group in (root, *([root.groups["ideal"]] if "ideal" in root.groups else [])):
             checks.check_result_group(group, path)
+            units.convert_units(group, path)  # a unit edited since: converted, or refused
         return netcdf.read_file(root), checked
     except DescriptionError:
         raise
