@@ -178,48 +178,66 @@ class _Transaction:
                 folder.rmdir()  # only if still empty: never someone else's files
 
     def commit(self) -> list[Path]:
-        """Rename every held temporary onto its target. Should one rename fail, the targets
-        are put back as they were (a previous file restored, a new one removed)."""
-        placed: list[tuple[Path, Path | None]] = []  # target, the previous file kept aside
-        try:
-            for tmp, path in self.held:
-                previous = _set_aside(path)
-                placed.append((path, previous))
-                os.replace(tmp, path)
-        except BaseException as err:  # a failed rename, or an interrupt between two
-            for target, previous in reversed(placed):
-                with contextlib.suppress(OSError):
-                    if previous is None:
-                        target.unlink(missing_ok=True)
-                    elif os.path.samefile(previous, target):  # not replaced yet: drop the link
-                        previous.unlink()
-                    else:
-                        os.replace(previous, target)
-            for tmp, _ in self.held:
-                tmp.unlink(missing_ok=True)
+        """Rename every held temporary onto its target. Should one rename fail, or an
+        interrupt arrive meanwhile, the targets are put back as they were (a previous file
+        restored, a new one removed) and no temporary stays. The renames run with SIGINT and
+        SIGTERM held (:func:`jointplay.common.interrupts.held`): one that arrives is acted
+        on between two steps, never inside one, and raised once all is put back."""
+        placed: list[tuple[Path, Path | None]] = []  # target, where its previous file is kept
+        with interrupts.held() as arrived:
+            try:
+                for tmp, path in self.held:
+                    if arrived():
+                        raise KeyboardInterrupt  # undone below; the signal is raised after
+                    # The previous file's place is recorded before it is linked there.
+                    aside = _aside_name(path) if path.exists() else None
+                    placed.append((path, aside))
+                    if aside is not None:
+                        _set_aside(path, aside)
+                    os.replace(tmp, path)
+                if arrived():
+                    raise KeyboardInterrupt
+            except BaseException as err:  # a failed rename, or an interrupt between two
+                self._put_back(placed)
+                if isinstance(err, OSError):
+                    raise file_error(path, err) from None
+                if not arrived():
+                    raise
+                return []  # the held signal is raised on leaving
+            for _, previous in placed:
+                if previous is not None:
+                    previous.unlink(missing_ok=True)
             self.held.clear()
-            if isinstance(err, OSError):
-                raise file_error(path, err) from None
-            raise
-        for _, previous in placed:
-            if previous is not None:
-                previous.unlink(missing_ok=True)
-        self.held.clear()
         return [path for path, _ in placed]
 
+    def _put_back(self, placed: list[tuple[Path, Path | None]]) -> None:
+        for target, previous in reversed(placed):
+            with contextlib.suppress(OSError):
+                if previous is None:
+                    target.unlink(missing_ok=True)
+                elif not os.path.lexists(previous):  # nothing was set aside yet
+                    pass
+                elif os.path.lexists(target) and os.path.samefile(previous, target):
+                    previous.unlink()  # not replaced yet: drop the link
+                else:
+                    os.replace(previous, target)
+        for tmp, _ in self.held:
+            tmp.unlink(missing_ok=True)
+        self.held.clear()
 
-def _set_aside(path: Path) -> Path | None:
-    """A hard link to the file at ``path`` under a temporary name (None if there is none),
-    so that the file can be put back; where links are not supported, the file is moved."""
-    if not path.exists():
-        return None
-    aside = path.with_name(f".{temp_stem(path.name)}.{temp_tag()}.old{os.urandom(4).hex()}"
-                           ".part")
+
+def _aside_name(path: Path) -> Path:
+    return path.with_name(f".{temp_stem(path.name)}.{temp_tag()}.old{os.urandom(4).hex()}"
+                          ".part")
+
+
+def _set_aside(path: Path, aside: Path) -> None:
+    """Keep the file at ``path`` under ``aside`` too (a hard link), so that it can be put
+    back; where links are not supported, the file is moved there."""
     try:
         os.link(path, aside)
     except OSError:
         os.replace(path, aside)
-    return aside
 
 
 def replace_together(pairs: Iterable[tuple[Path, Path]]) -> list[Path]:
@@ -244,13 +262,13 @@ def make_folder(path: str | Path, flag: str = "--out") -> Path:
     while not probe.exists() and probe != probe.parent:
         missing.append(probe)
         probe = probe.parent
+    pending = _TRANSACTION.get()
+    if pending is not None:  # known before they exist: an interrupt right after removes them
+        pending.created.extend(reversed(missing))
     try:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as err:
         raise file_error(path, err, "cannot create folder") from None
-    pending = _TRANSACTION.get()
-    if pending is not None:
-        pending.created.extend(reversed(missing))
     return path
 
 

@@ -237,6 +237,40 @@ if hasattr(os, "register_at_fork"):
 
 
 @contextlib.contextmanager
+def held() -> Iterator[Callable[[], bool]]:
+    """Within (main thread only): SIGINT and SIGTERM are only recorded, so that a short
+    sequence of file operations (an output transaction's renames) is never cut between
+    two steps; the caller may ask whether one arrived (to undo what it started). On the way
+    out the first one is handed to the handler it would have met. In other threads, which
+    signals never reach, nothing changes."""
+    if threading.current_thread() is not threading.main_thread():
+        yield lambda: False
+        return
+    arrived: list[int] = []
+
+    def record(signum: int, frame: FrameType | None) -> None:
+        arrived.append(signum)
+
+    previous = signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)
+    try:
+        for signum, handler in zip((signal.SIGINT, signal.SIGTERM), previous, strict=True):
+            # An ignored signal stays ignored; one handled outside Python (None) is left.
+            if handler not in (signal.SIG_IGN, None):
+                signal.signal(signum, record)
+        yield lambda: bool(arrived)
+    finally:
+        for signum, handler in zip((signal.SIGINT, signal.SIGTERM), previous, strict=True):
+            if handler is not None:
+                signal.signal(signum, handler)
+    if arrived:
+        handler = previous[0] if arrived[0] == signal.SIGINT else previous[1]
+        if callable(handler):
+            handler(arrived[0], None)
+        elif handler == signal.SIG_DFL:
+            os.kill(os.getpid(), arrived[0])  # what it would have done: end the process
+
+
+@contextlib.contextmanager
 def ignoring() -> Iterator[None]:
     """Ignore SIGINT while a process is started, which keeps it ignored (dispositions set to
     "ignore" survive exec). Keep it brief: a Ctrl-C meanwhile is lost."""
@@ -260,5 +294,5 @@ def ignore_in_child() -> None:
 guard_imports()  # on the first import, which `import jointplay` makes before any other
 
 __all__ = ["EXIT_INTERRUPTED", "EXIT_TERMINATED", "deferred", "exit_status", "fork",
-           "guard_imports", "ignore_in_child", "ignoring", "installed", "interrupt", "interrupted",
-           "raise_if_interrupted", "started"]
+           "guard_imports", "held", "ignore_in_child", "ignoring", "installed", "interrupt",
+           "interrupted", "raise_if_interrupted", "started"]
