@@ -147,6 +147,25 @@ def test_identify_checks_its_settings_before_any_work(
     assert list(tmp_path.iterdir()) == []  # no folder made, not even a parent
 
 
+@pytest.mark.slow  # builds the plant's models first (35 s on a busy machine)
+def test_identify_failing_at_work_leaves_no_folder_it_made(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The model folder and the parents identify made for it are removed again when the
+    work fails (here, the first step of it)."""
+    pytest.importorskip("torch")
+    from jointplay.neural.identify import pipeline
+    from jointplay.scene.definition import default_scene
+
+    def fail(*args: object, **kwargs: object) -> None:
+        raise RuntimeError("the work failed")
+
+    monkeypatch.setattr(pipeline, "_identify_into", fail)
+    with pytest.raises(RuntimeError, match="the work failed"):
+        pipeline.identify(default_scene(), tmp_path / "a" / "b" / "model",
+                          pipeline.IdentifyConfig())
+    assert list(tmp_path.iterdir()) == []
+
+
 @pytest.mark.parametrize(("text", "field", "words"), [
     ('scene = "default"\npresett = "best"\n', "presett", ("did you mean 'preset'",)),
     ('scene = "default"\n[identfy]\nseed = 1\n', "identfy", ("did you mean 'identify'",)),
