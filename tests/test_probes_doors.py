@@ -328,5 +328,5 @@ def test_units_parse_the_writer_s_every_unit() -> None:
     from jointplay.results.units import expected_units, parse
 
     for unit in set(expected_units().values()):
-        assert parse(unit) is not None, unit
-        assert parse(unit)[0] == 1.0, unit  # type: ignore[index]
+        read = parse(unit)
+        assert read is not None and read[0] == 1.0, unit
