@@ -151,8 +151,7 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False,
     scene = control_plant(scene)  # the plant the controllers are judged on
     inner = inner_loop_for(scene, config.kp, config.kd)
     limits = np.asarray(config.torque_limit) if config.torque_limit else default_limits(scene)
-    # The folders this call makes (out and any missing parents, deepest first): a failed run
-    # removes those still empty, so no empty folder it made is left behind.
+    # The folders made here (out, missing parents; deepest first): removed if a run fails.
     created = [folder for folder in (out, *out.parents) if not folder.exists()]
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -161,8 +160,7 @@ def identify(scene: Any, out: Path, config: IdentifyConfig, quiet: bool = False,
     sweep_stale(out)  # the staging folder of a run that was killed
     # Everything is written into a staging folder and moved into ``out`` only once training
     # and evaluation succeeded: a failed run leaves a previous model folder as it was.
-    # Named first and made inside the ``try`` that removes it: an interrupt right after it
-    # is made leaves nothing behind.
+    # Named first, made inside the try that removes it (an interrupt then leaves nothing).
     stage = out / f".identify.{temp_tag()}.{os.urandom(4).hex()}.part"
     try:
         try:
