@@ -178,11 +178,9 @@ class _Transaction:
                 folder.rmdir()  # only if still empty: never someone else's files
 
     def commit(self) -> list[Path]:
-        """Rename every held temporary onto its target. Should one rename fail, or an
-        interrupt arrive meanwhile, the targets are put back as they were (a previous file
-        restored, a new one removed) and no temporary stays. The renames run with SIGINT and
-        SIGTERM held (:func:`jointplay.common.interrupts.held`): one that arrives is acted
-        on between two steps, never inside one, and raised once all is put back."""
+        """Rename every held temporary onto its target, with SIGINT and SIGTERM held
+        (:func:`jointplay.common.interrupts.held`). Should a rename fail or a signal arrive,
+        the targets are put back as they were, no temporary stays, and the signal is raised."""
         placed: list[tuple[Path, Path | None]] = []  # target, where its previous file is kept
         with interrupts.held() as arrived:
             try:
@@ -190,7 +188,9 @@ class _Transaction:
                     if arrived():
                         raise KeyboardInterrupt  # undone below; the signal is raised after
                     # The previous file's place is recorded before it is linked there.
-                    aside = _aside_name(path) if path.exists() else None
+                    aside = path.with_name(f".{temp_stem(path.name)}.{temp_tag()}.old"
+                                           f"{os.urandom(4).hex()}.part") \
+                        if path.exists() else None
                     placed.append((path, aside))
                     if aside is not None:
                         _set_aside(path, aside)
@@ -215,8 +215,8 @@ class _Transaction:
             with contextlib.suppress(OSError):
                 if previous is None:
                     target.unlink(missing_ok=True)
-                elif not os.path.lexists(previous):  # nothing was set aside yet
-                    pass
+                elif not os.path.lexists(previous):  # nothing set aside yet: nothing to undo
+                    continue
                 elif os.path.lexists(target) and os.path.samefile(previous, target):
                     previous.unlink()  # not replaced yet: drop the link
                 else:
@@ -224,11 +224,6 @@ class _Transaction:
         for tmp, _ in self.held:
             tmp.unlink(missing_ok=True)
         self.held.clear()
-
-
-def _aside_name(path: Path) -> Path:
-    return path.with_name(f".{temp_stem(path.name)}.{temp_tag()}.old{os.urandom(4).hex()}"
-                          ".part")
 
 
 def _set_aside(path: Path, aside: Path) -> None:
