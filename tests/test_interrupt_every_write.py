@@ -258,3 +258,15 @@ def test_calibrate_interrupted_at_every_write(tmp_path: Path, calibration: Any,
                 out.rmdir()
                 out.parent.rmdir()
             assert list(tmp_path.iterdir()) == [], (at, when, kind)
+
+
+def test_a_program_that_ran_an_interrupted_command_goes_on(tmp_path: Path) -> None:
+    """After a command ended by an interrupt (exit 130) in a program that imports jointplay,
+    the next write is not refused as interrupted: the interrupt was reported once."""
+    from jointplay.common.files import atomic_write_text
+
+    with interrupts.installed(), pytest.raises(KeyboardInterrupt):
+        signal.raise_signal(signal.SIGINT)
+    assert not interrupts.interrupted()
+    atomic_write_text(tmp_path / "after.txt", "written\n")
+    assert (tmp_path / "after.txt").read_text(encoding="utf-8") == "written\n"

@@ -99,6 +99,9 @@ def installed() -> Iterator[None]:
             signal.signal(signal.SIGINT, signal.SIG_IGN)
         else:
             signal.signal(signal.SIGINT, previous[0])
+            # A program that ran a command (and heard it end with 130) goes on: the
+            # interrupt is reported, and a later call must not raise it again.
+            _state["interrupted"] = 0
         signal.signal(signal.SIGTERM, previous[1])
 
 
