@@ -47,6 +47,27 @@ def _signature_names(obj: Any) -> list[str]:
     return [p.name for p in inspect.signature(obj).parameters.values()]
 
 
+def test_every_command_line_option_has_help_text() -> None:
+    """The command reference (docs/hooks/cli_reference.py) is written from the parsers: every
+    argument of every command and sub-command says what it does."""
+    import argparse
+
+    from jointplay.cli import make_parser
+
+    def walk(parser: argparse.ArgumentParser, path: str) -> list[str]:
+        silent = []
+        for action in parser._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                for name, sub in action.choices.items():
+                    silent += walk(sub, f"{path} {name}")
+            elif not isinstance(action, argparse._HelpAction | argparse._VersionAction) \
+                    and not (action.help or "").strip():
+                silent.append(f"{path} {'/'.join(action.option_strings) or action.dest}")
+        return silent
+
+    assert walk(make_parser(), "jointplay") == []
+
+
 def test_every_public_name_is_listed_once_and_documented() -> None:
     assert len(PUBLIC) == len(set(PUBLIC))
     assert set(WITH_EXAMPLES) <= set(PUBLIC)
