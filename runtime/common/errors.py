@@ -11,9 +11,9 @@ class JointplayError(Exception):
     Catch it to handle any of them; the command line turns each into one line on stderr and
     an exit status.
 
-    Parameters
+    Attributes
     ----------
-    *args
+    args : tuple
         The message, as for any exception.
     """
 
@@ -124,9 +124,9 @@ def combined(problems: Sequence[DescriptionError]) -> DescriptionError:
 class BuildError(JointplayError, RuntimeError):
     """Compiling or loading a generated model failed.
 
-    Parameters
+    Attributes
     ----------
-    *args
+    args : tuple
         The message: what failed, and the compiler's own words where it ran.
     """
 
@@ -134,9 +134,9 @@ class BuildError(JointplayError, RuntimeError):
 class GeneratedCodeError(JointplayError, RuntimeError):
     """Generated files are missing, edited by hand, or stamped by other tool versions.
 
-    Parameters
+    Attributes
     ----------
-    *args
+    args : tuple
         The message: which file, and how to regenerate it.
     """
 
