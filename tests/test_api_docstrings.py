@@ -89,9 +89,9 @@ def test_every_public_name_has_parameters_and_returns_or_attributes(name: str) -
         assert "parameters" in sections or "attributes" in sections, \
             f"{name}: neither Parameters nor Attributes"
         if "__init__" in vars(obj) and "parameters" in sections:
-            wanted = set(_signature_names(obj))
-            missing = wanted - _documented(sections["parameters"])
-            assert not missing, f"{name}: constructor parameters not documented: {missing}"
+            undocumented = set(_signature_names(obj)) - _documented(sections["parameters"])
+            assert not undocumented, \
+                f"{name}: constructor parameters not documented: {undocumented}"
         return
     assert "returns" in sections, f"{name}: no Returns"
     wanted = _signature_names(obj)
