@@ -191,6 +191,7 @@ def test_bad_arguments_name_the_flag(tmp_path: Path, argv: list[str], flag: str)
     assert not out.exists()  # validated before anything is written
 
 
+@pytest.mark.slow
 def test_work_precision_and_fidelity_rows_per_stiffness_law(tmp_path: Path) -> None:
     """--stiffness: a work-precision per law (own folder) with every row in one table, and
     a fidelity rung per law other than the scene's, each with a finite, non-zero error
@@ -217,6 +218,7 @@ def test_work_precision_and_fidelity_rows_per_stiffness_law(tmp_path: Path) -> N
         assert r["status"] == "ok" and 0 < float(r["err_position"]) < 1e-3
 
 
+@pytest.mark.slow
 def test_effect_rows_in_both_benches(tmp_path: Path) -> None:
     """--effects: the lubricated and the worn arm get rows of their own in work-precision and
     fidelity, each run to the end with a finite error."""

@@ -441,7 +441,10 @@ def non_finite_report(model: Model, outputs: dict[str, np.ndarray]) -> list[str]
     return bad
 
 
-@pytest.mark.parametrize("friction", FRICTIONS)
+# Each case derives and compiles a model of its own: the linear ramp of every law in the quick
+# tier, the rest in the slow one.
+@pytest.mark.parametrize("friction", [pytest.param(f, marks=[pytest.mark.slow] if f != "linear"
+                                                   else []) for f in FRICTIONS])
 @pytest.mark.parametrize("law", LAWS)
 def test_finite_at_singular_states(compiled: Callable[[Robot], Model], law: str,
                                    friction: str) -> None:
