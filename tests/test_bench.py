@@ -87,6 +87,7 @@ def test_work_precision_quick(tmp_path: Path) -> None:
     assert "compile" in text and "the scene's own settings" in text
 
 
+@pytest.mark.slow
 def test_fidelity_quick_with_missing_surrogate_module(tmp_path: Path,
                                                       capsys: pytest.CaptureFixture[str],
                                                       monkeypatch: pytest.MonkeyPatch) -> None:

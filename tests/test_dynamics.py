@@ -230,7 +230,9 @@ def pin_mass_and_aba(pmodel: pin.Model, q: np.ndarray, u: np.ndarray,
     return mass, acc
 
 
-@pytest.mark.parametrize("k", range(1, 9))
+# k = 5..8 (a model each) in the slow tier
+@pytest.mark.parametrize("k", [pytest.param(k, marks=[pytest.mark.slow] if k > 4 else [])
+                               for k in range(1, 9)])
 def test_ideal_chain_matches_pinocchio(compiled: Callable[[Robot], Model], k: int) -> None:
     """M = CRBA and du/dt = ABA to 1e-10 (relative to max entry), random robots and states."""
     rng = np.random.default_rng(1000 + k)

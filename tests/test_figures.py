@@ -109,6 +109,7 @@ def test_plot_and_compare_draw_orbits_from_the_replayed_dense_output(
     assert "orbits from the" in capsys.readouterr().out
 
 
+@pytest.mark.slow
 def test_api_figure_helpers_draw_orbits_from_the_dense_output(tmp_path: Path,
                                                               drawn: list[Any]) -> None:
     from jointplay.results.look import compare_runs
@@ -209,6 +210,7 @@ def test_forked_workers_draw_the_same_files(synthetic: SimulationResult,
         p.name for p in forked)  # no temporary left
 
 
+@pytest.mark.slow
 def test_sweep_figure_has_units_and_no_offset_text(tmp_path: Path, drawn: list[Any]) -> None:
     from test_sweep import GRID, _write
 

@@ -677,7 +677,7 @@ def test_plot_and_compare_never_write_over_a_results_file(
                         "--out", str(run))
 
 
-@pytest.mark.parametrize("command", ["plot", "compare"])
+@pytest.mark.parametrize("command", ["plot", pytest.param("compare", marks=pytest.mark.slow)])
 def test_plot_and_compare_figures_all_or_nothing(
         tmp_path: Path, command: str, capsys: pytest.CaptureFixture[str],
         monkeypatch: pytest.MonkeyPatch, short_run: jointplay.SimulationResult) -> None:
