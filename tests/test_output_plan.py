@@ -525,6 +525,7 @@ def test_a_plan_owns_only_its_outputs(tmp_path: Path) -> None:
     assert (tmp_path / "r.txt").read_text() == "later"
 
 
+@pytest.mark.slow
 def test_sweep_table_and_figures_all_or_nothing(tmp_path: Path,
                                                 capsys: pytest.CaptureFixture[str],
                                                 monkeypatch: pytest.MonkeyPatch) -> None:
