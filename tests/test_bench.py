@@ -153,6 +153,7 @@ def test_fidelity_surrogate_hook(tmp_path: Path, monkeypatch: pytest.MonkeyPatch
     assert row["status"] == "skipped" and bench.SURROGATE_ENTRY in row["note"]
 
 
+@pytest.mark.slow
 def test_scaling_tiny(tmp_path: Path) -> None:
     out = tmp_path / "scaling"
     assert run_bench("scaling", "--links", "1", "--sim-time", "0.005", "--repeats", "1",
