@@ -485,6 +485,7 @@ def test_grid_finds_the_true_valley_of_the_clearances() -> None:
     assert np.array_equal(again.candidates, found.candidates) and again.chi2 == found.chi2
 
 
+@pytest.mark.slow
 def test_the_grid_line_finds_the_true_valley_the_grid_point_misses() -> None:
     """Paper scene, the first 40 ms of benchmark draw 8 (truth c2 = 28.43 µm, c3 = 25.96 µm,
     1 µm noise of seed 8; it ended 9 % away without the line), from the best grid point
