@@ -220,6 +220,24 @@ def test_work_precision_and_fidelity_rows_per_stiffness_law(tmp_path: Path) -> N
         assert r["status"] == "ok" and 0 < float(r["err_position"]) < 1e-3
 
 
+def test_effect_scenes_switch_one_effect_on() -> None:
+    """The quick tier's part of --effects (the rows themselves run in the slow tier): each
+    effect's scene is the scene's robot with that effect alone, an axial length given to the
+    clearance joints that have none, and a model name of its own."""
+    from jointplay.bench.effects import DEFAULT_LENGTH, effect_label, effect_scene
+
+    scene = default_scene()
+    wet, worn = effect_scene(scene, "lubrication"), effect_scene(scene, "wear")
+    assert (wet.robot.lubrication.model, wet.robot.wear.model) == ("short-bearing", "none")
+    assert (worn.robot.lubrication.model, worn.robot.wear.model) == ("none", "archard")
+    for robot in (wet.robot, worn.robot):
+        assert [j.length for j in robot.joints] == [
+            DEFAULT_LENGTH if j.has_clearance else None for j in scene.robot.joints]
+    assert (wet.robot.name, worn.robot.name) == ("paper_4dof_lubrication", "paper_4dof_wear")
+    assert effect_label(scene, "lubrication") == "+ lubrication (short-bearing, 0.04 Pa s)"
+    assert effect_label(scene, "wear") == "+ Archard wear (k 0.0001, H 2e+09 Pa)"
+
+
 @pytest.mark.slow
 def test_effect_rows_in_both_benches(tmp_path: Path) -> None:
     """--effects: the lubricated and the worn arm get rows of their own in work-precision and
