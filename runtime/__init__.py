@@ -116,7 +116,14 @@ __all__ = [
 
 
 def default_robot() -> Robot:
-    """The built-in default: the paper's 4-link arm with clearance at joints 2 and 3."""
+    """The built-in default robot: the paper's 4-link arm with clearance at joints 2 and 3.
+
+    Returns
+    -------
+    Robot
+        The robot of ``robots/paper_4dof.toml`` (shipped with the package), as
+        :func:`load_robot` reads it.
+    """
     from importlib.resources import files
 
     return load_robot(str(files("jointplay") / "robots" / "paper_4dof.toml"))

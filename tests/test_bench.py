@@ -87,6 +87,7 @@ def test_work_precision_quick(tmp_path: Path) -> None:
     assert "compile" in text and "the scene's own settings" in text
 
 
+@pytest.mark.slow
 def test_fidelity_quick_with_missing_surrogate_module(tmp_path: Path,
                                                       capsys: pytest.CaptureFixture[str],
                                                       monkeypatch: pytest.MonkeyPatch) -> None:
@@ -152,6 +153,7 @@ def test_fidelity_surrogate_hook(tmp_path: Path, monkeypatch: pytest.MonkeyPatch
     assert row["status"] == "skipped" and bench.SURROGATE_ENTRY in row["note"]
 
 
+@pytest.mark.slow
 def test_scaling_tiny(tmp_path: Path) -> None:
     out = tmp_path / "scaling"
     assert run_bench("scaling", "--links", "1", "--sim-time", "0.005", "--repeats", "1",
@@ -191,6 +193,7 @@ def test_bad_arguments_name_the_flag(tmp_path: Path, argv: list[str], flag: str)
     assert not out.exists()  # validated before anything is written
 
 
+@pytest.mark.slow
 def test_work_precision_and_fidelity_rows_per_stiffness_law(tmp_path: Path) -> None:
     """--stiffness: a work-precision per law (own folder) with every row in one table, and
     a fidelity rung per law other than the scene's, each with a finite, non-zero error
@@ -217,6 +220,25 @@ def test_work_precision_and_fidelity_rows_per_stiffness_law(tmp_path: Path) -> N
         assert r["status"] == "ok" and 0 < float(r["err_position"]) < 1e-3
 
 
+def test_effect_scenes_switch_one_effect_on() -> None:
+    """The quick tier's part of --effects (the rows themselves run in the slow tier): each
+    effect's scene is the scene's robot with that effect alone, an axial length given to the
+    clearance joints that have none, and a model name of its own."""
+    from jointplay.bench.effects import DEFAULT_LENGTH, effect_label, effect_scene
+
+    scene = default_scene()
+    wet, worn = effect_scene(scene, "lubrication"), effect_scene(scene, "wear")
+    assert (wet.robot.lubrication.model, wet.robot.wear.model) == ("short-bearing", "none")
+    assert (worn.robot.lubrication.model, worn.robot.wear.model) == ("none", "archard")
+    for robot in (wet.robot, worn.robot):
+        assert [j.length for j in robot.joints] == [
+            DEFAULT_LENGTH if j.has_clearance else None for j in scene.robot.joints]
+    assert (wet.robot.name, worn.robot.name) == ("paper_4dof_lubrication", "paper_4dof_wear")
+    assert effect_label(scene, "lubrication") == "+ lubrication (short-bearing, 0.04 Pa s)"
+    assert effect_label(scene, "wear") == "+ Archard wear (k 0.0001, H 2e+09 Pa)"
+
+
+@pytest.mark.slow
 def test_effect_rows_in_both_benches(tmp_path: Path) -> None:
     """--effects: the lubricated and the worn arm get rows of their own in work-precision and
     fidelity, each run to the end with a finite error."""

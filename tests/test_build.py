@@ -39,7 +39,10 @@ def test_build_is_reused_only_when_the_key_matches(tmp_path: Path) -> None:
     assert build_key(SOURCE + "\n") != build_key(SOURCE)
 
 
-@pytest.mark.parametrize("damage", ["truncate_library", "delete_marker", "garbage_marker",
+# Two damages in the quick tier, two in the slow one (each rebuilds the library).
+@pytest.mark.parametrize("damage", ["truncate_library",
+                                    pytest.param("delete_marker", marks=pytest.mark.slow),
+                                    pytest.param("garbage_marker", marks=pytest.mark.slow),
                                     "library_missing"])
 def test_corrupt_entry_is_rebuilt(tmp_path: Path, damage: str) -> None:
     lib, _ = compile_source(SOURCE, cache=tmp_path)
@@ -97,6 +100,7 @@ def test_loaded_model_matches_casadi_reference(tmp_path: Path, monkeypatch) -> N
         model.forward_dynamics(x[:5], tau, p, vimp)
 
 
+@pytest.mark.slow
 def test_deferred_library_is_built_on_first_use(tmp_path: Path, monkeypatch, capsys) -> None:  # type: ignore[no-untyped-def]
     """What integration never calls is compiled on its first call, once, into its own cache
     entry (keyed by its own C, stamped with the model's provenance); the full Jacobian it

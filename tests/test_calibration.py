@@ -485,6 +485,7 @@ def test_grid_finds_the_true_valley_of_the_clearances() -> None:
     assert np.array_equal(again.candidates, found.candidates) and again.chi2 == found.chi2
 
 
+@pytest.mark.slow
 def test_the_grid_line_finds_the_true_valley_the_grid_point_misses() -> None:
     """Paper scene, the first 40 ms of benchmark draw 8 (truth c2 = 28.43 µm, c3 = 25.96 µm,
     1 µm noise of seed 8; it ended 9 % away without the line), from the best grid point
@@ -542,6 +543,7 @@ def test_the_grid_line_finds_the_true_valley_the_grid_point_misses() -> None:
     assert plain[0][2] == pytest.approx(grid_point[2], rel=1e-10)
 
 
+@pytest.mark.slow
 def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
     """Paper scene, 2 s of tip position at 1 ms with 1 µm of noise (seed 3), truth
     c2 = 23.9 µm, c3 = 44.0 µm, mu = 0.071 (benchmark draw 3), calibrated from the scene's
@@ -650,6 +652,7 @@ def test_basins_widen_the_intervals_to_every_point_found_inside_them() -> None:
     assert high[2] == pytest.approx(near[2]) and determined.all() and warnings == []
 
 
+@pytest.mark.slow
 def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() -> None:
     """Paper scene, the first 0.4 s of benchmark draw 1 (truth c2 = 26.115 µm, c3 =
     25.648 µm, 1 µm noise of seed 1), through the whole-record fit the benchmark ends in,

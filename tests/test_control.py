@@ -430,6 +430,12 @@ def test_identify_and_control_end_to_end(tmp_path: Path) -> None:
     for m in result.metrics.values():
         assert all(np.isfinite(v) for v in m.values())
     assert all(us > 0 for us in result.per_call_us.values())
+    from jointplay.neural.study.control_plots import plot_comparison
+
+    drawn = plot_comparison(result, short, tmp_path / "plots")  # what `control --plot` draws
+    assert [p.name for p in drawn] == ["control_tracking.png", "control_error.png",
+                                       "control_joints.png", "control_torque.png"]
+    assert all(p.stat().st_size > 0 for p in drawn)
     # A failed rerun into the same folder leaves the finished model as it was.
     before = {name: (out / name).read_bytes() for name in (REJECTED_FILE, "metrics.json")}
     import jointplay.neural.identify.pipeline as identify_module

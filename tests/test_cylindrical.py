@@ -314,7 +314,9 @@ def test_restitution_of_a_damped_impact(kind: str) -> None:
     assert got == pytest.approx(hertz, rel=1e-7)
 
 
-@pytest.mark.parametrize("kind", LAWS)
+# johnson in the quick tier, the other laws in the slow one
+@pytest.mark.parametrize("kind", [pytest.param(k, marks=[pytest.mark.slow] * (k != "johnson"))
+                                  for k in LAWS])
 def test_elastic_runs_conserve_energy(kind: str) -> None:
     """ce = 1, no friction: two links with clearance at both joints falling under gravity
     through repeated impacts; kinetic + gravity + the law's potential is conserved to 1e-6 of

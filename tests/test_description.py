@@ -176,6 +176,7 @@ def test_cli_bad_input_exits_2_and_writes_nothing(tmp_path: Path, args: tuple[st
     assert sorted(p.name for p in tmp_path.rglob("*")) == before
 
 
+@pytest.mark.slow
 def test_cli_derive_and_inspect_write_their_outputs(tmp_path: Path) -> None:
     proc = _cli("derive", "--links", "2", "--clearance", "2", "--out", "gen", cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr

@@ -230,7 +230,9 @@ def pin_mass_and_aba(pmodel: pin.Model, q: np.ndarray, u: np.ndarray,
     return mass, acc
 
 
-@pytest.mark.parametrize("k", range(1, 9))
+# k = 5..8 (a model each) in the slow tier
+@pytest.mark.parametrize("k", [pytest.param(k, marks=[pytest.mark.slow] if k > 4 else [])
+                               for k in range(1, 9)])
 def test_ideal_chain_matches_pinocchio(compiled: Callable[[Robot], Model], k: int) -> None:
     """M = CRBA and du/dt = ABA to 1e-10 (relative to max entry), random robots and states."""
     rng = np.random.default_rng(1000 + k)
@@ -441,7 +443,10 @@ def non_finite_report(model: Model, outputs: dict[str, np.ndarray]) -> list[str]
     return bad
 
 
-@pytest.mark.parametrize("friction", FRICTIONS)
+# Each case derives and compiles a model of its own: the linear ramp of every law in the quick
+# tier, the rest in the slow one.
+@pytest.mark.parametrize("friction", [pytest.param(f, marks=[pytest.mark.slow] if f != "linear"
+                                                   else []) for f in FRICTIONS])
 @pytest.mark.parametrize("law", LAWS)
 def test_finite_at_singular_states(compiled: Callable[[Robot], Model], law: str,
                                    friction: str) -> None:

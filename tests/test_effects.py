@@ -108,7 +108,8 @@ def test_lubricated_arm_floats_on_its_film(lubricated) -> None:  # type: ignore[
     assert np.linalg.norm(lubricated.contact_force, axis=2).max() > 10.0  # carries the weight
 
 
-@pytest.mark.parametrize("film", ["short-bearing", "long-bearing"])
+@pytest.mark.parametrize("film", ["short-bearing",
+                                  pytest.param("long-bearing", marks=pytest.mark.slow)])
 def test_lubricated_and_worn_model_is_finite_at_singular_states(film: str) -> None:
     """The compiled model with a film and wear: every output and Jacobian block finite at
     e = 0, delta = 0 (film closed: eps = 1), v_t = 0 and |e| = 1e-15 (the dry law's checks,

@@ -125,6 +125,7 @@ def _alive(pid: int) -> bool:
 
 
 @pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc (Linux)")
+@pytest.mark.slow
 def test_ctrl_c_stops_the_figure_process_too(tmp_path: Path) -> None:
     """Ctrl-C (SIGINT to the whole process group) while the figure process loads matplotlib:
     the command ends with status 130, writes nothing, and leaves no figure process behind."""

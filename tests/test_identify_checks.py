@@ -152,6 +152,60 @@ def test_report_names_every_repair() -> None:
     assert "no repair was needed" in "\n".join(_repair_lines({"training_history": {}}))
 
 
+def _issue_metrics() -> dict[str, Any]:
+    """metrics.json as the `best` preset wrote it for the paper scene: the network kept at
+    alpha = 0 in closed loop (its LPV-ARX base saved), that base diverging in free run on 6
+    of 10 test outputs, and ARX the lowest free-run loss."""
+    outputs = ["q2", "q3", "dq2", "dq3", "tip_x", "tip_y", "tip_vx", "tip_vy", "tip_ax",
+               "tip_ay"]
+    nrmse = [0.5, 0.6, 2e5, float("inf"), 3e3, 0.7, 1e4, 5e6, 0.9, 4e8]
+    return {
+        "outputs": outputs,
+        "test": {"narx": {"free_run": {"nrmse": nrmse}}},
+        "free_run_loss": {"window": 200, "scheduling": "x",
+                          "validation": {"model": 9.1, "arx": 0.31, "lpv_arx": 9.1},
+                          "test": {"model": 12.0, "arx": 0.52, "lpv_arx": 12.0}},
+        "residual": {"alpha": 0.0, "closed_loop": {
+            "chosen": "alpha=0", "alpha": 0.0, "margin": 0.02, "best_other": "alpha=0.5",
+            "score_by_candidate": {"alpha=0": 1.0, "alpha=0.5": 1.04, "ARX twin": 1.31}}},
+    }
+
+
+def test_report_leads_with_the_choice_in_the_terms_of_its_tables() -> None:
+    """The report's head: the controller to use, the criterion with its scores, and what the
+    tables below say of the same models (divergence counted as the tables print it, the
+    `best` column named), before any table."""
+    from jointplay.neural.identify.recommendation import choice_lines
+
+    head = "\n".join(choice_lines(_issue_metrics(), lpv_base=True))
+    assert head.startswith("## The choice\n\n**Controller to use: LPV-ARX-IMC")
+    assert "alpha=0: 1x, alpha=0.5: 1.04x, ARX twin: 1.31x" in head
+    assert "The saved model is the LPV-ARX base (alpha = 0)" in head
+    # 2e5, inf, 3e3, 1e4, 5e6, 4e8: the six the tables print as "diverges"
+    assert ("diverges on 6 of 10 outputs (dq2, dq3, tip_x, tip_vx, tip_vy, tip_ay)"
+            in head)
+    assert "(the `best` column) is ARX on the validation runs; ARX on the test runs" in head
+    assert "Free run is not the criterion here" in head
+    assert "|" not in head  # no table in the lead
+
+
+def test_report_lead_agrees_with_a_network_that_wins_in_free_run() -> None:
+    """Chosen on the free-run criterion and lowest in the `best` column everywhere: the lead
+    says so and does not claim another model ranks first."""
+    from jointplay.neural.identify.recommendation import choice_lines
+
+    metrics = _issue_metrics()
+    metrics["test"]["narx"]["free_run"]["nrmse"] = [0.5] * 10
+    metrics["free_run_loss"]["validation"] = {"model": 0.2, "arx": 0.3, "lpv_arx": 0.25}
+    metrics["free_run_loss"]["test"] = {"model": 0.4, "arx": 0.5, "lpv_arx": 0.45}
+    metrics["residual"] = {"alpha": 1.0, "free_run_loss": 0.2, "free_run_loss_arx": 0.3}
+    head = "\n".join(choice_lines(metrics, lpv_base=False))
+    assert "**Controller to use: neural IMC, on the free-run criterion" in head
+    assert "Decided by the free-run loss on the validation runs" in head
+    assert "diverges" not in head and "another model first" not in head
+    assert "the saved model on the validation runs; the saved model on the test runs" in head
+
+
 # ---- the LPV-ARX baseline -----------------------------------------------------------------------
 
 def _scheduled_run(rng: np.random.Generator, n: int) -> Trajectory:

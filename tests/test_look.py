@@ -72,11 +72,17 @@ def test_eccentricity_ratio_and_release_transient(dry: SimulationResult) -> None
         / dry.radial_clearance
     np.testing.assert_allclose(ratio, expected, rtol=1e-15)
     assert ratio.min() > 0.97 and ratio.max() < 1.03  # c (1 +- 0.02) in the synthetic orbit
-    # The synthetic impacts are evenly spread (one per period), no burst ends early: the
-    # first "burst" closes at the first phase's separation, well inside the first half.
-    end, rule = release_transient_end(dry) or (None, "")
-    first = dry.impacts.for_joint(2)
-    assert end is not None and end >= float(first.separation_time[0])
+    # The synthetic impacts are evenly spread from the start (pauses shorter than the time
+    # since the run began): no burst stands apart from the rest, so no release transient.
+    assert release_transient_end(dry) is None
+    # Joint 2's phases at 0.2-0.3 s and 0.8-0.9 s alone: the pause (0.5 s) is longer than
+    # the 0.3 s since the start, so the first phase is the transient, ending at 0.3 s.
+    rows = dry.impacts
+    kept = (np.asarray(rows.joint) == 2) & np.isin(np.round(rows.time, 9), [0.2, 0.8])
+    apart = type(rows)(**{name: np.asarray(getattr(rows, name))[kept]
+                          for name in rows.column_names()})
+    end, rule = release_transient_end(dataclasses.replace(dry, impacts=apart)) or (None, "")
+    assert end == pytest.approx(0.3, abs=1e-12)
     assert rule == "end of the first impact burst"
 
 

@@ -23,6 +23,8 @@ from jointplay.results.animate import (
     frame_indices,
 )
 from jointplay.results.plots import (
+    BURST_GAP,
+    BURST_MAX,
     first_burst,
     impact_positions,
     plot_contact_timeline,
@@ -548,11 +550,15 @@ def test_plots_module_imports_no_matplotlib() -> None:
 
 
 def test_first_burst_rule(result: SimulationResult) -> None:
-    """The burst ends at the first gap longer than BURST_GAP of the run."""
-    rows = result.impacts.for_joint(2)  # phases 0.2-0.3, 0.4-0.5, ...: gaps of 0.1 s
-    assert first_burst(rows, 1.0) == (0.2, 0.3)  # 0.1 > 0.02
-    assert first_burst(rows, 10.0) == (0.2, rows.separation_time[-1])  # 0.1 < 0.2
-    assert np.isnan(first_burst(rows.for_joint(9), 1.0)[0])
+    """The burst ends at the first pause longer than BURST_GAP times the time since the run
+    began; the run's length does not enter."""
+    rows = result.impacts.for_joint(2)  # phases 0.2-0.3, 0.4-0.5, ...: pauses of 0.1 s
+    assert BURST_GAP == 1.0
+    # from t0 = 0: 0.1 s pauses after 0.3 s and more since the release never end it
+    assert first_burst(rows, 0.0) == (0.2, rows.separation_time[min(len(rows), BURST_MAX) - 1])
+    # from t0 = 0.25: the first pause (0.1 s) is longer than the 0.05 s since then
+    assert first_burst(rows, 0.25) == (0.2, 0.3)
+    assert np.isnan(first_burst(rows.for_joint(9), 0.0)[0])
 
 
 def test_contact_timeline_marks_located_peaks_or_says_not_located(

@@ -525,6 +525,7 @@ def test_a_plan_owns_only_its_outputs(tmp_path: Path) -> None:
     assert (tmp_path / "r.txt").read_text() == "later"
 
 
+@pytest.mark.slow
 def test_sweep_table_and_figures_all_or_nothing(tmp_path: Path,
                                                 capsys: pytest.CaptureFixture[str],
                                                 monkeypatch: pytest.MonkeyPatch) -> None:
@@ -677,7 +678,7 @@ def test_plot_and_compare_never_write_over_a_results_file(
                         "--out", str(run))
 
 
-@pytest.mark.parametrize("command", ["plot", "compare"])
+@pytest.mark.parametrize("command", ["plot", pytest.param("compare", marks=pytest.mark.slow)])
 def test_plot_and_compare_figures_all_or_nothing(
         tmp_path: Path, command: str, capsys: pytest.CaptureFixture[str],
         monkeypatch: pytest.MonkeyPatch, short_run: jointplay.SimulationResult) -> None:

@@ -471,7 +471,9 @@ def one_link_cache(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path
     return root / "c", scene
 
 
-@pytest.mark.parametrize("damage", ["model.c", "layout.json", "robot.toml", "model.so"])
+@pytest.mark.parametrize("damage", ["model.c", pytest.param("layout.json", marks=pytest.mark.slow),
+                                    pytest.param("robot.toml", marks=pytest.mark.slow),
+                                    "model.so"])
 def test_cache_heals(tmp_path: Path, one_link_cache: tuple[Path, Path], damage: str) -> None:
     import shutil
 

@@ -414,6 +414,7 @@ def test_resting_without_a_drive_is_refused_before_compiling() -> None:
         undriven.with_journals("resting")
 
 
+@pytest.mark.slow
 def test_ctrl_c_as_a_command_finishes_is_never_a_traceback(tmp_path: Path) -> None:
     """SIGINT at moments spread over the end of a short command (its last 30 % and the
     interpreter's shutdown): exit 0 (it had finished) or 130 with its one line; never a

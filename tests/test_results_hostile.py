@@ -99,6 +99,7 @@ def test_generator_makes_every_kind(hostile: list[Hostile]) -> None:
     assert names["forged"] >= 30
 
 
+@pytest.mark.slow
 def test_read_gives_the_original_or_refuses(base: tuple[Path, SimulationResult],
                                             hostile: list[Hostile]) -> None:
     """Every damaged file reads back equal to the original or is refused with jointplay's

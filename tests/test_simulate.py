@@ -72,7 +72,9 @@ def test_clearance_from_one_micrometre_to_one_millimetre(clearance: float) -> No
     assert np.max(result.penetration) < 0.05 * clearance + 2e-6
 
 
-@pytest.mark.parametrize("law", LAWS)
+# The default law in the quick tier; the others (a model each) in the slow one.
+@pytest.mark.parametrize("law", [pytest.param(law, marks=[pytest.mark.slow] * (law != LAWS[0]))
+                                 for law in LAWS])
 @pytest.mark.parametrize("ce", [0.1, 0.5, 1.0])
 def test_every_damping_law_over_the_restitution_range(law: str, ce: float) -> None:
     robot = pendulum(law=law, restitution=ce)
@@ -262,6 +264,7 @@ def test_radau_reduced_newton_step_equals_the_full_one() -> None:
     assert float(reduced_increment) == pytest.approx(increment, rel=1e-4)
 
 
+@pytest.mark.slow
 def test_fixed_step_methods_agree_with_cvodes_through_impacts() -> None:
     """The paper scene for 20 ms: RK4 and Radau at 2 us agree with CVODES at 1e-10 to 1 um at
     the tip (onsets between step ends are located by interpolation: first order in h)."""

@@ -290,6 +290,7 @@ def test_effects_that_are_off_and_bad_options(tmp_path: Path) -> None:
         args.func(args)
 
 
+@pytest.mark.slow
 def test_sweep_of_a_cylindrical_contact_law(tmp_path: Path) -> None:
     """A base scene under Johnson's law: its journal length and clearance are parameters
     like any other; a longer journal is stiffer, so its peak force is higher."""

@@ -69,42 +69,81 @@ can be a neighbour of that point."""
 
 @dataclass(frozen=True)
 class CalibrationOptions:
-    """How the fit runs. ``tighten``: the runs of the fit use the scene's tolerances divided
-    by this (a 1 µm sensor needs a model far more accurate than the scene's working
-    accuracy of about 3 µm at the tip). ``starts``: starts of the multi-start at most,
-    the first the given start, the rest a Latin hypercube within ±``spread`` (relative) of
-    it, run only while the best fit does not explain the data within the stated noise.
-    ``scan_points``: runs along the weakest direction of the first optimum (0: no scan),
-    local fits from the ``refine`` lowest minima along it. ``max_evaluations``: least-squares
-    evaluations per start. ``profile_points``: points of each cost profile (0: none).
-    ``horizon_first``: the first window (s) of the horizon continuation, grown by
-    ``horizon_growth`` each stage up to the whole record, each stage started at the last one's
-    estimate (0: no continuation, the fit starts on the whole record); the starts, the
-    exchanged clearances and the scan are the fallback where the whole-record fit does not
-    explain the data. ``grid_window``: the window (s) of the global stage, a grid of
-    ``grid_points`` values of each free clearance across ±``spread`` of the start, its runs at
-    the fit's tolerances times ``window_looser`` (as are the runs on every window shorter than
-    the record), whose ``grid_candidates`` lowest local minima
-    each start a track of the continuation, from ``grid_window`` on (0: no grid; the
-    continuation starts at ``horizon_first`` from the start). ``grid_line_points``: runs on
-    the grid's window along the clearances' rugged directions (those of the valley lines,
-    below) through the best grid point, GRID_LINE_REACH grid spacings either side, whose
-    ``valley_keep`` lowest minima take that point's place as tracks (0: no line): over 20 ms
-    the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's the lowest
-    by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
-    in. ``valley_window``, ``valley_points``, ``valley_keep``: the valley lines' first window
-    (s), runs per line and minima kept (see :func:`continuation`). ``basins``: look for the
-    other minima of the whole record's cost near the best fit, which the data cannot tell
-    from it, and widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
-    ``valley_check_points``: with the noise stated and the basin check on, runs over the
-    valley lines' first window along the clearances' rugged direction through the best fit,
-    VALLEY_CHECK_REACH grid spacings either side; a parameter the line moves whose interval
-    misses another valley there within the basin threshold of the fit's own is not
-    determined, its interval widened to span the line, and the lowest such valleys are
-    followed to the whole record, a fit that ends lower replacing the best
-    (:func:`valley_check`, :func:`follow_rivals`; 0: no check).
-    ``workers``: processes for the grid's runs, the tracks' fits and the lines' runs (the
-    results do not depend on it)."""
+    """How the fit runs: the options of :func:`calibrate` (``jointplay calibrate``'s flags).
+
+    The defaults are what ``jointplay calibrate`` uses; the results do not depend on
+    ``workers``.
+
+    Attributes
+    ----------
+    tighten : float
+        The runs of the fit use the scene's tolerances divided by this (a 1 µm sensor needs a
+        model far more accurate than the scene's working accuracy of about 3 µm at the tip).
+    starts : int
+        Starts of the multi-start at most: the first the given start, the rest a Latin
+        hypercube within ±``spread`` (relative) of it, run only while the best fit does not
+        explain the data within the stated noise.
+    spread : float
+        The relative half-width of the region the starts and the grid cover.
+    seed : int
+        Seed of the Latin hypercube.
+    max_evaluations : int
+        Least-squares evaluations per start.
+    profile_points : int
+        Points of each cost profile (0: none).
+    scan_points : int
+        Runs along the weakest direction of the first optimum (0: no scan), local fits from
+        the ``refine`` lowest minima along it.
+    refine : int
+        See ``scan_points``.
+    horizon_first : float
+        The first window (s) of the horizon continuation, grown by ``horizon_growth`` each stage
+        up to the whole record, each stage started at the last one's estimate (0: no
+        continuation, the fit starts on the whole record); the starts, the exchanged clearances
+        and the scan are the fallback where the whole-record fit does not explain the data.
+    horizon_growth : float
+        See ``horizon_first``.
+    grid_window : float
+        The window (s) of the global stage: a grid of ``grid_points`` values of each free
+        clearance across ±``spread`` of the start, its runs at the fit's tolerances times
+        ``window_looser`` (as are the runs on every window shorter than the record), whose
+        ``grid_candidates`` lowest local minima each start a track of the continuation, from
+        ``grid_window`` on (0: no grid; the continuation starts at ``horizon_first`` from the
+        start).
+    grid_points : int
+        See ``grid_window``.
+    grid_candidates : int
+        See ``grid_window``.
+    window_looser : float
+        See ``grid_window``.
+    valley_window : float
+        The valley lines' first window, s (see :func:`continuation`).
+    valley_points : int
+        Runs per valley line.
+    valley_keep : int
+        Minima kept per valley line (and per grid line).
+    grid_line_points : int
+        Runs on the grid's window along the clearances' rugged directions (those of the valley
+        lines) through the best grid point, GRID_LINE_REACH grid spacings either side, whose
+        ``valley_keep`` lowest minima take that point's place as tracks (0: no line): over 20 ms
+        the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's the lowest
+        by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
+        in.
+    valley_check_points : int
+        With the noise stated and the basin check on: runs over the valley lines' first window
+        along the clearances' rugged direction through the best fit, VALLEY_CHECK_REACH grid
+        spacings either side; a parameter the line moves whose interval misses another valley
+        there within the basin threshold of the fit's own is not determined, its interval
+        widened to span the line, and the lowest such valleys are followed to the whole
+        record, a fit that ends lower replacing the best (:func:`valley_check`,
+        :func:`follow_rivals`; 0: no check).
+    basins : bool
+        Look for the other minima of the whole record's cost near the best fit, which the data
+        cannot tell from it, and widen the intervals to hold them
+        (:mod:`jointplay.calibration.basins`).
+    workers : int
+        Processes for the grid's runs, the tracks' fits and the lines' runs.
+    """
 
     tighten: float = 1000.0
     starts: int = 6
@@ -205,12 +244,62 @@ def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str]
               ) -> CalibrationResult:
     """Estimate the ``free`` parameters of ``scene``'s robot from ``measured`` motion.
 
-    ``measured``: a CSV path (``time``, and any of ``tip_x``, ``tip_y``, ``q2``, ...), a
-    results file (.h5) or a :class:`Measured`. ``free``: parameter names as ``--set`` takes
-    them, plus ``jointN.clearance``. ``noise``: the sensors' standard deviations (one number,
-    or one per column); without it each column's noise is estimated from the residuals.
-    ``start``: start values (default: the scene's). Bad input raises
-    :class:`DescriptionError`; a run that stops at every start raises SimulationError.
+    A weighted least-squares fit of simulated to measured samples, with the Jacobian from the
+    compiled sensitivities, then the estimates' uncertainty (95 % intervals, correlations) and
+    the cost profiles, and whether the fit explains the data within the noise.
+
+    Parameters
+    ----------
+    scene : Scene
+        The scene that was measured: its torques, initial state and the robot's other numbers.
+    measured : str, pathlib.Path or Measured
+        A CSV path (``time``, and any of ``tip_x``, ``tip_y``, ``q2``, ...), a results file
+        (.h5) or a :class:`~jointplay.calibration.Measured`.
+    free : sequence of str
+        The parameters to estimate, by the names ``--set`` takes, plus ``jointN.clearance``.
+    noise : float or mapping of str to float, optional
+        The sensors' standard deviations (one number, or one per column); without it each
+        column's noise is estimated from the residuals.
+    start : mapping of str to float, optional
+        Start values (default: the scene's).
+    options : CalibrationOptions, optional
+        How the fit runs (default: ``CalibrationOptions()``).
+    model : Model, optional
+        The compiled model of the scene's robot (default: loaded for it).
+
+    Returns
+    -------
+    CalibrationResult
+        The estimates with their intervals, the residuals and the verdicts;
+        ``result.to_dict()`` is ``calibration.json``.
+
+    Raises
+    ------
+    DescriptionError
+        For bad input (a column, a parameter name, an option), naming it and the fix.
+    SimulationError
+        When the runs stop at every start.
+
+    Examples
+    --------
+    A payload recovered from 0.1 s of tip positions with 1 µm of noise (the ideal-joint arm:
+    a smooth cost, one start):
+
+    >>> import numpy as np
+    >>> import jointplay
+    >>> from jointplay.calibration import Measured
+    >>> scene = jointplay.default_scene()
+    >>> scene = scene.with_robot(jointplay.ideal_counterpart(scene.robot)).with_run(t_end=0.1)
+    >>> truth = jointplay.simulate(scene, parameters={"payload.mass": 2.3})
+    >>> noise = 1e-6 * np.random.default_rng(0).standard_normal(truth.tip_position.shape)
+    >>> measured = Measured("synthetic", truth.t, ("tip_x", "tip_y"), truth.tip_position + noise)
+    >>> options = jointplay.CalibrationOptions(tighten=1.0, starts=1, scan_points=0,
+    ...                                        profile_points=0, horizon_first=0, basins=False)
+    >>> result = jointplay.calibrate(scene, measured, ["payload.mass"], noise=1e-6,
+    ...                              options=options)
+    >>> estimate = result.estimates["payload.mass"]
+    >>> round(estimate.value, 2), estimate.determined, result.fit_explains_data
+    (2.3, True, True)
     """
     problem = prepare(scene, measured, free, noise=noise, start=start, options=options,
                       model=model)

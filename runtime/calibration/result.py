@@ -30,7 +30,80 @@ class Estimate:
 
 @dataclass(frozen=True)
 class CalibrationResult:
-    """Everything a calibration found; ``to_dict()`` is ``calibration.json``."""
+    """Everything a calibration found; ``to_dict()`` is ``calibration.json``.
+
+    Attributes
+    ----------
+    scene_name : str
+        The scene's name.
+    measured : Measured
+        The measured samples that were fitted.
+    estimates : dict of str to Estimate
+        Per free parameter: ``value``, ``std``, ``low95``, ``high95``, ``start`` and whether the
+        data ``determined`` it.
+    covariance : numpy.ndarray
+        The estimates' covariance.
+    correlation : numpy.ndarray
+        Their correlation matrix.
+    condition_number : float
+        Of the weighted Jacobian at the fit: large means parameters the data cannot separate.
+    residuals : dict
+        The residuals' statistics: chi², its normalised value (chi²/dof), per column RMS.
+    noise : dict of str to float
+        The noise per column, stated or estimated.
+    noise_stated : bool
+        Whether the noise was given (else estimated from the residuals).
+    fitted : numpy.ndarray
+        The model's samples at the estimates, as the measured columns.
+    starts : tuple of Start
+        Each start of the multi-start: where it began and ended, at what cost.
+    simulations : int
+        The runs the calibration took.
+    simulations_by_kind : dict of str to int
+        The same, by what they were for.
+    jacobian_source : dict of str to str
+        Per free parameter, where its derivatives came from.
+    wall_time_s : float
+        s, wall time.
+    cpu_time_s : float
+        s, processor time of this process and its workers.
+    warnings : tuple of str
+        What the user must know (parameters not determined, a fit that does not explain the
+        data ...).
+    settings : dict
+        The options and tolerances the fit ran with.
+    fit_explains_data : bool or None
+        Whether chi² is within its two-sided 99 % range for the degrees of freedom (None: no
+        noise stated, nothing to judge against).
+    fit_consistent : bool or None
+        chi² within ``chi2.ppf(CONSISTENT, dof)`` (None: no noise stated).
+    stages : tuple of Stage
+        The stages of the horizon continuation, in order.
+    profiles : dict
+        Per free parameter: the cost profile's values and chi².
+    grid : GridResult or None
+        The global stage's grid, when it ran.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import jointplay
+    >>> from jointplay.calibration import Measured
+    >>> scene = jointplay.default_scene()
+    >>> scene = scene.with_robot(jointplay.ideal_counterpart(scene.robot)).with_run(t_end=0.1)
+    >>> truth = jointplay.simulate(scene, parameters={"link2.com": 0.19})
+    >>> noise = 1e-6 * np.random.default_rng(1).standard_normal(truth.tip_position.shape)
+    >>> measured = Measured("synthetic", truth.t, ("tip_x", "tip_y"), truth.tip_position + noise)
+    >>> options = jointplay.CalibrationOptions(tighten=1.0, starts=1, scan_points=0,
+    ...                                        profile_points=0, horizon_first=0, basins=False)
+    >>> result = jointplay.calibrate(scene, measured, ["link2.com"], noise=1e-6, options=options)
+    >>> result.names, round(float(result.values[0]), 3)
+    (['link2.com'], 0.19)
+    >>> bool(result.estimates["link2.com"].low95 <= 0.19 <= result.estimates["link2.com"].high95)
+    True
+    >>> "estimates" in result.to_dict()  # the calibration.json document
+    True
+    """
 
     scene_name: str
     measured: Measured

@@ -42,10 +42,14 @@ def robot_arguments(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--locked", default="", help="locked joints, e.g. 1")
     group.add_argument("--locked-clearance", default="",
                        help="locked joints whose journal still has play")
-    group.add_argument("--friction", choices=("none", "coulomb"), default="coulomb")
+    group.add_argument("--friction", choices=("none", "coulomb"), default="coulomb",
+                       help="friction in the clearance joints (default: %(default)s; none "
+                            "compiles it out)")
     group.add_argument("--contact-law", default="lankarani-nikravesh",
-                       choices=("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores"))
-    group.add_argument("--no-gravity", action="store_true")
+                       choices=("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores"),
+                       help="damping factor of the contact law (default: %(default)s)")
+    group.add_argument("--no-gravity", action="store_true",
+                       help="a model without gravity (the arm moves in a horizontal plane)")
 
 
 def robot_from_args(args: argparse.Namespace) -> Robot:

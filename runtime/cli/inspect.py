@@ -14,7 +14,9 @@ from jointplay.common.files import OutputPlan
 def register(subparsers: Any) -> argparse.ArgumentParser:
     p_inspect = subparsers.add_parser("inspect", help="show a model's equations")
     robot_arguments(p_inspect)
-    p_inspect.add_argument("--format", choices=("text", "latex", "markdown"))
+    p_inspect.add_argument("--format", choices=("text", "latex", "markdown"),
+                           help="how the equations are written (default: markdown when --out "
+                                "ends in .md, else text)")
     p_inspect.add_argument("--out", help="write to this file (.md: Markdown) instead of stdout")
     p_inspect.add_argument("--simplify", action="store_true",
                            help="trigonometric simplification (readable, slow beyond 3 links)")

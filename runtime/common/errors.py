@@ -6,14 +6,41 @@ from collections.abc import Callable, Sequence
 
 
 class JointplayError(Exception):
-    """Base class of every error jointplay raises on purpose."""
+    """Base class of every error jointplay raises on purpose.
+
+    Catch it to handle any of them; the command line turns each into one line on stderr and
+    an exit status.
+
+    Attributes
+    ----------
+    args : tuple
+        The message, as for any exception.
+    """
 
 
 class DescriptionError(JointplayError, ValueError):
-    """A robot description (file, table or flags) is invalid.
+    """An input is invalid: a robot or scene description (file, table or flags), an option or a
+    file given to read.
 
-    ``source`` is the file (or ``"flags"``), ``field`` the dotted path of the offending field
-    (for example ``joints[2].journal_radius``) and ``message`` says what is allowed.
+    Parameters
+    ----------
+    field : str
+        The dotted path of the offending field (for example ``joints[2].journal_radius``).
+    message : str
+        What is wrong and what is allowed.
+    source : str, optional
+        The file (or ``"flags"``).
+
+    Attributes
+    ----------
+    field : str
+        As given.
+    message : str
+        As given.
+    source : str or None
+        As given.
+    problems : list of DescriptionError
+        Every invalid field the error reports (this one here).
     """
 
     def __init__(self, field: str, message: str, source: str | None = None) -> None:
@@ -41,8 +68,21 @@ class DescriptionError(JointplayError, ValueError):
 class DescriptionErrors(DescriptionError):
     """Several invalid fields, reported together so that one round of corrections fixes them all.
 
-    ``field`` and ``message`` are the first problem's (code that handles one error keeps
-    working); ``problems`` lists every one, and the text has one line per problem.
+    Parameters
+    ----------
+    problems : sequence of DescriptionError
+        The problems (at least one); each one's own problems are taken in.
+
+    Attributes
+    ----------
+    field : str
+        The first problem's (code that handles one error keeps working).
+    message : str
+        The first problem's.
+    source : str or None
+        The first problem's.
+    problems : list of DescriptionError
+        Every one; the text has one line per problem.
     """
 
     def __init__(self, problems: Sequence[DescriptionError]) -> None:
@@ -82,18 +122,45 @@ def combined(problems: Sequence[DescriptionError]) -> DescriptionError:
 
 
 class BuildError(JointplayError, RuntimeError):
-    """Compiling or loading a generated model failed."""
+    """Compiling or loading a generated model failed.
+
+    Attributes
+    ----------
+    args : tuple
+        The message: what failed, and the compiler's own words where it ran.
+    """
 
 
 class GeneratedCodeError(JointplayError, RuntimeError):
-    """Generated files are missing, edited by hand, or stamped by other tool versions."""
+    """Generated files are missing, edited by hand, or stamped by other tool versions.
+
+    Attributes
+    ----------
+    args : tuple
+        The message: which file, and how to regenerate it.
+    """
 
 
 class SimulationError(JointplayError, RuntimeError):
     """A simulation could not continue: the integrator failed or the state stopped being finite.
 
-    ``time`` is where it stopped (s), ``joint`` the clearance joint involved when one is
-    (1-based, else None), and ``cause`` what happened and what to try.
+    Parameters
+    ----------
+    time : float
+        Where it stopped, s.
+    cause : str
+        What happened and what to try.
+    joint : int, optional
+        The clearance joint involved when one is (1-based).
+
+    Attributes
+    ----------
+    time : float
+        As given.
+    cause : str
+        As given.
+    joint : int or None
+        As given.
     """
 
     def __init__(self, time: float, cause: str, joint: int | None = None) -> None:

@@ -44,7 +44,49 @@ TIGHTER = 10.0
 
 @dataclass(frozen=True)
 class Accuracy:
-    """A run's accuracy statement (SI units). ``check_*`` describe the tighter run."""
+    """A run's accuracy statement (SI units): ``result.accuracy`` after ``simulate(verify=True)``.
+
+    The run is compared with the same run at tolerances 10x tighter (the check); ``check_*``
+    describe the check. :meth:`lines` says it in words.
+
+    Attributes
+    ----------
+    rtol : float
+        The run's relative tolerance.
+    atol : float
+        Its absolute tolerance.
+    check_rtol : float
+        The check's relative tolerance (NaN for a fixed-step method, which is checked at a
+        10x smaller step).
+    check_atol : float
+        The check's absolute tolerance (NaN likewise).
+    tip_error_estimate : float
+        m, the largest difference of the tip position from the check over the samples.
+    tip_velocity_error_estimate : float
+        m/s, the same for the tip velocity.
+    energy_residual : float
+        J, the largest ``|balance|`` of the run.
+    check_energy_residual : float
+        J, the same for the check.
+    dissipated : float
+        J, the energy taken out by contact over the run.
+    agreement_horizon : float
+        s, both runs have the same impact sequence up to this time.
+    agreed_impacts : int
+        The run's impacts before the horizon.
+    tolerance_sensitive : numpy.ndarray
+        (m,) bool, per impact of the run: at or after the horizon.
+    impacts : int
+        The run's impacts.
+    check_impacts : int
+        The check's impacts.
+    impacts_per_joint : dict of int to (int, int)
+        Per clearance joint: (run, check) impact counts.
+    t_end : float
+        s, the end of the run.
+    check_wall_s : float
+        s, the wall time the check took.
+    """
 
     rtol: float
     atol: float

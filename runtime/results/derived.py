@@ -80,7 +80,7 @@ def release_transient_end(result: SimulationResult) -> tuple[float, str] | None:
     if result.n_samples < 4:
         return None
     t0, span = float(result.t[0]), float(result.t[-1] - result.t[0])
-    ends = [first_burst(result.impacts.for_joint(j), span)[1] for j in result.clearance_joints]
+    ends = [first_burst(result.impacts.for_joint(j), t0)[1] for j in result.clearance_joints]
     ends = [e for e in ends if np.isfinite(e)]
     if ends:
         end = max(ends)

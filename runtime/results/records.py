@@ -48,7 +48,45 @@ class Impacts:
     integrator's dense output), never read off the output samples. ``time``, ``joint``,
     ``speed`` and ``eccentricity`` describe the onset; the rest (see :data:`PHASE_FIELDS`)
     describe the phase. Runs with a fixed-step method fill only the onset columns (the rest
-    NaN); see docs/reference/results-file.md.
+    NaN); see docs/reference/results-file.md. Each attribute is an array with one entry per
+    phase (m of them).
+
+    Attributes
+    ----------
+    time : numpy.ndarray
+        (m,) s, onset of contact, located by event detection.
+    joint : numpy.ndarray
+        (m,) int, the 1-based joint number.
+    speed : numpy.ndarray
+        (m,) m/s, normal approach speed d(delta)/dt at onset (before flooring).
+    eccentricity : numpy.ndarray
+        (m, 2) m, journal centre minus bearing centre at onset.
+    onset_angle : numpy.ndarray
+        rad, position of the onset on the bearing, atan2(ey, ex).
+    peak_force : numpy.ndarray
+        N, largest normal force of the phase (located on the dense output).
+    peak_force_time : numpy.ndarray
+        s, when it occurs.
+    max_penetration : numpy.ndarray
+        m, largest penetration of the phase (d(delta)/dt = 0, located).
+    max_penetration_time : numpy.ndarray
+        s, when it occurs.
+    separation_time : numpy.ndarray
+        s, end of the phase (located); NaN while still in contact at the end.
+    exit_speed : numpy.ndarray
+        m/s, separation speed -d(delta)/dt at separation; NaN without separation.
+    duration : numpy.ndarray
+        s, ``separation_time - time``, or the run's end minus ``time`` without separation.
+    restitution : numpy.ndarray
+        Effective restitution ``exit_speed / speed``; NaN without separation.
+    impulse : numpy.ndarray
+        N s, integral of the normal force over the phase.
+    damping_energy : numpy.ndarray
+        J, energy taken out by the hysteresis damping during the phase.
+    friction_energy : numpy.ndarray
+        J, energy taken out by friction during the phase.
+    separated : numpy.ndarray
+        bool, True: the phase ended in separation; False: still in continuous contact.
     """
 
     time: np.ndarray  # (m,) s, onset of contact located by event detection
@@ -114,7 +152,97 @@ def eccentricity_columns(coordinate_names: Sequence[str], clearance_joints: Sequ
 
 @dataclass(frozen=True)
 class SimulationResult:
-    """A simulated trajectory and everything derived from it (SI units throughout)."""
+    """A simulated trajectory and everything derived from it (SI units throughout).
+
+    N is the number of output samples, n the number of coordinates, nc the number of
+    clearance joints. ``result.sol`` is the dense output (the state at any time in the run);
+    ``result.to_xarray()`` and ``result.impacts.to_pandas()`` give the ecosystem's shapes
+    (the ``[xarray]`` extra).
+
+    Attributes
+    ----------
+    scene_name : str
+        The scene's name.
+    integrator : str
+        The integrator that ran: ``"bdf"``, ``"cvodes"``, ``"idas"``, ``"radau"`` or ``"rk4"``.
+    t : numpy.ndarray
+        (N,) s, the output times.
+    coordinate_names : list of str
+        The coordinates' names, e.g. ``["q2", "q3", "ex2", "ey2", "ex3", "ey3"]``.
+    q : numpy.ndarray
+        (N, n) the coordinates: rad for angles, m for eccentricities.
+    u : numpy.ndarray
+        (N, n) their time derivatives.
+    udot : numpy.ndarray
+        (N, n) their accelerations (from the model at each output sample).
+    tau : numpy.ndarray
+        (N, ntau) N m, the drive torque of each driven joint.
+    torque_joints : list of int
+        The 1-based joints the columns of ``tau`` belong to.
+    tip_position : numpy.ndarray
+        (N, 2) m, the end effector (tip of the last link, where the payload sits).
+    tip_velocity : numpy.ndarray
+        (N, 2) m/s.
+    tip_acceleration : numpy.ndarray
+        (N, 2) m/s^2.
+    clearance_joints : list of int
+        The 1-based clearance joints, in the order of the per-joint columns below.
+    radial_clearance : numpy.ndarray
+        (nc,) m, bearing minus journal radius of each clearance joint.
+    eccentricity : numpy.ndarray
+        (N, nc, 2) m, journal centre minus bearing centre.
+    penetration : numpy.ndarray
+        (N, nc) m, ``|e| - c`` (negative: no contact).
+    penetration_rate : numpy.ndarray
+        (N, nc) m/s.
+    normal_force : numpy.ndarray
+        (N, nc) N, >= 0.
+    friction_force : numpy.ndarray
+        (N, nc) N, on the journal along the tangent.
+    contact_force : numpy.ndarray
+        (N, nc, 2) N, the total contact force on the journal, x and y.
+    sliding_speed : numpy.ndarray
+        (N, nc) m/s.
+    impacts : Impacts
+        One row per contact phase, every time and peak located.
+    energy : dict of str to numpy.ndarray
+        (N,) J each: ``kinetic``, ``gravity``, ``contact`` (elastic), ``total`` (their sum),
+        ``drive_work`` (work of the drive torques since t0), ``dissipated`` (by contact damping
+        and friction since t0) and ``balance`` = total - total[0] - drive_work + dissipated,
+        zero for an exact solution.
+    parameter_names : list of str
+        The names of the parameter vector's slots.
+    parameters : numpy.ndarray
+        The parameter vector the run used.
+    stats : dict
+        The solver's statistics: steps, right-hand side and Jacobian evaluations, events,
+        impacts, wall time.
+    metadata : dict
+        The scene's text, the versions, the model's hash.
+    ideal : SimulationResult or None
+        The same scene with ideal joints (``compare_ideal=True``).
+    wear : WearProfile or None
+        Archard wear of the clearance joints, when compiled in.
+    accuracy : Accuracy or None
+        The run checked at 10x tighter tolerances (``verify=True``).
+    sensitivities : Sensitivities or None
+        Derivatives of the outputs with respect to named parameters
+        (``simulate(..., sensitivities=[...])``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import jointplay
+    >>> result = jointplay.simulate(jointplay.default_scene().with_run(t_end=0.02))
+    >>> result.n_samples, result.q.shape, result.tip_position.shape
+    (21, (21, 6), (21, 2))
+    >>> result.clearance_joints, result.normal_force.shape
+    ([2, 3], (21, 2))
+    >>> bool(np.max(np.abs(result.energy["balance"])) < 1e-3)  # J: the balance closes
+    True
+    >>> result.sol(0.0105).shape  # the state between two samples, from the dense output
+    (12,)
+    """
 
     scene_name: str
     integrator: str  # "cvodes", "idas", "rk4" or "radau"

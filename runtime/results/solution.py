@@ -31,7 +31,40 @@ _END_SLACK = 1e-12
 
 
 class DenseSolution:
-    """The state of a run as a function of time: ``sol(t)`` -> (n,) or (n, m)."""
+    """The state of a run as a function of time: ``sol(t)`` -> (n,) or (n, m).
+
+    ``result.sol`` of a :class:`SimulationResult`; like SciPy's ``OdeSolution``, it takes a
+    time or a 1-D array of times inside the run.
+
+    Parameters
+    ----------
+    t_min : float
+        The start of the run, s.
+    t_max : float
+        Its end, s.
+    n_state : int
+        The length of the state.
+    evaluate : callable
+        Sorted unique times inside the run -> (m, n_state) states.
+    method : str
+        Where the states come from: the integrator's dense output (its name) or ``"hermite"``
+        (cubic Hermite between samples).
+    accuracy : str
+        What that source's accuracy is, in words.
+
+    Attributes
+    ----------
+    t_min : float
+        The start of the run, s.
+    t_max : float
+        Its end, s.
+    n_state : int
+        The length of the state.
+    method : str
+        The source of the states.
+    accuracy : str
+        Its accuracy, in words.
+    """
 
     def __init__(self, t_min: float, t_max: float, n_state: int,
                  evaluate: Callable[[np.ndarray], np.ndarray], *, method: str,

@@ -149,13 +149,37 @@ _CHECKED_LIBVER = ("v110", "v110")
 
 
 def read(path: str | Path) -> SimulationResult:
-    """The :class:`SimulationResult` stored in a results file by ``jointplay simulate --out``
-    (or :func:`write_hdf5`): equal, field by field, to the one that was written.
+    """Read a results file: the :class:`SimulationResult` that ``jointplay simulate --out`` (or
+    :func:`write_hdf5`) stored, equal, field by field, to the one that was written.
 
-    Every check of :func:`read_checked` is made first; a file that fails one is refused with
-    a :class:`~jointplay.common.errors.DescriptionError` naming the file and the part at
-    fault. Files of the earlier layouts (``format_version`` 1 and 2, without checksums) are
-    read as well.
+    Every check of :func:`read_checked` is made first. Files of the earlier layouts
+    (``format_version`` 1 and 2, without checksums) are read as well.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The results file (.h5, netCDF-4).
+
+    Returns
+    -------
+    SimulationResult
+        The result, with its ideal counterpart when the run had one.
+
+    Raises
+    ------
+    DescriptionError
+        Naming the file and the part at fault, for a file that fails a check (not a results
+        file, truncated, a checksum that does not match).
+
+    Examples
+    --------
+    >>> import jointplay
+    >>> from jointplay.results.write import write_hdf5
+    >>> result = jointplay.simulate(jointplay.default_scene().with_run(t_end=0.01))
+    >>> write_hdf5(result, "run.h5")
+    >>> again = jointplay.read("run.h5")
+    >>> again.scene_name, again.t.shape, bool((again.q == result.q).all())
+    ('paper_4dof', (11,), True)
     """
     return read_checked(path)[0]
 

@@ -50,7 +50,19 @@ STEEL_NU = 0.3
 
 @dataclass(frozen=True)
 class Link:
-    """One rigid link. Lengths in m, mass in kg, inertia in kg m^2 about the centre of mass."""
+    """One rigid link.
+
+    Attributes
+    ----------
+    length : float
+        Distance between its proximal and distal joints, m.
+    mass : float
+        kg.
+    inertia : float
+        Moment of inertia about the centre of mass, normal to the plane, kg m^2.
+    com : float
+        Distance of the centre of mass from the proximal joint, along the link, m.
+    """
 
     length: float
     mass: float
@@ -62,13 +74,35 @@ class Link:
 class Joint:
     """Joint i joins link i-1 (or the ground for i = 1) to link i.
 
-    kind:
-      ``ideal``            revolute, no play: one angle coordinate.
-      ``clearance``        revolute with play: one angle plus the eccentricity (ex, ey).
-      ``locked``           no relative rotation (held at ``angle``), no coordinate.
-      ``locked_clearance`` no relative rotation, but the journal floats in the bearing: (ex, ey).
-    For clearance kinds the journal (on link i) of radius ``journal_radius`` sits in the bearing
-    (on link i-1) of radius ``bearing_radius``; E (Pa) and nu are each part's elastic constants.
+    For the clearance kinds the journal (on link i) of radius ``journal_radius`` sits in the
+    bearing (on link i-1) of radius ``bearing_radius``; their difference is the radial
+    clearance.
+
+    Attributes
+    ----------
+    kind : {"ideal", "clearance", "locked", "locked_clearance"}
+        ``ideal``: revolute, no play (one angle coordinate); ``clearance``: revolute with play
+        (one angle plus the eccentricity (ex, ey)); ``locked``: no relative rotation (held at
+        ``angle``), no coordinate; ``locked_clearance``: no relative rotation, but the journal
+        floats in the bearing (ex, ey).
+    angle : float
+        The locked relative angle, rad; used by the locked kinds only.
+    bearing_radius : float
+        m.
+    journal_radius : float
+        m, less than ``bearing_radius``.
+    bearing_E : float
+        The bearing's Young's modulus, Pa.
+    bearing_nu : float
+        The bearing's Poisson's ratio.
+    journal_E : float
+        The journal's Young's modulus, Pa.
+    journal_nu : float
+        The journal's Poisson's ratio.
+    length : float or None
+        Axial length of the journal and bearing, m: needed only by the laws and effects that act
+        along it (a cylindrical contact law, lubrication, wear), so None is valid until one is
+        compiled.
     """
 
     kind: JointKind = "ideal"
@@ -94,6 +128,16 @@ class Joint:
 
 @dataclass(frozen=True)
 class Gravity:
+    """Gravity in the plane of motion.
+
+    Attributes
+    ----------
+    enabled : bool
+        Whether the model has gravity (structure: compiled in or out).
+    vector : tuple of float
+        The acceleration of gravity (x, y), m/s^2.
+    """
+
     enabled: bool = True
     vector: tuple[float, float] = (0.0, -9.81)  # m/s^2, in the plane of motion
 
@@ -102,9 +146,20 @@ class Gravity:
 class Contact:
     """Continuous dissipative contact at clearance joints: F_n = F_e(d) (1 + x(ce) d'/d'-).
 
-    ``law`` chooses the damping factor x(ce); ``stiffness`` the elastic force F_e(d): Hertz's
-    K d^n (``exponent`` n), or a conformal-cylinder law that needs each clearance joint's
-    ``length``.
+    Attributes
+    ----------
+    law : {"lankarani-nikravesh", "hunt-crossley", "gonthier", "flores"}
+        The damping factor x(ce).
+    stiffness : str
+        The elastic force F_e(d): ``"hertz"`` (K d^n), or a conformal-cylinder law
+        (``"johnson"``, ``"liu"``, ``"pereira"``) that needs each clearance joint's ``length``.
+    exponent : float
+        Hertz's exponent n.
+    restitution : float
+        The coefficient of restitution ce, 0 to 1.
+    impact_speed_floor : float
+        Floor of the captured impact speed d'-, m/s: grazing contact would otherwise give a
+        damping coefficient x K / d'- that grows without bound.
     """
 
     law: ContactLaw = "lankarani-nikravesh"
@@ -120,7 +175,18 @@ class Contact:
 class Friction:
     """Modified Coulomb friction (Ambrosio): F_t = -mu c_d(|v_t|) F_n v_t/|v_t|.
 
-    c_d = 0 below v0 (>= 0; v0 = 0 ramps from zero speed), 1 above v1 (> v0).
+    Attributes
+    ----------
+    law : {"coulomb", "none"}
+        ``"none"`` compiles friction out.
+    ramp : str
+        The shape of c_d between ``v0`` and ``v1`` (``"linear"`` or a smooth ramp).
+    mu : float
+        The friction coefficient.
+    v0 : float
+        c_d = 0 below this sliding speed, m/s (>= 0; 0 ramps from zero speed).
+    v1 : float
+        c_d = 1 above this sliding speed, m/s (> v0).
     """
 
     law: FrictionLaw = "coulomb"
@@ -163,7 +229,50 @@ class Wear:
 
 @dataclass(frozen=True)
 class Robot:
-    """A planar serial robot with optional clearance joints, validated on construction."""
+    """A planar serial robot with optional clearance joints, validated on construction.
+
+    Its structure (:meth:`structure`: link count, joint kinds, which effects exist) is what
+    the compiled model depends on; every number is a run-time parameter (:meth:`parameters`).
+
+    Attributes
+    ----------
+    links : tuple of Link
+        The links, base first.
+    joints : tuple of Joint
+        One joint per link: joint i joins link i-1 (the ground for i = 1) to link i.
+    name : str
+        The robot's name (it names its model).
+    payload_mass : float
+        A point mass at the tip of the last link, kg.
+    gravity : Gravity
+        Gravity in the plane.
+    contact : Contact
+        The contact law of the clearance joints.
+    friction : Friction
+        Their friction.
+    drive : bool
+        Drive torques on the joints that move.
+    lubrication : Lubrication
+        A lubricant film in the clearance joints (none by default).
+    wear : Wear
+        Archard wear of the clearance joints (none by default).
+
+    Raises
+    ------
+    DescriptionError
+        On construction, naming the field and the fix.
+
+    Examples
+    --------
+    >>> import jointplay
+    >>> robot = jointplay.default_robot()
+    >>> robot.n_links, robot.moving_joints, robot.clearance_joints
+    (4, (2, 3), (2, 3))
+    >>> round(robot.joints[1].bearing_radius - robot.joints[1].journal_radius, 9)  # m: play
+    3e-05
+    >>> robot.structure().joints
+    ('locked', 'clearance', 'clearance', 'locked')
+    """
 
     links: tuple[Link, ...]
     joints: tuple[Joint, ...]
@@ -361,8 +470,27 @@ def resolve_aliases(robot: Robot, values: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def with_parameters(robot: Robot, values: Mapping[str, float]) -> Robot:
-    """A copy of ``robot`` with named parameters changed (structure unchanged); the
-    ``jointN.clearance`` aliases are accepted (:data:`CLEARANCE_ALIAS`)."""
+    """A copy of ``robot`` with named parameters changed (structure unchanged).
+
+    Parameters
+    ----------
+    robot : Robot
+        The robot.
+    values : mapping of str to float
+        New values by parameter name (``"link2.mass"``, ``"friction.mu"``; the names of
+        :meth:`Robot.parameters`); the ``jointN.clearance`` aliases are accepted (the radial
+        clearance, bearing radius held; :data:`CLEARANCE_ALIAS`).
+
+    Returns
+    -------
+    Robot
+        The changed, validated copy.
+
+    Raises
+    ------
+    DescriptionError
+        For an unknown name or a value out of range.
+    """
     derived = {f"joint{m.group(1)}.journal_radius": str(name) for name in values
                if (m := CLEARANCE_ALIAS.fullmatch(str(name)))}
     values = resolve_aliases(robot, values)
@@ -426,7 +554,31 @@ def _rebuilt(robot: Robot, links: list[dict[str, Any]], joints: list[dict[str, A
 
 
 def uniform_chain(n_links: int, kinds: Iterable[str] | None = None, **kwargs: Any) -> Robot:
-    """A chain of identical 0.3 m, 1 kg rods; handy for tests and benchmarks."""
+    """A chain of identical 0.3 m, 1 kg uniform rods; handy for tests and benchmarks.
+
+    Parameters
+    ----------
+    n_links : int
+        The number of links.
+    kinds : iterable of str, optional
+        The kind of each joint (see :class:`Joint`); default all ``"ideal"``.
+    **kwargs
+        Any other field of :class:`Robot` (``name``, ``payload_mass``, ``friction``, ...).
+
+    Returns
+    -------
+    Robot
+        The chain, named ``chainN`` unless ``name`` is given.
+
+    Examples
+    --------
+    >>> import jointplay
+    >>> robot = jointplay.uniform_chain(3, ["ideal", "clearance", "ideal"], payload_mass=0.5)
+    >>> robot.name, robot.moving_joints, robot.clearance_joints
+    ('chain3', (1, 2, 3), (2,))
+    >>> [p.name for p in robot.parameters()][:3]
+    ['link1.length', 'link1.mass', 'link1.inertia']
+    """
     kinds = list(kinds) if kinds is not None else ["ideal"] * n_links
     length = 0.3
     link = Link(length=length, mass=1.0, inertia=length**2 / 12, com=length / 2)

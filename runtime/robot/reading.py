@@ -64,7 +64,27 @@ def _numbers(table: Mapping[str, Any], where: str, problems: Problems) -> dict[s
 
 
 def robot_from_dict(data: Mapping[str, Any], source: str | None = None) -> Robot:
-    """Build a validated :class:`Robot` from a parsed TOML document."""
+    """Build a validated :class:`Robot` from a parsed robot document (a robot file's tables).
+
+    Parameters
+    ----------
+    data : mapping
+        The document: ``name``, ``[[links]]``, ``[[joints]]`` and the optional ``[payload]``,
+        ``[gravity]``, ``[contact]``, ``[friction]``, ``[drive]``, ``[lubrication]`` and
+        ``[wear]`` tables (see docs/reference/robot-file.md).
+    source : str, optional
+        Where the document came from, named in error messages.
+
+    Returns
+    -------
+    Robot
+        The robot.
+
+    Raises
+    ------
+    DescriptionError
+        Naming the field and the fix (several together as :class:`DescriptionErrors`).
+    """
     try:
         return _robot_from_dict(data)
     except DescriptionError as err:
@@ -202,7 +222,39 @@ def _option_tables(data: Mapping[str, Any], values: Problems
 
 
 def load_robot(path: str | Path) -> Robot:
-    """Read and validate a robot description TOML file (never executed: data only)."""
+    """Read and validate a robot description TOML file (never executed: data only).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The robot file.
+
+    Returns
+    -------
+    Robot
+        The robot.
+
+    Raises
+    ------
+    DescriptionError
+        When the file is missing, is not TOML, or a field is invalid: the message names the
+        file, the field and the fix.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> import jointplay
+    >>> robot = jointplay.uniform_chain(2, ["ideal", "clearance"], name="two_link")
+    >>> _ = Path("two_link.toml").write_text(jointplay.robot_to_toml(robot))
+    >>> jointplay.load_robot("two_link.toml") == robot
+    True
+    >>> _ = Path("typo.toml").write_text(Path("two_link.toml").read_text().replace(
+    ...     'kind = "clearance"', 'kind = "clearence"'))
+    >>> jointplay.load_robot("typo.toml")
+    Traceback (most recent call last):
+    ...
+    jointplay.common.errors.DescriptionError: typo.toml: joints[2].kind: ...
+    """
     data, _ = read_toml(path, "robot")
     return robot_from_dict(data, source=str(path))
 
@@ -233,8 +285,35 @@ def robot_from_flags(
 ) -> Robot:
     """The common case from command-line flags: k uniform links, chosen joint kinds.
 
-    Links are 0.3 m, 1 kg, uniform rods; clearance joints are 10 mm steel bearings with
-    0.03 mm radial clearance. Edit a TOML description for anything else.
+    Links are 0.3 m, 1 kg, uniform rods; clearance joints are 10 mm steel bearings with 0.03
+    mm radial clearance. Edit a TOML description for anything else.
+
+    Parameters
+    ----------
+    links : int
+        The number of links.
+    clearance : str, default ""
+        Joints with clearance, comma-separated (``"2,3"``).
+    locked : str, default ""
+        Locked joints.
+    locked_clearance : str, default ""
+        Locked joints whose journal floats in its bearing.
+    friction : {"coulomb", "none"}, default "coulomb"
+        The friction law of the clearance joints.
+    contact_law : str, default "lankarani-nikravesh"
+        The contact law's damping factor (see :class:`Contact`).
+    gravity : bool, default True
+        Gravity in the model.
+
+    Returns
+    -------
+    Robot
+        The robot, as ``jointplay build --links K --clearance ...`` makes it.
+
+    Raises
+    ------
+    DescriptionError
+        Naming the flag and the fix (a joint out of range, or given two kinds).
     """
     if isinstance(links, bool) or not isinstance(links, int):
         try:

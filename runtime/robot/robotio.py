@@ -20,6 +20,30 @@ def _value(v: Any) -> str:
 
 
 def robot_to_toml(robot: Robot, comment: str = "") -> str:
+    """A robot description file's text for ``robot``: what :func:`load_robot` reads back.
+
+    Parameters
+    ----------
+    robot : Robot
+        The robot to write out.
+    comment : str, default ""
+        Lines written first, each as a TOML comment.
+
+    Returns
+    -------
+    str
+        The TOML text, every table and field written out (defaults included), so that
+        ``load_robot`` of the file gives a robot equal to ``robot``.
+
+    Examples
+    --------
+    >>> import jointplay
+    >>> text = jointplay.robot_to_toml(jointplay.uniform_chain(2), comment="two rods")
+    >>> print(text.splitlines()[0])
+    # two rods
+    >>> text.count("[[links]]"), text.count("[[joints]]")
+    (2, 2)
+    """
     data = robot.to_dict()
     lines = [f"# {line}" for line in comment.splitlines()]
     lines.append(f"name = {_value(data.pop('name'))}")

@@ -30,8 +30,30 @@ CoordinateKind = Literal["angle", "ex", "ey"]
 class Structure:
     """What changes the generated code; numbers are absent.
 
-    ``contact_law`` is None when no joint has clearance; ``friction_ramp`` is None when
-    friction is off (``friction_law == "none"``), which it also is without clearance.
+    Two robots with equal structures share one compiled model (:meth:`Robot.structure`).
+
+    Attributes
+    ----------
+    links : int
+        The number of links.
+    joints : tuple of str
+        The kind of each joint.
+    gravity : bool
+        Gravity compiled in.
+    contact_law : str or None
+        The contact law's damping factor; None when no joint has clearance.
+    friction_law : str
+        ``"coulomb"`` or ``"none"`` (always ``"none"`` without clearance).
+    friction_ramp : str or None
+        The friction ramp; None when friction is off.
+    drive : bool
+        Drive torques on the moving joints.
+    contact_stiffness : str or None
+        ``"johnson"``, ``"liu"`` or ``"pereira"`` for a cylindrical law; None is Hertz's K d^n.
+    lubrication : str or None
+        ``"short-bearing"`` or ``"long-bearing"`` when a film is modelled.
+    wear : str or None
+        ``"archard"`` when wear is integrated during the run.
     """
 
     links: int
@@ -106,7 +128,21 @@ _OPTIONAL = ("contact_stiffness", "lubrication", "wear")
 
 @dataclass(frozen=True)
 class Coordinate:
-    """One generalised coordinate: the angle of a moving joint or an eccentricity component."""
+    """One generalised coordinate: the angle of a moving joint or an eccentricity component.
+
+    Attributes
+    ----------
+    name : str
+        ``"q2"``, ``"ex3"``, ...
+    unit : str
+        ``"rad"`` or ``"m"``.
+    doc : str
+        What it is, in words.
+    kind : {"angle", "ex", "ey"}
+        Which kind of coordinate.
+    joint : int
+        The 1-based joint it belongs to.
+    """
 
     name: str  # e.g. "q2", "ex3"
     unit: str
@@ -120,7 +156,27 @@ class Coordinate:
 
 @dataclass(frozen=True)
 class Parameter:
-    """One slot of the run-time parameter vector, and the description field it comes from."""
+    """One slot of the run-time parameter vector, and the description field it comes from.
+
+    Attributes
+    ----------
+    name : str
+        The dotted name ``simulate(parameters=...)`` takes: ``"link2.mass"``,
+        ``"joint3.bearing_radius"``, ``"friction.mu"``, ...
+    symbol : str
+        The symbol used in the derived equations (LaTeX-friendly).
+    unit : str
+        Its SI unit.
+    doc : str
+        What it is, in words.
+    owner : str
+        The part of the description it belongs to (``"link"``, ``"joint"``, ``"payload"``,
+        ``"gravity"``, ``"contact"``, ``"friction"``, ...).
+    index : int or None
+        The 1-based link or joint, for owners ``"link"`` and ``"joint"``.
+    attribute : str
+        The field of the owner (``"x"``/``"y"`` for gravity).
+    """
 
     name: str  # dotted name, e.g. "link2.mass", "joint3.bearing_radius", "friction.mu"
     symbol: str  # LaTeX-friendly symbol used in the derived equations

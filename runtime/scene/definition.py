@@ -71,17 +71,33 @@ _RUN_KEYS = ("t_end", "output_step", "integrator", "rtol", "atol", "step", "max_
 class RunSettings:
     """How a scene is integrated.
 
-    ``rtol``/``atol`` set the adaptive integrators' local error tolerances; ``atol`` is
-    absolute in scaled units (radians and rad/s for angles; fractions of the joint's radial
-    clearance for eccentricities, and of the clearance per millisecond for their rates), so
-    one number serves both. The defaults are the cheapest setting measured to meet the
-    project's working accuracy on the default scene (tip error <= 1e-5 m, energy balance
-    residual <= 0.1 % of the dissipated energy; see docs/results/accuracy.md).
-    ``step`` is the fixed step of ``rk4`` and ``radau`` (it must
-    divide ``output_step``). ``max_steps`` bounds the work between two outputs.
-    ``plausibility`` is what a run that leaves the physical domain does: ``"stop"`` (raise
-    :class:`~jointplay.SimulationError`), ``"warn"`` (one warning; the result is returned,
-    marked in ``result.implausible``) or ``"off"`` (see :data:`PLAUSIBILITY`).
+    The defaults are the cheapest setting measured to meet the project's working accuracy on
+    the default scene (tip error <= 1e-5 m, energy balance residual <= 0.1 % of the dissipated
+    energy; see docs/results/accuracy.md). Validated on construction.
+
+    Attributes
+    ----------
+    t_end : float
+        Duration of the run, s.
+    output_step : float
+        Time between output samples, s.
+    integrator : str
+        ``bdf`` (the compiled BDF, the default), ``cvodes``, ``idas`` (CasADi's SUNDIALS),
+        ``radau`` or ``rk4`` (fixed step).
+    rtol : float
+        The adaptive integrators' relative local error tolerance.
+    atol : float
+        Their absolute tolerance, in scaled units (radians and rad/s for angles; fractions of
+        the joint's radial clearance for eccentricities, and of the clearance per millisecond
+        for their rates), so one number serves both.
+    step : float
+        The fixed step of ``rk4`` and ``radau``, s; it must divide ``output_step``.
+    max_steps : int
+        Bound on the work between two outputs.
+    plausibility : {"stop", "warn", "off"}
+        What a run that leaves the physical domain does: ``"stop"`` (raise
+        :class:`~jointplay.SimulationError`), ``"warn"`` (one warning; the result is returned,
+        marked in ``result.implausible``) or ``"off"`` (see :data:`PLAUSIBILITY`).
     """
 
     t_end: float = 2.0
@@ -108,7 +124,47 @@ class RunSettings:
 
 @dataclass(frozen=True)
 class Scene:
-    """A validated scene. ``torques`` has one time function per driven joint, in order."""
+    """A validated scene: a robot, its drive torques, its initial state and how to integrate it.
+
+    Validated on construction (every problem reported together); change one with
+    :meth:`with_run`, :meth:`with_robot`, :meth:`with_initial`, :meth:`with_torques` or
+    :meth:`with_journals`, each of which returns a new, validated scene.
+
+    Attributes
+    ----------
+    name : str
+        The scene's name (it names output files).
+    robot : Robot
+        The robot.
+    torques : tuple of callables
+        One time function per driven joint, in order: ``torque(t)`` in N m.
+    torque_text : dict of str to str
+        The torque expressions as written, by joint (``{"joint2": "A*sin(2*pi*t)"}``).
+    initial : dict of str to float
+        Initial coordinates and rates by name; the rest start at 0.
+    run : RunSettings
+        How the scene is integrated.
+    constants : dict of str to float
+        The named constants the torque expressions use.
+    source : str or None
+        The file the scene was read from (None when built in Python).
+    text : str
+        The scene file as read, kept with the results.
+    journals : {"centred", "resting"}
+        ``"centred"``: the journals start at the eccentricities ``initial`` gives (default 0,
+        the bearing centres); ``"resting"``: at rest, each journal in static equilibrium in its
+        bearing under gravity (solved at run time: :mod:`jointplay.sim.equilibrium`).
+
+    Examples
+    --------
+    >>> import jointplay
+    >>> scene = jointplay.default_scene()
+    >>> scene.name, scene.robot.clearance_joints, scene.run.t_end
+    ('paper_4dof', (2, 3), 2.0)
+    >>> short = scene.with_run(t_end=0.1, output_step=5e-4)
+    >>> short.run.t_end, short.run.n_outputs, scene.run.t_end  # a new scene; the first unchanged
+    (0.1, 200, 2.0)
+    """
 
     name: str
     robot: Robot
@@ -271,7 +327,18 @@ def check_resting_depth(robot: Robot) -> None:
 
 
 def ideal_counterpart(robot: Robot) -> Robot:
-    """The same robot with every clearance joint made ideal (and locked play made locked)."""
+    """The same robot with every clearance joint made ideal (and locked play made locked).
+
+    Parameters
+    ----------
+    robot : Robot
+        The robot with clearance joints.
+
+    Returns
+    -------
+    Robot
+        The robot with ideal joints, named ``NAME_ideal``: what ``compare_ideal`` simulates.
+    """
     kinds: dict[JointKind, JointKind] = {"clearance": "ideal", "locked_clearance": "locked"}
     joints = tuple(replace(j, kind=kinds.get(j.kind, j.kind)) for j in robot.joints)
     return replace(robot, joints=joints, name=f"{robot.name}_ideal")
@@ -398,7 +465,31 @@ def check_scene_name(name: Any) -> None:
 
 def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
                     base: Path | None = None, text: str = "") -> Scene:
-    """Validate a parsed scene document; relative paths resolve against ``base``."""
+    """Build a validated :class:`Scene` from a parsed scene document (a scene file's tables).
+
+    Parameters
+    ----------
+    data : mapping
+        The document: ``name``, ``robot`` (a file name or a robot table), and the optional
+        ``[constants]``, ``[torques]``, ``[initial]`` and ``[run]`` tables.
+    source : str, optional
+        Where the document came from, named in error messages.
+    base : pathlib.Path, optional
+        The folder that a relative robot file name resolves against.
+    text : str, default ""
+        The document as written, kept with the results.
+
+    Returns
+    -------
+    Scene
+        The scene.
+
+    Raises
+    ------
+    DescriptionError
+        Naming the field and the fix; several problems come together as
+        :class:`DescriptionErrors`.
+    """
     problems = Problems()
     with problems.check():
         if not isinstance(data, Mapping):
@@ -480,7 +571,44 @@ def check_torques_finite(scene: Scene) -> None:
 
 
 def load_scene(path: str | Path) -> Scene:
-    """Read and validate a scene file."""
+    r"""Read and validate a scene file (TOML; data only, never executed).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The scene file; a relative robot file name in it resolves against its folder.
+
+    Returns
+    -------
+    Scene
+        The scene.
+
+    Raises
+    ------
+    DescriptionError
+        When the file is missing, is not TOML, or a field is invalid: the message names the
+        file, the field and the fix.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> import jointplay
+    >>> robot = jointplay.uniform_chain(2, ["ideal", "clearance"], name="two_link")
+    >>> _ = Path("two_link.toml").write_text(jointplay.robot_to_toml(robot))
+    >>> _ = Path("swing.toml").write_text('''
+    ... name = "swing"
+    ... robot = "two_link.toml"
+    ... [torques]
+    ... joint1 = "2.0*sin(2*pi*t)"
+    ... [run]
+    ... t_end = 0.5
+    ... ''')
+    >>> scene = jointplay.load_scene("swing.toml")
+    >>> scene.name, scene.robot.clearance_joints, scene.run.t_end
+    ('swing', (2,), 0.5)
+    >>> scene.torque_text  # joint 2 has no torque given: zero
+    {'joint1': '2.0*sin(2*pi*t)', 'joint2': '0'}
+    """
     path = Path(path)
     data, text = read_toml(path, "scene")
     source = str(path)
@@ -488,7 +616,25 @@ def load_scene(path: str | Path) -> Scene:
 
 
 def default_scene() -> Scene:
-    """The built-in default: the paper's example (``scenes/paper_4dof.toml``)."""
+    """The built-in default: the paper's example (``scenes/paper_4dof.toml``).
+
+    The paper's 4-link arm (joints 1 and 4 locked, clearance at joints 2 and 3, a 2 kg
+    payload) driven by sinusoidal torques at joints 2 and 3 for 2 s from the bearing centres.
+
+    Returns
+    -------
+    Scene
+        The scene, as :func:`load_scene` reads it.
+
+    Examples
+    --------
+    >>> import jointplay
+    >>> scene = jointplay.default_scene()
+    >>> scene.name, scene.robot.n_links, scene.robot.clearance_joints
+    ('paper_4dof', 4, (2, 3))
+    >>> sorted(scene.torque_text)
+    ['joint2', 'joint3']
+    """
     from importlib.resources import files
 
     return load_scene(str(files("jointplay.scenes") / "paper_4dof.toml"))

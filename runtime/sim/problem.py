@@ -283,6 +283,18 @@ def load_scene_model(scene: Scene, *, ideal: bool = False) -> Model:
 
     A model already generated (checked in, or in the cache) is loaded without sympy; a new
     structure is derived once.
+
+    Parameters
+    ----------
+    scene : Scene
+        The scene.
+    ideal : bool, default False
+        The model of :func:`ideal_counterpart` of the scene's robot instead.
+
+    Returns
+    -------
+    Model
+        The loaded model, its default parameters the robot's numbers.
     """
     from jointplay.store.lookup import model_for
 

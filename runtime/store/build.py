@@ -62,7 +62,13 @@ ESTIMATE_SAMPLES = 20
 
 
 def cache_root() -> Path:
-    """``$JOINTPLAY_CACHE``, else ``$XDG_CACHE_HOME/jointplay``, else ``~/.cache/jointplay``."""
+    """The per-user build cache's folder.
+
+    Returns
+    -------
+    pathlib.Path
+        ``$JOINTPLAY_CACHE``, else ``$XDG_CACHE_HOME/jointplay``, else ``~/.cache/jointplay``.
+    """
     env = os.environ.get("JOINTPLAY_CACHE")
     if env:
         return Path(env)
@@ -192,11 +198,38 @@ def compile_source(
     announce: Callable[[], None] | None = None,
     what: str | None = None,
 ) -> tuple[Path, float]:
-    """Return the path of the compiled library for ``source`` and the seconds spent compiling
-    (0.0 when the cache already held a complete build). ``libraries`` (paths of shared
-    libraries) are linked in; ``announce`` is called just before the compiler starts. With
-    ``what`` (e.g. "model 'paper_4dof'"), a compile is first announced on stderr with its
-    estimated duration (:func:`compile_estimate`)."""
+    """Compile C source into a shared library in the hash-keyed cache, or reuse the build there.
+
+    Parameters
+    ----------
+    source : str
+        The C source text.
+    cflags : tuple of str, optional
+        Compiler flags.
+    cc : str, default "gcc"
+        The compiler.
+    cache : pathlib.Path, optional
+        The cache folder (default: :func:`cache_root`).
+    libraries : tuple of str, optional
+        Paths of shared libraries linked in.
+    announce : callable, optional
+        Called just before the compiler starts.
+    what : str, optional
+        What is compiled (e.g. ``"model 'paper_4dof'"``): a compile is then first announced on
+        stderr with its estimated duration (:func:`compile_estimate`).
+
+    Returns
+    -------
+    pathlib.Path
+        The compiled library.
+    float
+        Seconds spent compiling (0.0 when the cache already held a complete build).
+
+    Raises
+    ------
+    BuildError
+        When the compiler fails (its message included).
+    """
     key = build_key(source, cflags, cc, libraries)
     root = cache or cache_root()
     entry = root / "build" / key

@@ -34,8 +34,18 @@ def generated_folder(robot: Robot) -> Path:
 
     Checked-in models are used when their input hash matches; otherwise the model is derived
     once into the per-user cache, keyed by that hash. A cached folder that does not load (a
-    damaged file, a half-written one) is generated again, with a one-line note, under a lock
-    so that concurrent runs repair it once.
+    damaged file, a half-written one) is generated again, with a one-line note, under a lock so
+    that concurrent runs repair it once.
+
+    Parameters
+    ----------
+    robot : Robot
+        The robot; only its structure matters.
+
+    Returns
+    -------
+    pathlib.Path
+        The generated folder.
     """
     structure = robot.structure()
     prov = provenance(structure.as_dict(), formulation_for(structure))
@@ -54,7 +64,15 @@ def generated_folder(robot: Robot) -> Path:
 def model_for(robot: Robot) -> Model:
     """Find (or derive), compile (or reuse) and load the model of ``robot``.
 
-    The returned model's default parameter vector is ``robot``'s numbers.
+    Parameters
+    ----------
+    robot : Robot
+        The robot.
+
+    Returns
+    -------
+    Model
+        The loaded model; its default parameter vector is ``robot``'s numbers.
     """
     model = load_model(generated_folder(robot))
     model.default_parameters = np.asarray(robot.parameter_values())

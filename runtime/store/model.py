@@ -39,6 +39,24 @@ class FastFunction:
     place and call :meth:`trigger` for the lowest overhead, or call the object with arrays.
     Outputs are returned as dense arrays (column-major data reshaped to their shape); column
     vectors come back 1-D unless named in ``matrices``.
+
+    Parameters
+    ----------
+    function : casadi.Function
+        The function, loaded from the model's compiled library.
+    matrices : frozenset of str, optional
+        Outputs that are column vectors but come back 2-D.
+
+    Attributes
+    ----------
+    function : casadi.Function
+        The function.
+    name : str
+        Its name.
+    inputs : list of numpy.ndarray
+        The input buffers, one per input (its nonzeros, column-major).
+    outputs : list of numpy.ndarray
+        The output buffers.
     """
 
     def __init__(self, function: ca.Function, matrices: frozenset[str] = frozenset()) -> None:
@@ -99,7 +117,46 @@ class FastFunction:
 
 
 class Model:
-    """A loaded, compiled robot model. Create it with :func:`load_model`."""
+    """A loaded, compiled robot model. Create it with :func:`load_model` (or :func:`model_for`).
+
+    Parameters
+    ----------
+    folder : pathlib.Path
+        The generated folder it was compiled from.
+    library : pathlib.Path
+        The compiled shared library.
+    layout : Layout
+        The generated folder's layout (coordinates, parameters, functions).
+    compile_seconds : float
+        s spent compiling (0 when the cache held it).
+    default_parameters : numpy.ndarray or None
+        The parameter vector used when a run gives none.
+    cflags : tuple of str, optional
+        The compiler flags it was built with.
+
+    Attributes
+    ----------
+    name : str
+        The model's name.
+    structure : Structure
+        What it was generated for.
+    coordinates : list of str
+        The generalised coordinates' names, in state order.
+    parameters : list of str
+        The parameter vector's slot names (what ``simulate(parameters=...)`` takes).
+    torque_joints : list of int
+        The 1-based driven joints.
+    clearance_joints : list of int
+        The 1-based clearance joints.
+    n_coordinates : int
+        The number of coordinates.
+    n_state : int
+        Twice that: the coordinates and their rates.
+    default_parameters : numpy.ndarray or None
+        As given.
+    compile_seconds : float
+        As given.
+    """
 
     def __init__(self, folder: Path, library: Path, layout: Layout, compile_seconds: float,
                  default_parameters: np.ndarray | None,
@@ -365,7 +422,27 @@ def check_generated(folder: str | Path) -> None:
 
 
 def load_model(folder: str | Path, cflags: tuple[str, ...] = DEFAULT_CFLAGS) -> Model:
-    """Compile (or reuse from the cache) and load the generated model in ``folder``."""
+    """Compile (or reuse from the cache) and load the generated model in ``folder``.
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        A generated folder (``generated/NAME`` or one that ``jointplay derive --out`` wrote).
+    cflags : tuple of str, optional
+        The compiler flags; a different set is a different cached build.
+
+    Returns
+    -------
+    Model
+        The loaded model.
+
+    Raises
+    ------
+    GeneratedCodeError
+        When the folder's files are missing, edited by hand, or stamped by other tool versions.
+    BuildError
+        When compiling or loading fails.
+    """
     folder = Path(folder)
     source, layout = read_generated(folder)
     defaults = read_defaults(folder, layout)

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from jointplay.neural.identify.config import IdentifyConfig
+from jointplay.neural.identify.recommendation import DIVERGED_NRMSE, choice_lines
 from jointplay.neural.identify.trajectories import Trajectory
 from jointplay.neural.model.inner_loop import contact_joints
 from jointplay.neural.model.narx import Narx, fit_percent, nrmse
@@ -53,7 +54,7 @@ def evaluate(models: dict[str, Narx | None], trajectories: Sequence[Trajectory],
 
 
 def _fmt(value: float, kind: str = "nrmse") -> str:
-    if not math.isfinite(value) or abs(value) >= 1e3:
+    if not math.isfinite(value) or abs(value) >= DIVERGED_NRMSE:
         return "diverges"
     if kind == "fit":
         return f"{value:.1f}"
@@ -84,16 +85,14 @@ def metrics_table(metrics: dict[str, Any], outputs: Sequence[str], kind: str = "
 
 def identify_report(scene: Any, model: Narx, metrics: dict[str, Any],
                     config: IdentifyConfig) -> str:
-    from jointplay.neural.identify.recommendation import recommend_from_identification
-
     inner = model.context["plant"]["inner_loop"]
     contact = list(contact_joints(model.output_names))
-    residual = metrics.get("residual")
     lines = [
         f"# Identification of {scene.name}",
         "",
-        *([f"**{recommend_from_identification(residual, config.lpv_base)}**", ""]
-          if residual else []),
+        *choice_lines(metrics, config.lpv_base),
+        "## The model and its errors",
+        "",
         f"NARX: {model.n_regressor} regressors ({model.output_lags} output lags, "
         f"{model.input_lags} input lags) -> hidden {list(model.hidden)} (tanh)"
         f"{' + linear direct path' if model.linear is not None else ''}"
