@@ -7,8 +7,9 @@ independence of the reference simulator, and its agreement with ``jointplay simu
 2. The generator imports nothing of jointplay.
 3. The stored motion (made by the reference at the truth) agrees with ``jointplay simulate``
    at the truth, its tolerances tightened 1e4, over each case's whole record: tip within
-   1.5e-7 m and joint angles within 2e-6 rad. Measured: 3e-9 to 1.5e-8 m and 3e-10 to 7e-10
-   rad on the paper scene's and the slow excitation; 9.6e-8 m and 1.2e-6 rad on the fast one
+   1.5e-7 m and joint angles within 2e-6 rad. Measured: at most 1.5e-8 m and 3.1e-8 rad on
+   every case but the fast excitation's (benchmarks/calibration_cases/README.md), and 9.6e-8 m
+   and 1.2e-6 rad on that one
    (5 and 2.5 N m at 1.7 Hz), where jointplay itself moves by 1.6e-8 m and 1.9e-7 rad when
    its tolerances are tightened 10x further, so both integrators' errors are of that order
    there. The benchmark's noise is 1 µm and 5 µrad.
