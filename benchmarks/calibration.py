@@ -259,7 +259,8 @@ def run_cases(args: argparse.Namespace, out: Path) -> None:
     seeds = 5 if args.seeds is None else args.seeds
     command = ("python benchmarks/calibration.py --cases " + " ".join(args.cases)
                + f" --seeds {seeds}" + (f" --first-seed {args.first_seed}" if args.first_seed
-                                        else "") + f" --out {args.out}")
+                                        else "") + (" --resume" if args.resume else "")
+               + f" --out {args.out}")
     run(list(args.cases), seeds, args.first_seed, out, args.timeout, command.replace("  ", " "),
         resume=args.resume)
 
