@@ -573,32 +573,6 @@ def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
     assert result.to_dict()["grid"]["axes"] == ["joint2.clearance", "joint3.clearance"]
 
 
-def _slow_in_a_worker(parent: int, index: int) -> int:
-    """index squared, after a long sleep where it runs in a forked worker (a stalled pool)."""
-    import os
-    import time
-
-    if os.getpid() != parent and index >= 2:
-        time.sleep(30)
-    return index * index
-
-
-def test_stalled_workers_give_way_to_this_process(monkeypatch: pytest.MonkeyPatch,
-                                                  capsys: pytest.CaptureFixture[str]) -> None:
-    """A pool that sends nothing for STALL_S seconds is killed; the pieces not yet back run
-    here, in order, and the numbers are those of a run without workers."""
-    import os
-    from functools import partial
-
-    from jointplay.calibration import workers
-
-    monkeypatch.setattr(workers, "STALL_S", 1.0)
-    job = partial(_slow_in_a_worker, os.getpid())
-    assert workers.parallel_map(job, 5, 2) == [0, 1, 4, 9, 16]
-    err = capsys.readouterr().err
-    assert "sent nothing for 1 s" in err and "remaining pieces in this process" in err
-
-
 def _spread(values: np.ndarray, std: np.ndarray) -> Any:
     from jointplay.calibration.uncertainty import Z95, Uncertainty
 

@@ -36,6 +36,7 @@ from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
 from jointplay.calibration.result import CalibrationResult, Estimate
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
 from jointplay.calibration.valleys import ValleyCheck, follow_rivals, valley_check
+from jointplay.calibration.workers import on_cluster
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
 
@@ -103,7 +104,8 @@ class CalibrationOptions:
     followed to the whole record, a fit that ends lower replacing the best
     (:func:`valley_check`, :func:`follow_rivals`; 0: no check).
     ``workers``: processes for the grid's runs, the tracks' fits and the lines' runs (the
-    results do not depend on it)."""
+    results do not depend on it); ``scheduler``: the address of a Dask scheduler whose
+    cluster runs them instead."""
 
     tighten: float = 1000.0
     starts: int = 6
@@ -126,6 +128,7 @@ class CalibrationOptions:
     valley_check_points: int = 161
     basins: bool = True
     workers: int = 2
+    scheduler: str | None = None
 
     def __post_init__(self) -> None:
         checks = (("tighten", self.tighten >= 1, "must be >= 1"),
@@ -204,7 +207,13 @@ def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str]
 
 
 def run(problem: Problem) -> CalibrationResult:
-    """Fit a prepared problem, then state the estimates' uncertainty and the cost profiles."""
+    """Fit a prepared problem, then state the estimates' uncertainty and the cost profiles
+    (the pieces on the Dask cluster at ``options.scheduler``, if given)."""
+    with on_cluster(problem.options.scheduler):
+        return _run(problem)
+
+
+def _run(problem: Problem) -> CalibrationResult:
     from jointplay.calibration.profiles import cost_profiles
 
     wall0, cpu0 = timed()

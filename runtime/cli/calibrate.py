@@ -78,6 +78,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="the fit's runs use the scene's tolerances divided by this "
                         "(default 1000)")
     p.add_argument("--seed", type=int, default=0, help="seed of the further starts")
+    p.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run the calibration's parallel pieces on the Dask cluster whose "
+                        "scheduler is at ADDRESS (tcp://host:8786) instead of this machine's "
+                        "cores")
     p.add_argument("--quiet", action="store_true", help="print nothing but errors")
     p.set_defaults(func=cmd_calibrate)
     return p
@@ -136,7 +140,7 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
                             grid_window=args.grid_window, grid_points=args.grid_points,
                             grid_line_points=args.grid_line_points,
                             valley_check_points=args.valley_check_points,
-                            basins=args.basins)
+                            basins=args.basins, scheduler=args.scheduler)
     except DescriptionError as err:
         flag = "--" + err.field.removeprefix("options.").replace("_", "-")
         if flag not in flags:
