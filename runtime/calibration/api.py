@@ -17,7 +17,6 @@ from jointplay.calibration.continuation import TRACK_MARGIN, Stage, ValleyScan, 
 from jointplay.calibration.fit import (
     Optimum,
     Scan,
-    explaining_limit,
     least_squares_fit,
     residual_statistics,
     starts_around,
@@ -31,6 +30,7 @@ from jointplay.calibration.grid import (
     others_first,
 )
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
+from jointplay.calibration.noise import column_noise, residual_check
 from jointplay.calibration.parameters import FreeParameters, free_parameters
 from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
 from jointplay.calibration.result import CalibrationResult, Estimate
@@ -39,15 +39,6 @@ from jointplay.calibration.valleys import ValleyCheck, follow_rivals, valley_che
 from jointplay.calibration.workers import on_cluster
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
-
-CONSISTENT = 0.975
-"""With the noise stated, a fit in the basin of the true parameters has a chi² below
-``chi2.ppf(CONSISTENT, dof)`` in that share of noise draws. One above it explains the data
-(no further starts are tried below dof + CHI2_SIGMAS sqrt(2 dof)) but no parameter of it is
-reported as determined: on the paper scene a fit from 50 % away can end in a neighbouring
-basin of the rugged cost whose chi² lies 2-4 standard deviations above its expectation
-(benchmark draws 1 and 6: chi²/dof 1.05 and 1.08 on 3997 degrees of freedom, the friction
-15 and 6 of its standard deviations from the truth) and whose intervals miss the truth."""
 
 VALLEY_CHECK_REACH = 0.2
 """How far the valley check's line reaches either side of the best fit, in grid spacings
@@ -166,8 +157,11 @@ class Problem:
     model: Any
     measured: Measured
     free: FreeParameters
-    sigma: np.ndarray | None
+    sigma: np.ndarray
     options: CalibrationOptions
+    noise_spread: np.ndarray | None = None
+    """Where the noise was estimated: the relative variance of each column's estimated
+    variance (None: stated)."""
 
 
 def prepare(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
@@ -184,7 +178,11 @@ def prepare(scene: Scene, measured: str | Path | Measured, free: Sequence[str], 
     data = measured if isinstance(measured, Measured) else read_measured(measured, model)
     data = checked_for_scene(data, scene, parameters.size)
     sigma = noise_levels(noise, data)
-    return Problem(_fit_scene(scene, data, options), model, data, parameters, sigma, options)
+    spread = None
+    if sigma is None:
+        sigma, spread = column_noise(data)
+    return Problem(_fit_scene(scene, data, options), model, data, parameters, sigma, options,
+                   spread)
 
 
 def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
@@ -197,7 +195,8 @@ def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str]
     ``measured``: a CSV path (``time``, and any of ``tip_x``, ``tip_y``, ``q2``, ...), a
     results file (.h5) or a :class:`Measured`. ``free``: parameter names as ``--set`` takes
     them, plus ``jointN.clearance``. ``noise``: the sensors' standard deviations (one number,
-    or one per column); without it each column's noise is estimated from the residuals.
+    or one per column); without it each column's noise is estimated from the data's own
+    sample-to-sample scatter (:mod:`jointplay.calibration.noise`).
     ``start``: start values (default: the scene's). Bad input raises
     :class:`DescriptionError`; a run that stops at every start raises SimulationError.
     """
@@ -225,8 +224,7 @@ def _run(problem: Problem) -> CalibrationResult:
     stage_runs = 0
     grid = None
     valley = None
-    weights = problem.sigma if problem.sigma is not None else np.ones(
-        len(problem.measured.columns))
+    weights = problem.sigma
     if opts.horizon_first > 0:
         tracks, first = starts[:1], opts.horizon_first
         if opts.grid_window > 0:
@@ -248,7 +246,7 @@ def _run(problem: Problem) -> CalibrationResult:
                 opening = ValleyScan(grid.window_end, opts.grid_line_points, GRID_LINE_REACH,
                                      opts.valley_keep, scale)
         survivors, stages, runs = continuation(
-            predictor, weights, tracks, starts, problem.sigma is not None,
+            predictor, weights, tracks, starts, True,
             opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser,
             opts.workers, opening)
         stage_runs += runs
@@ -266,9 +264,7 @@ def _run(problem: Problem) -> CalibrationResult:
                             whole.evaluations, whole.evaluations, whole.message))
     free = problem.free
     rounds = ValleyRounds(optimum)
-    if opts.basins and valley is not None and opts.valley_check_points > 0 \
-            and problem.sigma is not None:
-        # with the noise stated (the threshold is in chi² of the stated noise)
+    if opts.basins and valley is not None and opts.valley_check_points > 0:
         rounds = _valley_rounds(predictor, weights, optimum, ValleyScan(
             opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1,
             valley.scale), opts)
@@ -279,10 +275,7 @@ def _run(problem: Problem) -> CalibrationResult:
         found = neighbouring_basins(predictor, optimum.sigma, optimum.values,
                                     float(np.sum(optimum.residuals**2)), spread.covariance,
                                     opts.max_evaluations, opts.workers,
-                                    # with the noise estimated, the earlier fits' chi² are
-                                    # in other units (weights of one)
-                                    others=optimum.starts if problem.sigma is not None
-                                    else ())
+                                    others=optimum.starts)
         line_runs = found.line_runs
         moved = not np.array_equal(found.best, optimum.values)
         optimum = _after_basins(predictor, optimum, found, moved)
@@ -300,24 +293,27 @@ def _run(problem: Problem) -> CalibrationResult:
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
     stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
-    explains = consistent = None
-    if problem.sigma is not None:
-        from scipy.stats import chi2
-
-        dof = max(stats["dof"], 1)
-        explains = bool(stats["chi2"] <= explaining_limit(dof))
-        consistent = bool(stats["chi2"] <= chi2.ppf(CONSISTENT, dof))
-        stats["chi2_upper_tail"] = float(chi2.sf(stats["chi2"], dof))
+    misfit = residual_check(fitted - problem.measured.values, optimum.sigma, stats["dof"],
+                            problem.noise_spread, problem.measured.columns)
     warnings = list(spread.warnings)
-    warnings += _fit_warnings(stats, explains, optimum.values, free)
-    if explains and not consistent:
-        warnings.append(_inconsistent_warning(stats))
+    if misfit is not None:
+        # nothing is determined: the intervals span the box the search covered
+        box = starts_around(free, 1, opts.spread, 0)[0]
+        width = np.where(box != 0, opts.spread * np.abs(box), opts.spread)
+        spread = dataclasses.replace(
+            spread, low95=np.minimum(spread.low95, np.maximum(box - width, free.lower)),
+            high95=np.maximum(spread.high95, np.minimum(box + width, free.upper)),
+            determined=np.zeros(free.size, dtype=bool))
+        warnings = [f"nothing is determined: {misfit}; each interval spans the box the "
+                    f"search covered (±{opts.spread:g} of the start). State the noise if "
+                    "you know it, or free what the model may lack"]
+    warnings += _bound_warnings(optimum.values, free)
     profiles, profile_runs = cost_profiles(predictor, optimum, spread, opts.profile_points,
                                            opts.workers)
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs, grid,
-                   line_runs, profile_runs, consistent, rounds.runs)
+                   wall1 - wall0, cpu1 - cpu0, misfit is None, tuple(stages), stage_runs, grid,
+                   line_runs, profile_runs, rounds.runs)
 
 
 FOLLOW_ROUNDS = 2
@@ -414,15 +410,12 @@ def _moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
             fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
             profiles: dict[str, dict[str, list[float]]], wall: float,
-            cpu: float, explains: bool | None, stages: tuple[Stage, ...] = (),
+            cpu: float, explains: bool, stages: tuple[Stage, ...] = (),
             stage_runs: int = 0, grid: GridResult | None = None,
             line_runs: int = 0, profile_runs: int = 0,
-            consistent: bool | None = None, check_runs: int = 0) -> CalibrationResult:
+            check_runs: int = 0) -> CalibrationResult:
     free = problem.free
-    # A fit that does not explain the data within the stated noise determines nothing: its
-    # optimum may be a local one, and its intervals are not valid; nor does one whose chi²
-    # a fit in the true basin would rarely reach (CONSISTENT).
-    determined = spread.determined & (explains is not False) & (consistent is not False)
+    determined = spread.determined & explains
     estimates = {
         name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
                        float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
@@ -436,7 +429,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
         covariance=spread.covariance, correlation=spread.correlation,
         condition_number=spread.condition_number, residuals=stats,
         noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
-        noise_stated=problem.sigma is not None, fitted=fitted, starts=optimum.starts,
+        noise_stated=problem.noise_spread is None, fitted=fitted, starts=optimum.starts,
         simulations=(predictor.counter.simulations + stage_runs + line_runs + profile_runs
                      + check_runs),
         simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs,
@@ -460,7 +453,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
                   "basins": problem.options.basins,
                   "workers": problem.options.workers,
                   "profile": "others fixed at their estimates"},
-        fit_explains_data=explains, fit_consistent=consistent, profiles=profiles,
+        fit_explains_data=explains, profiles=profiles,
         stages=stages, grid=grid)
 
 
@@ -475,26 +468,8 @@ def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) ->
     return scene.with_run(**changes)
 
 
-def _inconsistent_warning(stats: dict[str, Any]) -> str:
-    dof = max(stats["dof"], 1)
-    above = (stats["chi2"] - dof) / math.sqrt(2 * dof)
-    return (f"the fit's chi² lies {above:.2g} standard deviations above its degrees of freedom "
-            f"(chi²/dof = {stats['normalised_chi2']:.4g}; a fit in the basin of the true "
-            f"parameters reaches that in {100 * stats['chi2_upper_tail']:.2g} % of noise "
-            f"draws): it may sit in a neighbouring basin of the cost (impacts make it rugged), "
-            "where the intervals need not hold the truth, so no parameter is reported as "
-            "determined; more --starts, or a noise level you trust, may settle it")
-
-
-def _fit_warnings(stats: dict[str, Any], explains: bool | None, values: np.ndarray,
-                  free: FreeParameters) -> list[str]:
+def _bound_warnings(values: np.ndarray, free: FreeParameters) -> list[str]:
     out = []
-    if explains is False and stats["dof"] > 0:
-        out.append(f"the fit does not explain the data within the stated noise (chi²/dof = "
-                   f"{stats['normalised_chi2']:.3g}): a local minimum (impacts make the cost "
-                   "rugged; more --starts or --scan-points may find a better one), a model "
-                   "that lacks something the robot does, or noise larger than stated; the "
-                   "intervals hold only at the best fit and are not valid here")
     for k, name in enumerate(free.names):
         if values[k] <= free.lower[k] or values[k] >= free.upper[k]:
             out.append(f"{name} ended on its physical bound ({values[k]:.6g}): the optimum "

@@ -5,10 +5,10 @@
 with the Jacobian from the model's sensitivities. Impacts make the cost multimodal in the
 clearances (an impact that moves past a sample changes the residual abruptly), so the fit is
 restarted from a Latin hypercube of starts around the first one when the first optimum does
-not fit the data within the stated noise (chi² far above its degrees of freedom); without a
-stated noise every start is run and the best kept. A multi-start rather than a continuation
-in the contact stiffness: the stiffness is itself a parameter a user may free, and the
-restarts are independent runs that cost no more than the continuation's ladder of fits.
+not fit the data within the noise (chi² far above its degrees of freedom). A multi-start
+rather than a continuation in the contact stiffness: the stiffness is itself a parameter a
+user may free, and the restarts are independent runs that cost no more than the
+continuation's ladder of fits.
 """
 
 from __future__ import annotations
@@ -75,44 +75,36 @@ def starts_around(free: FreeParameters, count: int, spread: float, seed: int) ->
     return np.vstack([first, low + sample * (high - low)])
 
 
-def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np.ndarray,
+def least_squares_fit(predictor: Predictor, sigma: np.ndarray, starts: np.ndarray,
                       max_evaluations: int, scan: Scan | None = None,
                       leading: int = 1, workers: int = 1) -> Optimum:
     """The best optimum over ``starts`` (then along the scan of the weakest direction, when
-    asked and the fit does not yet explain the data); with ``sigma`` None each column's noise
-    is estimated from the residuals of the best fit and the fit polished with it. The first
+    asked and the fit does not yet explain the data), ``sigma`` the noise (stated or estimated
+    from the data's scatter). The first
     ``leading`` starts (where more than one: each fitted, on up to ``workers`` processes,
     the best kept) come first, the rest (a multi-start's) last."""
-    stated = sigma is not None
-    weights: np.ndarray = sigma if sigma is not None else np.ones(
-        len(predictor.measured.columns))
+    weights = sigma
     best, record = multi_start(predictor, weights, starts[:leading], max_evaluations,
-                               stop_early=stated and leading == 1, workers=workers,
+                               stop_early=leading == 1, workers=workers,
                                settle=True)
     exchanged = exchanged_clearances(predictor.free.names, best)
-    if len(exchanged) and not (stated and _explains(min(record, key=_chi2), predictor)):
+    if len(exchanged) and not _explains(min(record, key=_chi2), predictor):
         more_best, more = multi_start(predictor, weights, np.vstack([best, exchanged]),
-                                       max_evaluations, stop_early=stated, settle=True)
+                                       max_evaluations, stop_early=True, settle=True)
         record += more[1:]
         best = more_best
-    if scan is not None and scan.points > 0 and not (stated and _explains(
-            min(record, key=_chi2), predictor)):
+    if scan is not None and scan.points > 0 and not _explains(min(record, key=_chi2),
+                                                              predictor):
         seeds = scan_weakest_direction(predictor, weights, best, starts[0], scan)
         more_best, more = multi_start(predictor, weights, np.vstack([best, seeds]),
-                                       max_evaluations, stop_early=stated, settle=True)
+                                       max_evaluations, stop_early=True, settle=True)
         record += more[1:]
         best = more_best
-    if len(starts) > leading and not (stated and _explains(min(record, key=_chi2),
-                                                           predictor)):
+    if len(starts) > leading and not _explains(min(record, key=_chi2), predictor):
         more_best, more = multi_start(predictor, weights, np.vstack([best, starts[leading:]]),
-                                       max_evaluations, stop_early=stated, settle=True)
+                                       max_evaluations, stop_early=True, settle=True)
         record += more[1:]
         best = more_best
-    if not stated:
-        weights = column_noise(predictor, best, predictor.free.size)
-        best, more = multi_start(predictor, weights, best[None, :], max_evaluations,
-                                  stop_early=False, settle=True)
-        record += more
     residuals = whitened(predictor.outputs(best) - predictor.measured.values, weights)
     jacobian = whitened(predictor.jacobian(best), weights)
     return Optimum(best, weights, residuals, jacobian, tuple(record))
@@ -187,16 +179,6 @@ def explaining_limit(dof: int) -> float:
 
 def _explains(start: Start, predictor: Predictor) -> bool:
     return start.chi2 <= explaining_limit(predictor.measured.size - predictor.free.size)
-
-
-def column_noise(predictor: Predictor, values: np.ndarray, n_free: int) -> np.ndarray:
-    """Each column's noise estimated from its residuals (RMS, corrected for the parameters'
-    share of the degrees of freedom)."""
-    raw = predictor.outputs(values) - predictor.measured.values
-    n = raw.size
-    factor = math.sqrt(n / max(n - n_free, 1))
-    rms = np.sqrt(np.mean(raw**2, axis=0)) * factor
-    return np.where(rms > 0, rms, np.finfo(float).tiny)
 
 
 def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,

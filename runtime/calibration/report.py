@@ -12,7 +12,6 @@ from pathlib import Path
 
 import numpy as np
 
-from jointplay.calibration.api import CONSISTENT
 from jointplay.calibration.result import CalibrationResult
 from jointplay.common.files import OutputPlan
 
@@ -58,14 +57,9 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
               f"{', '.join(result.measured.columns)} from {result.measured.t[0]:g} s to "
               f"{result.measured.t[-1]:g} s.", ""]
     if result.fit_explains_data is False:
-        lines += ["**The fit does not explain the data within the stated noise: the estimates "
-                  "below are the best optimum found, not established values, and their "
-                  "intervals are not valid.**", ""]
-    elif result.fit_consistent is False:
-        lines += ["**The fit's chi² is higher than a fit in the basin of the true parameters "
-                  f"would reach in {100 * CONSISTENT:g} % of noise draws: it may be a "
-                  "neighbouring basin's, and no parameter is reported as determined (see the "
-                  "warnings).**", ""]
+        lines += ["**The residuals are not the noise: nothing is determined (see the "
+                  "warning); the estimates below are the best fit found, not established "
+                  "values.**", ""]
     lines += ["| parameter | start | estimate | std | 95 % interval | determined |",
               "|---|---|---|---|---|---|"]
     for e in result.estimates.values():
@@ -75,7 +69,8 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
     lines += [""]
     if result.warnings:
         lines += ["## Warnings", ""] + [f"- {w}" for w in result.warnings] + [""]
-    noise = "stated" if result.noise_stated else "estimated from the residuals"
+    noise = ("stated" if result.noise_stated
+             else "estimated from the data's own sample-to-sample scatter")
     lines += ["## Fit", "",
               f"- chi² = {stats['chi2']:.6g} on {stats['dof']} degrees of freedom "
               f"(chi²/dof = {stats['normalised_chi2']:.4g}); noise {noise}: "

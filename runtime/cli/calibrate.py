@@ -28,7 +28,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--noise", metavar="SIGMA|COLUMN=SIGMA,...",
                    help="the sensors' standard deviations: one number for every column, or "
                         "one per column (tip_x=1e-6,tip_y=1e-6); default: estimated from the "
-                        "residuals")
+                        "data's own sample-to-sample scatter")
     p.add_argument("--start", metavar="NAME=VALUE,...",
                    help="start values of free parameters (default: the scene's)")
     p.add_argument("--starts", type=int, default=6,
@@ -108,9 +108,9 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
     result = run(problem)
     written = write_report(result, out, plan, command_line())
     if not args.quiet:
-        if result.fit_explains_data is False:
-            print("the fit does not explain the data within the stated noise: best optimum "
-                  "found, not established values")
+        if not result.noise_stated:
+            print("noise estimated from the data's scatter: " + ", ".join(
+                f"{c} {v:.3g}" for c, v in result.noise.items()))
         for e in result.estimates.values():
             std = f"{e.std:.3g}" if math.isfinite(e.std) else "inf"
             note = "" if e.determined else "  (NOT determined by the data)"
