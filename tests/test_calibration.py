@@ -95,7 +95,7 @@ def test_horizon_continuation_grows_the_window_from_the_previous_estimate() -> N
     assert result.simulations_by_kind["continuation windows"] > 0
     saved = result.to_dict()["continuation"]
     assert [s["window_end"] for s in saved] == pytest.approx([0.05, 0.1, 0.2, 0.4])
-    assert "## Horizon continuation" in report_text(result)
+    assert "4 fits over growing windows" in report_text(result)
 
 
 def test_horizon_windows() -> None:
@@ -545,7 +545,7 @@ def test_the_grid_line_finds_the_true_valley_the_grid_point_misses() -> None:
     def tracks(opening: ValleyScan | None) -> tuple[np.ndarray, list[Any], int]:
         # the valley lines' window lies beyond the record: until it the friction is held
         found, stages, runs = continuation(predictor, weights, np.array([grid_point, other]),
-                                           grid_point[None, :], True, 40, 0.02, 2.0,
+                                           grid_point[None, :], 40, 0.02, 2.0,
                                            dataclasses.replace(line, window=0.32),
                                            looser=100.0, workers=2, opening=opening)
         assert {s.window_end for s in stages} == {0.02}  # one window: the record's half

@@ -41,16 +41,11 @@ from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
 
 VALLEY_CHECK_REACH = 0.2
-"""How far the valley check's line reaches either side of the best fit, in grid spacings
-(on the paper scene 0.4 µm: the benchmark's fits that ended in a wrong valley lay 0.1-0.3 µm
-from the truth's along c2 - c3)."""
+"""How far the valley check's line reaches either side of the best fit, in grid spacings."""
 
 VALLEY_CHECK_LOOSER = 3.0
 """The valley check's runs use the fit's tolerances times this: their chi² are compared with
-the threshold (3.84). Over 0.32 s on benchmark draw 0, at 17 points 5 nm apart through the
-fit, chi² at 3, 10, 30 and 100 times the fit's tolerances differ from those at the fit's by
-up to 0.3, 1.3, 3.1 and 4.9 (the windows' own tolerances, 100 times), each run costing 1.08,
-0.96, 0.78 and 0.71 times one at the fit's."""
+the threshold (3.84), and at the windows' own (100 times) they are off by about that."""
 
 GRID_LINE_REACH = 1.5
 """How far the grid window's line reaches either side of the best grid point, in grid
@@ -60,43 +55,24 @@ can be a neighbour of that point."""
 
 @dataclass(frozen=True)
 class CalibrationOptions:
-    """How the fit runs. ``tighten``: the runs of the fit use the scene's tolerances divided
-    by this (a 1 µm sensor needs a model far more accurate than the scene's working
-    accuracy of about 3 µm at the tip). ``starts``: starts of the multi-start at most,
-    the first the given start, the rest a Latin hypercube within ±``spread`` (relative) of
-    it, run only while the best fit does not explain the data within the stated noise.
-    ``scan_points``: runs along the weakest direction of the first optimum (0: no scan),
-    local fits from the ``refine`` lowest minima along it. ``max_evaluations``: least-squares
-    evaluations per start. ``profile_points``: points of each cost profile (0: none).
-    ``horizon_first``: the first window (s) of the horizon continuation, grown by
-    ``horizon_growth`` each stage up to the whole record, each stage started at the last one's
-    estimate (0: no continuation, the fit starts on the whole record); the starts, the
-    exchanged clearances and the scan are the fallback where the whole-record fit does not
-    explain the data. ``grid_window``: the window (s) of the global stage, a grid of
-    ``grid_points`` values of each free clearance across ±``spread`` of the start, its runs at
-    the fit's tolerances times ``window_looser`` (as are the runs on every window shorter than
-    the record), whose ``grid_candidates`` lowest local minima
-    each start a track of the continuation, from ``grid_window`` on (0: no grid; the
-    continuation starts at ``horizon_first`` from the start). ``grid_line_points``: runs on
-    the grid's window along the clearances' rugged directions (those of the valley lines,
-    below) through the best grid point, GRID_LINE_REACH grid spacings either side, whose
-    ``valley_keep`` lowest minima take that point's place as tracks (0: no line): over 20 ms
-    the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's the lowest
-    by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
-    in. ``valley_window``, ``valley_points``, ``valley_keep``: the valley lines' first window
-    (s), runs per line and minima kept (see :func:`continuation`). ``basins``: look for the
-    other minima of the whole record's cost near the best fit, which the data cannot tell
-    from it, and widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
-    ``valley_check_points``: with the noise stated and the basin check on, runs over the
-    valley lines' first window along the clearances' rugged direction through the best fit,
-    VALLEY_CHECK_REACH grid spacings either side; a parameter the line moves whose interval
-    misses another valley there within the basin threshold of the fit's own is not
-    determined, its interval widened to span the line, and the lowest such valleys are
-    followed to the whole record, a fit that ends lower replacing the best
-    (:func:`valley_check`, :func:`follow_rivals`; 0: no check).
-    ``workers``: processes for the grid's runs, the tracks' fits and the lines' runs (the
-    results do not depend on it); ``scheduler``: the address of a Dask scheduler whose
-    cluster runs them instead."""
+    """How the fit runs. ``tighten``: the fit's runs use the scene's tolerances divided by
+    this. ``starts``: local fits of the fallback multi-start at most (the given start, then
+    a Latin hypercube within ±``spread``, relative), run while the best fit does not explain
+    the data; ``scan_points`` (0: none) and ``refine``: the fallback's scan of the weakest
+    direction. ``max_evaluations``: least-squares evaluations per local fit.
+    ``profile_points``: points of each cost profile (0: none). ``horizon_first``,
+    ``horizon_growth``: the continuation's first window (s; 0: the fit starts on the whole
+    record) and growth factor. ``grid_window``, ``grid_points``, ``grid_candidates``: the
+    global stage's window (s; 0: no grid), values per free clearance across ±``spread``, and
+    minima kept as tracks; ``window_looser``: the runs on windows shorter than the record use
+    the fit's tolerances times this. ``grid_line_points``: runs along the rugged directions
+    through the best grid point (0: none), GRID_LINE_REACH grid spacings either side.
+    ``valley_window``, ``valley_points``, ``valley_keep``: the continuation's valley lines
+    (see :func:`continuation`). ``basins``: the basin check
+    (:mod:`jointplay.calibration.basins`). ``valley_check_points``: with the basin check, the
+    valley check's runs (:func:`valley_check`, :func:`follow_rivals`; 0: none).
+    ``workers``: processes for the independent pieces (the results do not depend on it);
+    ``scheduler``: the address of a Dask scheduler whose cluster runs them instead."""
 
     tighten: float = 1000.0
     starts: int = 6
@@ -246,9 +222,8 @@ def _run(problem: Problem) -> CalibrationResult:
                 opening = ValleyScan(grid.window_end, opts.grid_line_points, GRID_LINE_REACH,
                                      opts.valley_keep, scale)
         survivors, stages, runs = continuation(
-            predictor, weights, tracks, starts, True,
-            opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser,
-            opts.workers, opening)
+            predictor, weights, tracks, starts, opts.max_evaluations, first,
+            opts.horizon_growth, valley, opts.window_looser, opts.workers, opening)
         stage_runs += runs
         survivors, runs = _ranked(predictor, weights, survivors, opts.workers)
         stage_runs += runs
@@ -369,8 +344,7 @@ def _valley_rounds(predictor: Predictor, weights: np.ndarray, optimum: Optimum,
 WHOLE_RECORD_TRACKS = 2
 """The tracks fitted on the whole record at least (where that many reach it): a track's
 chi² at its last window's estimate can lie hundreds above its basin's floor on the whole
-record, and on the paper scene two basins 2.4 % apart in the clearances had the same chi² at
-1.28 s, the true one ranked second by one run on the whole record (benchmark draw 9)."""
+record, and two basins can rank the wrong way round there."""
 
 
 def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, workers: int

@@ -1,14 +1,10 @@
 """Neighbouring basins: the other minima of the whole record's cost that the data cannot
 tell from the best one, and the points of the cost's rugged floor they share it with.
 
-Impacts make the cost a field of basins: an impact that moves past a sample changes the
-residual abruptly. On the paper scene, with 2 s of tip position at 1 ms and 1 µm of noise,
-the minima lie two to three standard deviations apart (about 25 nm in the clearances), and
-along the direction the impacts make most rugged the floor of the basins can stay flat far
-beyond one basin's own curvature: on benchmark draw 6 the fit ended in a basin 23 nm from
-the one that holds the truth, 26 higher in chi²; on draw 4 the floor stays within 2.5 of
-the best fit's chi² 32 standard deviations away along that direction. The covariance at the
-best fit describes its own basin only, so its interval misses the others.
+Impacts make the cost a field of basins (an impact that moves past a sample changes the
+residual abruptly), a few standard deviations apart, whose floor can stay flat far beyond
+one basin's own curvature along the direction the impacts make most rugged. The covariance
+at the best fit describes its own basin only, so its interval misses the others.
 
 The check: lines through the best fit along each principal axis of its confidence
 ellipsoid, finely out to :data:`REACH_SIGMAS` standard deviations, then at
@@ -49,9 +45,8 @@ STEP_SIGMAS = 1.0
 gets a point at most half a standard deviation from its floor (a quarter above it in chi²,
 where its curvature is the best's)."""
 FAR_SIGMAS = (8.0, 16.0, 32.0)
-"""The lines' points beyond the fine part, in standard deviations: along the direction the
-impacts make most rugged the cost's envelope can stay flat far beyond the best basin's own
-curvature (on benchmark draw 4, within 2.5 of the best at 32 standard deviations)."""
+"""The lines' points beyond the fine part, in standard deviations (the rugged floor can stay
+flat that far)."""
 SLACK = 10.0
 """chi² above the threshold still worth a local fit from a line's minimum."""
 FITS = 2
@@ -64,11 +59,9 @@ OTHER_CENTRES = 1
 """Other whole-record minima (within the threshold plus SLACK of the best) the lines also
 go through, at most."""
 LOOSER = 1.0
-"""The lines' runs use the fit's tolerances times this. Their chi² decide which points widen
-the intervals (those within 3.84 of the lowest), so they must be accurate to well under
-that: on benchmark draw 15, 13 points near the best fit, the chi² at the fit's tolerances
-differ from those at tolerances ten times tighter by -1.3 ± 0.4 (a common offset and a
-spread of 0.4), at ten times looser by 5.9-18 (a spread of ±4, the threshold's size)."""
+"""The lines' runs use the fit's tolerances times this: their chi² decide which points widen
+the intervals (within 3.84 of the lowest), so they must be accurate to well under that
+(ten times looser, they scatter by about the threshold's size)."""
 
 
 @dataclass(frozen=True)
@@ -140,8 +133,7 @@ def _other_centres(best: np.ndarray, best_chi2: float, covariance: np.ndarray,
     """The OTHER_CENTRES lowest minima of ``others`` within ``within`` of the best's chi²
     that lie in another basin (more than half a standard deviation away in some parameter):
     a whole-record fit from another track can stop a basin or two from a lower one that the
-    best's lines do not reach (benchmark draw 9: 46 nm from the true basin, 26 lower in chi²,
-    while the best lay 2.4 % away)."""
+    best's lines do not reach."""
     std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     near = sorted((s for s in others if not s.failed and math.isfinite(s.chi2)
                    and s.chi2 <= best_chi2 + within
@@ -262,17 +254,12 @@ def _unexcluded(checks: Sequence[ValleyCheck], followed: float, names: tuple[str
                 low95: np.ndarray, high95: np.ndarray) -> None:
     """``verdict`` (low, high, determined, warnings) changed in place for the valley
     checks' rivals outside the intervals ``low95`` to ``high95``: such a parameter's
-    interval spans the checks' whole lines. Why the whole line and not only the rivals'
-    valleys: where two valleys along it lie within the threshold, the comb's floors are
-    level to within the noise's reach, and the line resolves only the valleys it crosses
-    near their floors; on benchmark draw 15 it crossed the truth's valley 60 nm off its
-    floor and saw no minimum there, 0.29 µm from a fit whose rival it found 37 nm away.
-    Where the fit moved to a lower valley a rival led to (``followed``: how much lower its
-    chi² over the whole record ended, 0 where it did not move), every parameter the lines
-    move is not determined, its interval spanning every check's line: the search had
-    missed a lower valley once and cannot exclude another (on draw 15 the valley it moved
-    to, 30 lower, lies as far from the truth's, whose floor is 53 lower still, and the
-    check around it finds no rival)."""
+    interval spans the checks' whole lines (where two valleys along it lie within the
+    threshold, the line resolves only the valleys it crosses near their floors). Where the
+    fit moved to a lower valley a rival led to (``followed``: how much lower its chi² over
+    the whole record ended, 0 where it did not move), every parameter the lines move is not
+    determined, its interval spanning every check's line: the search had missed a lower
+    valley once and cannot exclude another."""
     low, high, determined, warnings = verdict
     if not checks:
         return
@@ -325,12 +312,8 @@ def _valleys_visited(visited: np.ndarray, best: np.ndarray, names: tuple[str, ..
     ``visited`` valley's estimate (the fits the search left and those the rivals led to,
     within TRACK_MARGIN of the best's chi²: a fit further above is ruled out as a track of
     the continuation is) give or take Z95 of the best's standard deviations, and a parameter
-    with such an estimate outside the best's own interval not determined. Why: each valley's
-    estimates of the other parameters (the friction) are conditional on its clearances, and
-    a search that missed a lower valley once may have missed the true one; the valleys it
-    visited show by how much the estimates move from one valley to the next (on benchmark
-    draw 4, five fits in valleys 0.65-1.4 % from the true clearances put the friction 0.4 to
-    9.9e-5 of its value off, 0.2 to 2.3 standard deviations)."""
+    with such an estimate outside the best's own interval not determined: each valley's
+    estimates of the other parameters (the friction) are conditional on its clearances."""
     low, high, determined, warnings = verdict
     std = np.where(np.isfinite(spread.std), spread.std, 0.0)
     for k, name in enumerate(names):

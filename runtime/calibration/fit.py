@@ -13,10 +13,8 @@ continuation's ladder of fits.
 
 from __future__ import annotations
 
-import itertools
 import math
 import os
-import re
 import time
 from dataclasses import dataclass
 from typing import Any
@@ -87,12 +85,6 @@ def least_squares_fit(predictor: Predictor, sigma: np.ndarray, starts: np.ndarra
     best, record = multi_start(predictor, weights, starts[:leading], max_evaluations,
                                stop_early=leading == 1, workers=workers,
                                settle=True)
-    exchanged = exchanged_clearances(predictor.free.names, best)
-    if len(exchanged) and not _explains(min(record, key=_chi2), predictor):
-        more_best, more = multi_start(predictor, weights, np.vstack([best, exchanged]),
-                                       max_evaluations, stop_early=True, settle=True)
-        record += more[1:]
-        best = more_best
     if scan is not None and scan.points > 0 and not _explains(min(record, key=_chi2),
                                                               predictor):
         seeds = scan_weakest_direction(predictor, weights, best, starts[0], scan)
@@ -119,19 +111,6 @@ class Scan:
     points: int
     spread: float
     refine: int
-
-
-def exchanged_clearances(names: tuple[str, ...], best: np.ndarray) -> np.ndarray:
-    """Starts with two free clearances exchanged, one per pair: a tip sees mostly the sum of
-    the journals' offsets, so the exchanged pair is a second valley the first fit rarely
-    crosses to (on the paper scene two of three benchmark draws ended near it)."""
-    joints = [k for k, name in enumerate(names) if re.fullmatch(r"joint\d+\.clearance", name)]
-    out = []
-    for a, b in itertools.combinations(joints, 2):
-        x = best.copy()
-        x[a], x[b] = best[b], best[a]
-        out.append(x)
-    return np.array(out).reshape(-1, best.size)
 
 
 def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
@@ -233,17 +212,10 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
 SETTLED_SIGMAS = 0.1
 """A local fit ends at its best point once the step it would try next lies within this many
 standard deviations of it, in the metric of the Jacobian there (scaled by sqrt(chi²/dof)
-where the fit does not yet explain the data): on the model's smooth part such a step changes
-chi² by at most 2 SETTLED_SIGMAS sqrt(d) + SETTLED_SIGMAS² (d the Gauss-Newton step's
-predicted decrease), a few hundredths, where the integrator's own scatter of chi² is about
-±1 on the paper scene's whole record at the fit's tolerances. SciPy's ``xtol`` instead
-shrinks the trust region through rejected runs down to steps of 1e-8 of |x|, a thousandth
-of a standard deviation: on benchmark draw 14's whole-record fit (from its 1.28 s track's
-end) 20 runs where this rule takes 9, the two ends 0.05 standard deviations apart in that
-metric (each parameter under 0.04 of its own) and chi² 0.23 apart. Only the fits on the
-whole record settle (the fit's, its fallbacks', the basin check's): the windows' fits keep
-SciPy's tolerances, on which the continuation's choice of valleys was measured; settled
-there too, the 16 benchmark draws' calibrations lost one (draw 11 ended 5-7 % off)."""
+where the fit does not yet explain the data): such a step changes chi² by a few hundredths,
+below the integrator's own scatter of chi² (about ±1 on the paper scene's whole record),
+where SciPy's ``xtol`` goes on shrinking the trust region through rejected runs. Only the
+fits on the whole record settle; the windows' fits keep SciPy's tolerances."""
 
 
 class _Settled(Exception):

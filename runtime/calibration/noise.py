@@ -1,19 +1,16 @@
 """The sensors' noise read from the data alone, and whether a fit's residuals are that noise.
 
-Noise not stated is estimated before any fit, from each column's own sample-to-sample
-scatter (difference-based estimation: Rice, Ann. Statist. 12 (1984) 1215; Gasser, Sroka and
-Jennen-Steinmetz, Biometrika 73 (1986) 625): a difference of order k of samples of a smooth
-signal removes it up to its k-th derivative times the step to the k, leaving a pseudo-residual
-whose scale is the noise's. The order rises while the scale still falls by more than a tenth
-(the signal still shows), then one more. The scale is robust (the median absolute deviation,
-then the root mean square of the pseudo-residuals within OUTLIER_SIGMAS of it): an impact makes
-the signal rough over a few samples, a handful of outliers among thousands. No model enters,
-so a misfit cannot inflate it, and its chi² then tells a misfit.
+Noise not stated is estimated before any fit from each column's sample-to-sample scatter
+(difference-based estimation: Rice, Ann. Statist. 12 (1984) 1215; Gasser, Sroka and
+Jennen-Steinmetz, Biometrika 73 (1986) 625): a difference of order k removes a smooth signal
+up to its k-th derivative times the step to the k. The order rises while the scale still
+falls by more than a tenth, then one more. The scale is robust (the root mean square within
+OUTLIER_SIGMAS of the median absolute deviation): an impact makes the signal rough over a
+few samples among thousands. No model enters, so a misfit cannot inflate it.
 
 A fit explains the data when its chi² lies in its two-sided 99 % range (for an estimated
 noise widened by the estimate's own spread) and each column's residuals pass the Ljung-Box
-test of their first LAGS autocorrelations at 1 % overall: slow waves in the residuals (a model
-in another valley of the cost) correlate neighbouring samples that noise leaves independent.
+test at 1 % overall: slow waves (a fit in another valley) correlate neighbouring samples.
 """
 
 from __future__ import annotations
@@ -27,8 +24,7 @@ from jointplay.common.errors import DescriptionError
 
 MAX_ORDER = 8
 OUTLIER_SIGMAS = 5.0
-FALLING = 0.9
-"""The order rises while the next order's scale is below this fraction of the current's."""
+FALLING = 0.9  # the order rises while the next order's scale is below this fraction
 MAD_TO_SIGMA = 1.482602218505602  # 1 / Phi^-1(3/4)
 LEVEL = 0.01
 LAGS = 20
