@@ -605,6 +605,31 @@ def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
     assert result.to_dict()["grid"]["axes"] == ["joint2.clearance", "joint3.clearance"]
 
 
+@pytest.mark.slow
+def test_unequal_clearances_are_not_exchanged_with_the_noise_estimated() -> None:
+    """Paper scene, 2 s of tip at 1 ms with 1 µm of noise not stated, joint 3's clearance
+    1.7 times joint 2's and a higher friction (where a version that estimated the noise from
+    its residuals ended with the clearances exchanged, the noise 5x too large and every
+    interval excluding the truth): the noise estimated within 8 %, each clearance within 2 %
+    and the friction within 5 %, every parameter reported determined holding the truth in
+    its interval."""
+    scene = jp.default_scene()
+    truth = {"joint2.clearance": 21.5e-6, "joint3.clearance": 36.5e-6, "friction.mu": 0.07}
+    exact = jp.simulate(scene.with_run(rtol=2e-10, atol=3e-11), parameters=truth)
+    rng = np.random.default_rng(5)
+    tip = exact.tip_position + NOISE * rng.standard_normal(exact.tip_position.shape)
+    result = calibrate(scene, Measured("synthetic", exact.t.copy(), ("tip_x", "tip_y"), tip),
+                       list(truth), options=CalibrationOptions(profile_points=0))
+    assert not result.noise_stated
+    assert all(abs(v / NOISE - 1) < 0.08 for v in result.noise.values()), result.noise
+    for name, value in truth.items():
+        estimate = result.estimates[name]
+        goal = 0.05 if name == "friction.mu" else 0.02
+        assert abs(estimate.value - value) <= goal * value, name
+        if estimate.determined:
+            assert estimate.low95 <= value <= estimate.high95, name
+
+
 def _spread(values: np.ndarray, std: np.ndarray) -> Any:
     from jointplay.calibration.uncertainty import Z95, Uncertainty
 
@@ -690,18 +715,6 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
     lowest, rise = min(check.rivals, key=lambda r: r[1])
     assert rise < 0
     assert abs(difference(lowest) - difference(x_truth)) <= 10e-9
-    # followed over this record (0.32 s, then the whole 0.4 s), the rivals lead to a valley
-    # lower over the record than the fit and at most 20 nm from the truth along c2 - c3
-    # (the fit: 95 nm; measured 11.5 nm, the friction, which 0.4 s barely sees, 0.3 % off)
-    from jointplay.calibration.predict import chi2_at
-    from jointplay.calibration.valleys import FOLLOWED_RIVALS, follow_rivals
-
-    fits, runs = follow_rivals(predictor, np.array([NOISE, NOISE]), check, 20, 2.0, 100.0,
-                               workers=2)
-    assert 1 <= len(fits) <= FOLLOWED_RIVALS and runs > 0
-    best = min(fits, key=lambda f: f.chi2)
-    assert best.chi2 < chi2_at(predictor, np.array([NOISE, NOISE]), [fit])[0][0]
-    assert abs(difference(np.array(best.end)) - difference(x_truth)) <= 20e-9
 
 
 def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
@@ -724,11 +737,11 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     inside = values + np.array([5e-9, -4.2e-9, 0.0])
     far = values + np.array([-100e-9, 84e-9, 0.0])
     quiet = ValleyCheck(0.32, ((inside, 0.9),), spacing, 162)
-    low, high, determined, warnings = widened(spread, nothing, names, (quiet,))
+    low, high, determined, warnings = widened(spread, nothing, names, quiet)
     assert np.array_equal(low, spread.low95) and np.array_equal(high, spread.high95)
     assert determined.all() and warnings == []
     check = ValleyCheck(0.32, ((inside, 0.9), (far, -6.1)), spacing, 162)
-    low, high, determined, warnings = widened(spread, nothing, names, (check,))
+    low, high, determined, warnings = widened(spread, nothing, names, check)
     assert list(determined) == [False, False, True]
     assert low[0] == pytest.approx(far[0] - spacing[0]) and high[0] == spread.high95[0]
     assert high[1] == pytest.approx(far[1] + spacing[1]) and low[1] == spread.low95[1]
@@ -742,63 +755,15 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     extent = (values + np.array([-400e-9, -336e-9, 0.0]), values + np.array([400e-9, 336e-9,
                                                                             0.0]))
     lined = ValleyCheck(0.32, ((inside, 0.9), (far, -6.1)), spacing, 162, extent)
-    low, high, determined, warnings = widened(spread, nothing, names, (lined,))
+    low, high, determined, warnings = widened(spread, nothing, names, lined)
     assert list(determined) == [False, False, True]
     assert low[:2] == pytest.approx(extent[0][:2]) and high[:2] == pytest.approx(extent[1][:2])
     assert low[2] == spread.low95[2] and high[2] == spread.high95[2]
     assert f"spans the check's line, {extent[0][0]:.6g} to {extent[1][0]:.6g}" in warnings[0]
     # a quiet check changes nothing, its extent whatever it is
     quiet = ValleyCheck(0.32, ((inside, 0.9),), spacing, 162, extent)
-    low, high, determined, _ = widened(spread, nothing, names, (quiet,))
+    low, high, determined, _ = widened(spread, nothing, names, quiet)
     assert np.array_equal(low, spread.low95) and determined.all()
-
-
-def test_a_fit_moved_by_the_valley_checks_rivals_is_not_determined_along_their_lines() -> None:
-    """Where the fit moved to a lower valley the check's rivals led to, every parameter the
-    lines move is not determined, its interval spanning every check's line (the one through
-    the fit it left and the one through the fit it moved to), whether or not the last check
-    found a rival; each interval holds every visited valley's estimate give or take 1.96 of
-    its standard deviations, and a parameter the lines do not move (the friction) whose
-    visited estimate lies outside its own interval is not determined; one inside it stays
-    determined, its interval widened with a warning."""
-    from jointplay.calibration.basins import Basins, threshold, widened
-    from jointplay.calibration.uncertainty import Z95
-    from jointplay.calibration.valleys import ValleyCheck
-
-    names = ("joint2.clearance", "joint3.clearance", "friction.mu")
-    values = np.array([30.11e-6, 32.08e-6, 0.0344437])
-    std = np.array([1e-8, 1.2e-8, 1.5e-6])
-    spread = _spread(values, std)
-    nothing = Basins(values, 3988.6, (), threshold(), (), 10, values[None, :])
-    spacing = np.array([5e-9, 4.2e-9, 0.0])
-    left = values + np.array([-23e-9, 33e-9, -2.5e-6])  # the fit it left
-    reach = np.array([400e-9, 336e-9, 0.0])
-    first = ValleyCheck(0.32, ((values, -2.0),), spacing, 162, (left - reach, left + reach))
-    last = ValleyCheck(0.32, (), spacing, 162, (values - reach, values + reach))
-    low, high, determined, warnings = widened(spread, nothing, names, (first, last), 30.5,
-                                              left[None, :])
-    assert list(determined) == [False, False, True]
-    assert low[0] == pytest.approx(left[0] - reach[0]) and high[0] == pytest.approx(
-        values[0] + reach[0])
-    assert low[1] == pytest.approx(values[1] - reach[1]) and high[1] == pytest.approx(
-        left[1] + reach[1])
-    assert low[2] == pytest.approx(left[2] - Z95 * std[2]) and high[2] == spread.high95[2]
-    assert len(warnings) == 3
-    assert warnings[0].startswith("joint2.clearance is not determined by the search: the fit "
-                                  "moved") and "30.5 lower in chi²" in warnings[0]
-    assert warnings[2].startswith("friction.mu: the fit moved to a lower valley")
-    # a visited valley whose friction lies outside the best's own interval
-    further = left + np.array([0.0, 0.0, -1.0e-6])
-    low, high, determined, warnings = widened(spread, nothing, names, (first, last), 30.5,
-                                              further[None, :])
-    assert list(determined) == [False, False, False]
-    assert low[2] == pytest.approx(further[2] - Z95 * std[2])
-    assert warnings[2].startswith("friction.mu is not determined by the search")
-    # the same checks without a move: the one rival lies inside the intervals, and the
-    # visited valleys are not looked at
-    low, high, determined, warnings = widened(spread, nothing, names, (first, last), 0.0,
-                                              further[None, :])
-    assert determined.all() and warnings == [] and np.array_equal(low, spread.low95)
 
 
 def test_the_valley_floor_is_reached_downhill() -> None:

@@ -35,7 +35,7 @@ from jointplay.calibration.parameters import FreeParameters, free_parameters
 from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
 from jointplay.calibration.result import CalibrationResult, Estimate
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
-from jointplay.calibration.valleys import ValleyCheck, follow_rivals, valley_check
+from jointplay.calibration.valleys import valley_check
 from jointplay.calibration.workers import on_cluster
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
@@ -70,7 +70,7 @@ class CalibrationOptions:
     ``valley_window``, ``valley_points``, ``valley_keep``: the continuation's valley lines
     (see :func:`continuation`). ``basins``: the basin check
     (:mod:`jointplay.calibration.basins`). ``valley_check_points``: with the basin check, the
-    valley check's runs (:func:`valley_check`, :func:`follow_rivals`; 0: none).
+    valley check's runs (:func:`valley_check`; 0: none).
     ``workers``: processes for the independent pieces (the results do not depend on it);
     ``scheduler``: the address of a Dask scheduler whose cluster runs them instead."""
 
@@ -238,12 +238,11 @@ def _run(problem: Problem) -> CalibrationResult:
                             max(problem.measured.size - problem.free.size, 1),
                             whole.evaluations, whole.evaluations, whole.message))
     free = problem.free
-    rounds = ValleyRounds(optimum)
+    check = None
     if opts.basins and valley is not None and opts.valley_check_points > 0:
-        rounds = _valley_rounds(predictor, weights, optimum, ValleyScan(
-            opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1,
-            valley.scale), opts)
-        optimum = rounds.optimum
+        check = valley_check(predictor, weights, optimum.values, ValleyScan(
+            opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1, valley.scale),
+            VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(), opts.workers)
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     line_runs = 0
     if opts.basins:
@@ -257,13 +256,7 @@ def _run(problem: Problem) -> CalibrationResult:
         if moved:
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
-        # the valleys visited that the whole record's chi² does not rule out as tracks are
-        # ruled out (TRACK_MARGIN)
-        close = [x for x, chi2 in rounds.visited
-                 if chi2 <= float(np.sum(optimum.residuals**2)) + TRACK_MARGIN]
-        low, high, determined, rival_warnings = widened(spread, found, free.names,
-                                                         rounds.checks, rounds.followed,
-                                                         np.array(close))
+        low, high, determined, rival_warnings = widened(spread, found, free.names, check)
         spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
@@ -288,57 +281,7 @@ def _run(problem: Problem) -> CalibrationResult:
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
                    wall1 - wall0, cpu1 - cpu0, misfit is None, tuple(stages), stage_runs, grid,
-                   line_runs, profile_runs, rounds.runs)
-
-
-FOLLOW_ROUNDS = 2
-"""How many times at most the valley check's rivals are followed to the whole record
-(:func:`follow_rivals`), the check run again around each fit that ends lower: the valley a
-rival leads to can have rivals of its own, lower still."""
-
-@dataclass(frozen=True)
-class ValleyRounds:
-    """What the valley check and its rounds left: the fit (moved where a followed rival
-    ended lower), each round's check, how much lower in chi² the fit ended by moving (0
-    where it did not), the valleys visited (the fits left and the followed fits: estimate and
-    chi² over the whole record) and the runs of the checks and of the followed fits."""
-
-    optimum: Optimum
-    checks: tuple[ValleyCheck, ...] = ()
-    followed: float = 0.0
-    visited: tuple[tuple[np.ndarray, float], ...] = ()
-    runs: int = 0
-
-
-def _valley_rounds(predictor: Predictor, weights: np.ndarray, optimum: Optimum,
-                   scan: ValleyScan, opts: CalibrationOptions) -> ValleyRounds:
-    """The valley check through ``optimum``; while it finds rivals (FOLLOW_ROUNDS times at
-    most), the two lowest followed to the whole record, the fit moved to the lowest of
-    those fits where it ends lower, and the check run again around it."""
-    checks: list[ValleyCheck] = []
-    visited: list[tuple[np.ndarray, float]] = []
-    followed = 0.0
-    runs = 0
-    for round_ in range(FOLLOW_ROUNDS + 1):
-        check = valley_check(predictor, weights, optimum.values, scan, VALLEY_CHECK_LOOSER,
-                             opts.horizon_growth, basin_threshold(), opts.workers)
-        checks.append(check)
-        runs += check.runs
-        if round_ == FOLLOW_ROUNDS or not check.rivals:
-            break
-        fits, more = follow_rivals(predictor, weights, check, opts.max_evaluations,
-                                   opts.horizon_growth, opts.window_looser, opts.workers)
-        runs += more
-        optimum = dataclasses.replace(optimum, starts=optimum.starts + tuple(fits))
-        visited += [(np.asarray(f.end, dtype=float), f.chi2) for f in fits]
-        lowest = min(fits, key=lambda f: f.chi2, default=None)
-        current = float(np.sum(optimum.residuals**2))
-        if lowest is None or not lowest.chi2 < current:
-            break
-        followed += current - lowest.chi2
-        visited.append((optimum.values, current))
-        optimum = _moved_to(predictor, optimum, np.asarray(lowest.end, dtype=float))
-    return ValleyRounds(optimum, tuple(checks), followed, tuple(visited), runs)
+                   line_runs, profile_runs, check.runs if check else 0)
 
 
 WHOLE_RECORD_TRACKS = 2

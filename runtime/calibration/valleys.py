@@ -6,8 +6,7 @@ c2 - c3) is a comb of valleys a fraction of a nanometre wide, and the continuati
 valleys from the truth's with a chi² the noise explains. Over the continuation's first
 lined window (0.32 s) the valleys are about 10 nm wide, and a line of runs through the fit
 5 nm apart resolves them: :func:`valley_check` finds the other valleys there as low as the
-fit's own, and :func:`follow_rivals` carries the lowest of them to the whole record, where a
-lower fit replaces the best. What the check finds widens the intervals
+fit's own. What the check finds widens the intervals
 (:func:`jointplay.calibration.basins.widened`).
 """
 
@@ -23,13 +22,9 @@ from jointplay.calibration.continuation import (
     _lines_chi2,
     _rugged,
     _window_problem,
-    continuation,
     horizon_windows,
 )
-from jointplay.calibration.fit import Start, multi_start
 from jointplay.calibration.predict import Predictor, line_minima
-from jointplay.calibration.workers import parallel_map
-from jointplay.common.errors import SimulationError
 
 
 @dataclass(frozen=True)
@@ -81,45 +76,6 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     points = np.array([p for line in lines for p in line]).reshape(-1, free.size)
     extent = (points.min(axis=0), points.max(axis=0)) if len(points) else None
     return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more, extent)
-
-
-FOLLOWED_RIVALS = 2
-"""The valley check's rivals followed to the whole record (the lowest first, one per
-worker): see :func:`follow_rivals`."""
-
-
-def follow_rivals(predictor: Predictor, weights: np.ndarray, check: ValleyCheck,
-                  max_evaluations: int, growth: float, looser: float, workers: int
-                  ) -> tuple[list[Start], int]:
-    """The whole-record fits from the FOLLOWED_RIVALS lowest of ``check``'s rivals, and the
-    runs: each rival carried through the windows from the check's own to the whole record's
-    as a track of the continuation is (each window's fit started at the previous estimate,
-    at the fit's tolerances times ``looser``), then fitted on the whole record (settling),
-    one rival per worker. A fit that ends lower than the best replaces it."""
-    rivals = sorted(check.rivals, key=lambda r: r[1])[:FOLLOWED_RIVALS]
-
-    def follow(i: int) -> tuple[list[Start], int]:
-        point = np.asarray(rivals[i][0], dtype=float)[None, :]
-        probe = Predictor(predictor.scene, predictor.model, predictor.free,
-                          predictor.measured, compiled=predictor.compiled)
-        try:
-            tracks, _, runs = continuation(probe, weights, point, point,
-                                           max_evaluations, check.window_end, growth,
-                                           looser=looser)
-            if not len(tracks):
-                return [], runs
-            _, record = multi_start(probe, weights, tracks[:1], max_evaluations,
-                                    stop_early=True, settle=True)
-        except SimulationError:
-            return [], probe.counter.simulations
-        return record, runs + probe.counter.simulations
-
-    found: list[Start] = []
-    runs = 0
-    for record, more in parallel_map(follow, len(rivals), workers):
-        found += record
-        runs += more
-    return found, runs
 
 
 def _valley_floor(chi2: np.ndarray, i: int) -> int:

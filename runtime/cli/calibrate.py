@@ -63,10 +63,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="runs over 0.32 s along the clearances' rugged direction through the "
                         "best fit, 0.2 grid spacings either side; a clearance whose interval "
                         "misses another valley within chi² + 3.84 of the fit's there is "
-                        "reported not determined, its interval spanning the line; the two "
-                        "lowest such valleys are followed to the whole record, and a fit "
-                        "that ends lower replaces the best (default 161; 0: no check; needs "
-                        "--noise)")
+                        "reported not determined, its interval spanning the line (default "
+                        "161; 0: no check)")
     p.add_argument("--no-basin-check", dest="basins", action="store_false",
                    help="skip the search for the other minima of the whole record's cost "
                         "near the best fit (lines along the axes of its confidence "
