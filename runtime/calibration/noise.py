@@ -5,8 +5,8 @@ Noise not stated is estimated before any fit from each column's sample-to-sample
 Jennen-Steinmetz, Biometrika 73 (1986) 625): a difference of order k removes a smooth signal
 up to its k-th derivative times the step to the k. The order rises while the scale still
 falls by more than a tenth, then one more. The scale is robust (the root mean square within
-OUTLIER_SIGMAS of the median absolute deviation): an impact makes the signal rough over a
-few samples among thousands. No model enters, so a misfit cannot inflate it.
+OUTLIER_SIGMAS of the median absolute deviation, corrected for the cut): an impact makes the
+signal rough over a few samples. No model enters, so a misfit cannot inflate it.
 
 A fit explains the data when its chi² lies in its two-sided 99 % range (for an estimated
 noise widened by the estimate's own spread) and each column's residuals pass the Ljung-Box
@@ -23,7 +23,7 @@ from jointplay.calibration.measured import Measured
 from jointplay.common.errors import DescriptionError
 
 MAX_ORDER = 8
-OUTLIER_SIGMAS = 5.0
+OUTLIER_SIGMAS = 3.0
 FALLING = 0.9  # the order rises while the next order's scale is below this fraction
 MAD_TO_SIGMA = 1.482602218505602  # 1 / Phi^-1(3/4)
 LEVEL = 0.01
@@ -45,9 +45,15 @@ def _pseudo_residuals(t: np.ndarray, y: np.ndarray, order: int) -> np.ndarray:
 
 
 def _robust_scale(d: np.ndarray) -> float:
+    from scipy.stats import norm
+
     mad = MAD_TO_SIGMA * float(np.median(np.abs(d - np.median(d))))
-    inside = d[np.abs(d) <= OUTLIER_SIGMAS * mad] if mad > 0 else d
-    return float(np.sqrt(np.mean(inside**2))) if inside.size else mad
+    if not mad > 0:
+        return mad
+    inside = d[np.abs(d) <= OUTLIER_SIGMAS * mad]
+    # the root mean square of a normal sample cut at c of its sigma, made whole again
+    kept = 1 - 2 * OUTLIER_SIGMAS * norm.pdf(OUTLIER_SIGMAS) / (2 * norm.cdf(OUTLIER_SIGMAS) - 1)
+    return float(np.sqrt(np.mean(inside**2) / kept)) if inside.size else mad
 
 
 def column_noise(measured: Measured) -> tuple[np.ndarray, np.ndarray]:
