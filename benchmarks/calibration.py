@@ -218,6 +218,9 @@ def main() -> None:
     parser.add_argument("--timeout", type=float, default=1800.0,
                         help="with --cases: seconds one calibration may take before it is "
                              "stopped and reported as timed out")
+    parser.add_argument("--resume", action="store_true",
+                        help="with --cases: keep the runs an earlier call into the same --out "
+                             "finished (their rows, times included) and run the rest")
     parser.add_argument("--first-draw", type=int, default=0,
                         help="skip the draws before this one (their truths are still drawn, "
                              "so draw N is the same truth in every run)")
@@ -256,8 +259,10 @@ def run_cases(args: argparse.Namespace, out: Path) -> None:
     seeds = 5 if args.seeds is None else args.seeds
     command = ("python benchmarks/calibration.py --cases " + " ".join(args.cases)
                + f" --seeds {seeds}" + (f" --first-seed {args.first_seed}" if args.first_seed
-                                        else "") + f" --out {args.out}")
-    run(list(args.cases), seeds, args.first_seed, out, args.timeout, command.replace("  ", " "))
+                                        else "") + (" --resume" if args.resume else "")
+               + f" --out {args.out}")
+    run(list(args.cases), seeds, args.first_seed, out, args.timeout, command.replace("  ", " "),
+        resume=args.resume)
 
 
 if __name__ == "__main__":

@@ -87,6 +87,7 @@ def run_one(name: str, seed: int, out: Path, timeout_s: float) -> dict[str, Any]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     status = "ok"
+    (folder / "row.json").unlink(missing_ok=True)
     with open(folder / "log.txt", "w") as log:
         process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
                                    start_new_session=True)
@@ -125,7 +126,7 @@ def run_one(name: str, seed: int, out: Path, timeout_s: float) -> dict[str, Any]
     residuals = result.get("residuals", {})
     row["chi2_dof"] = residuals.get("normalised_chi2")
     noise = result.get("noise", {}).get("std", {})
-    if isinstance(noise, dict):
+    if isinstance(noise, dict) and not record["noise_stated"]:
         row["noise_ratio"] = {c: noise[c] / s for c, s in record["noise"].items() if c in noise}
     row["warnings"] = len(result.get("warnings", []))
     row["reported_wall_s"] = result.get("wall_time_s")
@@ -227,7 +228,7 @@ def flat_rows(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
 
 
 def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: float,
-        command: str) -> dict[str, Any]:
+        command: str, resume: bool = False) -> dict[str, Any]:
     known = case_names()
     unknown = [c for c in cases if c not in known]
     if unknown:
@@ -236,7 +237,12 @@ def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: flo
     rows = []
     for name in cases or known:
         for seed in range(first_seed, first_seed + seeds):
-            row = run_one(name, seed, out, timeout_s)
+            done = out / "runs" / name / f"seed{seed}" / "row.json"
+            if resume and done.is_file():  # a finished run of an earlier, interrupted call
+                row = json.loads(done.read_text())
+            else:
+                row = run_one(name, seed, out, timeout_s)
+                done.write_text(json.dumps(row, indent=1) + "\n")
             print(f"{name} seed {seed}: {row['status']}, {row['wall_s']:.1f} s wall, "
                   + "; ".join(f"{n} {_cell(p)}" for n, p in row["parameters"].items()),
                   flush=True)
