@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import hashlib
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import casadi as ca
 import sympy as sp
@@ -231,7 +231,7 @@ def _cut_joints(structure: MechanismStructure, frames: dict[str, _Frame], q: Any
         w_b = ca.jtimes(bearing_frame.angle, q, qd)
         w_j = ca.jtimes(journal_frame.angle, q, qd)
         ex, ey, vx, vy, wb, wj, vi = sp.symbols("e_x e_y v_x v_y w_b w_j v_i", real=True)
-        terms = laws.contact_terms(structure, k, ex, ey, vx, vy, wb, wj, vi, P)  # type: ignore[arg-type]
+        terms = laws.contact_terms(cast(Any, structure), k, ex, ey, vx, vy, wb, wj, vi, P)
         leaves = {ex: e[0], ey: e[1], vx: e_rate[0], vy: e_rate[1], wb: w_b, wj: w_j,
                   vi: v_imp[k - 1]}
         leaves |= {symbols[name]: p[i] for i, name in enumerate(names)}

@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass, field
+from typing import Any, cast
 
 from jointplay.common.errors import DescriptionError
 from jointplay.mechanism.structure import (
@@ -23,6 +24,8 @@ from jointplay.mechanism.structure import (
 )
 
 GROUND = "ground"
+# dataclasses.replace with field names chosen at run time (each checked before the call).
+_replace = cast(Any, dataclasses.replace)
 # run.output_step must divide run.t_end within this relative tolerance.
 _DIVIDES = 1e-9
 
@@ -171,16 +174,16 @@ def _with_value(m: Mechanism, name: str, value: float) -> Mechanism:
                 "v1": "v1"}.get(key)
         if attr is None:
             raise DescriptionError(name, "is no parameter of the mechanism")
-        return dataclasses.replace(m, **{attr: value})
+        return cast(Mechanism, _replace(m, **{attr: value}))
     if owner == "driver" and m.driver is not None and key in ("speed", "start"):
-        return dataclasses.replace(m, driver=dataclasses.replace(m.driver, **{key: value}))
+        return dataclasses.replace(m, driver=_replace(m.driver, **{key: value}))
     for i, b in enumerate(m.bodies):
         if b.name == owner and key in ("mass", "inertia", "com_x", "com_y"):
             if key.startswith("com"):
                 com = (value, b.com[1]) if key == "com_x" else (b.com[0], value)
                 new = dataclasses.replace(b, com=com)
             else:
-                new = dataclasses.replace(b, **{key: value})
+                new = _replace(b, **{key: value})
             return dataclasses.replace(m, bodies=(*m.bodies[:i], new, *m.bodies[i + 1:]))
     for i, j in enumerate(m.joints):
         if j.name == owner and key in j.clearance:
@@ -245,7 +248,7 @@ class MechanismScene:
     source: str | None = None
 
     def with_run(self, **changes: float) -> MechanismScene:
-        run = dataclasses.replace(self.run, **changes)
+        run = cast(RunSettings, _replace(self.run, **changes))
         run.check()
         return dataclasses.replace(self, run=run)
 

@@ -74,20 +74,23 @@ def mechanism_scene_from_dict(data: Mapping[str, Any], source: str | None = None
         if not isinstance(name, str) or not _NAME.match(name):
             raise DescriptionError("name", "must be letters, digits and '_' (at most 40), "
                                    f"starting with a letter, got {name!r}")
-    table = data.get("mechanism")
-    if not isinstance(table, Mapping):
+    table: Mapping[str, Any] = {}
+    if isinstance(data.get("mechanism"), Mapping):
+        table = data["mechanism"]
+    else:
         problems.found.append(DescriptionError(
             "mechanism", "a mechanism file needs a [mechanism] table with [[mechanism.bodies]]"
             " and [[mechanism.joints]]"))
-        problems.raise_any(source)
     with problems.check():
         check_keys(table, _MECHANISM, "mechanism")
     bodies = _bodies(table.get("bodies"), problems)
-    joints = _joints(table.get("joints"), {b.name for b in bodies}, problems)
+    # Cross-references are checked against every name given, valid or not, so that one
+    # mistake is reported once.
+    joints = _joints(table.get("joints"), _names(table.get("bodies")), problems)
     gravity = _gravity(table.get("gravity", {}), problems)
     contact = _section(table.get("contact", {}), _CONTACT, "mechanism.contact", problems)
     friction = _section(table.get("friction", {}), _FRICTION, "mechanism.friction", problems)
-    driver = _driver(table.get("driver"), joints, problems)
+    driver = _driver(table.get("driver"), joints, _names(table.get("joints")), problems)
     run = _run(data.get("run", {}), problems)
     problems.raise_any(source)
     mechanism = Mechanism(
@@ -107,6 +110,12 @@ def mechanism_scene_from_dict(data: Mapping[str, Any], source: str | None = None
     description = data.get("description", "")
     return MechanismScene(name=name, description=str(description), mechanism=mechanism,
                           run=run, source=source)
+
+
+def _names(tables: Any) -> set[str]:
+    if not isinstance(tables, list):
+        return set()
+    return {str(t["name"]) for t in tables if isinstance(t, Mapping) and "name" in t}
 
 
 def _list(value: Any, where: str, problems: Problems) -> list[Mapping[str, Any]]:
@@ -292,7 +301,8 @@ def _choice(value: Any, key: str, where: str) -> str:
     return str(value)
 
 
-def _driver(table: Any, joints: list[Joint], problems: Problems) -> Driver | None:
+def _driver(table: Any, joints: list[Joint], given: set[str], problems: Problems
+            ) -> Driver | None:
     if table is None:
         return None
     with problems.check():
@@ -300,13 +310,15 @@ def _driver(table: Any, joints: list[Joint], problems: Problems) -> Driver | Non
         joint = table.get("joint")
         names = [j.name for j in joints]
         found = next((j for j in joints if j.name == joint), None)
+        if found is None and joint in given:  # that joint's own error is reported
+            return None
         if found is None:
             raise DescriptionError("mechanism.driver.joint", f"must name a joint (joints: "
                                    f"{', '.join(names)}), got {joint!r}")
         if found.type != "revolute" or found.kind != "ideal":
-            raise DescriptionError("mechanism.driver.joint", f"{joint!r} is a {found.kind} "
-                                   f"{found.type} joint; a driver turns an ideal revolute "
-                                   "joint")
+            raise DescriptionError("mechanism.driver.joint", f"{joint!r} is a {found.type} "
+                                   f"joint of kind {found.kind!r}; a driver turns an ideal "
+                                   "revolute joint")
         if ("angle" in table) == ("speed" in table):
             raise DescriptionError("mechanism.driver", "give either speed (rad/s, with start "
                                    "in rad) or angle (an expression of t, rad), not both")

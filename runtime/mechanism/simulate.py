@@ -13,7 +13,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field
 from types import SimpleNamespace
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -135,7 +135,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
                           if j.kind == "clearance" and j.name in model.cut_joint_names])
     clearance = np.array([next(j.radial_clearance for j in scene.mechanism.joints
                                if j.name == name) for name in model.cut_joint_names])
-    integ = NativeIntegrator(model, p, _scale(model, scene), np.zeros((nc, 2), np.int32),  # type: ignore[arg-type]
+    integ = NativeIntegrator(model, p, _scale(model, scene), np.zeros((nc, 2), np.int32),
                              clearance, np.zeros(0, np.int32), (), rtol=run.rtol,
                              atol=run.atol, max_steps=run.max_steps, max_events=MAX_EVENTS,
                              model_gaps=True)
@@ -157,14 +157,14 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     final = integ.current()
     for r in np.flatnonzero(~np.isfinite(rows[:, 9])):  # phases open at the end
         rows[r, 11:14] += final[nx + 1 + 3 * int(rows[r, 0]):nx + 4 + 3 * int(rows[r, 0])]
-    impacts = phase_table(SimpleNamespace(model=model), rows, float(t[-1]))  # type: ignore[arg-type]
+    impacts = phase_table(cast(Any, SimpleNamespace(model=model)), rows, float(t[-1]))
     samples = _samples(model, p, x, v_imp)
     stats = {"wall_time_s": wall, **integ.stats()}
     result = MechanismResult(
         name=scene.name, t=t, coordinates=list(model.coordinates), x=x, cut_joints=list(
             model.cut_joint_names), clearance=clearance, drive_work=work,
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
-        **samples)
+        **cast(dict[str, Any], samples))
     if compare_ideal:
         result.ideal = ideal_motion(model, p, t)
     return result
