@@ -118,3 +118,28 @@ def test_simulate_compare_ideal_plot(tmp_path: Path, capsys: pytest.CaptureFixtu
     header = csv.read_text(encoding="utf-8").splitlines()[0].split(",")
     assert header[:2] == ["time", "guide.position"] and "slider_pin.normal_force" in header
     assert len(csv.read_text(encoding="utf-8").splitlines()) == 302
+
+
+def test_inspect_build_derive_and_the_python_api(tmp_path: Path,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    import jointplay
+
+    assert main(["inspect", str(SCENE)]) == 0
+    out = capsys.readouterr().out
+    assert "slider_pin: revolute clearance, slider -> rod (cut: a force element)" in out
+    assert "slider_pin.bearing_radius = 0.0105" in out
+    assert main(["build", str(SCENE)]) == 0
+    assert "guide.position, crank_pin.angle, t" in capsys.readouterr().out
+    assert main(["derive", str(SCENE), "--out", str(tmp_path / "model")]) == 0
+    text = (tmp_path / "model" / "model.c").read_text(encoding="utf-8")
+    assert text.startswith("/* GENERATED FILE: DO NOT EDIT.") and "input hash: " in text
+    with pytest.raises(DescriptionError, match="load_mechanism_scene"):
+        jointplay.load_scene(SCENE)
+    scene = jointplay.load_mechanism_scene(SCENE).with_run(t_end=0.002)
+    result = jointplay.simulate_mechanism(scene, parameters={"crank_pin.parent_x": 0.04},
+                                          compare_ideal=True)
+    assert result.ideal is not None
+    # A 0.04 m crank: the ideal slider starts at r + l.
+    assert result.ideal["x"][0, 0] == pytest.approx(0.16, abs=1e-14)
+    with pytest.raises(DescriptionError, match="jointplay inspect"):
+        jointplay.simulate_mechanism(scene, parameters={"crank.length": 0.04})

@@ -185,13 +185,25 @@ def _with_value(m: Mechanism, name: str, value: float) -> Mechanism:
             else:
                 new = _replace(b, **{key: value})
             return dataclasses.replace(m, bodies=(*m.bodies[:i], new, *m.bodies[i + 1:]))
+    points = {"parent_x": ("at_parent", 0), "parent_y": ("at_parent", 1),
+              "child_x": ("at_child", 0), "child_y": ("at_child", 1)}
     for i, j in enumerate(m.joints):
+        if j.name == owner and key in points:
+            attr, k = points[key]
+            point = list(getattr(j, attr))
+            point[k] = value
+            new_joint = _replace(j, **{attr: (point[0], point[1])})
+            return dataclasses.replace(m, joints=(*m.joints[:i], new_joint, *m.joints[i + 1:]))
+        if j.name == owner and key == "angle" and (j.type == "prismatic" or j.kind == "locked"):
+            new_joint = dataclasses.replace(j, angle=value)
+            return dataclasses.replace(m, joints=(*m.joints[:i], new_joint, *m.joints[i + 1:]))
         if j.name == owner and key in j.clearance:
             new_joint = dataclasses.replace(j, clearance={**j.clearance, key: value})
             return dataclasses.replace(m, joints=(*m.joints[:i], new_joint, *m.joints[i + 1:]))
     raise DescriptionError(name, "is no parameter of the mechanism (a body's mass, inertia, "
-                           "com_x, com_y; a clearance joint's radii, E, nu; contact.*, "
-                           "friction.*, driver.speed)")
+                           "com_x, com_y; a joint's parent_x, parent_y, child_x, child_y; a "
+                           "clearance joint's radii, E, nu; contact.*, friction.*, "
+                           "driver.speed; `jointplay inspect FILE` lists them)")
 
 
 def _tree_order(m: Mechanism) -> list[Joint]:

@@ -474,6 +474,11 @@ def load_scene(path: str | Path) -> Scene:
     path = Path(path)
     data, text = read_toml(path, "scene")
     source = str(path)
+    if isinstance(data.get("mechanism"), dict):
+        raise DescriptionError("mechanism", "this is a mechanism file: read it with "
+                               "jointplay.load_mechanism_scene and run it with "
+                               "jointplay.simulate_mechanism (`jointplay simulate` takes "
+                               "either kind)", source)
     return scene_from_dict(data, source=source, base=path.parent, text=text)
 
 
