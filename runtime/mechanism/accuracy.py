@@ -49,6 +49,9 @@ class MechanismAccuracy:
     check_impacts: int
     energy_residual: float  # J, max |balance| of this run
     t_end: float
+    # contact statistics of this run and of the tighter one after `departs` (see
+    # MechanismResult.contact_statistics); empty when the runs never depart
+    statistics: tuple[dict[str, float], ...] = ()
 
     def lines(self) -> list[str]:
         tol = f"{self.rtol:g} / {self.atol:g}"
@@ -71,6 +74,15 @@ class MechanismAccuracy:
             out.append(f"  impacts: the first {self.agreed_impacts} agree (up to "
                        f"{self.agreement_horizon:.6g} s); {self.impacts} here, "
                        f"{self.check_impacts} in the tighter run")
+        if self.statistics:
+            run, check = self.statistics
+            out.append(f"  after {self.departs:.6g} s, this run / the tighter one: "
+                       f"{run['impacts']:.0f} / {check['impacts']:.0f} impacts, in contact "
+                       f"{100 * run['contact_fraction']:.0f} % / "
+                       f"{100 * check['contact_fraction']:.0f} % of the time, median peak "
+                       f"force {run['median_peak_force']:.3g} / "
+                       f"{check['median_peak_force']:.3g} N, largest "
+                       f"{run['largest_peak_force']:.3g} / {check['largest_peak_force']:.3g} N")
         out.append(f"  energy balance closes to {self.energy_residual:.2g} J")
         return out
 
@@ -98,11 +110,14 @@ def compare(result: MechanismResult, check: MechanismResult) -> MechanismAccurac
         result.impacts, check.impacts, float(result.t[-1]),
         onset_tolerance=CHECK_MARGIN * ONSET_TOLERANCE,
         speed_tolerance=CHECK_MARGIN * SPEED_TOLERANCE, lead=ONSET_TOLERANCE)
+    departs = float(result.t[upto]) if over.size else None
+    statistics = () if departs is None else (result.contact_statistics(departs),
+                                             check.contact_statistics(departs))
     return MechanismAccuracy(
         rtol=result.rtol, atol=result.atol, check_rtol=check.rtol, check_atol=check.atol,
         position_error=float(np.max(diff[:upto], initial=0.0)),
         velocity_error=float(np.max(rate_diff[:upto], initial=0.0)),
-        departs=float(result.t[upto]) if over.size else None,
+        departs=departs, statistics=statistics,
         final_difference=float(np.max(diff, initial=0.0)),
         agreement_horizon=horizon, agreed_impacts=agreed, impacts=len(result.impacts),
         check_impacts=len(check.impacts),

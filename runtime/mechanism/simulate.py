@@ -75,6 +75,25 @@ class MechanismResult:
     def coordinate_acceleration(self, name: str) -> np.ndarray:
         return self.acceleration[:, self.coordinates.index(name)]
 
+    def contact_statistics(self, since: float = 0.0) -> dict[str, float]:
+        """What a run's contact does from ``since`` (s) to its end, every cut joint together:
+        the impact count and rate (1/s), the fraction of the time in contact, the located peak
+        forces' median and largest (N) and the approach speeds' median (m/s); NaN where there
+        is no impact. These are what two runs past their agreement horizon can be compared
+        by."""
+        t_end = float(self.t[-1])
+        rows = self.impacts.time >= since
+        ends = np.where(np.isfinite(self.impacts.separation_time),
+                        self.impacts.separation_time, t_end)
+        span = max(t_end - since, np.finfo(float).tiny)
+        contact = np.clip(ends, since, t_end) - np.clip(self.impacts.time, since, t_end)
+        peaks, speeds = self.impacts.peak_force[rows], self.impacts.speed[rows]
+        return {"impacts": float(rows.sum()), "impact_rate": float(rows.sum()) / span,
+                "contact_fraction": float(contact.sum()) / span,
+                "median_peak_force": float(np.median(peaks)) if peaks.size else np.nan,
+                "largest_peak_force": float(np.max(peaks)) if peaks.size else np.nan,
+                "median_approach_speed": float(np.median(speeds)) if speeds.size else np.nan}
+
     @property
     def energy_residual(self) -> np.ndarray:
         """Total energy change - drive work + dissipated (J): zero up to integration error."""
