@@ -143,3 +143,19 @@ def test_inspect_build_derive_and_the_python_api(tmp_path: Path,
     assert result.ideal["x"][0, 0] == pytest.approx(0.16, abs=1e-14)
     with pytest.raises(DescriptionError, match="jointplay inspect"):
         jointplay.simulate_mechanism(scene, parameters={"crank.length": 0.04})
+
+
+def test_the_reference_page_lists_every_key() -> None:
+    from jointplay.mechanism import reading
+
+    page = Path("docs/reference/mechanism-file.md").read_text(encoding="utf-8")
+    keys = [*(k for k in reading._TOP if k not in ("mechanism", "run")),
+            "[[mechanism.bodies]]", "[[mechanism.joints]]",
+            *(f"bodies.{k}" for k in reading._BODY), *(f"joints.{k}" for k in reading._JOINT),
+            *(f"mechanism.driver.{k}" for k in reading._DRIVER),
+            *(f"mechanism.gravity.{k}" for k in reading._GRAVITY),
+            *(f"mechanism.contact.{k}" for k in reading._CONTACT),
+            *(f"mechanism.friction.{k}" for k in reading._FRICTION),
+            *(f"run.{k}" for k in reading._RUN)]
+    missing = [k for k in keys if f"`{k}`" not in page]
+    assert not missing, f"keys missing from docs/reference/mechanism-file.md: {missing}"
