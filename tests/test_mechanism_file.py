@@ -159,3 +159,37 @@ def test_the_reference_page_lists_every_key() -> None:
             *(f"run.{k}" for k in reading._RUN)]
     missing = [k for k in keys if f"`{k}`" not in page]
     assert not missing, f"keys missing from docs/reference/mechanism-file.md: {missing}"
+
+
+def test_a_sweep_of_a_mechanism(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "slider_crank.toml").write_text(TEXT, encoding="utf-8")
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text('scene = "slider_crank.toml"\nmode = "zip"\n[run]\nt_end = 0.002\n'
+                     '[parameters."slider_pin.clearance"]\nvalues = [1e-4, 5e-4]\n'
+                     '[parameters."rod.mass"]\nvalues = [0.21, 0.3]\n', encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["sweep", str(sweep), "--out", str(out), "--quiet"]) == 0
+    lines = (out / "mechanism_sweep.csv").read_text(encoding="utf-8").splitlines()
+    header = lines[0].split(",")
+    assert header[:4] == ["slider_pin.clearance", "rod.mass", "impacts", "impact_rate"]
+    assert len(lines) == 3
+    first = dict(zip(header, map(float, lines[1].split(",")), strict=True))
+    assert first["slider_pin.clearance"] == 1e-4 and first["rod.mass"] == 0.21
+    # Within its clearance and a penetration from the ideal mechanism's slider.
+    assert 1e-4 <= first["slider_from_ideal_m"] < 2e-4
+    assert (out / "mechanism_sweep.png").is_file()
+    sweep.write_text('scene = "slider_crank.toml"\n[parameters."rod.mas"]\nvalues = [0.2]\n',
+                     encoding="utf-8")
+    assert main(["sweep", str(sweep), "--out", str(tmp_path / "bad")]) == 2
+    assert "rod.mas" in capsys.readouterr().err
+    assert not (tmp_path / "bad").exists()
+
+
+def test_commands_for_arms_only_refuse_a_mechanism(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    measured = tmp_path / "measured.csv"
+    measured.write_text("time,q2\n0,0\n", encoding="utf-8")
+    assert main(["calibrate", str(SCENE), "--measured", str(measured), "--free",
+                 "friction.mu", "--out", str(tmp_path / "cal")]) == 2
+    assert "mechanism file" in capsys.readouterr().err
+    assert not (tmp_path / "cal").exists()
