@@ -75,14 +75,14 @@ class MechanismAccuracy:
                        f"{self.agreement_horizon:.6g} s); {self.impacts} here, "
                        f"{self.check_impacts} in the tighter run")
         if self.statistics:
-            run, check = self.statistics
+            mine, other = self.statistics
             out.append(f"  after {self.departs:.6g} s, this run / the tighter one: "
-                       f"{run['impacts']:.0f} / {check['impacts']:.0f} impacts, in contact "
-                       f"{100 * run['contact_fraction']:.0f} % / "
-                       f"{100 * check['contact_fraction']:.0f} % of the time, median peak "
-                       f"force {run['median_peak_force']:.3g} / "
-                       f"{check['median_peak_force']:.3g} N, largest "
-                       f"{run['largest_peak_force']:.3g} / {check['largest_peak_force']:.3g} N")
+                       f"{mine['impacts']:.0f} / {other['impacts']:.0f} impacts, in contact "
+                       f"{100 * mine['contact_fraction']:.0f} % / "
+                       f"{100 * other['contact_fraction']:.0f} % of the time, median peak "
+                       f"force {mine['median_peak_force']:.3g} / "
+                       f"{other['median_peak_force']:.3g} N, largest "
+                       f"{mine['largest_peak_force']:.3g} / {other['largest_peak_force']:.3g} N")
         out.append(f"  energy balance closes to {self.energy_residual:.2g} J")
         return out
 
