@@ -258,6 +258,8 @@ class MechanismScene:
     mechanism: Mechanism
     run: RunSettings
     source: str | None = None
+    # Starting values of coordinates for the assembly at t = 0 (see simulate.assembled_state)
+    initial: dict[str, float] = field(default_factory=dict)
 
     def with_run(self, **changes: float) -> MechanismScene:
         run = cast(RunSettings, _replace(self.run, **changes))

@@ -113,30 +113,45 @@ def _scale(model: MechanismModel, scene: MechanismScene) -> np.ndarray:
     return scale
 
 
-def assembled_state(model: MechanismModel, p: np.ndarray, t0: float = 0.0) -> np.ndarray:
+def assembled_state(model: MechanismModel, p: np.ndarray, t0: float = 0.0,
+                    start: dict[str, float] | None = None) -> np.ndarray:
     """The ideal mechanism's state at t0: every cut joint's eccentricity and its rate zero.
 
-    Newton's method on the closure equations from the free coordinates at 0 (least squares
-    where the loops leave freedom: the smallest change)."""
+    Damped Newton on the closure equations from the free coordinates at ``start`` (the
+    scene's ``[initial]`` table: which assembly, where a loop has two; 0 for the others),
+    least squares where the loops leave freedom (the smallest change)."""
     n = model.n_coordinates
     x = np.zeros(2 * n)
     x[n - 1], x[2 * n - 1] = t0, 1.0
+    for name, value in (start or {}).items():
+        x[model.coordinates.index(name)] = value
     if not model.clearance_joints:
         return x
     closure = model.function("closure")
     free = slice(0, n - 1)
+    residual = np.linalg.norm(closure(x, p)[0])
     for _ in range(_NEWTON_STEPS):
         e, e_q, _, _ = closure(x, p)
         step = np.linalg.lstsq(e_q, -e, rcond=None)[0]
-        x[free] += step
+        base = x[free].copy()
+        for fraction in (1.0, 0.5, 0.25, 0.125, 0.0625):  # a step that does not lower |e|
+            x[free] = base + fraction * step                  # is shortened
+            trial = np.linalg.norm(closure(x, p)[0])
+            if trial < residual or fraction == 0.0625:
+                break
+        residual = trial
         if np.max(np.abs(step)) < 1e-15 * (1.0 + np.max(np.abs(x[free]))):
             break
     e, e_q, e_theta, _ = closure(x, p)
     if np.max(np.abs(e)) > 1e-12:
         raise DescriptionError("mechanism.joints", f"the loops do not close at t = {t0:g}: "
                                f"a journal stays {np.max(np.abs(e)):.3g} m from its bearing's "
-                               "centre after Newton's method; check the joints' points and "
-                               "the bodies' lengths")
+                               "centre after Newton's method from "
+                               + (", ".join(f"{k} = {v:g}" for k, v in start.items())
+                                  if start else "every coordinate at 0")
+                               + "; check the joints' points and the bodies' lengths, or "
+                               "give the coordinates' starting values in an [initial] table "
+                               "(e.g. a rocker's angle near its assembled value)")
     rate = model.function("outputs")(x, [], p, np.zeros(len(model.clearance_joints)))[1][0]
     x[n:2 * n - 1] = np.linalg.lstsq(e_q, -e_theta * rate, rcond=None)[0]
     return x
@@ -148,7 +163,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     model = model or model_for(scene.mechanism)
     p = model.parameter_vector(scene.mechanism)
     run = scene.run
-    x0 = assembled_state(model, p)
+    x0 = assembled_state(model, p, start=scene.initial)
     nc = len(model.clearance_joints)
     clearance = np.array([j.radial_clearance for j in scene.mechanism.joints
                           if j.kind == "clearance" and j.name in model.cut_joint_names])
@@ -185,7 +200,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
         **cast(dict[str, Any], samples))
     if compare_ideal:
-        result.ideal = ideal_motion(model, p, t)
+        result.ideal = ideal_motion(model, p, t, scene.initial)
     return result
 
 
@@ -212,7 +227,8 @@ def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndar
     return out
 
 
-def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray) -> dict[str, np.ndarray]:
+def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
+                 start: dict[str, float] | None = None) -> dict[str, np.ndarray]:
     """The ideal mechanism (every clearance joint ideal) at times t, where the driver moves it
     completely: positions by Newton's method on the loop closure, velocities and accelerations
     from its first and second derivatives, the driving torque from the principle with the
@@ -231,7 +247,7 @@ def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray) -> dict[st
     x = np.zeros((len(t), 2 * n))
     acc = np.zeros((len(t), n))
     torque = np.zeros(len(t))
-    state = assembled_state(model, p, float(t[0]))
+    state = assembled_state(model, p, float(t[0]), start)
     for k, tk in enumerate(t):
         state[n - 1] = tk
         for _ in range(_NEWTON_STEPS):  # from the last sample's positions

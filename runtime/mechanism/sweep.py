@@ -160,7 +160,8 @@ def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool =
         result = simulate_mechanism(scene, model=model)
         p = model.parameter_vector(scene.mechanism)
         try:
-            ideal: dict[str, np.ndarray] | None = ideal_motion(model, p, result.t)
+            ideal: dict[str, np.ndarray] | None = ideal_motion(model, p, result.t,
+                                                               scene.initial)
         except DescriptionError:
             ideal = None
         stats = result.contact_statistics()
