@@ -79,15 +79,23 @@ def test_bad_fields_are_named_with_what_is_allowed(tmp_path: Path, old: str, new
     assert field in message and words in message, message
 
 
-def test_a_body_no_ideal_joint_places_is_refused(tmp_path: Path) -> None:
-    # The slider's guide removed: the slider hangs on the clearance joint alone.
+def test_a_body_held_by_clearance_joints_only_floats(tmp_path: Path) -> None:
+    # The slider's guide removed: the slider hangs on the clearance joint alone, free in the
+    # plane (x, y, angle).
     start = TEXT.index('name = "guide"')
     block_start = TEXT.rindex("[[mechanism.joints]]", 0, start)
     block_end = TEXT.index("[[mechanism.joints]]", start)
     path = tmp_path / "variant.toml"
     path.write_text(TEXT[:block_start] + TEXT[block_end:], encoding="utf-8")
+    structure = load_mechanism_scene(path).mechanism.structure()
+    floating = [j for j in structure.joints if j.type == "floating"]
+    assert [j.child for j in floating] == ["slider"]
+    # A body no joint touches is refused.
+    path.write_text(TEXT.replace("[[mechanism.joints]]", '[[mechanism.bodies]]\nname = '
+                                 '"extra"\nmass = 1.0\ninertia = 1.0\n\n[[mechanism.joints]]', 1),
+                    encoding="utf-8")
     message = _refused(path)
-    assert "slider" in message and "place" in message
+    assert "'extra'" in message and "joined to nothing" in message
 
 
 def test_the_command_refuses_with_exit_2_and_writes_nothing(tmp_path: Path,

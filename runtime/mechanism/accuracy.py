@@ -28,8 +28,8 @@ from jointplay.results.accuracy import (
     agreement_horizon,
 )
 
-# m: positions of two runs closer than this agree (a micrometre: the issue's first-revolution
-# target for the slider, and a fiftieth of the 0.05 mm clearance variant's).
+# m: positions of two runs closer than this agree (a micrometre: the slider-crank's target for
+# its first revolution, a hundredth of its 0.1 mm clearance variant's clearance).
 POSITION_TOLERANCE = 1e-6
 
 
@@ -89,15 +89,15 @@ class MechanismAccuracy:
 
 def _positions(result: MechanismResult) -> np.ndarray:
     """Every length-valued coordinate (sliders) and eccentricity component, per sample."""
-    columns = [result.coordinate(name) for name in result.coordinates
-               if name.endswith(".position")]
+    columns = [result.x[:, k] for k, unit in enumerate(result.units) if unit == "m"]
     columns += [result.eccentricity[:, j, k] for j in range(len(result.cut_joints))
                 for k in range(2)]
     return np.stack(columns, axis=1) if columns else np.zeros((len(result.t), 0))
 
 
 def _rates(result: MechanismResult) -> np.ndarray:
-    columns = [result.rate(name) for name in result.coordinates if name.endswith(".position")]
+    n = len(result.coordinates)
+    columns = [result.x[:, n + k] for k, unit in enumerate(result.units) if unit == "m"]
     return np.stack(columns, axis=1) if columns else np.zeros((len(result.t), 0))
 
 

@@ -45,6 +45,7 @@ class MechanismResult:
     name: str
     t: np.ndarray
     coordinates: list[str]
+    units: list[str]
     x: np.ndarray
     acceleration: np.ndarray
     cut_joints: list[str]
@@ -77,10 +78,10 @@ class MechanismResult:
 
     def contact_statistics(self, since: float = 0.0) -> dict[str, float]:
         """What a run's contact does from ``since`` (s) to its end, every cut joint together:
-        the impact count and rate (1/s), the fraction of the time in contact, the located peak
-        forces' median and largest (N) and the approach speeds' median (m/s); NaN where there
-        is no impact. These are what two runs past their agreement horizon can be compared
-        by."""
+        the impact count and rate (1/s), the fraction of the time in contact (averaged over
+        the clearance joints), the located peak forces' median and largest (N) and the
+        approach speeds' median (m/s); NaN where there is no impact. These are what two runs
+        past their agreement horizon can be compared by."""
         t_end = float(self.t[-1])
         rows = self.impacts.time >= since
         ends = np.where(np.isfinite(self.impacts.separation_time),
@@ -89,7 +90,7 @@ class MechanismResult:
         contact = np.clip(ends, since, t_end) - np.clip(self.impacts.time, since, t_end)
         peaks, speeds = self.impacts.peak_force[rows], self.impacts.speed[rows]
         return {"impacts": float(rows.sum()), "impact_rate": float(rows.sum()) / span,
-                "contact_fraction": float(contact.sum()) / span,
+                "contact_fraction": float(contact.sum()) / span / max(1, len(self.cut_joints)),
                 "median_peak_force": float(np.median(peaks)) if peaks.size else np.nan,
                 "largest_peak_force": float(np.max(peaks)) if peaks.size else np.nan,
                 "median_approach_speed": float(np.median(speeds)) if speeds.size else np.nan}
@@ -106,8 +107,8 @@ def _scale(model: MechanismModel, scene: MechanismScene) -> np.ndarray:
     scale = np.ones(model.n_state)
     clearance = scene.smallest_clearance
     if np.isfinite(clearance):
-        for i, name in enumerate(model.coordinates):
-            if name.endswith(".position"):
+        for i, unit in enumerate(model.units):
+            if unit == "m":
                 scale[i] = clearance
                 scale[n + i] = clearance / RATE_SCALE_TIME
     return scale
@@ -195,7 +196,8 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     samples = _samples(model, p, x, v_imp)
     stats = {"wall_time_s": wall, **integ.stats()}
     result = MechanismResult(
-        name=scene.name, t=t, coordinates=list(model.coordinates), x=x, cut_joints=list(
+        name=scene.name, t=t, coordinates=list(model.coordinates), units=list(model.units),
+        x=x, cut_joints=list(
             model.cut_joint_names), clearance=clearance, drive_work=work,
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
         **cast(dict[str, Any], samples))
