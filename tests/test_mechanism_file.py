@@ -164,6 +164,8 @@ def test_the_reference_page_lists_every_key() -> None:
             *(f"mechanism.gravity.{k}" for k in reading._GRAVITY),
             *(f"mechanism.contact.{k}" for k in reading._CONTACT),
             *(f"mechanism.friction.{k}" for k in reading._FRICTION),
+            "[mechanism.torques]", "[[mechanism.forces]]",
+            *(f"forces.{k}" for k in reading._FORCE),
             *(f"run.{k}" for k in reading._RUN)]
     missing = [k for k in keys if f"`{k}`" not in page]
     assert not missing, f"keys missing from docs/reference/mechanism-file.md: {missing}"

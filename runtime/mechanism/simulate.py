@@ -39,8 +39,9 @@ class MechanismResult:
     last); ``acceleration``: (samples, n); per cut clearance joint (columns in
     ``cut_joints``): ``eccentricity`` (samples, nc, 2), ``normal_force``, ``penetration``;
     ``driving_torque`` (N m) and the energies (J): ``kinetic``, ``potential``,
-    ``contact_potential``, ``drive_work`` (the driver's work since t = 0, integrated in the
-    loop) and ``dissipated``; ``impacts``: the located contact phases."""
+    ``contact_potential``, ``drive_work`` (the driver's and the applied loads' work since
+    t = 0, integrated in the loop) and ``dissipated``; ``impacts``: the located contact
+    phases."""
 
     name: str
     t: np.ndarray
@@ -153,7 +154,8 @@ def assembled_state(model: MechanismModel, p: np.ndarray, t0: float = 0.0,
                                + "; check the joints' points and the bodies' lengths, or "
                                "give the coordinates' starting values in an [initial] table "
                                "(e.g. a rocker's angle near its assembled value)")
-    rate = model.function("outputs")(x, [], p, np.zeros(len(model.clearance_joints)))[1][0]
+    rate = model.function("outputs")(x, np.zeros(model.n_loads), p,
+                                     np.zeros(len(model.clearance_joints)))[1][0]
     x[n:2 * n - 1] = np.linalg.lstsq(e_q, -e_theta * rate, rcond=None)[0]
     return x
 
@@ -165,13 +167,14 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     p = model.parameter_vector(scene.mechanism)
     run = scene.run
     x0 = assembled_state(model, p, start=scene.initial)
+    loads = load_functions(scene)
     nc = len(model.clearance_joints)
     clearance = np.array([j.radial_clearance for j in scene.mechanism.joints
                           if j.kind == "clearance" and j.name in model.cut_joint_names])
     clearance = np.array([next(j.radial_clearance for j in scene.mechanism.joints
                                if j.name == name) for name in model.cut_joint_names])
     integ = NativeIntegrator(model, p, _scale(model, scene), np.zeros((nc, 2), np.int32),
-                             clearance, np.zeros(0, np.int32), (), rtol=run.rtol,
+                             clearance, np.zeros(0, np.int32), loads, rtol=run.rtol,
                              atol=run.atol, max_steps=run.max_steps, max_events=MAX_EVENTS,
                              model_gaps=True)
     t = np.arange(run.n_outputs + 1) * run.output_step
@@ -181,7 +184,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     values, v_out, status = integ.integrate(float(t[-1]), t[1:])
     wall = time.perf_counter() - started
     if status:
-        raise_for_status(status, integ, [], lambda: None)
+        raise_for_status(status, integ, list(model.structure.load_inputs), lambda: None)
     nx = model.n_state
     x = np.vstack([x0, values[:, :nx]])
     v_imp = np.vstack([v_first, v_out]) if nc else np.zeros((len(t), 0))
@@ -193,7 +196,8 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     for r in np.flatnonzero(~np.isfinite(rows[:, 9])):  # phases open at the end
         rows[r, 11:14] += final[nx + 1 + 3 * int(rows[r, 0]):nx + 4 + 3 * int(rows[r, 0])]
     impacts = phase_table(cast(Any, SimpleNamespace(model=model)), rows, float(t[-1]))
-    samples = _samples(model, p, x, v_imp)
+    tau = _load_values(loads, t)
+    samples = _samples(model, p, x, v_imp, tau)
     stats = {"wall_time_s": wall, **integ.stats()}
     result = MechanismResult(
         name=scene.name, t=t, coordinates=list(model.coordinates), units=list(model.units),
@@ -202,12 +206,27 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
         **cast(dict[str, Any], samples))
     if compare_ideal:
-        result.ideal = ideal_motion(model, p, t, scene.initial)
+        result.ideal = ideal_motion(model, p, t, scene.initial, tau)
     return result
 
 
-def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndarray
-             ) -> dict[str, np.ndarray]:
+def load_functions(scene: MechanismScene) -> tuple[Any, ...]:
+    """The applied loads' expressions of t, parsed, in the order of the model's input."""
+    from jointplay.scene.expressions import parse_expression
+
+    return tuple(parse_expression(text, field="mechanism loads")
+                 for text in scene.mechanism.load_expressions())
+
+
+def _load_values(loads: tuple[Any, ...], t: np.ndarray) -> np.ndarray:
+    """The loads at times t: (len(t), loads)."""
+    if not loads:
+        return np.zeros((len(t), 0))
+    return np.stack([np.asarray(f.numpy(t), dtype=float) for f in loads], axis=1)
+
+
+def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndarray,
+             tau: np.ndarray) -> dict[str, np.ndarray]:
     outputs, contact, gaps = (model.function(name) for name in ("outputs", "contact", "gaps"))
     rows = len(x)
     n, nc = model.n_coordinates, len(model.clearance_joints)
@@ -216,7 +235,8 @@ def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndar
            "contact_potential": np.zeros(rows), "eccentricity": np.zeros((rows, nc, 2)),
            "normal_force": np.zeros((rows, nc)), "penetration": np.zeros((rows, nc))}
     for k in range(rows):
-        torque, _, kinetic, potential, contact_pot, acc, _ = outputs(x[k], [], p, v_imp[k])
+        torque, _, kinetic, potential, contact_pot, acc, _ = outputs(x[k], tau[k], p,
+                                                                     v_imp[k])
         out["driving_torque"][k] = torque[0]
         out["kinetic"][k], out["potential"][k] = kinetic[0], potential[0]
         out["contact_potential"][k] = contact_pot[0]
@@ -230,7 +250,8 @@ def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndar
 
 
 def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
-                 start: dict[str, float] | None = None) -> dict[str, np.ndarray]:
+                 start: dict[str, float] | None = None, tau: np.ndarray | None = None
+                 ) -> dict[str, np.ndarray]:
     """The ideal mechanism (every clearance joint ideal) at times t, where the driver moves it
     completely: positions by Newton's method on the loop closure, velocities and accelerations
     from its first and second derivatives, the driving torque from the principle with the
@@ -262,12 +283,13 @@ def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
         if np.max(np.abs(e)) > 1e-10:
             raise SimulationError(f"the ideal mechanism cannot be assembled at t = {tk:.6g} s "
                                   "(a dead point of the loop?)")
-        rate = outputs(state, [], p, zeros)[1][0]
+        loads = tau[k] if tau is not None else np.zeros(model.n_loads)
+        rate = outputs(state, loads, p, zeros)[1][0]
         state[n:2 * n - 1] = np.linalg.solve(e_q, -e_theta * rate)
         _, _, _, gamma = closure(state, p)
         a = np.zeros(n)
         a[:n - 1] = np.linalg.solve(e_q, -gamma)
-        r = residual(state, a, p)[0]
+        r = residual(state, a, loads, p)[0]
         # Constraint forces lam (on the journals) balance the tree's rows: R_q = e_q^T lam;
         # the driver supplies the rest of its row: tau = R_theta - e_theta . lam.
         lam = np.linalg.solve(e_q.T, r[:n - 1])
