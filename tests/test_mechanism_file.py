@@ -203,3 +203,16 @@ def test_commands_for_arms_only_refuse_a_mechanism(tmp_path: Path,
                  "friction.mu", "--out", str(tmp_path / "cal")]) == 2
     assert "mechanism file" in capsys.readouterr().err
     assert not (tmp_path / "cal").exists()
+
+
+def test_a_journal_through_its_bearing_stops_the_run(tmp_path: Path,
+                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    """Rubber-soft contact (E = 10 MPa) lets the journal sink 16 mm into its bearing: the
+    run stops (exit 1) at the onset of that contact, by its located deepest point, and writes
+    nothing."""
+    figures = tmp_path / "figures"
+    assert main(["simulate", str(SCENE), "--set", "slider_pin.bearing_E=1e7", "--set",
+                 "slider_pin.journal_E=1e7", "--no-verify", "--plot", str(figures)]) == 1
+    err = capsys.readouterr().err
+    assert "simulation stopped at t = 0.000227" in err and "into its bearing" in err
+    assert not figures.exists()

@@ -92,7 +92,16 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
               f"({', '.join(model.coordinates)})")
     result = simulate_mechanism(scene, model=model, compare_ideal=args.compare_ideal)
     if args.verify is not False:
-        result = with_accuracy(result, scene, model)
+        from jointplay.cli.simulate import CHECK_COST_RATIO, VERIFY_BUDGET_S
+
+        estimate = CHECK_COST_RATIO * float(result.stats["wall_time_s"])
+        if args.verify is None and estimate > VERIFY_BUDGET_S:
+            if not quiet:
+                print(f"accuracy not checked: the check (the same run at tolerances 10x "
+                      f"tighter) would take about {estimate:.0f} s; ask for it with --verify, "
+                      "or skip this note with --no-verify")
+        else:
+            result = with_accuracy(result, scene, model)
     written: list[str] = []
     with all_or_nothing(plan):
         if args.csv:

@@ -198,6 +198,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     impacts = phase_table(cast(Any, SimpleNamespace(model=model)), rows, float(t[-1]))
     tau = _load_values(loads, t)
     samples = _samples(model, p, x, v_imp, tau)
+    _check_penetration(scene, model, impacts)
     stats = {"wall_time_s": wall, **integ.stats()}
     result = MechanismResult(
         name=scene.name, t=t, coordinates=list(model.coordinates), units=list(model.units),
@@ -208,6 +209,30 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     if compare_ideal:
         result.ideal = ideal_motion(model, p, t, scene.initial, tau)
     return result
+
+
+def _check_penetration(scene: MechanismScene, model: MechanismModel, impacts: Impacts
+                       ) -> None:
+    """Stop (SimulationError) where a journal went further into its bearing than the contact
+    laws describe (:data:`jointplay.common.limits.MAX_PENETRATION_FRACTION` of its radius),
+    by each contact phase's located deepest point: a state no metal joint survives, reached
+    only from an impossible input."""
+    from jointplay.common.limits import MAX_PENETRATION_FRACTION
+
+    joints = {j.name: j for j in scene.mechanism.joints}
+    for k, name in enumerate(model.cut_joint_names):
+        limit = MAX_PENETRATION_FRACTION * joints[name].clearance["journal_radius"]
+        rows = np.flatnonzero((impacts.joint == k + 1) & (impacts.max_penetration > limit))
+        if rows.size:
+            first = rows[np.argmin(impacts.time[rows])]
+            at = float(impacts.time[first])
+            raise SimulationError(at, f"in the contact of {name} that begins here, its journal "
+                                  f"goes {impacts.max_penetration[first]:.3g} m into its "
+                                  f"bearing (deepest at t = "
+                                  f"{impacts.max_penetration_time[first]:.6g} s), beyond "
+                                  f"{MAX_PENETRATION_FRACTION:g} of its radius that the "
+                                  "contact laws describe; check the masses, speeds and "
+                                  "materials")
 
 
 def load_functions(scene: MechanismScene) -> tuple[Any, ...]:
@@ -281,8 +306,8 @@ def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
                 break
         e, e_q, e_theta, _ = closure(state, p)
         if np.max(np.abs(e)) > 1e-10:
-            raise SimulationError(f"the ideal mechanism cannot be assembled at t = {tk:.6g} s "
-                                  "(a dead point of the loop?)")
+            raise SimulationError(float(tk), "the ideal mechanism cannot be assembled here (a "
+                                  "loop that cannot close, or a dead point of the loop)")
         loads = tau[k] if tau is not None else np.zeros(model.n_loads)
         rate = outputs(state, loads, p, zeros)[1][0]
         state[n:2 * n - 1] = np.linalg.solve(e_q, -e_theta * rate)
