@@ -311,16 +311,19 @@ def functions(structure: MechanismStructure) -> list[ca.Function]:
                      ["x", "tau", "p", "v_imp"], ["xdot"], opts)
     jac = ca.Function("jac_forward_dynamics", [x, tau, p, v], [ca.jacobian(xdot, x)],
                       ["x", "tau", "p", "v_imp"], ["jac_x"], opts)
-    contact = ca.Function("contact", [x, p, v], [eq.contact[k] for k in CONTACT_OUTPUTS],
+    contact = ca.Function("contact", [x, p, v],
+                          [ca.densify(eq.contact[k]) for k in CONTACT_OUTPUTS],
                           ["x", "p", "v_imp"], list(CONTACT_OUTPUTS), opts)
-    gaps = ca.Function("gaps", [x, p], eq.gaps, ["x", "p"],
+    gaps = ca.Function("gaps", [x, p], [ca.densify(g) for g in eq.gaps], ["x", "p"],
                        ["delta", "rate", "ex", "ey"], opts)
     power = ca.Function("drive_power", [x, tau, p, v],
-                        [eq.driving_torque * eq.driver_rate + eq.load_power],
+                        [ca.densify(eq.driving_torque * eq.driver_rate + eq.load_power)],
                         ["x", "tau", "p", "v_imp"], ["power"], opts)
+    # Dense outputs: a structural zero (no driver, no contact) is still a value per sample.
     outputs = ca.Function("outputs", [x, tau, p, v],
-                          [eq.driving_torque, eq.driver_rate, eq.kinetic, eq.potential,
-                           eq.contact_potential, eq.accelerations, eq.points],
+                          [ca.densify(e) for e in (
+                              eq.driving_torque, eq.driver_rate, eq.kinetic, eq.potential,
+                              eq.contact_potential, eq.accelerations, eq.points)],
                           ["x", "tau", "p", "v_imp"],
                           ["driving_torque", "driver_rate", "kinetic", "potential",
                            "contact_potential", "acceleration", "points"], opts)

@@ -252,25 +252,22 @@ def _load_values(loads: tuple[Any, ...], t: np.ndarray) -> np.ndarray:
 
 def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndarray,
              tau: np.ndarray) -> dict[str, np.ndarray]:
-    outputs, contact, gaps = (model.function(name) for name in ("outputs", "contact", "gaps"))
+    """The outputs at every sample, each function evaluated over all samples in one C loop."""
+    from jointplay.sim.native import map_function
+
     rows = len(x)
-    n, nc = model.n_coordinates, len(model.clearance_joints)
-    out = {"acceleration": np.zeros((rows, n)), "driving_torque": np.zeros(rows),
-           "kinetic": np.zeros(rows), "potential": np.zeros(rows),
-           "contact_potential": np.zeros(rows), "eccentricity": np.zeros((rows, nc, 2)),
-           "normal_force": np.zeros((rows, nc)), "penetration": np.zeros((rows, nc))}
-    for k in range(rows):
-        torque, _, kinetic, potential, contact_pot, acc, _ = outputs(x[k], tau[k], p,
-                                                                     v_imp[k])
-        out["driving_torque"][k] = torque[0]
-        out["kinetic"][k], out["potential"][k] = kinetic[0], potential[0]
-        out["contact_potential"][k] = contact_pot[0]
-        out["acceleration"][k] = acc
-        if nc:
-            values = contact(x[k], p, v_imp[k])
-            out["normal_force"][k], out["penetration"][k] = values[3], values[0]
-            g = gaps(x[k], p)
-            out["eccentricity"][k, :, 0], out["eccentricity"][k, :, 1] = g[2], g[3]
+    nc = len(model.clearance_joints)
+    torque, _, kinetic, potential, contact_pot, acc, _ = map_function(
+        model, "outputs", [x, tau, p, v_imp], rows)
+    out = {"acceleration": acc, "driving_torque": torque[:, 0], "kinetic": kinetic[:, 0],
+           "potential": potential[:, 0], "contact_potential": contact_pot[:, 0],
+           "eccentricity": np.zeros((rows, nc, 2)), "normal_force": np.zeros((rows, nc)),
+           "penetration": np.zeros((rows, nc))}
+    if nc:
+        contact = map_function(model, "contact", [x, p, v_imp], rows)
+        gaps = map_function(model, "gaps", [x, p], rows)
+        out["penetration"], out["normal_force"] = contact[0], contact[3]
+        out["eccentricity"] = np.stack([gaps[2], gaps[3]], axis=2)
     return out
 
 
