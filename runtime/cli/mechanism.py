@@ -14,7 +14,6 @@ from jointplay.common.errors import DescriptionError
 
 # Flags of ``simulate`` that mechanism runs do not take yet, and why.
 _UNSUPPORTED = {
-    "out": "mechanism runs write no results file yet; use --csv for the samples",
     "animate": "mechanism runs have no animation yet",
     "integrator": "mechanism runs use the compiled BDF only",
     "step": "mechanism runs use the compiled BDF only (no fixed step)",
@@ -81,6 +80,8 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
     plan.input("scene", args.scene)
     if args.csv:
         plan.file("--csv", args.csv)
+    if args.out:
+        plan.file("--out", args.out)
     if args.plot:
         plan.folder("--plot", args.plot, "its figures", pattern="*.png")
     plan.check()
@@ -104,6 +105,11 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
             result = with_accuracy(result, scene, model)
     written: list[str] = []
     with all_or_nothing(plan):
+        if args.out:
+            from jointplay.mechanism.results import write_mechanism_result
+
+            write_mechanism_result(result, args.out)
+            written.append(args.out)
         if args.csv:
             write_csv(result, args.csv)
             written.append(args.csv)
