@@ -19,7 +19,6 @@ _UNSUPPORTED = {
     "step": "mechanism runs use the compiled BDF only (no fixed step)",
     "plausibility": "mechanism runs stop on a failed step; they have no plausibility setting",
 }
-CSV_COLUMNS_DOC = "t, every coordinate and rate, accelerations, driving torque, energies"
 
 
 def refuse_unsupported(args: argparse.Namespace) -> None:
