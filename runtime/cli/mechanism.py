@@ -23,6 +23,8 @@ _UNSUPPORTED = {
 
 def refuse_unsupported(args: argparse.Namespace) -> None:
     for flag, why in _UNSUPPORTED.items():
+        if flag == "integrator" and args.integrator == "bdf":
+            continue
         if getattr(args, flag, None) not in (None, False):
             raise DescriptionError(f"--{flag.replace('_', '-')}", f"{why}; drop the flag")
 
