@@ -397,3 +397,17 @@ def test_friction_on_a_turning_bearing_balances_its_dissipation(tmp_path: Any) -
     assert friction > 1e-3  # J
     assert result.dissipated[-1] == pytest.approx(friction, rel=1e-6)
     assert np.max(np.abs(result.energy_residual)) < 1e-4 * friction
+
+
+def test_the_ideal_mechanism_at_once_equals_sample_by_sample(scene: Any, model: Any) -> None:
+    """The ideal motion solved for every sample at once from the clearance run's states
+    equals the same solved sample by sample, each from the last (to round-off)."""
+    from jointplay.mechanism.simulate import ideal_motion
+
+    result = simulate_mechanism(scene, model=model, compare_ideal=True)
+    assert result.ideal is not None
+    one_by_one = ideal_motion(model, model.parameter_vector(scene.mechanism), result.t)
+    for key in ("x", "acceleration", "driving_torque"):
+        scale = np.max(np.abs(one_by_one[key]))
+        np.testing.assert_allclose(result.ideal[key], one_by_one[key], rtol=0,
+                                   atol=1e-12 * scale)
