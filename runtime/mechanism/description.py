@@ -1,0 +1,261 @@
+"""The typed description of a mechanism scene, its topology check and its numbers.
+
+:meth:`Mechanism.structure` decides the generated code (which joint is cut, which driven);
+:meth:`Mechanism.parameter_values` gives the runtime parameters in slot order. Topology: the
+joints that are not clearance joints must form a forest reaching every body from the ground
+(a loop closed only by ideal or locked joints, or by a prismatic joint, is refused: it would
+need constraint equations); each clearance joint then closes a loop and is cut, a force
+element between its bearing (on the parent) and its journal (on the child).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+from typing import Any, cast
+
+from jointplay.common.errors import DescriptionError
+from jointplay.mechanism.structure import (
+    CLEARANCE_KEYS,
+    JointStructure,
+    MechanismStructure,
+    parameter_names,
+)
+
+GROUND = "ground"
+# dataclasses.replace with field names chosen at run time (each checked before the call).
+_replace = cast(Any, dataclasses.replace)
+# run.output_step must divide run.t_end within this relative tolerance.
+_DIVIDES = 1e-9
+
+
+@dataclass(frozen=True)
+class Body:
+    name: str
+    mass: float  # kg
+    inertia: float  # kg m^2 about the centre of mass
+    com: tuple[float, float]  # m, the centre of mass in the body's frame
+
+
+@dataclass(frozen=True)
+class Joint:
+    name: str
+    type: str  # revolute | prismatic
+    kind: str  # ideal | clearance | locked
+    parent: str
+    child: str
+    at_parent: tuple[float, float]  # m, in the parent's frame
+    at_child: tuple[float, float]  # m, in the child's frame
+    angle: float = 0.0  # rad: a locked joint's angle; a prismatic child's fixed angle
+    axis: tuple[float, float] = (1.0, 0.0)  # unit sliding direction in the parent's frame
+    clearance: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def radial_clearance(self) -> float:
+        return self.clearance["bearing_radius"] - self.clearance["journal_radius"]
+
+
+@dataclass(frozen=True)
+class Driver:
+    joint: str
+    angle: str | None  # an expression of t (rad), or None for start + speed t
+    speed: float  # rad/s
+    start: float  # rad
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    t_end: float = 0.012
+    output_step: float = 1.0e-5
+    rtol: float = 1.0e-6
+    atol: float = 1.0e-6  # scaled: rad, and fractions of the smallest radial clearance (m)
+    max_steps: int = 200000
+
+    @property
+    def n_outputs(self) -> int:
+        return round(self.t_end / self.output_step)
+
+    def check(self) -> None:
+        n = self.t_end / self.output_step
+        if abs(n - round(n)) > _DIVIDES * n or round(n) < 1:
+            raise DescriptionError("run.output_step", f"must divide run.t_end ({self.t_end:g} "
+                                   f"s) a whole number of times, got {self.output_step:g}")
+        if round(n) > 10_000_000:
+            raise DescriptionError("run.output_step", "asks for more than 1e7 samples; make "
+                                   "it larger")
+
+    def tighter(self, factor: float = 10.0) -> RunSettings:
+        return dataclasses.replace(self, rtol=self.rtol / factor, atol=self.atol / factor,
+                                   max_steps=self.max_steps * 10)
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    name: str
+    bodies: tuple[Body, ...]
+    joints: tuple[Joint, ...]
+    driver: Driver | None
+    gravity: tuple[float, float] | None
+    contact_law: str
+    exponent: float
+    restitution: float
+    impact_speed_floor: float
+    friction_law: str
+    friction_ramp: str
+    mu: float
+    v0: float
+    v1: float
+
+    @property
+    def has_clearance(self) -> bool:
+        return any(j.kind == "clearance" for j in self.joints)
+
+    def check(self) -> None:
+        """The topology (see the module docstring); raises naming the joint and the fix."""
+        self.structure()
+
+    def structure(self) -> MechanismStructure:
+        order = _tree_order(self)
+        cut = {j.name for j in self.joints if j.kind == "clearance"}
+        driven = self.driver.joint if self.driver else None
+        joints = tuple(JointStructure(name=j.name, type=j.type, kind=j.kind, parent=j.parent,
+                                      child=j.child, cut=j.name in cut,
+                                      driven=j.name == driven)
+                       for j in order + [j for j in self.joints if j.name in cut])
+        has_clearance = bool(cut)
+        friction = has_clearance and self.friction_law != "none"
+        return MechanismStructure(
+            bodies=tuple(b.name for b in self.bodies), joints=joints,
+            gravity=self.gravity is not None,
+            contact_law=self.contact_law if has_clearance else None,
+            friction_law=self.friction_law if friction else "none",
+            friction_ramp=self.friction_ramp if friction else None,
+            driver_angle=self.driver.angle if self.driver else None)
+
+    def parameter_values(self) -> dict[str, float]:
+        """Every runtime parameter by name (:func:`parameter_names`' names)."""
+        values: dict[str, float] = {}
+        for b in self.bodies:
+            values |= {f"{b.name}.mass": b.mass, f"{b.name}.inertia": b.inertia,
+                       f"{b.name}.com_x": b.com[0], f"{b.name}.com_y": b.com[1]}
+        if self.gravity is not None:
+            values |= {"gravity.x": self.gravity[0], "gravity.y": self.gravity[1]}
+        for j in self.joints:
+            values |= {f"{j.name}.parent_x": j.at_parent[0], f"{j.name}.parent_y": j.at_parent[1],
+                       f"{j.name}.child_x": j.at_child[0], f"{j.name}.child_y": j.at_child[1],
+                       f"{j.name}.axis_x": j.axis[0], f"{j.name}.axis_y": j.axis[1],
+                       f"{j.name}.angle": j.angle}
+            values |= {f"{j.name}.{k}": j.clearance[k] for k in CLEARANCE_KEYS
+                       if k in j.clearance}
+        if self.driver is not None:
+            values |= {"driver.start": self.driver.start, "driver.speed": self.driver.speed}
+        values |= {"contact.exponent": self.exponent, "contact.restitution": self.restitution,
+                   "contact.impact_speed_floor": self.impact_speed_floor,
+                   "friction.mu": self.mu, "friction.v0": self.v0, "friction.v1": self.v1}
+        names = parameter_names(self.structure())
+        return {name: values[name] for name in names}
+
+    def with_values(self, changes: dict[str, float]) -> Mechanism:
+        """A copy with parameters changed by name (``crank.mass``, ``slider_pin.journal_radius``,
+        ``friction.mu``...); structure never changes here."""
+        out = self
+        for name, value in changes.items():
+            out = _with_value(out, name, float(value))
+        out.check()
+        return out
+
+
+def _with_value(m: Mechanism, name: str, value: float) -> Mechanism:
+    owner, _, key = name.partition(".")
+    if owner in ("contact", "friction"):
+        attr = {"exponent": "exponent", "restitution": "restitution",
+                "impact_speed_floor": "impact_speed_floor", "mu": "mu", "v0": "v0",
+                "v1": "v1"}.get(key)
+        if attr is None:
+            raise DescriptionError(name, "is no parameter of the mechanism")
+        return cast(Mechanism, _replace(m, **{attr: value}))
+    if owner == "driver" and m.driver is not None and key in ("speed", "start"):
+        return dataclasses.replace(m, driver=_replace(m.driver, **{key: value}))
+    for i, b in enumerate(m.bodies):
+        if b.name == owner and key in ("mass", "inertia", "com_x", "com_y"):
+            if key.startswith("com"):
+                com = (value, b.com[1]) if key == "com_x" else (b.com[0], value)
+                new = dataclasses.replace(b, com=com)
+            else:
+                new = _replace(b, **{key: value})
+            return dataclasses.replace(m, bodies=(*m.bodies[:i], new, *m.bodies[i + 1:]))
+    for i, j in enumerate(m.joints):
+        if j.name == owner and key in j.clearance:
+            new_joint = dataclasses.replace(j, clearance={**j.clearance, key: value})
+            return dataclasses.replace(m, joints=(*m.joints[:i], new_joint, *m.joints[i + 1:]))
+    raise DescriptionError(name, "is no parameter of the mechanism (a body's mass, inertia, "
+                           "com_x, com_y; a clearance joint's radii, E, nu; contact.*, "
+                           "friction.*, driver.speed)")
+
+
+def _tree_order(m: Mechanism) -> list[Joint]:
+    """The non-clearance joints, parents first; refuses loops of them and unplaced bodies."""
+    placed = {GROUND}
+    pending = [j for j in m.joints if j.kind != "clearance"]
+    order: list[Joint] = []
+    by_child: dict[str, Joint] = {}
+    for j in pending:
+        if j.child in by_child:
+            other = by_child[j.child]
+            raise DescriptionError(
+                f"joint {j.name!r}", f"closes a loop through body {j.child!r} (also the child "
+                f"of {other.name!r}) with no clearance joint in it; a loop closed only by "
+                "ideal, locked or prismatic joints needs constraint equations, which "
+                "mechanism files do not support: give one joint of the loop "
+                "kind = \"clearance\"")
+        by_child[j.child] = j
+    while pending:
+        ready = [j for j in pending if j.parent in placed]
+        if not ready:
+            j = pending[0]
+            raise DescriptionError(
+                f"joint {j.name!r}", f"its parent {j.parent!r} is reached from the ground "
+                "through no chain of ideal, locked or prismatic joints (parent towards the "
+                "ground): swap a joint's parent and child, or attach the body to the ground")
+        for j in ready:
+            if j.child in placed:
+                raise DescriptionError(f"joint {j.name!r}", "closes a loop of ideal joints; "
+                                       "give one joint of the loop kind = \"clearance\"")
+            placed.add(j.child)
+            order.append(j)
+            pending.remove(j)
+    unplaced = [b.name for b in m.bodies if b.name not in placed]
+    if unplaced:
+        raise DescriptionError("mechanism.joints", f"bodies {', '.join(unplaced)} are joined "
+                               "to the ground by no ideal, locked or prismatic joints (a "
+                               "clearance joint closes a loop here, it does not place a body):"
+                               " add the joints that place them")
+    for j in m.joints:
+        if j.kind == "clearance" and j.parent == j.child:
+            raise DescriptionError(f"joint {j.name!r}", "joins a body to itself")
+    return order
+
+
+@dataclass(frozen=True)
+class MechanismScene:
+    """A mechanism and what to run: the file's contents, validated."""
+
+    name: str
+    description: str
+    mechanism: Mechanism
+    run: RunSettings
+    source: str | None = None
+
+    def with_run(self, **changes: float) -> MechanismScene:
+        run = cast(RunSettings, _replace(self.run, **changes))
+        run.check()
+        return dataclasses.replace(self, run=run)
+
+    def with_mechanism(self, mechanism: Mechanism) -> MechanismScene:
+        return dataclasses.replace(self, mechanism=mechanism)
+
+    @property
+    def smallest_clearance(self) -> float:
+        gaps = [j.radial_clearance for j in self.mechanism.joints if j.kind == "clearance"]
+        return min(gaps) if gaps else math.nan

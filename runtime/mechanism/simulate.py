@@ -1,0 +1,239 @@
+"""Simulate a mechanism: the compiled BDF with located impacts, outputs, the ideal mechanism.
+
+The run is the serial arms' integrator (:mod:`jointplay.sim.native`, driver.c) on the
+mechanism's model: the gaps of the cut clearance joints and the driver's power come from the
+model's own functions, every contact onset and separation is located on the dense output and
+each contact phase's peak force and deepest penetration are located too. The start is the
+ideal mechanism's state at t = 0 (loops closed with every journal centred, velocities
+consistent), found by Newton's method on the loop-closure equations.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from types import SimpleNamespace
+from typing import Any, cast
+
+import numpy as np
+
+from jointplay.common.errors import DescriptionError, SimulationError
+from jointplay.mechanism.description import MechanismScene
+from jointplay.mechanism.model import MechanismModel, model_for
+from jointplay.results.records import Impacts
+from jointplay.sim.bdf import phase_table
+from jointplay.sim.native import NativeIntegrator, raise_for_status
+
+# The state's scale (driver.c integrates x / scale): lengths in radial clearances, their rates
+# in clearances per RATE_SCALE_TIME, angles and their rates as they are.
+RATE_SCALE_TIME = 1e-3
+MAX_EVENTS = 100000
+_NEWTON_STEPS = 50
+
+
+@dataclass
+class MechanismResult:
+    """A mechanism run's samples and what was located (SI units).
+
+    ``x``: (samples, 2 n) coordinates then rates (names in ``coordinates``; the clock ``t``
+    last); ``acceleration``: (samples, n); per cut clearance joint (columns in
+    ``cut_joints``): ``eccentricity`` (samples, nc, 2), ``normal_force``, ``penetration``;
+    ``driving_torque`` (N m) and the energies (J): ``kinetic``, ``potential``,
+    ``contact_potential``, ``drive_work`` (the driver's work since t = 0, integrated in the
+    loop) and ``dissipated``; ``impacts``: the located contact phases."""
+
+    name: str
+    t: np.ndarray
+    coordinates: list[str]
+    x: np.ndarray
+    acceleration: np.ndarray
+    cut_joints: list[str]
+    clearance: np.ndarray
+    eccentricity: np.ndarray
+    normal_force: np.ndarray
+    penetration: np.ndarray
+    driving_torque: np.ndarray
+    kinetic: np.ndarray
+    potential: np.ndarray
+    contact_potential: np.ndarray
+    drive_work: np.ndarray
+    dissipated: np.ndarray
+    impacts: Impacts
+    stats: dict[str, Any]
+    rtol: float
+    atol: float
+    ideal: dict[str, np.ndarray] | None = None
+    accuracy: Any = None
+    notes: list[str] = field(default_factory=list)
+
+    def coordinate(self, name: str) -> np.ndarray:
+        return self.x[:, self.coordinates.index(name)]
+
+    def rate(self, name: str) -> np.ndarray:
+        return self.x[:, len(self.coordinates) + self.coordinates.index(name)]
+
+    def coordinate_acceleration(self, name: str) -> np.ndarray:
+        return self.acceleration[:, self.coordinates.index(name)]
+
+    @property
+    def energy_residual(self) -> np.ndarray:
+        """Total energy change - drive work + dissipated (J): zero up to integration error."""
+        total = self.kinetic + self.potential + self.contact_potential
+        return total - total[0] - self.drive_work + self.dissipated
+
+
+def _scale(model: MechanismModel, scene: MechanismScene) -> np.ndarray:
+    n = model.n_coordinates
+    scale = np.ones(model.n_state)
+    clearance = scene.smallest_clearance
+    if np.isfinite(clearance):
+        for i, name in enumerate(model.coordinates):
+            if name.endswith(".position"):
+                scale[i] = clearance
+                scale[n + i] = clearance / RATE_SCALE_TIME
+    return scale
+
+
+def assembled_state(model: MechanismModel, p: np.ndarray, t0: float = 0.0) -> np.ndarray:
+    """The ideal mechanism's state at t0: every cut joint's eccentricity and its rate zero.
+
+    Newton's method on the closure equations from the free coordinates at 0 (least squares
+    where the loops leave freedom: the smallest change)."""
+    n = model.n_coordinates
+    x = np.zeros(2 * n)
+    x[n - 1], x[2 * n - 1] = t0, 1.0
+    if not model.clearance_joints:
+        return x
+    closure = model.function("closure")
+    free = slice(0, n - 1)
+    for _ in range(_NEWTON_STEPS):
+        e, e_q, _, _ = closure(x, p)
+        step = np.linalg.lstsq(e_q, -e, rcond=None)[0]
+        x[free] += step
+        if np.max(np.abs(step)) < 1e-15 * (1.0 + np.max(np.abs(x[free]))):
+            break
+    e, e_q, e_theta, _ = closure(x, p)
+    if np.max(np.abs(e)) > 1e-12:
+        raise DescriptionError("mechanism.joints", f"the loops do not close at t = {t0:g}: "
+                               f"a journal stays {np.max(np.abs(e)):.3g} m from its bearing's "
+                               "centre after Newton's method; check the joints' points and "
+                               "the bodies' lengths")
+    rate = model.function("outputs")(x, [], p, np.zeros(len(model.clearance_joints)))[1][0]
+    x[n:2 * n - 1] = np.linalg.lstsq(e_q, -e_theta * rate, rcond=None)[0]
+    return x
+
+
+def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = None,
+                       compare_ideal: bool = False) -> MechanismResult:
+    """Run a mechanism scene (see :class:`MechanismResult`)."""
+    model = model or model_for(scene.mechanism)
+    p = model.parameter_vector(scene.mechanism)
+    run = scene.run
+    x0 = assembled_state(model, p)
+    nc = len(model.clearance_joints)
+    clearance = np.array([j.radial_clearance for j in scene.mechanism.joints
+                          if j.kind == "clearance" and j.name in model.cut_joint_names])
+    clearance = np.array([next(j.radial_clearance for j in scene.mechanism.joints
+                               if j.name == name) for name in model.cut_joint_names])
+    integ = NativeIntegrator(model, p, _scale(model, scene), np.zeros((nc, 2), np.int32),
+                             clearance, np.zeros(0, np.int32), (), rtol=run.rtol,
+                             atol=run.atol, max_steps=run.max_steps, max_events=MAX_EVENTS,
+                             model_gaps=True)
+    t = np.arange(run.n_outputs + 1) * run.output_step
+    started = time.perf_counter()
+    integ.reset(x0)
+    _, v_first = integ.flags()
+    values, v_out, status = integ.integrate(float(t[-1]), t[1:])
+    wall = time.perf_counter() - started
+    if status:
+        raise_for_status(status, integ, [], lambda: None)
+    nx = model.n_state
+    x = np.vstack([x0, values[:, :nx]])
+    v_imp = np.vstack([v_first, v_out]) if nc else np.zeros((len(t), 0))
+    work = np.concatenate([[0.0], values[:, nx]])
+    per_joint = values[:, nx + 1:nx + 1 + 3 * nc].reshape(len(t) - 1, nc, 3)
+    dissipated = np.concatenate([[0.0], per_joint[:, :, 1:].sum(axis=(1, 2))])
+    rows = integ.phases()
+    final = integ.current()
+    for r in np.flatnonzero(~np.isfinite(rows[:, 9])):  # phases open at the end
+        rows[r, 11:14] += final[nx + 1 + 3 * int(rows[r, 0]):nx + 4 + 3 * int(rows[r, 0])]
+    impacts = phase_table(cast(Any, SimpleNamespace(model=model)), rows, float(t[-1]))
+    samples = _samples(model, p, x, v_imp)
+    stats = {"wall_time_s": wall, **integ.stats()}
+    result = MechanismResult(
+        name=scene.name, t=t, coordinates=list(model.coordinates), x=x, cut_joints=list(
+            model.cut_joint_names), clearance=clearance, drive_work=work,
+        dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
+        **cast(dict[str, Any], samples))
+    if compare_ideal:
+        result.ideal = ideal_motion(model, p, t)
+    return result
+
+
+def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndarray
+             ) -> dict[str, np.ndarray]:
+    outputs, contact, gaps = (model.function(name) for name in ("outputs", "contact", "gaps"))
+    rows = len(x)
+    n, nc = model.n_coordinates, len(model.clearance_joints)
+    out = {"acceleration": np.zeros((rows, n)), "driving_torque": np.zeros(rows),
+           "kinetic": np.zeros(rows), "potential": np.zeros(rows),
+           "contact_potential": np.zeros(rows), "eccentricity": np.zeros((rows, nc, 2)),
+           "normal_force": np.zeros((rows, nc)), "penetration": np.zeros((rows, nc))}
+    for k in range(rows):
+        torque, _, kinetic, potential, contact_pot, acc, _ = outputs(x[k], [], p, v_imp[k])
+        out["driving_torque"][k] = torque[0]
+        out["kinetic"][k], out["potential"][k] = kinetic[0], potential[0]
+        out["contact_potential"][k] = contact_pot[0]
+        out["acceleration"][k] = acc
+        if nc:
+            values = contact(x[k], p, v_imp[k])
+            out["normal_force"][k], out["penetration"][k] = values[3], values[0]
+            g = gaps(x[k], p)
+            out["eccentricity"][k, :, 0], out["eccentricity"][k, :, 1] = g[2], g[3]
+    return out
+
+
+def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray) -> dict[str, np.ndarray]:
+    """The ideal mechanism (every clearance joint ideal) at times t, where the driver moves it
+    completely: positions by Newton's method on the loop closure, velocities and accelerations
+    from its first and second derivatives, the driving torque from the principle with the
+    joints' constraint forces. Refuses (DescriptionError) a mechanism that keeps freedom."""
+    n = model.n_coordinates
+    ncons = 2 * len(model.clearance_joints)
+    if ncons != n - 1:
+        raise DescriptionError("--compare-ideal", f"the ideal mechanism keeps {n - 1 - ncons} "
+                               "degrees of freedom the driver does not fix (or its loops "
+                               "over-constrain it); --compare-ideal supports mechanisms the "
+                               "driver moves completely once their clearance joints are "
+                               "ideal")
+    closure, residual = model.function("closure"), model.function("ideal_residual")
+    outputs = model.function("outputs")
+    zeros = np.zeros(len(model.clearance_joints))
+    x = np.zeros((len(t), 2 * n))
+    acc = np.zeros((len(t), n))
+    torque = np.zeros(len(t))
+    state = assembled_state(model, p, float(t[0]))
+    for k, tk in enumerate(t):
+        state[n - 1] = tk
+        for _ in range(_NEWTON_STEPS):  # from the last sample's positions
+            e, e_q, _, _ = closure(state, p)
+            step = np.linalg.solve(e_q, -e)
+            state[:n - 1] += step
+            if np.max(np.abs(step)) < 1e-14 * (1.0 + np.max(np.abs(state[:n - 1]))):
+                break
+        e, e_q, e_theta, _ = closure(state, p)
+        if np.max(np.abs(e)) > 1e-10:
+            raise SimulationError(f"the ideal mechanism cannot be assembled at t = {tk:.6g} s "
+                                  "(a dead point of the loop?)")
+        rate = outputs(state, [], p, zeros)[1][0]
+        state[n:2 * n - 1] = np.linalg.solve(e_q, -e_theta * rate)
+        _, _, _, gamma = closure(state, p)
+        a = np.zeros(n)
+        a[:n - 1] = np.linalg.solve(e_q, -gamma)
+        r = residual(state, a, p)[0]
+        # Constraint forces lam (on the journals) balance the tree's rows: R_q = e_q^T lam;
+        # the driver supplies the rest of its row: tau = R_theta - e_theta . lam.
+        lam = np.linalg.solve(e_q.T, r[:n - 1])
+        torque[k] = r[n - 1] - e_theta @ lam
+        x[k], acc[k] = state, a
+    return {"x": x, "acceleration": acc, "driving_torque": torque}
