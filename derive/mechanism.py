@@ -88,7 +88,10 @@ def derive(structure: MechanismStructure) -> _Equations:
     def P(name: str) -> Any:
         return p[names.index(name)]
 
-    index = {c.joint: i for i, c in enumerate(coords) if c.joint is not None}
+    index: dict[str, int] = {}  # each joint's first coordinate
+    for i, c in enumerate(coords):
+        if c.joint is not None:
+            index.setdefault(c.joint, i)
     # The kinematics take the driven angle as its own symbol th (with rates thd, thdd); it is
     # replaced by theta(clock) at the end.
     th, thd, thdd = ca.SX.sym("th"), ca.SX.sym("thd"), ca.SX.sym("thdd")
@@ -96,6 +99,10 @@ def derive(structure: MechanismStructure) -> _Equations:
     for joint in structure.tree_joints:
         parent = frames[joint.parent]
         j = joint.name
+        if joint.type == "floating":  # a body held by clearance joints only: x, y, angle
+            k = index[j]
+            frames[joint.child] = _Frame(q[k + 2], ca.vertcat(q[k], q[k + 1]))
+            continue
         at_parent = ca.vertcat(P(f"{j}.parent_x"), P(f"{j}.parent_y"))
         at_child = ca.vertcat(P(f"{j}.child_x"), P(f"{j}.child_y"))
         if joint.type == "prismatic":

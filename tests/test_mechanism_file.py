@@ -79,15 +79,23 @@ def test_bad_fields_are_named_with_what_is_allowed(tmp_path: Path, old: str, new
     assert field in message and words in message, message
 
 
-def test_a_body_no_ideal_joint_places_is_refused(tmp_path: Path) -> None:
-    # The slider's guide removed: the slider hangs on the clearance joint alone.
+def test_a_body_held_by_clearance_joints_only_floats(tmp_path: Path) -> None:
+    # The slider's guide removed: the slider hangs on the clearance joint alone, free in the
+    # plane (x, y, angle).
     start = TEXT.index('name = "guide"')
     block_start = TEXT.rindex("[[mechanism.joints]]", 0, start)
     block_end = TEXT.index("[[mechanism.joints]]", start)
     path = tmp_path / "variant.toml"
     path.write_text(TEXT[:block_start] + TEXT[block_end:], encoding="utf-8")
+    structure = load_mechanism_scene(path).mechanism.structure()
+    floating = [j for j in structure.joints if j.type == "floating"]
+    assert [j.child for j in floating] == ["slider"]
+    # A body no joint touches is refused.
+    path.write_text(TEXT.replace("[[mechanism.joints]]", '[[mechanism.bodies]]\nname = '
+                                 '"extra"\nmass = 1.0\ninertia = 1.0\n\n[[mechanism.joints]]', 1),
+                    encoding="utf-8")
     message = _refused(path)
-    assert "slider" in message and "place" in message
+    assert "'extra'" in message and "joined to nothing" in message
 
 
 def test_the_command_refuses_with_exit_2_and_writes_nothing(tmp_path: Path,
@@ -118,3 +126,78 @@ def test_simulate_compare_ideal_plot(tmp_path: Path, capsys: pytest.CaptureFixtu
     header = csv.read_text(encoding="utf-8").splitlines()[0].split(",")
     assert header[:2] == ["time", "guide.position"] and "slider_pin.normal_force" in header
     assert len(csv.read_text(encoding="utf-8").splitlines()) == 302
+
+
+def test_inspect_build_derive_and_the_python_api(tmp_path: Path,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    import jointplay
+
+    assert main(["inspect", str(SCENE)]) == 0
+    out = capsys.readouterr().out
+    assert "slider_pin: revolute clearance, slider -> rod (cut: a force element)" in out
+    assert "slider_pin.bearing_radius = 0.0105" in out
+    assert main(["build", str(SCENE)]) == 0
+    assert "guide.position, crank_pin.angle, t" in capsys.readouterr().out
+    assert main(["derive", str(SCENE), "--out", str(tmp_path / "model")]) == 0
+    text = (tmp_path / "model" / "model.c").read_text(encoding="utf-8")
+    assert text.startswith("/* GENERATED FILE: DO NOT EDIT.") and "input hash: " in text
+    with pytest.raises(DescriptionError, match="load_mechanism_scene"):
+        jointplay.load_scene(SCENE)
+    scene = jointplay.load_mechanism_scene(SCENE).with_run(t_end=0.002)
+    result = jointplay.simulate_mechanism(scene, parameters={"crank_pin.parent_x": 0.04},
+                                          compare_ideal=True)
+    assert result.ideal is not None
+    # A 0.04 m crank: the ideal slider starts at r + l.
+    assert result.ideal["x"][0, 0] == pytest.approx(0.16, abs=1e-14)
+    with pytest.raises(DescriptionError, match="jointplay inspect"):
+        jointplay.simulate_mechanism(scene, parameters={"crank.length": 0.04})
+
+
+def test_the_reference_page_lists_every_key() -> None:
+    from jointplay.mechanism import reading
+
+    page = Path("docs/reference/mechanism-file.md").read_text(encoding="utf-8")
+    keys = [*(k for k in reading._TOP if k not in ("mechanism", "run")),
+            "[[mechanism.bodies]]", "[[mechanism.joints]]",
+            *(f"bodies.{k}" for k in reading._BODY), *(f"joints.{k}" for k in reading._JOINT),
+            *(f"mechanism.driver.{k}" for k in reading._DRIVER),
+            *(f"mechanism.gravity.{k}" for k in reading._GRAVITY),
+            *(f"mechanism.contact.{k}" for k in reading._CONTACT),
+            *(f"mechanism.friction.{k}" for k in reading._FRICTION),
+            *(f"run.{k}" for k in reading._RUN)]
+    missing = [k for k in keys if f"`{k}`" not in page]
+    assert not missing, f"keys missing from docs/reference/mechanism-file.md: {missing}"
+
+
+def test_a_sweep_of_a_mechanism(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "slider_crank.toml").write_text(TEXT, encoding="utf-8")
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text('scene = "slider_crank.toml"\nmode = "zip"\n[run]\nt_end = 0.002\n'
+                     '[parameters."slider_pin.clearance"]\nvalues = [1e-4, 5e-4]\n'
+                     '[parameters."rod.mass"]\nvalues = [0.21, 0.3]\n', encoding="utf-8")
+    out = tmp_path / "out"
+    assert main(["sweep", str(sweep), "--out", str(out), "--quiet"]) == 0
+    lines = (out / "mechanism_sweep.csv").read_text(encoding="utf-8").splitlines()
+    header = lines[0].split(",")
+    assert header[:4] == ["slider_pin.clearance", "rod.mass", "impacts", "impact_rate"]
+    assert len(lines) == 3
+    first = dict(zip(header, map(float, lines[1].split(",")), strict=True))
+    assert first["slider_pin.clearance"] == 1e-4 and first["rod.mass"] == 0.21
+    # Within its clearance and a penetration from the ideal mechanism's slider.
+    assert 1e-4 <= first["slider_from_ideal_m"] < 2e-4
+    assert (out / "mechanism_sweep.png").is_file()
+    sweep.write_text('scene = "slider_crank.toml"\n[parameters."rod.mas"]\nvalues = [0.2]\n',
+                     encoding="utf-8")
+    assert main(["sweep", str(sweep), "--out", str(tmp_path / "bad")]) == 2
+    assert "rod.mas" in capsys.readouterr().err
+    assert not (tmp_path / "bad").exists()
+
+
+def test_commands_for_arms_only_refuse_a_mechanism(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    measured = tmp_path / "measured.csv"
+    measured.write_text("time,q2\n0,0\n", encoding="utf-8")
+    assert main(["calibrate", str(SCENE), "--measured", str(measured), "--free",
+                 "friction.mu", "--out", str(tmp_path / "cal")]) == 2
+    assert "mechanism file" in capsys.readouterr().err
+    assert not (tmp_path / "cal").exists()

@@ -82,9 +82,7 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
     if args.csv:
         plan.file("--csv", args.csv)
     if args.plot:
-        from jointplay.mechanism.plots import FIGURE_NAMES
-
-        plan.folder("--plot", args.plot, "its figures", pattern="|".join(FIGURE_NAMES))
+        plan.folder("--plot", args.plot, "its figures", pattern="*.png")
     plan.check()
     quiet = args.quiet
     t0 = time.perf_counter()
@@ -128,7 +126,8 @@ def summary_lines(result: Any) -> list[str]:
                        f"{np.max(np.hypot(*result.eccentricity[:, j].T)) * 1e3:.4g} mm "
                        f"(clearance {result.clearance[j] * 1e3:.4g} mm)")
     torque = result.driving_torque
-    out.append(f"  driving torque from {torque.min():.4g} to {torque.max():.4g} N m")
+    out.append(f"  driving torque from {torque.min():.4g} to {torque.max():.4g} N m (on the "
+               "samples)")
     if result.ideal is not None:
         sliders = [n for n in result.coordinates if n.endswith(".position")]
         for name in sliders:
@@ -136,7 +135,7 @@ def summary_lines(result: Any) -> list[str]:
             dev = np.max(np.abs(result.x[:, k] - result.ideal["x"][:, k]))
             out.append(f"  {name}: at most {dev * 1e3:.4g} mm from the ideal mechanism's")
         out.append(f"  ideal driving torque from {result.ideal['driving_torque'].min():.4g} to "
-                   f"{result.ideal['driving_torque'].max():.4g} N m")
+                   f"{result.ideal['driving_torque'].max():.4g} N m (on the samples)")
     if result.accuracy is not None:
         out += result.accuracy.lines()
     return out

@@ -28,8 +28,8 @@ from jointplay.results.accuracy import (
     agreement_horizon,
 )
 
-# m: positions of two runs closer than this agree (a micrometre: the issue's first-revolution
-# target for the slider, and a fiftieth of the 0.05 mm clearance variant's).
+# m: positions of two runs closer than this agree (a micrometre: the slider-crank's target for
+# its first revolution, a hundredth of its 0.1 mm clearance variant's clearance).
 POSITION_TOLERANCE = 1e-6
 
 
@@ -49,6 +49,9 @@ class MechanismAccuracy:
     check_impacts: int
     energy_residual: float  # J, max |balance| of this run
     t_end: float
+    # contact statistics of this run and of the tighter one after `departs` (see
+    # MechanismResult.contact_statistics); empty when the runs never depart
+    statistics: tuple[dict[str, float], ...] = ()
 
     def lines(self) -> list[str]:
         tol = f"{self.rtol:g} / {self.atol:g}"
@@ -71,21 +74,30 @@ class MechanismAccuracy:
             out.append(f"  impacts: the first {self.agreed_impacts} agree (up to "
                        f"{self.agreement_horizon:.6g} s); {self.impacts} here, "
                        f"{self.check_impacts} in the tighter run")
+        if self.statistics:
+            mine, other = self.statistics
+            out.append(f"  after {self.departs:.6g} s, this run / the tighter one: "
+                       f"{mine['impacts']:.0f} / {other['impacts']:.0f} impacts, in contact "
+                       f"{100 * mine['contact_fraction']:.0f} % / "
+                       f"{100 * other['contact_fraction']:.0f} % of the time, median peak "
+                       f"force {mine['median_peak_force']:.3g} / "
+                       f"{other['median_peak_force']:.3g} N, largest "
+                       f"{mine['largest_peak_force']:.3g} / {other['largest_peak_force']:.3g} N")
         out.append(f"  energy balance closes to {self.energy_residual:.2g} J")
         return out
 
 
 def _positions(result: MechanismResult) -> np.ndarray:
     """Every length-valued coordinate (sliders) and eccentricity component, per sample."""
-    columns = [result.coordinate(name) for name in result.coordinates
-               if name.endswith(".position")]
+    columns = [result.x[:, k] for k, unit in enumerate(result.units) if unit == "m"]
     columns += [result.eccentricity[:, j, k] for j in range(len(result.cut_joints))
                 for k in range(2)]
     return np.stack(columns, axis=1) if columns else np.zeros((len(result.t), 0))
 
 
 def _rates(result: MechanismResult) -> np.ndarray:
-    columns = [result.rate(name) for name in result.coordinates if name.endswith(".position")]
+    n = len(result.coordinates)
+    columns = [result.x[:, n + k] for k, unit in enumerate(result.units) if unit == "m"]
     return np.stack(columns, axis=1) if columns else np.zeros((len(result.t), 0))
 
 
@@ -98,11 +110,14 @@ def compare(result: MechanismResult, check: MechanismResult) -> MechanismAccurac
         result.impacts, check.impacts, float(result.t[-1]),
         onset_tolerance=CHECK_MARGIN * ONSET_TOLERANCE,
         speed_tolerance=CHECK_MARGIN * SPEED_TOLERANCE, lead=ONSET_TOLERANCE)
+    departs = float(result.t[upto]) if over.size else None
+    statistics = () if departs is None else (result.contact_statistics(departs),
+                                             check.contact_statistics(departs))
     return MechanismAccuracy(
         rtol=result.rtol, atol=result.atol, check_rtol=check.rtol, check_atol=check.atol,
         position_error=float(np.max(diff[:upto], initial=0.0)),
         velocity_error=float(np.max(rate_diff[:upto], initial=0.0)),
-        departs=float(result.t[upto]) if over.size else None,
+        departs=departs, statistics=statistics,
         final_difference=float(np.max(diff, initial=0.0)),
         agreement_horizon=horizon, agreed_impacts=agreed, impacts=len(result.impacts),
         check_impacts=len(check.impacts),

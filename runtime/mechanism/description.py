@@ -185,17 +185,31 @@ def _with_value(m: Mechanism, name: str, value: float) -> Mechanism:
             else:
                 new = _replace(b, **{key: value})
             return dataclasses.replace(m, bodies=(*m.bodies[:i], new, *m.bodies[i + 1:]))
+    points = {"parent_x": ("at_parent", 0), "parent_y": ("at_parent", 1),
+              "child_x": ("at_child", 0), "child_y": ("at_child", 1)}
     for i, j in enumerate(m.joints):
+        if j.name == owner and key in points:
+            attr, k = points[key]
+            point = list(getattr(j, attr))
+            point[k] = value
+            new_joint = _replace(j, **{attr: (point[0], point[1])})
+            return dataclasses.replace(m, joints=(*m.joints[:i], new_joint, *m.joints[i + 1:]))
+        if j.name == owner and key == "angle" and (j.type == "prismatic" or j.kind == "locked"):
+            new_joint = dataclasses.replace(j, angle=value)
+            return dataclasses.replace(m, joints=(*m.joints[:i], new_joint, *m.joints[i + 1:]))
         if j.name == owner and key in j.clearance:
             new_joint = dataclasses.replace(j, clearance={**j.clearance, key: value})
             return dataclasses.replace(m, joints=(*m.joints[:i], new_joint, *m.joints[i + 1:]))
     raise DescriptionError(name, "is no parameter of the mechanism (a body's mass, inertia, "
-                           "com_x, com_y; a clearance joint's radii, E, nu; contact.*, "
-                           "friction.*, driver.speed)")
+                           "com_x, com_y; a joint's parent_x, parent_y, child_x, child_y; a "
+                           "clearance joint's radii, E, nu; contact.*, friction.*, "
+                           "driver.speed; `jointplay inspect FILE` lists them)")
 
 
 def _tree_order(m: Mechanism) -> list[Joint]:
-    """The non-clearance joints, parents first; refuses loops of them and unplaced bodies."""
+    """The non-clearance joints, parents first, with a floating joint (from the ground: x, y
+    and angle) for each body they leave unplaced: such a body is held by clearance joints
+    only. Refuses loops of non-clearance joints and bodies joined to nothing."""
     placed = {GROUND}
     pending = [j for j in m.joints if j.kind != "clearance"]
     order: list[Joint] = []
@@ -210,31 +224,58 @@ def _tree_order(m: Mechanism) -> list[Joint]:
                 "mechanism files do not support: give one joint of the loop "
                 "kind = \"clearance\"")
         by_child[j.child] = j
+    floating: list[str] = []
     while pending:
         ready = [j for j in pending if j.parent in placed]
         if not ready:
-            j = pending[0]
-            raise DescriptionError(
-                f"joint {j.name!r}", f"its parent {j.parent!r} is reached from the ground "
-                "through no chain of ideal, locked or prismatic joints (parent towards the "
-                "ground): swap a joint's parent and child, or attach the body to the ground")
-        for j in ready:
-            if j.child in placed:
+            roots = [j.parent for j in pending if j.parent not in by_child]
+            if not roots:
+                j = pending[0]
                 raise DescriptionError(f"joint {j.name!r}", "closes a loop of ideal joints; "
                                        "give one joint of the loop kind = \"clearance\"")
+            order.append(_floating(roots[0]))
+            floating.append(roots[0])
+            placed.add(roots[0])
+            continue
+        for j in ready:
             placed.add(j.child)
             order.append(j)
             pending.remove(j)
-    unplaced = [b.name for b in m.bodies if b.name not in placed]
-    if unplaced:
-        raise DescriptionError("mechanism.joints", f"bodies {', '.join(unplaced)} are joined "
-                               "to the ground by no ideal, locked or prismatic joints (a "
-                               "clearance joint closes a loop here, it does not place a body):"
-                               " add the joints that place them")
+    for body in m.bodies:
+        if body.name not in placed:
+            order.append(_floating(body.name))
+            floating.append(body.name)
+            placed.add(body.name)
+    _check_floating(m, order, floating)
     for j in m.joints:
         if j.kind == "clearance" and j.parent == j.child:
             raise DescriptionError(f"joint {j.name!r}", "joins a body to itself")
     return order
+
+
+def _floating(body: str) -> Joint:
+    return Joint(name=body, type="floating", kind="free", parent=GROUND, child=body,
+                 at_parent=(0.0, 0.0), at_child=(0.0, 0.0))
+
+
+def _check_floating(m: Mechanism, order: list[Joint], floating: list[str]) -> None:
+    """Each floating body, with the bodies its joints carry, must be held by a clearance
+    joint; its coordinates' names must not be a joint's."""
+    names = {j.name for j in m.joints}
+    for body in floating:
+        if body in names:
+            raise DescriptionError(f"body {body!r}", "is held by clearance joints only, so it "
+                                   "floats, with coordinates named after it; a joint has its "
+                                   "name: rename the joint or the body")
+        group = {body}
+        for j in order:
+            if j.parent in group:
+                group.add(j.child)
+        if not any(j.kind == "clearance" and (j.parent in group or j.child in group)
+                   for j in m.joints):
+            raise DescriptionError(f"body {body!r}", "is joined to nothing: no joint places "
+                                   "it from the ground and no clearance joint holds it; add "
+                                   "its joints")
 
 
 @dataclass(frozen=True)
@@ -246,6 +287,8 @@ class MechanismScene:
     mechanism: Mechanism
     run: RunSettings
     source: str | None = None
+    # Starting values of coordinates for the assembly at t = 0 (see simulate.assembled_state)
+    initial: dict[str, float] = field(default_factory=dict)
 
     def with_run(self, **changes: float) -> MechanismScene:
         run = cast(RunSettings, _replace(self.run, **changes))

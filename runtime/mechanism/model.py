@@ -58,6 +58,7 @@ class MechanismModel:
         self.library = library
         self.seconds = seconds
         self.coordinates = [c.name for c in coordinates(structure)]
+        self.units = [c.unit for c in coordinates(structure)]
         self.parameters = parameter_names(structure)
         self.n_coordinates = len(self.coordinates)
         self.n_state = 2 * self.n_coordinates

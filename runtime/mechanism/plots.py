@@ -15,13 +15,16 @@ import numpy as np
 from jointplay.common.figures import figure, save
 from jointplay.mechanism.simulate import MechanismResult
 
-FIGURE_NAMES = ("slider_acceleration.png", "slider_velocity.png", "journal_orbit.png",
-                "contact_force.png", "driving_torque.png")
 
-
-def _slider(result: MechanismResult) -> str:
-    sliders = [name for name in result.coordinates if name.endswith(".position")]
-    return sliders[0] if sliders else result.coordinates[0]
+def _output(coordinates: list[str]) -> tuple[str, str, str, str]:
+    """The coordinate whose motion is drawn against the ideal's (the first slider; without
+    one, the first coordinate), its figures' name stem, and its units of rate and
+    acceleration."""
+    sliders = [name for name in coordinates if name.endswith(".position")]
+    if sliders:
+        return sliders[0], "slider", "m/s", "m/s²"
+    name = coordinates[0]
+    return name, name.replace(".", "_"), "rad/s", "rad/s²"
 
 
 def _revolutions_axis(ax: object, result: MechanismResult) -> None:
@@ -32,17 +35,19 @@ def _revolutions_axis(ax: object, result: MechanismResult) -> None:
 def write_figures(result: MechanismResult, folder: str | Path) -> list[Path]:
     """Draw every figure into ``folder`` (created by the caller); returns the paths."""
     folder = Path(folder)
-    slider = _slider(result)
+    slider, stem, rate_unit, acc_unit = _output(result.coordinates)
+    what = "slider" if stem == "slider" else slider
     k = result.coordinates.index(slider)
     n = len(result.coordinates)
     ideal = result.ideal
     paths = []
     t = result.t
     for name, values, ideal_values, label in (
-            ("slider_acceleration.png", result.acceleration[:, k],
-             ideal["acceleration"][:, k] if ideal else None, "slider acceleration (m/s²)"),
-            ("slider_velocity.png", result.x[:, n + k],
-             ideal["x"][:, n + k] if ideal else None, "slider velocity (m/s)")):
+            (f"{stem}_acceleration.png", result.acceleration[:, k],
+             ideal["acceleration"][:, k] if ideal else None,
+             f"{what} acceleration ({acc_unit})"),
+            (f"{stem}_velocity.png", result.x[:, n + k],
+             ideal["x"][:, n + k] if ideal else None, f"{what} velocity ({rate_unit})")):
         fig, axes = figure(1, 1, 7.0, 3.6)
         ax = axes[0, 0]
         ax.plot(t, values, lw=0.8, label=f"clearance joint ({result.name})")

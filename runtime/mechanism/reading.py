@@ -34,7 +34,7 @@ from jointplay.mechanism.description import (
 
 GROUND = "ground"
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,39}$")
-_TOP = ("name", "description", "mechanism", "run")
+_TOP = ("name", "description", "mechanism", "initial", "run")
 _MECHANISM = ("bodies", "joints", "driver", "gravity", "contact", "friction")
 _BODY = ("name", "mass", "inertia", "com")
 _JOINT = ("name", "type", "kind", "parent", "child", "at_parent", "at_child", "axis", "angle",
@@ -108,8 +108,28 @@ def mechanism_scene_from_dict(data: Mapping[str, Any], source: str | None = None
     except DescriptionError as err:
         raise err.with_source(source) from None
     description = data.get("description", "")
+    initial = _initial(data.get("initial", {}), mechanism, source)
     return MechanismScene(name=name, description=str(description), mechanism=mechanism,
-                          run=run, source=source)
+                          run=run, source=source, initial=initial)
+
+
+def _initial(table: Any, mechanism: Mechanism, source: str | None) -> dict[str, float]:
+    """Where the assembly at t = 0 starts looking: coordinates by name (rad, m)."""
+    from jointplay.mechanism.structure import CLOCK, coordinates
+
+    if isinstance(table, Mapping):  # `crank_pin.angle = 1.0` is a dotted key: a nested table
+        table = {f"{key}.{inner}" if isinstance(value, Mapping) else key: v
+                 for key, value in table.items()
+                 for inner, v in (value.items() if isinstance(value, Mapping)
+                                  else [(None, value)])}
+    check_keys(table, [c.name for c in coordinates(mechanism.structure())
+                       if c.name != CLOCK] or ["(none)"], "initial", source)
+    out = {}
+    for key, value in table.items():
+        out[key] = number(value, f"initial.{key}")
+        if not math.isfinite(out[key]):
+            raise DescriptionError(f"initial.{key}", "must be finite", source)
+    return out
 
 
 def _names(tables: Any) -> set[str]:

@@ -45,6 +45,7 @@ class MechanismResult:
     name: str
     t: np.ndarray
     coordinates: list[str]
+    units: list[str]
     x: np.ndarray
     acceleration: np.ndarray
     cut_joints: list[str]
@@ -75,6 +76,25 @@ class MechanismResult:
     def coordinate_acceleration(self, name: str) -> np.ndarray:
         return self.acceleration[:, self.coordinates.index(name)]
 
+    def contact_statistics(self, since: float = 0.0) -> dict[str, float]:
+        """What a run's contact does from ``since`` (s) to its end, every cut joint together:
+        the impact count and rate (1/s), the fraction of the time in contact (averaged over
+        the clearance joints), the located peak forces' median and largest (N) and the
+        approach speeds' median (m/s); NaN where there is no impact. These are what two runs
+        past their agreement horizon can be compared by."""
+        t_end = float(self.t[-1])
+        rows = self.impacts.time >= since
+        ends = np.where(np.isfinite(self.impacts.separation_time),
+                        self.impacts.separation_time, t_end)
+        span = max(t_end - since, np.finfo(float).tiny)
+        contact = np.clip(ends, since, t_end) - np.clip(self.impacts.time, since, t_end)
+        peaks, speeds = self.impacts.peak_force[rows], self.impacts.speed[rows]
+        return {"impacts": float(rows.sum()), "impact_rate": float(rows.sum()) / span,
+                "contact_fraction": float(contact.sum()) / span / max(1, len(self.cut_joints)),
+                "median_peak_force": float(np.median(peaks)) if peaks.size else np.nan,
+                "largest_peak_force": float(np.max(peaks)) if peaks.size else np.nan,
+                "median_approach_speed": float(np.median(speeds)) if speeds.size else np.nan}
+
     @property
     def energy_residual(self) -> np.ndarray:
         """Total energy change - drive work + dissipated (J): zero up to integration error."""
@@ -87,37 +107,52 @@ def _scale(model: MechanismModel, scene: MechanismScene) -> np.ndarray:
     scale = np.ones(model.n_state)
     clearance = scene.smallest_clearance
     if np.isfinite(clearance):
-        for i, name in enumerate(model.coordinates):
-            if name.endswith(".position"):
+        for i, unit in enumerate(model.units):
+            if unit == "m":
                 scale[i] = clearance
                 scale[n + i] = clearance / RATE_SCALE_TIME
     return scale
 
 
-def assembled_state(model: MechanismModel, p: np.ndarray, t0: float = 0.0) -> np.ndarray:
+def assembled_state(model: MechanismModel, p: np.ndarray, t0: float = 0.0,
+                    start: dict[str, float] | None = None) -> np.ndarray:
     """The ideal mechanism's state at t0: every cut joint's eccentricity and its rate zero.
 
-    Newton's method on the closure equations from the free coordinates at 0 (least squares
-    where the loops leave freedom: the smallest change)."""
+    Damped Newton on the closure equations from the free coordinates at ``start`` (the
+    scene's ``[initial]`` table: which assembly, where a loop has two; 0 for the others),
+    least squares where the loops leave freedom (the smallest change)."""
     n = model.n_coordinates
     x = np.zeros(2 * n)
     x[n - 1], x[2 * n - 1] = t0, 1.0
+    for name, value in (start or {}).items():
+        x[model.coordinates.index(name)] = value
     if not model.clearance_joints:
         return x
     closure = model.function("closure")
     free = slice(0, n - 1)
+    residual = np.linalg.norm(closure(x, p)[0])
     for _ in range(_NEWTON_STEPS):
         e, e_q, _, _ = closure(x, p)
         step = np.linalg.lstsq(e_q, -e, rcond=None)[0]
-        x[free] += step
+        base = x[free].copy()
+        for fraction in (1.0, 0.5, 0.25, 0.125, 0.0625):  # a step that does not lower |e|
+            x[free] = base + fraction * step                  # is shortened
+            trial = np.linalg.norm(closure(x, p)[0])
+            if trial < residual or fraction == 0.0625:
+                break
+        residual = trial
         if np.max(np.abs(step)) < 1e-15 * (1.0 + np.max(np.abs(x[free]))):
             break
     e, e_q, e_theta, _ = closure(x, p)
     if np.max(np.abs(e)) > 1e-12:
         raise DescriptionError("mechanism.joints", f"the loops do not close at t = {t0:g}: "
                                f"a journal stays {np.max(np.abs(e)):.3g} m from its bearing's "
-                               "centre after Newton's method; check the joints' points and "
-                               "the bodies' lengths")
+                               "centre after Newton's method from "
+                               + (", ".join(f"{k} = {v:g}" for k, v in start.items())
+                                  if start else "every coordinate at 0")
+                               + "; check the joints' points and the bodies' lengths, or "
+                               "give the coordinates' starting values in an [initial] table "
+                               "(e.g. a rocker's angle near its assembled value)")
     rate = model.function("outputs")(x, [], p, np.zeros(len(model.clearance_joints)))[1][0]
     x[n:2 * n - 1] = np.linalg.lstsq(e_q, -e_theta * rate, rcond=None)[0]
     return x
@@ -129,7 +164,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     model = model or model_for(scene.mechanism)
     p = model.parameter_vector(scene.mechanism)
     run = scene.run
-    x0 = assembled_state(model, p)
+    x0 = assembled_state(model, p, start=scene.initial)
     nc = len(model.clearance_joints)
     clearance = np.array([j.radial_clearance for j in scene.mechanism.joints
                           if j.kind == "clearance" and j.name in model.cut_joint_names])
@@ -161,12 +196,13 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     samples = _samples(model, p, x, v_imp)
     stats = {"wall_time_s": wall, **integ.stats()}
     result = MechanismResult(
-        name=scene.name, t=t, coordinates=list(model.coordinates), x=x, cut_joints=list(
+        name=scene.name, t=t, coordinates=list(model.coordinates), units=list(model.units),
+        x=x, cut_joints=list(
             model.cut_joint_names), clearance=clearance, drive_work=work,
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
         **cast(dict[str, Any], samples))
     if compare_ideal:
-        result.ideal = ideal_motion(model, p, t)
+        result.ideal = ideal_motion(model, p, t, scene.initial)
     return result
 
 
@@ -193,7 +229,8 @@ def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndar
     return out
 
 
-def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray) -> dict[str, np.ndarray]:
+def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
+                 start: dict[str, float] | None = None) -> dict[str, np.ndarray]:
     """The ideal mechanism (every clearance joint ideal) at times t, where the driver moves it
     completely: positions by Newton's method on the loop closure, velocities and accelerations
     from its first and second derivatives, the driving torque from the principle with the
@@ -212,7 +249,7 @@ def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray) -> dict[st
     x = np.zeros((len(t), 2 * n))
     acc = np.zeros((len(t), n))
     torque = np.zeros(len(t))
-    state = assembled_state(model, p, float(t[0]))
+    state = assembled_state(model, p, float(t[0]), start)
     for k, tk in enumerate(t):
         state[n - 1] = tk
         for _ in range(_NEWTON_STEPS):  # from the last sample's positions

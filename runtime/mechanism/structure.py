@@ -27,8 +27,8 @@ class JointStructure:
     """One joint as the generated code sees it: which bodies, which kind, tree or cut."""
 
     name: str
-    type: str  # "revolute" | "prismatic"
-    kind: str  # revolute: "ideal" | "clearance" | "locked"; prismatic: "ideal"
+    type: str  # "revolute" | "prismatic" | "floating" (a body held by clearance joints only)
+    kind: str  # revolute: "ideal" | "clearance" | "locked"; prismatic: "ideal"; "free"
     parent: str  # a body's name or "ground"; the bearing's side of a clearance joint
     child: str  # the journal's side of a clearance joint
     cut: bool  # closes a loop (a clearance joint, a force element)
@@ -96,7 +96,11 @@ def coordinates(structure: MechanismStructure) -> list[MechanismCoordinate]:
     for joint in structure.tree_joints:
         if joint.driven or joint.kind == "locked":
             continue
-        if joint.type == "revolute":
+        if joint.type == "floating":
+            out += [MechanismCoordinate(f"{joint.name}.x", "m", joint.name),
+                    MechanismCoordinate(f"{joint.name}.y", "m", joint.name),
+                    MechanismCoordinate(f"{joint.name}.angle", "rad", joint.name)]
+        elif joint.type == "revolute":
             out.append(MechanismCoordinate(f"{joint.name}.angle", "rad", joint.name))
         else:
             out.append(MechanismCoordinate(f"{joint.name}.position", "m", joint.name))
@@ -113,6 +117,8 @@ def parameter_names(structure: MechanismStructure) -> list[str]:
         out += ["gravity.x", "gravity.y"]
     for joint in structure.joints:
         j = joint.name
+        if joint.type == "floating":
+            continue
         out += [f"{j}.parent_x", f"{j}.parent_y", f"{j}.child_x", f"{j}.child_y"]
         if joint.type == "prismatic":
             out += [f"{j}.axis_x", f"{j}.axis_y", f"{j}.angle"]
