@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import datetime
+import math
 import os
 import statistics
 import sys
@@ -73,10 +74,9 @@ def exudyn_rung(rtol: float) -> dict[str, Any]:
 
 def score(rungs: list[dict[str, Any]], target: float) -> dict[str, Any] | None:
     """Errors against the run 100x tighter; the matched rung (see the module docstring)."""
-    by_rtol = {r["rtol"]: r for r in rungs}
     for r in rungs:
-        tight = by_rtol.get(r["rtol"] / 100.0)
-        if tight is not None and tight["x"].size == r["x"].size:
+        tight = next((s for s in rungs if math.isclose(s["rtol"], r["rtol"] / 100.0)), None)
+        if tight is not None:
             r["error_m"] = float(np.max(np.abs(r["x"] - tight["x"])))
     scored = sorted((r for r in rungs if "error_m" in r), key=lambda r: -r["rtol"])
     for k, r in enumerate(scored):

@@ -478,37 +478,3 @@ def _locate_impacts(run: SliderCrankRun) -> None:
                     best_t, best_f = float(found.x), float(-found.fun)
         imp.peak_force, imp.peak_time = best_f, best_t
 
-
-
-def mechanical_energy(run: SliderCrankRun, times: np.ndarray) -> np.ndarray:
-    """Kinetic energy of rod and slider, the weight's potential of crank and rod, and the
-    contact's K d+^(n+1)/(n+1), at ``times`` (the crank's kinetic energy, constant under the
-    driver, left out)."""
-    m = run.model
-    q, v = run.spline(times), run.spline(times, 1)
-    r, rl = m.crank_length, m.rod_length
-    g = np.asarray(m.gravity)
-    theta, psi = q[:, 0], q[:, 0] + q[:, 1]
-    w, psi_t = v[:, 0], v[:, 0] + v[:, 1]
-    com = np.stack([r * np.cos(theta) + 0.5 * rl * np.cos(psi),
-                    r * np.sin(theta) + 0.5 * rl * np.sin(psi)], axis=1)
-    com_t = np.stack([-r * w * np.sin(theta) - 0.5 * rl * psi_t * np.sin(psi),
-                      r * w * np.cos(theta) + 0.5 * rl * psi_t * np.cos(psi)], axis=1)
-    crank_com = 0.5 * r * np.stack([np.cos(theta), np.sin(theta)], axis=1)
-    kinetic = (0.5 * m.rod_mass * np.sum(com_t**2, axis=1) + 0.5 * m.rod_inertia * psi_t**2
-               + 0.5 * m.slider_mass * v[:, 2] ** 2)
-    weight = -(m.rod_mass * com @ g + m.crank_mass * crank_com @ g)  # the slider stays at y = 0
-    pen = np.array([max(contact(m, qk, vk, None).penetration, 0.0)
-                    for qk, vk in zip(q, v, strict=True)])
-    p = m.exponent + 1.0
-    return kinetic + weight + m.stiffness * pen**p / p
-
-
-def driver_work(run: SliderCrankRun) -> np.ndarray:
-    """int tau theta' dt from 0 to every step, by Simpson's rule on each step (the torque at the
-    step's ends and middle; the crank turns at constant speed to ~1e-11)."""
-    mid = 0.5 * (run.t[:-1] + run.t[1:])
-    ends = run.at(run.t)["driving_torque"] * run.v[:, 0]
-    middle = run.at(mid)["driving_torque"] * run.spline(mid, 1)[:, 0]
-    pieces = np.diff(run.t) / 6.0 * (ends[:-1] + 4.0 * middle + ends[1:])
-    return np.concatenate([[0.0], np.cumsum(pieces)])
