@@ -4,10 +4,11 @@ jointplay (scenes/slider_crank.toml and its 0.1 mm variant, rtol = atol = 1e-10,
 ideal mechanism from ``--compare-ideal``) beside the outside Exudyn model
 (tests/exudyn_slider_crank.py, DOPRI5 at rtol 1e-10, atol 1e-12):
 
-- slider_crank_acceleration.png: the slider's acceleration against the crank angle, ideal and
-  with 0.5 mm clearance (jointplay; Exudyn dashed over it);
-- slider_crank_orbits.png: the journal centre's path in its clearance circle, 0.5 and 0.1 mm;
-- slider_crank_torque.png: the driving torque, ideal and with clearance.
+- exudyn_slider_crank_acceleration.png: the slider's acceleration against the crank angle,
+  ideal and with 0.5 mm clearance (jointplay; Exudyn dashed over it);
+- exudyn_slider_crank_orbits.png: the journal centre's path in its clearance circle, 0.5 and
+  0.1 mm;
+- exudyn_slider_crank_torque.png: the driving torque, ideal and with clearance.
 
 The table (Markdown, printed and written to --out) lists located features only (impact count,
 largest contact force, fastest approach, time in contact from onsets and separations), for
@@ -136,11 +137,11 @@ def main(argv: list[str] | None = None) -> int:
     cases = {label: run_case(scene, rb) for label, scene, rb in CASES}
     args.img.mkdir(parents=True, exist_ok=True)
     outputs = {
-        "slider_crank_acceleration.png": lambda p: plot_series(
+        "exudyn_slider_crank_acceleration.png": lambda p: plot_series(
             cases, "acceleration", "slider acceleration (m/s²)", p),
-        "slider_crank_torque.png": lambda p: plot_series(cases, "torque",
+        "exudyn_slider_crank_torque.png": lambda p: plot_series(cases, "torque",
                                                          "driving torque (N m)", p),
-        "slider_crank_orbits.png": lambda p: plot_orbits(cases, p),
+        "exudyn_slider_crank_orbits.png": lambda p: plot_orbits(cases, p),
     }
     for name, draw in outputs.items():
         part = args.img / (name + ".part.png")
