@@ -59,6 +59,7 @@ class _Equations:
     accelerations: Any  # q'' (n), clock included (0)
     driving_torque: Any  # scalar (0 without a driver)
     driver_rate: Any
+    load_power: Any  # the applied loads' power (W)
     kinetic: Any
     potential: Any
     contact_potential: Any
@@ -80,7 +81,7 @@ def derive(structure: MechanismStructure) -> _Equations:
     q = ca.SX.sym("q", n)
     u = ca.SX.sym("u", n)
     x = ca.vertcat(q, u)
-    tau = ca.SX.sym("tau", 0)
+    tau = ca.SX.sym("tau", len(structure.load_inputs))
     p = ca.SX.sym("p", len(names))
     ncut = len(structure.cut_joints)
     v_imp = ca.SX.sym("v_imp", ncut)
@@ -156,6 +157,16 @@ def derive(structure: MechanismStructure) -> _Equations:
         contact_forcing += ca.jacobian(point, qf).T @ force
     for angle, moment in applied["moments"]:
         contact_forcing += ca.jacobian(angle, qf).T * moment
+    # Applied loads (the input tau): torques across revolute joints, forces at points.
+    loads = _loads(structure, frames, tau, P)
+    for point, force in loads["forces"]:
+        forcing += ca.jacobian(point, qf).T @ force
+    for angle, moment in loads["moments"]:
+        forcing += ca.jacobian(angle, qf).T * moment
+    load_power = sum((ca.dot(velocity(point), force) for point, force in loads["forces"]),
+                     ca.SX(0))
+    load_power += sum((velocity(angle) * moment for angle, moment in loads["moments"]),
+                      ca.SX(0))
     acc_free = ca.solve(mass_matrix, forcing + contact_forcing)
 
     def driver_row(acc: Any, with_contact: bool) -> Any:
@@ -165,6 +176,10 @@ def derive(structure: MechanismStructure) -> _Equations:
             row += m * ca.dot(dr, a) + inertia * dphi * alpha
             if gravity is not None:
                 row -= m * ca.dot(dr, gravity)
+        for point, force in loads["forces"]:
+            row -= ca.dot(ca.jacobian(point, th), force)
+        for angle, moment in loads["moments"]:
+            row -= ca.jacobian(angle, th) * moment
         if with_contact:
             for point, force in applied["forces"]:
                 row -= ca.dot(ca.jacobian(point, th), force)
@@ -202,6 +217,7 @@ def derive(structure: MechanismStructure) -> _Equations:
     acc = ca.vertcat(acc_free, ca.SX(0))
     return _Equations(x=x, tau=tau, p=p, v_imp=v_imp, accelerations=bind(acc),
                       driving_torque=bind(driving), driver_rate=bind(thd),
+                      load_power=bind(load_power),
                       kinetic=bind(kinetic), potential=bind(potential),
                       contact_potential=bind(contact_potential),
                       contact={k: bind(v) for k, v in contact.items()},
@@ -210,6 +226,25 @@ def derive(structure: MechanismStructure) -> _Equations:
                       closure_theta=bind(e_theta),
                       ideal_residual=bind(ca.vertcat(ideal_q, ideal_theta)),
                       acc_input=acc_in, points=bind(points))
+
+
+def _loads(structure: MechanismStructure, frames: dict[str, _Frame], tau: Any,
+           P: Any) -> dict[str, list[Any]]:
+    """The applied torques (on a joint's child, the reaction on its parent) and forces (at a
+    body's point), from the input tau in the order of ``structure.load_inputs``."""
+    loads: dict[str, list[Any]] = {"forces": [], "moments": []}
+    joints = {j.name: j for j in structure.joints}
+    k = 0
+    for name in structure.torque_joints:
+        joint = joints[name]
+        loads["moments"] += [(frames[joint.child].angle, tau[k]),
+                             (frames[joint.parent].angle, -tau[k])]
+        k += 1
+    for name, body in structure.forces:
+        point = frames[body].point(ca.vertcat(P(f"{name}.at_x"), P(f"{name}.at_y")))
+        loads["forces"].append((point, ca.vertcat(tau[k], tau[k + 1])))
+        k += 2
+    return loads
 
 
 def _cut_joints(structure: MechanismStructure, frames: dict[str, _Frame], q: Any, qd: Any,
@@ -276,15 +311,19 @@ def functions(structure: MechanismStructure) -> list[ca.Function]:
                      ["x", "tau", "p", "v_imp"], ["xdot"], opts)
     jac = ca.Function("jac_forward_dynamics", [x, tau, p, v], [ca.jacobian(xdot, x)],
                       ["x", "tau", "p", "v_imp"], ["jac_x"], opts)
-    contact = ca.Function("contact", [x, p, v], [eq.contact[k] for k in CONTACT_OUTPUTS],
+    contact = ca.Function("contact", [x, p, v],
+                          [ca.densify(eq.contact[k]) for k in CONTACT_OUTPUTS],
                           ["x", "p", "v_imp"], list(CONTACT_OUTPUTS), opts)
-    gaps = ca.Function("gaps", [x, p], eq.gaps, ["x", "p"],
+    gaps = ca.Function("gaps", [x, p], [ca.densify(g) for g in eq.gaps], ["x", "p"],
                        ["delta", "rate", "ex", "ey"], opts)
-    power = ca.Function("drive_power", [x, tau, p, v], [eq.driving_torque * eq.driver_rate],
+    power = ca.Function("drive_power", [x, tau, p, v],
+                        [ca.densify(eq.driving_torque * eq.driver_rate + eq.load_power)],
                         ["x", "tau", "p", "v_imp"], ["power"], opts)
+    # Dense outputs: a structural zero (no driver, no contact) is still a value per sample.
     outputs = ca.Function("outputs", [x, tau, p, v],
-                          [eq.driving_torque, eq.driver_rate, eq.kinetic, eq.potential,
-                           eq.contact_potential, eq.accelerations, eq.points],
+                          [ca.densify(e) for e in (
+                              eq.driving_torque, eq.driver_rate, eq.kinetic, eq.potential,
+                              eq.contact_potential, eq.accelerations, eq.points)],
                           ["x", "tau", "p", "v_imp"],
                           ["driving_torque", "driver_rate", "kinetic", "potential",
                            "contact_potential", "acceleration", "points"], opts)
@@ -292,8 +331,8 @@ def functions(structure: MechanismStructure) -> list[ca.Function]:
                           [eq.closure, eq.closure_jacobian, eq.closure_theta,
                            eq.closure_bias],
                           ["x", "p"], ["e", "e_q", "e_theta", "gamma"], opts)
-    ideal = ca.Function("ideal_residual", [x, eq.acc_input, p], [eq.ideal_residual],
-                        ["x", "a", "p"], ["residual"], opts)
+    ideal = ca.Function("ideal_residual", [x, eq.acc_input, tau, p], [eq.ideal_residual],
+                        ["x", "a", "tau", "p"], ["residual"], opts)
     return [fd, jac, contact, gaps, power, outputs, closure, ideal]
 
 

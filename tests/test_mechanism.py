@@ -11,6 +11,7 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -333,3 +334,48 @@ def test_a_body_held_by_its_clearance_joint_is_the_serial_arms_link(tmp_path: An
                                rtol=0, atol=1e-8)
     np.testing.assert_allclose(mechanism.coordinate("link.angle"), arm.q[:, 0], rtol=0,
                                atol=1e-7)
+
+
+LOADS = """[mechanism.torques]
+crank_pin = "0.5*sin(2*pi*500*t)"
+
+[[mechanism.forces]]
+name = "gas"
+body = "slider"
+x = "-200*cos(2*pi*250*t)"
+y = "30"
+
+[mechanism.gravity]"""
+
+
+def test_applied_loads_in_the_ideal_mechanism_and_the_energy_balance(tmp_path: Any) -> None:
+    """A force on the slider, F_x = -200 cos(2 pi 250 t) N (and 30 N across the guide, which
+    the guide takes), and a torque tau_pin across the crank pin (on the rod, its reaction on
+    the crank): the ideal driving torque is Lagrange's less the loads' generalised force on
+    theta, F_x s'(theta) + tau_pin (psi'(theta) - 1); with restitution 1 the energy balance,
+    the loads' work included, closes as without loads."""
+    text = Path(SCENE).read_text(encoding="utf-8").replace("[mechanism.gravity]", LOADS, 1)
+    path = tmp_path / "loads.toml"
+    path.write_text(text, encoding="utf-8")
+    scene = load_mechanism_scene(path)
+    result = simulate_mechanism(scene.with_run(output_step=1e-4), compare_ideal=True)
+    assert result.ideal is not None
+    theta = OMEGA * result.t
+    force = -200 * np.cos(2 * np.pi * 250 * result.t)
+    pin = 0.5 * np.sin(2 * np.pi * 500 * result.t)
+    root = np.sqrt(L**2 - R**2 * np.sin(theta) ** 2)
+    ds = -R * np.sin(theta) - R**2 * np.sin(theta) * np.cos(theta) / root
+    psi = np.arcsin(-R * np.sin(theta) / L)
+    dpsi = -R * np.cos(theta) / (L * np.cos(psi))
+    h = 1e-4
+    j_plus, _ = _inertia_and_gravity(theta + h)
+    j_minus, _ = _inertia_and_gravity(theta - h)
+    torque = (0.5 * (j_plus - j_minus) / (2 * h) * OMEGA**2 + _inertia_and_gravity(theta)[1]
+              - force * ds - pin * (dpsi - 1))
+    scale = np.max(np.abs(torque))
+    np.testing.assert_allclose(result.ideal["driving_torque"], torque, rtol=0,
+                               atol=1e-6 * scale)
+    elastic = scene.with_mechanism(scene.mechanism.with_values({"contact.restitution": 1.0}))
+    run = simulate_mechanism(elastic)
+    work = np.max(np.abs(run.drive_work))
+    assert np.max(np.abs(run.energy_residual)) < 5e-6 * work

@@ -164,6 +164,8 @@ def test_the_reference_page_lists_every_key() -> None:
             *(f"mechanism.gravity.{k}" for k in reading._GRAVITY),
             *(f"mechanism.contact.{k}" for k in reading._CONTACT),
             *(f"mechanism.friction.{k}" for k in reading._FRICTION),
+            "[mechanism.torques]", "[[mechanism.forces]]",
+            *(f"forces.{k}" for k in reading._FORCE),
             *(f"run.{k}" for k in reading._RUN)]
     missing = [k for k in keys if f"`{k}`" not in page]
     assert not missing, f"keys missing from docs/reference/mechanism-file.md: {missing}"
@@ -201,3 +203,46 @@ def test_commands_for_arms_only_refuse_a_mechanism(tmp_path: Path,
                  "friction.mu", "--out", str(tmp_path / "cal")]) == 2
     assert "mechanism file" in capsys.readouterr().err
     assert not (tmp_path / "cal").exists()
+
+
+def test_a_journal_through_its_bearing_stops_the_run(tmp_path: Path,
+                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    """Rubber-soft contact (E = 10 MPa) lets the journal sink 16 mm into its bearing: the
+    run stops (exit 1) at the onset of that contact, by its located deepest point, and writes
+    nothing."""
+    figures = tmp_path / "figures"
+    assert main(["simulate", str(SCENE), "--set", "slider_pin.bearing_E=1e7", "--set",
+                 "slider_pin.journal_E=1e7", "--no-verify", "--plot", str(figures)]) == 1
+    err = capsys.readouterr().err
+    assert "simulation stopped at t = 0.000227" in err and "into its bearing" in err
+    assert not figures.exists()
+
+
+def test_results_file_plot_and_compare(tmp_path: Path, capsys: pytest.CaptureFixture[str]
+                                       ) -> None:
+    import h5py
+
+    from jointplay.mechanism.results import read_mechanism_result
+
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    assert main(["simulate", str(SCENE), "--out", str(a), "--compare-ideal", "--t-end",
+                 "0.003", "--no-verify", "--quiet"]) == 0
+    assert main(["simulate", "scenes/slider_crank_0_1mm.toml", "--out", str(b), "--t-end",
+                 "0.003", "--no-verify", "--quiet"]) == 0
+    run = read_mechanism_result(a)
+    assert run.coordinates == ["guide.position", "crank_pin.angle", "t"]
+    assert run.ideal is not None and len(run.impacts) > 3
+    assert main(["plot", str(a), "--out", str(tmp_path / "plots")]) == 0
+    assert (tmp_path / "plots" / "journal_orbit.png").is_file()
+    capsys.readouterr()
+    assert main(["compare", str(a), str(b), "--out", str(tmp_path / "cmp")]) == 0
+    out = capsys.readouterr().out
+    assert "| a | " in out and "| b | " in out
+    assert sorted(p.name for p in (tmp_path / "cmp").iterdir()) == sorted([
+        "slider_acceleration.png", "driving_torque.png", "journal_orbit.png",
+        "contact_force.png"])
+    with h5py.File(b, "r+") as fh:  # a changed file is refused
+        fh["x"][0, 0] = 1.0
+    assert main(["plot", str(b), "--out", str(tmp_path / "plots_b")]) == 2
+    assert "changed after it was written" in capsys.readouterr().err
+    assert not (tmp_path / "plots_b").exists()

@@ -14,7 +14,6 @@ from jointplay.common.errors import DescriptionError
 
 # Flags of ``simulate`` that mechanism runs do not take yet, and why.
 _UNSUPPORTED = {
-    "out": "mechanism runs write no results file yet; use --csv for the samples",
     "animate": "mechanism runs have no animation yet",
     "integrator": "mechanism runs use the compiled BDF only",
     "step": "mechanism runs use the compiled BDF only (no fixed step)",
@@ -81,6 +80,8 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
     plan.input("scene", args.scene)
     if args.csv:
         plan.file("--csv", args.csv)
+    if args.out:
+        plan.file("--out", args.out)
     if args.plot:
         plan.folder("--plot", args.plot, "its figures", pattern="*.png")
     plan.check()
@@ -92,9 +93,23 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
               f"({', '.join(model.coordinates)})")
     result = simulate_mechanism(scene, model=model, compare_ideal=args.compare_ideal)
     if args.verify is not False:
-        result = with_accuracy(result, scene, model)
+        from jointplay.cli.simulate import CHECK_COST_RATIO, VERIFY_BUDGET_S
+
+        estimate = CHECK_COST_RATIO * float(result.stats["wall_time_s"])
+        if args.verify is None and estimate > VERIFY_BUDGET_S:
+            if not quiet:
+                print(f"accuracy not checked: the check (the same run at tolerances 10x "
+                      f"tighter) would take about {estimate:.0f} s; ask for it with --verify, "
+                      "or skip this note with --no-verify")
+        else:
+            result = with_accuracy(result, scene, model)
     written: list[str] = []
     with all_or_nothing(plan):
+        if args.out:
+            from jointplay.mechanism.results import write_mechanism_result
+
+            write_mechanism_result(result, args.out)
+            written.append(args.out)
         if args.csv:
             write_csv(result, args.csv)
             written.append(args.csv)

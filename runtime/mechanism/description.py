@@ -65,6 +65,18 @@ class Driver:
 
 
 @dataclass(frozen=True)
+class Force:
+    """A force (N) at a body's point (m, in the body's frame), in the ground's axes; its
+    components are expressions of t."""
+
+    name: str
+    body: str
+    at: tuple[float, float]
+    x: str
+    y: str
+
+
+@dataclass(frozen=True)
 class RunSettings:
     t_end: float = 0.012
     output_step: float = 1.0e-5
@@ -106,6 +118,8 @@ class Mechanism:
     mu: float
     v0: float
     v1: float
+    torques: tuple[tuple[str, str], ...] = ()  # (revolute joint, expression of t in N m)
+    forces: tuple[Force, ...] = ()
 
     @property
     def has_clearance(self) -> bool:
@@ -131,7 +145,14 @@ class Mechanism:
             contact_law=self.contact_law if has_clearance else None,
             friction_law=self.friction_law if friction else "none",
             friction_ramp=self.friction_ramp if friction else None,
-            driver_angle=self.driver.angle if self.driver else None)
+            driver_angle=self.driver.angle if self.driver else None,
+            torque_joints=tuple(j for j, _ in self.torques),
+            forces=tuple((f.name, f.body) for f in self.forces))
+
+    def load_expressions(self) -> tuple[str, ...]:
+        """The applied loads' expressions, in the order of the model's input tau."""
+        return tuple(text for _, text in self.torques) + tuple(
+            text for f in self.forces for text in (f.x, f.y))
 
     def parameter_values(self) -> dict[str, float]:
         """Every runtime parameter by name (:func:`parameter_names`' names)."""
@@ -150,6 +171,8 @@ class Mechanism:
                        if k in j.clearance}
         if self.driver is not None:
             values |= {"driver.start": self.driver.start, "driver.speed": self.driver.speed}
+        for f in self.forces:
+            values |= {f"{f.name}.at_x": f.at[0], f"{f.name}.at_y": f.at[1]}
         values |= {"contact.exponent": self.exponent, "contact.restitution": self.restitution,
                    "contact.impact_speed_floor": self.impact_speed_floor,
                    "friction.mu": self.mu, "friction.v0": self.v0, "friction.v1": self.v1}

@@ -64,7 +64,10 @@ class MechanismModel:
         self.n_state = 2 * self.n_coordinates
         self.clearance_joints = list(range(1, len(structure.cut_joints) + 1))
         self.cut_joint_names = [j.name for j in structure.cut_joints]
-        self.torque_joints: list[int] = []
+        self.n_loads = len(structure.load_inputs)
+        # The compiled integrator's time-function inputs (the arms' drive torques): here the
+        # applied loads, by position in the input tau.
+        self.torque_joints: list[int] = list(range(1, self.n_loads + 1))
         self.layout = SimpleNamespace(functions=set(FUNCTIONS))
         self._functions: dict[str, FastFunction] = {}
 

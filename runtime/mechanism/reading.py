@@ -26,6 +26,7 @@ from jointplay.common.validation import (
 from jointplay.mechanism.description import (
     Body,
     Driver,
+    Force,
     Joint,
     Mechanism,
     MechanismScene,
@@ -35,7 +36,9 @@ from jointplay.mechanism.description import (
 GROUND = "ground"
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,39}$")
 _TOP = ("name", "description", "mechanism", "initial", "run")
-_MECHANISM = ("bodies", "joints", "driver", "gravity", "contact", "friction")
+_MECHANISM = ("bodies", "joints", "driver", "gravity", "contact", "friction", "torques",
+              "forces")
+_FORCE = ("name", "body", "at", "x", "y")
 _BODY = ("name", "mass", "inertia", "com")
 _JOINT = ("name", "type", "kind", "parent", "child", "at_parent", "at_child", "axis", "angle",
           "bearing_radius", "journal_radius", "bearing_E", "bearing_nu", "journal_E",
@@ -91,6 +94,9 @@ def mechanism_scene_from_dict(data: Mapping[str, Any], source: str | None = None
     contact = _section(table.get("contact", {}), _CONTACT, "mechanism.contact", problems)
     friction = _section(table.get("friction", {}), _FRICTION, "mechanism.friction", problems)
     driver = _driver(table.get("driver"), joints, _names(table.get("joints")), problems)
+    torques = _torques(table.get("torques", {}), joints, driver, problems)
+    forces = _forces(table.get("forces", []), _names(table.get("bodies")),
+                     _names(table.get("bodies")) | _names(table.get("joints")), problems)
     run = _run(data.get("run", {}), problems)
     problems.raise_any(source)
     mechanism = Mechanism(
@@ -102,7 +108,7 @@ def mechanism_scene_from_dict(data: Mapping[str, Any], source: str | None = None
         friction_law=str(friction.get("law", "coulomb")),
         friction_ramp=str(friction.get("ramp", "linear")),
         mu=float(friction.get("mu", 0.05)), v0=float(friction.get("v0", 1.0e-4)),
-        v1=float(friction.get("v1", 1.0e-2)))
+        v1=float(friction.get("v1", 1.0e-2)), torques=torques, forces=forces)
     try:
         mechanism.check()
     except DescriptionError as err:
@@ -357,6 +363,54 @@ def _driver(table: Any, joints: list[Joint], given: set[str], problems: Problems
         plausible("mechanism.driver.start", start, "initial.angle")
         return Driver(joint=str(joint), angle=None, speed=speed, start=start)
     return None
+
+
+def _torques(table: Any, joints: list[Joint], driver: Driver | None, problems: Problems
+             ) -> tuple[tuple[str, str], ...]:
+    """Applied torques: a joint's name to an expression of t (N m)."""
+    from jointplay.scene.expressions import parse_expression
+
+    out: list[tuple[str, str]] = []
+    with problems.check():
+        names = [j.name for j in joints if j.type == "revolute" and j.kind == "ideal"
+                 and (driver is None or j.name != driver.joint)]
+        check_keys(table, names or ["(none: no ideal revolute joint without the driver)"],
+                   "mechanism.torques")
+    for name, text in (table.items() if isinstance(table, Mapping) else []):
+        with problems.check():
+            parse_expression(text, field=f"mechanism.torques.{name}")
+            out.append((str(name), str(text)))
+    return tuple(out)
+
+
+def _forces(value: Any, bodies: set[str], taken: set[str], problems: Problems
+            ) -> tuple[Force, ...]:
+    """Applied forces: [[mechanism.forces]] tables (a name, a body, a point, x and y)."""
+    from jointplay.scene.expressions import parse_expression
+
+    if not isinstance(value, list):
+        problems.found.append(DescriptionError("mechanism.forces", "must be [[mechanism."
+                                               "forces]] tables"))
+        return ()
+    out: list[Force] = []
+    seen = set(taken)
+    for i, table in enumerate(value, start=1):
+        where = f"mechanism.forces[{i}]"
+        with problems.check():
+            check_keys(table, _FORCE, where)
+            name = _name(table, where, seen)
+            body = table.get("body")
+            if body not in bodies:
+                raise DescriptionError(f"{where}.body", f"must name a body (bodies: "
+                                       f"{', '.join(sorted(bodies))}), got {body!r}")
+            texts = []
+            for axis in ("x", "y"):
+                text = table.get(axis, "0")
+                parse_expression(text, field=f"{where}.{axis}")
+                texts.append(str(text))
+            at = _vector(table.get("at"), f"{where}.at", (0.0, 0.0))
+            out.append(Force(name=name, body=str(body), at=at, x=texts[0], y=texts[1]))
+    return tuple(out)
 
 
 def _run(table: Any, problems: Problems) -> RunSettings:

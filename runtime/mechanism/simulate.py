@@ -39,8 +39,9 @@ class MechanismResult:
     last); ``acceleration``: (samples, n); per cut clearance joint (columns in
     ``cut_joints``): ``eccentricity`` (samples, nc, 2), ``normal_force``, ``penetration``;
     ``driving_torque`` (N m) and the energies (J): ``kinetic``, ``potential``,
-    ``contact_potential``, ``drive_work`` (the driver's work since t = 0, integrated in the
-    loop) and ``dissipated``; ``impacts``: the located contact phases."""
+    ``contact_potential``, ``drive_work`` (the driver's and the applied loads' work since
+    t = 0, integrated in the loop) and ``dissipated``; ``impacts``: the located contact
+    phases."""
 
     name: str
     t: np.ndarray
@@ -153,7 +154,8 @@ def assembled_state(model: MechanismModel, p: np.ndarray, t0: float = 0.0,
                                + "; check the joints' points and the bodies' lengths, or "
                                "give the coordinates' starting values in an [initial] table "
                                "(e.g. a rocker's angle near its assembled value)")
-    rate = model.function("outputs")(x, [], p, np.zeros(len(model.clearance_joints)))[1][0]
+    rate = model.function("outputs")(x, np.zeros(model.n_loads), p,
+                                     np.zeros(len(model.clearance_joints)))[1][0]
     x[n:2 * n - 1] = np.linalg.lstsq(e_q, -e_theta * rate, rcond=None)[0]
     return x
 
@@ -165,13 +167,14 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     p = model.parameter_vector(scene.mechanism)
     run = scene.run
     x0 = assembled_state(model, p, start=scene.initial)
+    loads = load_functions(scene)
     nc = len(model.clearance_joints)
     clearance = np.array([j.radial_clearance for j in scene.mechanism.joints
                           if j.kind == "clearance" and j.name in model.cut_joint_names])
     clearance = np.array([next(j.radial_clearance for j in scene.mechanism.joints
                                if j.name == name) for name in model.cut_joint_names])
     integ = NativeIntegrator(model, p, _scale(model, scene), np.zeros((nc, 2), np.int32),
-                             clearance, np.zeros(0, np.int32), (), rtol=run.rtol,
+                             clearance, np.zeros(0, np.int32), loads, rtol=run.rtol,
                              atol=run.atol, max_steps=run.max_steps, max_events=MAX_EVENTS,
                              model_gaps=True)
     t = np.arange(run.n_outputs + 1) * run.output_step
@@ -181,7 +184,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     values, v_out, status = integ.integrate(float(t[-1]), t[1:])
     wall = time.perf_counter() - started
     if status:
-        raise_for_status(status, integ, [], lambda: None)
+        raise_for_status(status, integ, list(model.structure.load_inputs), lambda: None)
     nx = model.n_state
     x = np.vstack([x0, values[:, :nx]])
     v_imp = np.vstack([v_first, v_out]) if nc else np.zeros((len(t), 0))
@@ -193,7 +196,9 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     for r in np.flatnonzero(~np.isfinite(rows[:, 9])):  # phases open at the end
         rows[r, 11:14] += final[nx + 1 + 3 * int(rows[r, 0]):nx + 4 + 3 * int(rows[r, 0])]
     impacts = phase_table(cast(Any, SimpleNamespace(model=model)), rows, float(t[-1]))
-    samples = _samples(model, p, x, v_imp)
+    tau = _load_values(loads, t)
+    samples = _samples(model, p, x, v_imp, tau)
+    _check_penetration(scene, model, impacts)
     stats = {"wall_time_s": wall, **integ.stats()}
     result = MechanismResult(
         name=scene.name, t=t, coordinates=list(model.coordinates), units=list(model.units),
@@ -202,35 +207,73 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
         **cast(dict[str, Any], samples))
     if compare_ideal:
-        result.ideal = ideal_motion(model, p, t, scene.initial)
+        result.ideal = ideal_motion(model, p, t, scene.initial, tau)
     return result
 
 
-def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndarray
-             ) -> dict[str, np.ndarray]:
-    outputs, contact, gaps = (model.function(name) for name in ("outputs", "contact", "gaps"))
+def _check_penetration(scene: MechanismScene, model: MechanismModel, impacts: Impacts
+                       ) -> None:
+    """Stop (SimulationError) where a journal went further into its bearing than the contact
+    laws describe (:data:`jointplay.common.limits.MAX_PENETRATION_FRACTION` of its radius),
+    by each contact phase's located deepest point: a state no metal joint survives, reached
+    only from an impossible input."""
+    from jointplay.common.limits import MAX_PENETRATION_FRACTION
+
+    joints = {j.name: j for j in scene.mechanism.joints}
+    for k, name in enumerate(model.cut_joint_names):
+        limit = MAX_PENETRATION_FRACTION * joints[name].clearance["journal_radius"]
+        rows = np.flatnonzero((impacts.joint == k + 1) & (impacts.max_penetration > limit))
+        if rows.size:
+            first = rows[np.argmin(impacts.time[rows])]
+            at = float(impacts.time[first])
+            raise SimulationError(at, f"in the contact of {name} that begins here, its journal "
+                                  f"goes {impacts.max_penetration[first]:.3g} m into its "
+                                  f"bearing (deepest at t = "
+                                  f"{impacts.max_penetration_time[first]:.6g} s), beyond "
+                                  f"{MAX_PENETRATION_FRACTION:g} of its radius that the "
+                                  "contact laws describe; check the masses, speeds and "
+                                  "materials")
+
+
+def load_functions(scene: MechanismScene) -> tuple[Any, ...]:
+    """The applied loads' expressions of t, parsed, in the order of the model's input."""
+    from jointplay.scene.expressions import parse_expression
+
+    return tuple(parse_expression(text, field="mechanism loads")
+                 for text in scene.mechanism.load_expressions())
+
+
+def _load_values(loads: tuple[Any, ...], t: np.ndarray) -> np.ndarray:
+    """The loads at times t: (len(t), loads)."""
+    if not loads:
+        return np.zeros((len(t), 0))
+    return np.stack([np.asarray(f.numpy(t), dtype=float) for f in loads], axis=1)
+
+
+def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndarray,
+             tau: np.ndarray) -> dict[str, np.ndarray]:
+    """The outputs at every sample, each function evaluated over all samples in one C loop."""
+    from jointplay.sim.native import map_function
+
     rows = len(x)
-    n, nc = model.n_coordinates, len(model.clearance_joints)
-    out = {"acceleration": np.zeros((rows, n)), "driving_torque": np.zeros(rows),
-           "kinetic": np.zeros(rows), "potential": np.zeros(rows),
-           "contact_potential": np.zeros(rows), "eccentricity": np.zeros((rows, nc, 2)),
-           "normal_force": np.zeros((rows, nc)), "penetration": np.zeros((rows, nc))}
-    for k in range(rows):
-        torque, _, kinetic, potential, contact_pot, acc, _ = outputs(x[k], [], p, v_imp[k])
-        out["driving_torque"][k] = torque[0]
-        out["kinetic"][k], out["potential"][k] = kinetic[0], potential[0]
-        out["contact_potential"][k] = contact_pot[0]
-        out["acceleration"][k] = acc
-        if nc:
-            values = contact(x[k], p, v_imp[k])
-            out["normal_force"][k], out["penetration"][k] = values[3], values[0]
-            g = gaps(x[k], p)
-            out["eccentricity"][k, :, 0], out["eccentricity"][k, :, 1] = g[2], g[3]
+    nc = len(model.clearance_joints)
+    torque, _, kinetic, potential, contact_pot, acc, _ = map_function(
+        model, "outputs", [x, tau, p, v_imp], rows)
+    out = {"acceleration": acc, "driving_torque": torque[:, 0], "kinetic": kinetic[:, 0],
+           "potential": potential[:, 0], "contact_potential": contact_pot[:, 0],
+           "eccentricity": np.zeros((rows, nc, 2)), "normal_force": np.zeros((rows, nc)),
+           "penetration": np.zeros((rows, nc))}
+    if nc:
+        contact = map_function(model, "contact", [x, p, v_imp], rows)
+        gaps = map_function(model, "gaps", [x, p], rows)
+        out["penetration"], out["normal_force"] = contact[0], contact[3]
+        out["eccentricity"] = np.stack([gaps[2], gaps[3]], axis=2)
     return out
 
 
 def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
-                 start: dict[str, float] | None = None) -> dict[str, np.ndarray]:
+                 start: dict[str, float] | None = None, tau: np.ndarray | None = None
+                 ) -> dict[str, np.ndarray]:
     """The ideal mechanism (every clearance joint ideal) at times t, where the driver moves it
     completely: positions by Newton's method on the loop closure, velocities and accelerations
     from its first and second derivatives, the driving torque from the principle with the
@@ -260,14 +303,15 @@ def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
                 break
         e, e_q, e_theta, _ = closure(state, p)
         if np.max(np.abs(e)) > 1e-10:
-            raise SimulationError(f"the ideal mechanism cannot be assembled at t = {tk:.6g} s "
-                                  "(a dead point of the loop?)")
-        rate = outputs(state, [], p, zeros)[1][0]
+            raise SimulationError(float(tk), "the ideal mechanism cannot be assembled here (a "
+                                  "loop that cannot close, or a dead point of the loop)")
+        loads = tau[k] if tau is not None else np.zeros(model.n_loads)
+        rate = outputs(state, loads, p, zeros)[1][0]
         state[n:2 * n - 1] = np.linalg.solve(e_q, -e_theta * rate)
         _, _, _, gamma = closure(state, p)
         a = np.zeros(n)
         a[:n - 1] = np.linalg.solve(e_q, -gamma)
-        r = residual(state, a, p)[0]
+        r = residual(state, a, loads, p)[0]
         # Constraint forces lam (on the journals) balance the tree's rows: R_q = e_q^T lam;
         # the driver supplies the rest of its row: tau = R_theta - e_theta . lam.
         lam = np.linalg.solve(e_q.T, r[:n - 1])

@@ -55,6 +55,12 @@ class MechanismStructure:
     friction_law: str
     friction_ramp: str | None
     driver_angle: str | None = None
+    # Applied loads, their values expressions of t given at run time: torques on these
+    # revolute joints (on the child, the reaction on the parent), then forces (name, body)
+    # at a body's point, in the ground's axes: the model's input tau, in this order
+    # (each torque, then each force's x and y).
+    torque_joints: tuple[str, ...] = ()
+    forces: tuple[tuple[str, str], ...] = ()
 
     # laws.contact_terms reads these of a structure; a mechanism has neither.
     contact_stiffness = None
@@ -80,7 +86,15 @@ class MechanismStructure:
                 "contact_law": self.contact_law,
                 "friction": (f"{self.friction_law}-{self.friction_ramp}"
                              if self.friction_ramp else "none"),
-                "driver_angle": self.driver_angle}
+                "driver_angle": self.driver_angle,
+                **({"torques": list(self.torque_joints)} if self.torque_joints else {}),
+                **({"forces": [list(f) for f in self.forces]} if self.forces else {})}
+
+    @property
+    def load_inputs(self) -> list[str]:
+        """The names of the entries of the input tau (N m, N)."""
+        return [f"torques.{j}" for j in self.torque_joints] + [
+            f"forces.{name}.{axis}" for name, _ in self.forces for axis in ("x", "y")]
 
 
 @dataclass(frozen=True)
@@ -126,6 +140,8 @@ def parameter_names(structure: MechanismStructure) -> list[str]:
             out.append(f"{j}.angle")
         elif joint.kind == "clearance":
             out += [f"{j}.{key}" for key in CLEARANCE_KEYS]
+    for name, _ in structure.forces:
+        out += [f"{name}.at_x", f"{name}.at_y"]
     if structure.driver is not None and structure.driver_angle is None:
         out += ["driver.start", "driver.speed"]
     if structure.contact_law is not None:

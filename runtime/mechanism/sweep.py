@@ -144,7 +144,12 @@ def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool =
     """Run every case; write the table and its figure into ``out`` (all or nothing)."""
     from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
     from jointplay.mechanism.model import model_for
-    from jointplay.mechanism.simulate import ideal_motion, simulate_mechanism
+    from jointplay.mechanism.simulate import (
+        _load_values,
+        ideal_motion,
+        load_functions,
+        simulate_mechanism,
+    )
 
     out = Path(out)
     plan = OutputPlan()
@@ -160,8 +165,9 @@ def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool =
         result = simulate_mechanism(scene, model=model)
         p = model.parameter_vector(scene.mechanism)
         try:
-            ideal: dict[str, np.ndarray] | None = ideal_motion(model, p, result.t,
-                                                               scene.initial)
+            ideal: dict[str, np.ndarray] | None = ideal_motion(
+                model, p, result.t, scene.initial,
+                _load_values(load_functions(scene), result.t))
         except DescriptionError:
             ideal = None
         stats = result.contact_statistics()
