@@ -17,7 +17,8 @@ ODEs and Exudyn's error-controlled explicit DOPRI5 integrates them at tight tole
   flywheel of inertia ``flywheel_inertia`` (1e8 kg m^2) and starts at the driving speed. The
   torque the driver would apply is tau = -I_fly theta'' (to a relative 1e-11: the rest of the
   crank row of the mass matrix is below 1e-3 kg m^2), and the crank departs from constant speed
-  by |delta theta| <= int int |tau| / I_fly, reported as ``crank_angle_error`` (~1e-10 rad).
+  by |delta theta| <= int int |tau| / I_fly, reported as ``crank_angle_error`` (1.2e-11 rad
+  over the first revolution).
 - The clearance joint is a generalised force written here (``forceUserFunction`` of the tree),
   not taken from jointplay: with e = journal centre - bearing centre, penetration d = |e| - c,
   n = e/|e|, t = n rotated +90 deg, d' = e'.n and the sliding speed of the contact points
