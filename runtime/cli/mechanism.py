@@ -19,11 +19,12 @@ _UNSUPPORTED = {
     "step": "mechanism runs use the compiled BDF only (no fixed step)",
     "plausibility": "mechanism runs stop on a failed step; they have no plausibility setting",
 }
-CSV_COLUMNS_DOC = "t, every coordinate and rate, accelerations, driving torque, energies"
 
 
 def refuse_unsupported(args: argparse.Namespace) -> None:
     for flag, why in _UNSUPPORTED.items():
+        if flag == "integrator" and args.integrator == "bdf":
+            continue
         if getattr(args, flag, None) not in (None, False):
             raise DescriptionError(f"--{flag.replace('_', '-')}", f"{why}; drop the flag")
 
@@ -144,11 +145,14 @@ def summary_lines(result: Any) -> list[str]:
     out.append(f"  driving torque from {torque.min():.4g} to {torque.max():.4g} N m (on the "
                "samples)")
     if result.ideal is not None:
-        sliders = [n for n in result.coordinates if n.endswith(".position")]
-        for name in sliders:
+        # The sliders; without one, the first coordinate.
+        drawn = [n for n in result.coordinates if n.endswith(".position")] \
+            or result.coordinates[:1]
+        for name in drawn:
             k = result.coordinates.index(name)
             dev = np.max(np.abs(result.x[:, k] - result.ideal["x"][:, k]))
-            out.append(f"  {name}: at most {dev * 1e3:.4g} mm from the ideal mechanism's")
+            shown = f"{dev * 1e3:.4g} mm" if result.units[k] == "m" else f"{dev:.4g} rad"
+            out.append(f"  {name}: at most {shown} from the ideal mechanism's")
         out.append(f"  ideal driving torque from {result.ideal['driving_torque'].min():.4g} to "
                    f"{result.ideal['driving_torque'].max():.4g} N m (on the samples)")
     if result.accuracy is not None:

@@ -97,10 +97,6 @@ class RunSettings:
             raise DescriptionError("run.output_step", "asks for more than 1e7 samples; make "
                                    "it larger")
 
-    def tighter(self, factor: float = 10.0) -> RunSettings:
-        return dataclasses.replace(self, rtol=self.rtol / factor, atol=self.atol / factor,
-                                   max_steps=self.max_steps * 10)
-
 
 @dataclass(frozen=True)
 class Mechanism:
@@ -120,10 +116,6 @@ class Mechanism:
     v1: float
     torques: tuple[tuple[str, str], ...] = ()  # (revolute joint, expression of t in N m)
     forces: tuple[Force, ...] = ()
-
-    @property
-    def has_clearance(self) -> bool:
-        return any(j.kind == "clearance" for j in self.joints)
 
     def check(self) -> None:
         """The topology (see the module docstring); raises naming the joint and the fix."""

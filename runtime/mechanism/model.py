@@ -15,7 +15,6 @@ import time
 from importlib.metadata import version
 from pathlib import Path
 from types import SimpleNamespace
-from typing import Any
 
 import casadi as ca
 import numpy as np
@@ -110,7 +109,3 @@ def _head(path: Path) -> str:
     with path.open(encoding="utf-8") as handle:
         return handle.read(2000)
 
-
-def describe(model: MechanismModel) -> dict[str, Any]:
-    return {"name": model.name, "coordinates": model.coordinates,
-            "parameters": model.parameters, "library": str(model.library)}

@@ -207,7 +207,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
         **cast(dict[str, Any], samples))
     if compare_ideal:
-        result.ideal = ideal_motion(model, p, t, scene.initial, tau)
+        result.ideal = ideal_motion(model, p, t, scene.initial, tau, guess=x)
     return result
 
 
@@ -272,12 +272,16 @@ def _samples(model: MechanismModel, p: np.ndarray, x: np.ndarray, v_imp: np.ndar
 
 
 def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
-                 start: dict[str, float] | None = None, tau: np.ndarray | None = None
-                 ) -> dict[str, np.ndarray]:
+                 start: dict[str, float] | None = None, tau: np.ndarray | None = None,
+                 guess: np.ndarray | None = None) -> dict[str, np.ndarray]:
     """The ideal mechanism (every clearance joint ideal) at times t, where the driver moves it
     completely: positions by Newton's method on the loop closure, velocities and accelerations
     from its first and second derivatives, the driving torque from the principle with the
-    joints' constraint forces. Refuses (DescriptionError) a mechanism that keeps freedom."""
+    joints' constraint forces. Refuses (DescriptionError) a mechanism that keeps freedom.
+
+    With ``guess`` (states at t: the clearance run's, within its clearances of the ideal
+    motion, on its assembly), every sample is solved at once from it; else, or where that does
+    not converge, sample by sample, each from the last."""
     n = model.n_coordinates
     ncons = 2 * len(model.clearance_joints)
     if ncons != n - 1:
@@ -286,6 +290,10 @@ def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
                                "over-constrain it); --compare-ideal supports mechanisms the "
                                "driver moves completely once their clearance joints are "
                                "ideal")
+    if guess is not None:
+        found = _ideal_from_guess(model, p, t, guess, tau)
+        if found is not None:
+            return found
     closure, residual = model.function("closure"), model.function("ideal_residual")
     outputs = model.function("outputs")
     zeros = np.zeros(len(model.clearance_joints))
@@ -317,4 +325,51 @@ def ideal_motion(model: MechanismModel, p: np.ndarray, t: np.ndarray,
         lam = np.linalg.solve(e_q.T, r[:n - 1])
         torque[k] = r[n - 1] - e_theta @ lam
         x[k], acc[k] = state, a
+    return {"x": x, "acceleration": acc, "driving_torque": torque}
+
+
+def _dense_rows(function: Any, index: int, values: np.ndarray) -> np.ndarray:
+    """Rows of a mapped output's nonzeros as dense (rows, n_rows, n_cols) arrays."""
+    sparsity = function.sparsity_out(index)
+    rows, cols = sparsity.get_triplet()
+    out = np.zeros((values.shape[0], sparsity.size1(), sparsity.size2()))
+    out[:, np.asarray(rows, int), np.asarray(cols, int)] = values
+    return out
+
+
+def _ideal_from_guess(model: MechanismModel, p: np.ndarray, t: np.ndarray, guess: np.ndarray,
+                      tau: np.ndarray | None) -> dict[str, np.ndarray] | None:
+    """:func:`ideal_motion` for every sample at once (Newton from ``guess``, each function
+    mapped over the samples in one C loop); None where a sample does not converge."""
+    from jointplay.sim.native import map_function
+
+    count, n = len(t), model.n_coordinates
+    m = n - 1
+    closure = model.function("closure").function
+    loads = tau if tau is not None else np.zeros((count, model.n_loads))
+    x = np.zeros((count, 2 * n))
+    x[:, :m], x[:, n - 1], x[:, 2 * n - 1] = guess[:, :m], t, 1.0
+
+    def closure_at(x: np.ndarray) -> tuple[np.ndarray, ...]:
+        values = map_function(model, "closure", [x, p], count)
+        return tuple(_dense_rows(closure, i, v) for i, v in enumerate(values))
+
+    for _ in range(_NEWTON_STEPS):
+        e, e_q, _, _ = closure_at(x)
+        step = np.linalg.solve(e_q, -e)[..., 0]
+        x[:, :m] += step
+        if np.max(np.abs(step)) < 1e-14 * (1.0 + np.max(np.abs(x[:, :m]))):
+            break
+    e, e_q, e_theta, _ = closure_at(x)
+    if not np.all(np.isfinite(e)) or np.max(np.abs(e)) > 1e-10:
+        return None
+    zeros = np.zeros(len(model.clearance_joints))
+    rate = map_function(model, "outputs", [x, loads, p, zeros], count)[1][:, 0]
+    x[:, n:2 * n - 1] = np.linalg.solve(e_q, -e_theta * rate[:, None, None])[..., 0]
+    gamma = closure_at(x)[3]
+    acc = np.zeros((count, n))
+    acc[:, :m] = np.linalg.solve(e_q, -gamma)[..., 0]
+    residual = map_function(model, "ideal_residual", [x, acc, loads, p], count)[0]
+    lam = np.linalg.solve(np.transpose(e_q, (0, 2, 1)), residual[:, :m, None])
+    torque = residual[:, m] - np.sum(e_theta * lam, axis=(1, 2))
     return {"x": x, "acceleration": acc, "driving_torque": torque}

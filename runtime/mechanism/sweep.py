@@ -167,7 +167,7 @@ def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool =
         try:
             ideal: dict[str, np.ndarray] | None = ideal_motion(
                 model, p, result.t, scene.initial,
-                _load_values(load_functions(scene), result.t))
+                _load_values(load_functions(scene), result.t), guess=result.x)
         except DescriptionError:
             ideal = None
         stats = result.contact_statistics()
