@@ -12,7 +12,7 @@ the contact force written there from the laws' definitions) is checked first on 
    friction the mechanism only loses energy.
 
 Then jointplay's slider-crank (scenes/slider_crank.toml, the compiled BDF) is compared with it
-(the ``jointplay`` tests below).
+(``test_first_revolution_matches_exudyn``, ``test_five_revolutions_statistics_match_exudyn``).
 """
 
 from __future__ import annotations
