@@ -411,3 +411,67 @@ def test_the_ideal_mechanism_at_once_equals_sample_by_sample(scene: Any, model: 
         scale = np.max(np.abs(one_by_one[key]))
         np.testing.assert_allclose(result.ideal[key], one_by_one[key], rtol=0,
                                    atol=1e-12 * scale)
+
+
+LOCKED = """
+name = "locked_pair"
+[initial]
+a.angle = 1.0
+[mechanism.friction]
+mu = 0.1
+[[mechanism.bodies]]
+name = "a"
+mass = 1.0
+inertia = 0.0075
+com = [0.15, 0.0]
+[[mechanism.bodies]]
+name = "b"
+mass = 0.5
+inertia = 0.002
+com = [0.05, 0.0]
+[[mechanism.joints]]
+name = "pin"
+kind = "clearance"
+parent = "ground"
+child = "a"
+bearing_radius = 10e-3
+journal_radius = 9.5e-3
+[[mechanism.joints]]
+name = "weld"
+kind = "locked"
+parent = "a"
+child = "b"
+at_parent = [0.3, 0.0]
+angle = 1.5707963267948966
+[run]
+t_end = 0.2
+output_step = 1e-3
+rtol = 1e-10
+atol = 1e-10
+"""
+
+
+def test_a_locked_joint_makes_one_rigid_body(tmp_path: Any) -> None:
+    """Body b welded to body a by a locked joint at a's far end, at 90 degrees, hanging by a
+    clearance joint: the same motion as one body of the pair's combined mass, centre of mass
+    and inertia (parallel axes)."""
+    (tmp_path / "pair.toml").write_text(LOCKED, encoding="utf-8")
+    pair = simulate_mechanism(load_mechanism_scene(tmp_path / "pair.toml"))
+    mass = 1.5
+    com_a, com_b = np.array([0.15, 0.0]), np.array([0.3, 0.05])  # in a's frame
+    com = (1.0 * com_a + 0.5 * com_b) / mass
+    inertia = (0.0075 + 1.0 * np.sum((com_a - com) ** 2)
+               + 0.002 + 0.5 * np.sum((com_b - com) ** 2))
+    bodies_start = LOCKED.index("[[mechanism.bodies]]")
+    joints_start = LOCKED.index("[[mechanism.joints]]")
+    weld_start = LOCKED.index("[[mechanism.joints]]", joints_start + 1)
+    single = (LOCKED[:bodies_start]
+              + f"[[mechanism.bodies]]\nname = \"a\"\nmass = {mass!r}\n"
+                f"inertia = {float(inertia)!r}\ncom = [{float(com[0])!r}, {float(com[1])!r}]\n\n"
+              + LOCKED[joints_start:weld_start] + LOCKED[LOCKED.index("[run]"):])
+    (tmp_path / "single.toml").write_text(single, encoding="utf-8")
+    one = simulate_mechanism(load_mechanism_scene(tmp_path / "single.toml"))
+    assert len(pair.impacts) == len(one.impacts) > 5
+    np.testing.assert_allclose(pair.eccentricity, one.eccentricity, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(pair.coordinate("a.angle"), one.coordinate("a.angle"), rtol=0,
+                               atol=1e-8)

@@ -110,6 +110,9 @@ def test_the_command_refuses_with_exit_2_and_writes_nothing(tmp_path: Path,
     assert "--animate" in capsys.readouterr().err
     assert main(["simulate", str(SCENE), "--set", "crank.mas=1"]) == 2
     assert "--set crank.mas" in capsys.readouterr().err
+    # A number of an effect the file switched off would change nothing: refused.
+    assert main(["simulate", str(SCENE), "--set", "friction.mu=0.02"]) == 2
+    assert "friction is off" in capsys.readouterr().err
     assert not list(tmp_path.glob("*.gif"))
 
 

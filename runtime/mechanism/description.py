@@ -174,11 +174,26 @@ class Mechanism:
     def with_values(self, changes: dict[str, float]) -> Mechanism:
         """A copy with parameters changed by name (``crank.mass``, ``slider_pin.journal_radius``,
         ``friction.mu``...); structure never changes here."""
+        names = parameter_names(self.structure())
         out = self
         for name, value in changes.items():
+            if name not in names and not name.endswith(".angle") and name in _SWITCHED_OFF:
+                raise DescriptionError(name, f"is not in this mechanism's model: "
+                                       f"{_SWITCHED_OFF[name]}")
             out = _with_value(out, name, float(value))
         out.check()
         return out
+
+
+# Parameters of effects a mechanism's file can switch off, and how to switch them on.
+_SWITCHED_OFF = {
+    **{f"friction.{k}": "its friction is off (mechanism.friction.law = \"none\"); set the "
+       "law to \"coulomb\" in the file" for k in ("mu", "v0", "v1")},
+    **{f"contact.{k}": "it has no clearance joint" for k in ("exponent", "restitution",
+                                                            "impact_speed_floor")},
+    **{f"driver.{k}": "its driver has no speed and start (it is an angle expression, or "
+       "absent)" for k in ("speed", "start")},
+}
 
 
 def _with_value(m: Mechanism, name: str, value: float) -> Mechanism:

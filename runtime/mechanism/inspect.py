@@ -7,8 +7,8 @@ from jointplay.mechanism.description import MechanismScene
 from jointplay.mechanism.structure import coordinates, parameter_names
 
 EQUATIONS = (
-    "M(q) q'' = Q_gravity(q, t) + sum over cut joints of J_journal^T F - J_bearing^T F "
-    "(+ friction moments Rj Ft, -Rb Ft) - bias(q, q', t)",
+    "M(q) q'' = Q_gravity(q, t) + Q_loads(q, t) + sum over cut joints of J_journal^T F "
+    "- J_bearing^T F (+ friction moments Rj Ft, -Rb Ft) - bias(q, q', t)",
     "F: the clearance joint's law at e = journal centre - bearing centre (the serial arms' "
     "laws: Hertz pin-in-hole stiffness, damping by contact.law, modified Coulomb friction)",
     "driving torque = the driven joint's row of d'Alembert's principle at the computed q''",
@@ -32,6 +32,11 @@ def render(scene: MechanismScene, fmt: str = "text") -> str:
                f"{mechanism.driver.start:g} + {mechanism.driver.speed:g}*t")
         lines.append(f"{'- ' if md else '  '}driver angle of {mechanism.driver.joint}: {law} "
                      "(rad)")
+    for joint, text in mechanism.torques:
+        lines.append(f"{'- ' if md else '  '}torque across {joint}: {text} (N m)")
+    for force in mechanism.forces:
+        lines.append(f"{'- ' if md else '  '}force {force.name} on {force.body} at "
+                     f"({force.at[0]:g}, {force.at[1]:g}) m: ({force.x}, {force.y}) (N)")
     lines += ["", "## Coordinates" if md else "coordinates:"]
     for c in coordinates(structure):
         lines.append(f"{'- ' if md else '  '}{c.name} [{c.unit}]")
