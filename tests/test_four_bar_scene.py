@@ -151,4 +151,7 @@ def test_simulate_compare_ideal_plot_from_the_command_line(
         assert f"{pin}: " in out
     pngs = sorted(p.name for p in figures.iterdir())
     assert "journal_orbit.png" in pngs and "driving_torque.png" in pngs
+    # the file's [output]: the rocker's angle, not the first coordinate (coupler.x)
+    assert "rocker.angle: at most" in out
+    assert "rocker_angle_acceleration.png" in pngs and "rocker_angle_velocity.png" in pngs
     assert all((figures / p).stat().st_size > 1000 for p in pngs)

@@ -169,9 +169,22 @@ def test_the_reference_page_lists_every_key() -> None:
             *(f"mechanism.friction.{k}" for k in reading._FRICTION),
             "[mechanism.torques]", "[[mechanism.forces]]",
             *(f"forces.{k}" for k in reading._FORCE),
+            *(f"output.{k}" for k in reading._OUTPUT),
             *(f"run.{k}" for k in reading._RUN)]
     missing = [k for k in keys if f"`{k}`" not in page]
     assert not missing, f"keys missing from docs/reference/mechanism-file.md: {missing}"
+
+
+def test_the_reference_pages_example_is_a_mechanism_file(tmp_path: Path) -> None:
+    """The page's example (a shortened slider-crank) loads, and is the scene's mechanism."""
+    page = Path("docs/reference/mechanism-file.md").read_text(encoding="utf-8")
+    examples = re.findall(r"```toml\n(.*?)```", page, flags=re.DOTALL)
+    assert len(examples) == 1
+    path = tmp_path / "example.toml"
+    path.write_text(examples[0], encoding="utf-8")
+    example = load_mechanism_scene(path)
+    assert example.mechanism.structure() == load_mechanism_scene(SCENE).mechanism.structure()
+    assert example.output_coordinate == "guide.position"
 
 
 def test_a_sweep_of_a_mechanism(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -234,6 +247,7 @@ def test_results_file_plot_and_compare(tmp_path: Path, capsys: pytest.CaptureFix
                  "0.003", "--no-verify", "--quiet"]) == 0
     run = read_mechanism_result(a)
     assert run.coordinates == ["guide.position", "crank_pin.angle", "t"]
+    assert run.output == "guide.position"  # the coordinate the figures follow, kept
     assert run.ideal is not None and len(run.impacts) > 3
     assert main(["plot", str(a), "--out", str(tmp_path / "plots")]) == 0
     assert (tmp_path / "plots" / "journal_orbit.png").is_file()

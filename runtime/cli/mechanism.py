@@ -145,14 +145,14 @@ def summary_lines(result: Any) -> list[str]:
     out.append(f"  driving torque from {torque.min():.4g} to {torque.max():.4g} N m (on the "
                "samples)")
     if result.ideal is not None:
-        # The sliders; without one, the first coordinate.
-        drawn = [n for n in result.coordinates if n.endswith(".position")] \
-            or result.coordinates[:1]
-        for name in drawn:
-            k = result.coordinates.index(name)
-            dev = np.max(np.abs(result.x[:, k] - result.ideal["x"][:, k]))
-            shown = f"{dev * 1e3:.4g} mm" if result.units[k] == "m" else f"{dev:.4g} rad"
-            out.append(f"  {name}: at most {shown} from the ideal mechanism's")
+        from jointplay.mechanism.output import followed
+
+        # The output the file names (the slider, the rocker's angle...).
+        name = followed(result.output, result.coordinates)
+        k = result.coordinates.index(name)
+        dev = np.max(np.abs(result.x[:, k] - result.ideal["x"][:, k]))
+        shown = f"{dev * 1e3:.4g} mm" if result.units[k] == "m" else f"{dev:.4g} rad"
+        out.append(f"  {name}: at most {shown} from the ideal mechanism's")
         out.append(f"  ideal driving torque from {result.ideal['driving_torque'].min():.4g} to "
                    f"{result.ideal['driving_torque'].max():.4g} N m (on the samples)")
     if result.accuracy is not None:

@@ -1,6 +1,6 @@
 """Mechanism runs side by side (``jointplay compare`` on mechanism results files): their
-slider (or first coordinate) acceleration, journal orbits, contact forces and driving torques
-overlaid, and a table of what differs, each run against the first."""
+output's acceleration (the slider, the rocker's angle), journal orbits, contact forces and
+driving torques overlaid, and a table of what differs, each run against the first."""
 
 from __future__ import annotations
 
@@ -33,7 +33,7 @@ def _common(a: MechanismResult, b: MechanismResult) -> tuple[np.ndarray, np.ndar
 
 def difference_rows(runs: Runs) -> list[dict[str, float | str]]:
     first = runs[0][1]
-    name, _, _, _ = _output(first.coordinates)
+    name = _output(first)[0]
     k = first.coordinates.index(name)
     rows: list[dict[str, float | str]] = []
     for label, result in runs:
@@ -49,7 +49,7 @@ def difference_rows(runs: Runs) -> list[dict[str, float | str]]:
 
 def difference_table(runs: Runs) -> str:
     first = runs[0][1]
-    name, _, _, _ = _output(first.coordinates)
+    name = _output(first)[0]
     unit = first.units[first.coordinates.index(name)]
     lines = [f"| run | impacts | largest contact force (N, located) | {name} from "
              f"{runs[0][0]}'s ({unit}, shared samples) | energy balance (J) |",
@@ -64,9 +64,8 @@ def difference_table(runs: Runs) -> str:
 def compare_figures(runs: Runs, folder: str | Path) -> list[Path]:
     folder = Path(folder)
     first = runs[0][1]
-    name, stem, _, acc_unit = _output(first.coordinates)
+    name, stem, what, _, acc_unit = _output(first)
     k = first.coordinates.index(name)
-    what = "slider" if stem == "slider" else name
     paths = []
     series = (
         (f"{stem}_acceleration.png", f"{what} acceleration ({acc_unit})",

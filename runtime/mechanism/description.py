@@ -319,6 +319,16 @@ class MechanismScene:
     source: str | None = None
     # Starting values of coordinates for the assembly at t = 0 (see simulate.assembled_state)
     initial: dict[str, float] = field(default_factory=dict)
+    # The coordinate the run follows ([output] coordinate); None: the rule of
+    # jointplay.mechanism.output.default_output
+    output: str | None = None
+
+    @property
+    def output_coordinate(self) -> str:
+        """The coordinate the summary and the figures follow (the file's, or the rule's)."""
+        from jointplay.mechanism.output import default_output
+
+        return self.output or default_output(self.mechanism)
 
     def with_run(self, **changes: float) -> MechanismScene:
         run = cast(RunSettings, _replace(self.run, **changes))

@@ -1,9 +1,11 @@
 """The figures a reader of the clearance-joint literature expects of a mechanism run.
 
-Slider acceleration and velocity against the ideal mechanism's, the journal's orbit inside
-its clearance circle, the contact force, the driving torque (against the ideal's): each an
-atomic PNG (:func:`jointplay.common.figures.save`), drawn on the samples, with the located
-contact phases' peak forces marked where they were located (not read off the samples).
+The output's acceleration and velocity against the ideal mechanism's (the slider of a
+slider-crank, the rocker's angle of a four-bar: :mod:`jointplay.mechanism.output`), the
+journal's orbit inside its clearance circle, the contact force, the driving torque (against
+the ideal's): each an atomic PNG (:func:`jointplay.common.figures.save`), drawn on the
+samples, with the located contact phases' peak forces marked where they were located (not
+read off the samples).
 """
 
 from __future__ import annotations
@@ -13,18 +15,18 @@ from pathlib import Path
 import numpy as np
 
 from jointplay.common.figures import figure, save
+from jointplay.mechanism.output import figure_stem, followed
 from jointplay.mechanism.simulate import MechanismResult
 
 
-def _output(coordinates: list[str]) -> tuple[str, str, str, str]:
-    """The coordinate whose motion is drawn against the ideal's (the first slider; without
-    one, the first coordinate), its figures' name stem, and its units of rate and
-    acceleration."""
-    sliders = [name for name in coordinates if name.endswith(".position")]
-    if sliders:
-        return sliders[0], "slider", "m/s", "m/s²"
-    name = coordinates[0]
-    return name, name.replace(".", "_"), "rad/s", "rad/s²"
+def _output(result: MechanismResult) -> tuple[str, str, str, str, str]:
+    """The coordinate whose motion is drawn against the ideal's (the run's output: the
+    file's ``[output]``, or :mod:`jointplay.mechanism.output`'s rule), its figures' name
+    stem, the axis's word for it, and its units of rate and acceleration."""
+    name = followed(result.output, result.coordinates)
+    unit = result.units[result.coordinates.index(name)]
+    stem, what = figure_stem(name, unit)
+    return name, stem, what, f"{unit}/s", f"{unit}/s²"
 
 
 def _revolutions_axis(ax: object, result: MechanismResult) -> None:
@@ -35,9 +37,8 @@ def _revolutions_axis(ax: object, result: MechanismResult) -> None:
 def write_figures(result: MechanismResult, folder: str | Path) -> list[Path]:
     """Draw every figure into ``folder`` (created by the caller); returns the paths."""
     folder = Path(folder)
-    slider, stem, rate_unit, acc_unit = _output(result.coordinates)
-    what = "slider" if stem == "slider" else slider
-    k = result.coordinates.index(slider)
+    output, stem, what, rate_unit, acc_unit = _output(result)
+    k = result.coordinates.index(output)
     n = len(result.coordinates)
     ideal = result.ideal
     paths = []

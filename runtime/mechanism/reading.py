@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import (
     Problems,
     check_keys,
@@ -35,7 +36,7 @@ from jointplay.mechanism.description import (
 
 GROUND = "ground"
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,39}$")
-_TOP = ("name", "description", "mechanism", "initial", "run")
+_TOP = ("name", "description", "mechanism", "initial", "output", "run")
 _MECHANISM = ("bodies", "joints", "driver", "gravity", "contact", "friction", "torques",
               "forces")
 _FORCE = ("name", "body", "at", "x", "y")
@@ -47,6 +48,7 @@ _DRIVER = ("joint", "speed", "start", "angle")
 _GRAVITY = ("enabled", "vector")
 _CONTACT = ("law", "exponent", "restitution", "impact_speed_floor")
 _FRICTION = ("law", "ramp", "mu", "v0", "v1")
+_OUTPUT = ("coordinate",)
 _RUN = ("t_end", "output_step", "rtol", "atol", "max_steps")
 CONTACT_LAWS = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 KINDS = ("ideal", "clearance", "locked")
@@ -115,8 +117,26 @@ def mechanism_scene_from_dict(data: Mapping[str, Any], source: str | None = None
         raise err.with_source(source) from None
     description = data.get("description", "")
     initial = _initial(data.get("initial", {}), mechanism, source)
+    output = _output(data.get("output", {}), mechanism, source)
     return MechanismScene(name=name, description=str(description), mechanism=mechanism,
-                          run=run, source=source, initial=initial)
+                          run=run, source=source, initial=initial, output=output)
+
+
+def _output(table: Any, mechanism: Mechanism, source: str | None) -> str | None:
+    """The coordinate the run follows, by name (None: jointplay.mechanism.output's rule)."""
+    from jointplay.mechanism.structure import CLOCK, coordinates
+
+    check_keys(table, _OUTPUT, "output", source)
+    if "coordinate" not in table:
+        return None
+    name = table["coordinate"]
+    names = [c.name for c in coordinates(mechanism.structure()) if c.name != CLOCK]
+    if not isinstance(name, str) or name not in names:
+        raise DescriptionError(
+            "output.coordinate", f"must name one of the mechanism's coordinates "
+            f"({', '.join(names) or 'none'}), got {name!r}"
+            f"{did_you_mean(str(name), names)}", source)
+    return name
 
 
 def _initial(table: Any, mechanism: Mechanism, source: str | None) -> dict[str, float]:

@@ -7,9 +7,9 @@ dataset of float64 in SI units, names as :class:`MechanismResult`'s fields): ``t
 ``impacts`` (one dataset per column of the located contact phases); the group ``ideal``
 (``x``, ``acceleration``, ``driving_torque``) when the run was compared with the ideal
 mechanism. The attributes ``coordinates``, ``units``, ``cut_joints`` (JSON), ``clearance``,
-``rtol``, ``atol``, ``stats`` (JSON) and ``accuracy`` (the statement's lines, when checked).
-The attribute ``sha256`` is the hash of every dataset's name and bytes: a file changed
-since is refused when read.
+``rtol``, ``atol``, ``stats`` (JSON), ``output`` (the coordinate the figures follow) and
+``accuracy`` (the statement's lines, when checked). The attribute ``sha256`` is the hash of
+every dataset's name and bytes: a file changed since is refused when read.
 """
 
 from __future__ import annotations
@@ -68,6 +68,7 @@ def write_mechanism_result(result: MechanismResult, path: str | Path) -> None:
         attrs["units"] = json.dumps(result.units)
         attrs["cut_joints"] = json.dumps(result.cut_joints)
         attrs["rtol"], attrs["atol"] = result.rtol, result.atol
+        attrs["output"] = result.output
         attrs["stats"] = json.dumps({k: float(v) for k, v in result.stats.items()})
         if result.accuracy is not None:
             attrs["accuracy"] = "\n".join(result.accuracy.lines())
@@ -112,7 +113,8 @@ def read_mechanism_result(path: str | Path, argument: str = "RUN.h5") -> Mechani
         name=str(attrs["name"]), coordinates=json.loads(attrs["coordinates"]),
         units=json.loads(attrs["units"]), cut_joints=json.loads(attrs["cut_joints"]),
         impacts=impacts, stats=json.loads(attrs["stats"]), rtol=float(attrs["rtol"]),
-        atol=float(attrs["atol"]), ideal=ideal, **{k: datasets[k] for k in ARRAYS})
+        atol=float(attrs["atol"]), ideal=ideal, output=str(attrs.get("output", "")),
+        **{k: datasets[k] for k in ARRAYS})
     if "accuracy" in attrs:
         result.notes.append(str(attrs["accuracy"]))
     return result

@@ -67,6 +67,9 @@ class MechanismResult:
     ideal: dict[str, np.ndarray] | None = None
     accuracy: Any = None
     notes: list[str] = field(default_factory=list)
+    # The coordinate the summary and the figures follow (the file's [output], or the rule of
+    # jointplay.mechanism.output)
+    output: str = ""
 
     def coordinate(self, name: str) -> np.ndarray:
         return self.x[:, self.coordinates.index(name)]
@@ -205,7 +208,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
         x=x, cut_joints=list(
             model.cut_joint_names), clearance=clearance, drive_work=work,
         dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
-        **cast(dict[str, Any], samples))
+        output=scene.output_coordinate, **cast(dict[str, Any], samples))
     if compare_ideal:
         result.ideal = ideal_motion(model, p, t, scene.initial, tau, guess=x)
     return result
