@@ -14,6 +14,7 @@ import pytest
 
 from jointplay.cli.mechanism import summary_lines
 from jointplay.common.errors import DescriptionError
+from jointplay.mechanism.inspect import render
 from jointplay.mechanism.output import default_output, followed
 from jointplay.mechanism.plots import write_figures
 from jointplay.mechanism.reading import load_mechanism_scene
@@ -45,10 +46,15 @@ def _joint_block(text: str, name: str) -> tuple[int, int]:
 
 
 def test_the_files_follow_the_slider_and_the_rocker() -> None:
-    assert load_mechanism_scene(FOUR_BAR).output_coordinate == "rocker.angle"
+    four_bar = load_mechanism_scene(FOUR_BAR)
+    assert four_bar.output_coordinate == "rocker.angle"
+    assert ("  output (what the summary and the figures follow, the file's [output]): "
+            "rocker.angle") in render(four_bar).splitlines()
     for name in ("slider_crank", "slider_crank_0_1mm", "slider_crank_friction"):
         scene = load_mechanism_scene(f"scenes/{name}.toml")
         assert scene.output is None and scene.output_coordinate == "guide.position"
+        assert ("  output (what the summary and the figures follow, the default rule): "
+                "guide.position") in render(scene).splitlines()
 
 
 def test_the_rule_without_an_output_table(tmp_path: Path) -> None:

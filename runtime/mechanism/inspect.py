@@ -40,6 +40,9 @@ def render(scene: MechanismScene, fmt: str = "text") -> str:
     lines += ["", "## Coordinates" if md else "coordinates:"]
     for c in coordinates(structure):
         lines.append(f"{'- ' if md else '  '}{c.name} [{c.unit}]")
+    source = "the file's [output]" if scene.output else "the default rule"
+    lines.append(f"{'- ' if md else '  '}output (what the summary and the figures follow, "
+                 f"{source}): {scene.output_coordinate}")
     lines += ["", "## Parameters" if md else "parameters (runtime inputs; never recompile):"]
     for name in parameter_names(structure):
         lines.append(f"{'- ' if md else '  '}{name} = {values[name]:.6g}")
