@@ -203,6 +203,7 @@ def test_a_sweep_of_a_mechanism(tmp_path: Path, capsys: pytest.CaptureFixture[st
     assert first["slider_pin.clearance"] == 1e-4 and first["rod.mass"] == 0.21
     # Within its clearance and a penetration from the ideal mechanism's slider.
     assert 1e-4 <= first["slider_from_ideal_m"] < 2e-4
+    assert first["output_from_ideal"] == first["slider_from_ideal_m"]  # the slider's output
     assert (out / "mechanism_sweep.png").is_file()
     sweep.write_text('scene = "slider_crank.toml"\n[parameters."rod.mas"]\nvalues = [0.2]\n',
                      encoding="utf-8")

@@ -123,3 +123,23 @@ def test_the_four_bars_summary_and_figures_follow_the_rocker(four_bar_run: Any,
     names = sorted(p.name for p in write_figures(result, tmp_path))
     assert "rocker_angle_acceleration.png" in names and "rocker_angle_velocity.png" in names
     assert not any(name.startswith("coupler_x") for name in names)
+
+
+def test_a_four_bar_sweep_reports_the_rockers_distance_from_the_ideal(
+        four_bar_run: Any, tmp_path: Path) -> None:
+    from jointplay.cli import main
+
+    (tmp_path / "four_bar.toml").write_text(FOUR_BAR_TEXT, encoding="utf-8")
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text('scene = "four_bar.toml"\n[run]\nt_end = 0.05\n'
+                     '[parameters."rocker.mass"]\nvalues = [1.0, 2.0]\n', encoding="utf-8")
+    assert main(["sweep", str(sweep), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    lines = (tmp_path / "out" / "mechanism_sweep.csv").read_text(encoding="utf-8").splitlines()
+    rows = [dict(zip(lines[0].split(","), map(float, line.split(",")), strict=True))
+            for line in lines[1:]]
+    k = four_bar_run.coordinates.index("rocker.angle")  # the first case is the scene's run
+    expected = np.max(np.abs(four_bar_run.x[:, k] - four_bar_run.ideal["x"][:, k]))
+    assert rows[0]["output_from_ideal"] == pytest.approx(expected, rel=1e-9)
+    # rad: about 2.9 mrad per mm of play in the three pins, as the scene test measures
+    assert 2.0 * 5e-3 < rows[1]["output_from_ideal"] < 4.0 * 5e-3
+    assert all(np.isnan(row["slider_from_ideal_m"]) for row in rows)  # a four-bar: no slider

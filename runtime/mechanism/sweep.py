@@ -7,8 +7,9 @@ of the mechanism (``jointplay inspect SCENE`` lists them) or the alias ``JOINT.c
 (the journal radius set to the bearing radius minus the value). Each case is one run in this
 process (a run takes a fraction of a second), with the ideal mechanism beside it where the
 driver moves it completely. The table (``OUT/mechanism_sweep.csv``) has a row per case: the
-swept values and the run's contact statistics, the slider's largest distance from the ideal
-mechanism, the largest driving torques and the energy balance.
+swept values and the run's contact statistics, the slider's and the output's (the file's
+``[output]``: a four-bar's rocker angle) largest distance from the ideal mechanism's, the
+largest driving torques and the energy balance.
 """
 
 from __future__ import annotations
@@ -135,8 +136,8 @@ def load_mechanism_sweep(path: str | Path) -> MechanismSweep:
 
 COLUMNS = ("impacts", "impact_rate", "contact_fraction", "median_peak_force",
            "largest_peak_force", "median_approach_speed", "slider_from_ideal_m",
-           "largest_driving_torque", "largest_ideal_driving_torque", "energy_residual",
-           "wall_time_s")
+           "output_from_ideal", "largest_driving_torque", "largest_ideal_driving_torque",
+           "energy_residual", "wall_time_s")
 
 
 def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool = True
@@ -172,10 +173,15 @@ def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool =
             ideal = None
         stats = result.contact_statistics()
         sliders = [k for k, name in enumerate(result.coordinates) if name.endswith(".position")]
+        output = result.coordinates.index(result.output)
         row = {**case, **stats,
                "slider_from_ideal_m": (float(np.max(np.abs(result.x[:, sliders]
                                                            - ideal["x"][:, sliders])))
                                        if ideal is not None and sliders else np.nan),
+               # the output the file names (its unit: m for a slider, rad for a rocker)
+               "output_from_ideal": (float(np.max(np.abs(result.x[:, output]
+                                                         - ideal["x"][:, output])))
+                                     if ideal is not None else np.nan),
                "largest_driving_torque": float(np.max(np.abs(result.driving_torque))),
                "largest_ideal_driving_torque": (float(np.max(np.abs(ideal["driving_torque"])))
                                                 if ideal is not None else np.nan),
