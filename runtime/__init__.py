@@ -24,6 +24,12 @@ from jointplay.common.errors import (
     JointplayError,
     SimulationError,
 )
+from jointplay.mechanism import (
+    MechanismResult,
+    MechanismScene,
+    load_mechanism_scene,
+    simulate_mechanism,
+)
 from jointplay.results.accuracy import Accuracy
 from jointplay.results.records import Impacts, SimulationResult
 from jointplay.results.solution import DenseSolution
@@ -82,6 +88,8 @@ __all__ = [
     "Joint",
     "JointplayError",
     "Link",
+    "MechanismResult",
+    "MechanismScene",
     "Model",
     "Parameter",
     "Robot",
@@ -99,6 +107,7 @@ __all__ = [
     "default_scene",
     "generated_folder",
     "ideal_counterpart",
+    "load_mechanism_scene",
     "load_model",
     "load_robot",
     "load_scene",
@@ -110,6 +119,7 @@ __all__ = [
     "robot_to_toml",
     "scene_from_dict",
     "simulate",
+    "simulate_mechanism",
     "uniform_chain",
     "with_parameters",
 ]

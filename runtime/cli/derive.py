@@ -27,6 +27,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def cmd_derive(args: argparse.Namespace) -> int:
+    from jointplay.mechanism.reading import is_mechanism_file
+
+    if args.robot and is_mechanism_file(args.robot):
+        return _derive_mechanism(args)
     robot = robot_from_args(args)
     out = Path(args.out)
     plan = OutputPlan()
@@ -47,4 +51,40 @@ def cmd_derive(args: argparse.Namespace) -> int:
           f"({len(emitted.deferred_source) / 1024:.0f} KiB, compiled on first use), "
           f"layout.json, robot.toml in {t['derive']:.2f} s derive + "
           f"{t['emit']:.2f} s emit")
+    return 0
+
+
+def _derive_mechanism(args: argparse.Namespace) -> int:
+    """A mechanism file: its stamped model.c and structure.json into ``--out``."""
+    import json
+    import time
+
+    from jointplay.common.errors import DescriptionError
+    from jointplay.common.files import atomic_write_text
+    from jointplay.mechanism.model import input_hash
+    from jointplay.mechanism.reading import load_mechanism_scene
+
+    if args.formulation not in (None, "auto"):
+        raise DescriptionError("--formulation", "a mechanism has one formulation; drop it")
+    scene = load_mechanism_scene(args.robot)
+    out = Path(args.out)
+    plan = OutputPlan()
+    plan.input("robot", args.robot)
+    for name in (SOURCE_NAME, "structure.json"):
+        plan.file("--out", out / name, f"the generated {name}")
+    plan.check()
+    check_writable_dir(out, "--out")
+    from jointplay.derive.mechanism import emit
+
+    structure = scene.mechanism.structure()
+    t0 = time.perf_counter()
+    source = emit(structure, scene.name, input_hash(structure))
+    seconds = time.perf_counter() - t0
+    with all_or_nothing(plan):
+        make_folder(out, "--out")
+        atomic_write_text(out / SOURCE_NAME, source)
+        atomic_write_text(out / "structure.json",
+                          json.dumps(structure.as_dict(), indent=1) + "\n")
+    print(f"wrote {out}/{SOURCE_NAME} ({len(source) / 1024:.0f} KiB), structure.json in "
+          f"{seconds:.2f} s derive + emit")
     return 0

@@ -25,6 +25,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def cmd_inspect(args: argparse.Namespace) -> int:
+    from jointplay.mechanism.reading import is_mechanism_file
+
+    if args.robot and is_mechanism_file(args.robot):
+        return _inspect_mechanism(args)
     robot = robot_from_args(args)
     out = Path(args.out) if args.out else None
     plan = OutputPlan()
@@ -46,4 +50,31 @@ def cmd_inspect(args: argparse.Namespace) -> int:
         with all_or_nothing(plan):
             atomic_write_text(out, text)
         print(f"wrote {out} ({fmt})")
+    return 0
+
+
+def _inspect_mechanism(args: argparse.Namespace) -> int:
+    """A mechanism file: its tree, cut joints, coordinates, parameters, equations' form."""
+    from jointplay.common.errors import DescriptionError
+    from jointplay.common.files import all_or_nothing, atomic_write_text
+    from jointplay.mechanism.inspect import render
+    from jointplay.mechanism.reading import load_mechanism_scene
+
+    if args.format == "latex":
+        raise DescriptionError("--format", "a mechanism is shown as text or markdown")
+    scene = load_mechanism_scene(args.robot)
+    out = Path(args.out) if args.out else None
+    fmt = args.format or ("markdown" if out is not None and out.suffix == ".md" else "text")
+    text = render(scene, fmt)
+    if out is None:
+        sys.stdout.write(text)
+        return 0
+    plan = OutputPlan()
+    plan.input("robot", args.robot)
+    plan.file("--out", out)
+    plan.check()
+    check_writable_file(out, "--out")
+    with all_or_nothing(plan):
+        atomic_write_text(out, text)
+    print(f"wrote {out} ({fmt})")
     return 0

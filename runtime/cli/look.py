@@ -92,14 +92,43 @@ def _read(path: str, argument: str, label: str) -> SimulationResult:
 
 
 def cmd_plot(args: argparse.Namespace) -> int:
+    from jointplay.mechanism.results import is_mechanism_result
     from jointplay.results.plots import plot_result
 
     folder, plan = _check_out(args.out, [args.run])
+    if is_mechanism_result(args.run):
+        from jointplay.mechanism.plots import write_figures
+        from jointplay.mechanism.results import read_mechanism_result
+
+        mechanism = read_mechanism_result(args.run)
+        with all_or_nothing(plan):
+            make_folder(folder, "--out")
+            paths = write_figures(mechanism, folder)
+        for path in paths:
+            print(f"wrote {path}")
+        return 0
     result = _read(args.run, "RUN.h5", Path(args.run).name)
     _dense_output(result, Path(args.run).name, args.no_replay)
     with all_or_nothing(plan):  # every figure or none
         make_folder(folder, "--out")
         paths = plot_result(result, folder)
+    for path in paths:
+        print(f"wrote {path}")
+    return 0
+
+
+def _compare_mechanisms(args: argparse.Namespace, folder: Path, plan: OutputPlan) -> int:
+    from jointplay.mechanism.compare import check_comparable, compare_figures, difference_table
+    from jointplay.mechanism.results import read_mechanism_result
+    from jointplay.results.look import labelled
+
+    runs = labelled(args.runs, [read_mechanism_result(p, f"RUN.h5 #{i + 1}")
+                                for i, p in enumerate(args.runs)])
+    check_comparable(runs)
+    with all_or_nothing(plan):
+        make_folder(folder, "--out")
+        paths = compare_figures(runs, folder)
+    print(difference_table(runs))
     for path in paths:
         print(f"wrote {path}")
     return 0
@@ -112,6 +141,14 @@ def cmd_compare(args: argparse.Namespace) -> int:
         raise DescriptionError("RUN.h5", "compare needs two or more results files; for one "
                                "run use `jointplay plot RUN.h5 --out DIR`")
     folder, plan = _check_out(args.out, args.runs)
+    from jointplay.mechanism.results import is_mechanism_result
+
+    kinds = {is_mechanism_result(p) for p in args.runs}
+    if kinds == {True}:
+        return _compare_mechanisms(args, folder, plan)
+    if len(kinds) > 1:
+        raise DescriptionError("RUN.h5", "compare takes runs of one kind: mechanism results "
+                               "files or arms' results files, not both")
     runs = labelled(args.runs, [_read(p, f"RUN.h5 #{i + 1}", p)
                                 for i, p in enumerate(args.runs)])
     for label, result in runs:

@@ -82,6 +82,10 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     from jointplay.cli.args import warn_plausibility
     from jointplay.sim import can_check_accuracy, load_scene_model, simulate
 
+    if args.scene and _is_mechanism(args.scene):
+        from jointplay.cli.mechanism import cmd_simulate_mechanism
+
+        return cmd_simulate_mechanism(args)
     # Everything is validated before anything is derived, compiled or written.
     scene, plan = _scene(args)
     if args.verify and not can_check_accuracy(scene):
@@ -105,6 +109,12 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         for path in written:
             print(f"wrote {path}")
     return 0
+
+
+def _is_mechanism(path: str) -> bool:
+    from jointplay.mechanism.reading import is_mechanism_file
+
+    return is_mechanism_file(path)
 
 
 def _checked(result: SimulationResult, scene: Scene, model: Any, verify: bool | None,

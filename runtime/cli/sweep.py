@@ -38,6 +38,10 @@ def output_plan(args: argparse.Namespace, scene: Any) -> OutputPlan:
 
 def cmd_sweep(args: argparse.Namespace) -> int:
     """``jointplay sweep``: validate, run what is not done yet, write the table and plots."""
+    from jointplay.mechanism.sweep import sweep_scene_path
+
+    if sweep_scene_path(args.sweep) is not None:
+        return _mechanism_sweep(args)
     from jointplay.common.extras import require
 
     require("sweep", "jointplay sweep")  # before any work
@@ -62,6 +66,32 @@ def cmd_sweep(args: argparse.Namespace) -> int:
               f"{result.wall_time_s:.1f} s")
         print(f"wrote {result.path}")
         for path in result.plots:
+            print(f"wrote {path}")
+    return 0
+
+
+def _mechanism_sweep(args: argparse.Namespace) -> int:
+    """A sweep over a mechanism scene: every case in this process, one table out."""
+    from jointplay.common.errors import DescriptionError
+    from jointplay.mechanism.sweep import load_mechanism_sweep, run_mechanism_sweep
+
+    for flag, value in (("--scheduler", args.scheduler), ("--series", args.series),
+                        ("--verify", args.verify), ("--retry-failed", args.retry_failed)):
+        if value:
+            raise DescriptionError(flag, "a sweep of a mechanism runs its cases in this "
+                                   "process, without records to resume or series; drop it")
+    if args.workers not in (None, 0):
+        raise DescriptionError("--workers", "a sweep of a mechanism runs its cases in this "
+                               "process; drop it")
+    sweep = load_mechanism_sweep(args.sweep)
+    quiet = bool(args.quiet)
+    if not quiet:
+        print(f"sweep {sweep.name}: {len(sweep.cases)} case(s) of mechanism "
+              f"{sweep.scene.name} ({', '.join(sweep.names)}) in this process")
+    table, figures, seconds = run_mechanism_sweep(sweep, args.out, quiet=quiet)
+    if not quiet:
+        print(f"{len(sweep.cases)} case(s) in {seconds:.1f} s")
+        for path in (table, *figures):
             print(f"wrote {path}")
     return 0
 

@@ -612,6 +612,12 @@ def load_scene(path: str | Path) -> Scene:
     path = Path(path)
     data, text = read_toml(path, "scene")
     source = str(path)
+    if isinstance(data.get("mechanism"), dict):
+        raise DescriptionError("mechanism", "this is a mechanism file, which `jointplay "
+                               "simulate`, `inspect`, `build`, `derive` and `sweep` take "
+                               "(from Python: jointplay.load_mechanism_scene and "
+                               "jointplay.simulate_mechanism); this command or function takes "
+                               "the scene of a serial arm only", source)
     return scene_from_dict(data, source=source, base=path.parent, text=text)
 
 

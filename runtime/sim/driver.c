@@ -122,6 +122,11 @@ typedef struct {
    * are read instead): d xdot along dir_k seed columns in (p, v_imp) at a time, dense. */
   jp_function dir_in;
   int dir_k;
+  /* Mechanisms, whose cut clearance joints have no eccentricity coordinates: gap_fn(x, p) ->
+   * (delta, rate, ex, ey), nc each, read instead of ecc_index; power_fn(x, tau, p, v_imp) ->
+   * the driver's power, integrated instead of sum tau_k qdot[drive_index[k]]. eval NULL (the
+   * serial arms): not used. */
+  jp_function gap_fn, power_fn;
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -156,6 +161,7 @@ typedef struct {
   double *tau_scene;           /* the scene's part of tau (without the held torques) */
   int *torque_same;            /* per driven joint: an earlier one with the same torque, or -1 */
   double *v_imp, *flags;       /* per clearance joint */
+  double *g_out;               /* gap_fn's outputs: delta, rate, ex, ey (4 nc) */
   int *armed;                  /* penetration has been positive since the onset */
   int *rising;                 /* normal force rising at the end of the last step */
   double *tmp_y, *tmp_y2;
@@ -332,7 +338,13 @@ static void quadrature_rates(jp_sim *s, double t, const double *z, double *g) {
   const jp_config *c = &s->c;
   unscale(s, z);
   double power = 0.0;
-  for (int k = 0; k < c->ntau; ++k) power += s->tau[k] * s->xs[c->nq + c->drive_index[k]];
+  if (c->power_fn.eval) {
+    s->arg[0] = s->xs; s->arg[1] = s->tau; s->arg[2] = c->p; s->arg[3] = s->v_imp;
+    s->res[0] = &power;
+    call(s, &c->power_fn);
+  } else {
+    for (int k = 0; k < c->ntau; ++k) power += s->tau[k] * s->xs[c->nq + c->drive_index[k]];
+  }
   g[0] = power;
   if (c->nc) {
     contact_at(s);
@@ -351,8 +363,22 @@ static void quadrature_rates(jp_sim *s, double t, const double *z, double *g) {
 }
 
 /* Penetration and its rate of joint j from an unscaled state. */
-static void gap(const jp_sim *s, const double *xs, int j, double *delta, double *rate) {
+/* A mechanism's gaps (every joint's, into g_out) from its model at unscaled state xs. */
+static void model_gaps(jp_sim *s, const double *xs) {
   const jp_config *c = &s->c;
+  s->arg[0] = xs; s->arg[1] = c->p;
+  for (int k = 0; k < 4; ++k) s->res[k] = s->g_out + k * c->nc;
+  call(s, &c->gap_fn);
+}
+
+static void gap(jp_sim *s, const double *xs, int j, double *delta, double *rate) {
+  const jp_config *c = &s->c;
+  if (c->gap_fn.eval) {
+    model_gaps(s, xs);
+    *delta = s->g_out[j];
+    if (rate) *rate = s->g_out[c->nc + j];
+    return;
+  }
   int ix = c->ecc_index[2 * j], iy = c->ecc_index[2 * j + 1];
   double ex = xs[ix], ey = xs[iy], vx = xs[c->nq + ix], vy = xs[c->nq + iy];
   double floor = 1e-6 * c->clearance[j];
@@ -1079,7 +1105,12 @@ static int new_phase(jp_sim *s, int j, double t, double speed, const double *xs)
   for (int k = 0; k < PH_FIELDS; ++k) row[k] = NAN;
   const jp_config *c = &s->c;
   row[PH_JOINT] = j; row[PH_T_ON] = t; row[PH_V_ON] = speed;
-  row[PH_EX] = xs[c->ecc_index[2 * j]]; row[PH_EY] = xs[c->ecc_index[2 * j + 1]];
+  if (c->gap_fn.eval) {
+    model_gaps(s, xs);
+    row[PH_EX] = s->g_out[2 * c->nc + j]; row[PH_EY] = s->g_out[3 * c->nc + j];
+  } else {
+    row[PH_EX] = xs[c->ecc_index[2 * j]]; row[PH_EY] = xs[c->ecc_index[2 * j + 1]];
+  }
   row[PH_F_PEAK] = 0.0; row[PH_D_MAX] = 0.0;
   s->open_phase[j] = s->n_phases++;
   s->n_onsets++;
@@ -1484,14 +1515,15 @@ jp_sim *jp_create(const jp_config *config) {
   s->rising = calloc(nc + 1, sizeof(int));
   s->open_phase = calloc(nc + 1, sizeof(long));
   s->c_out = calloc(8 * (nc + 1), sizeof(double));
+  s->g_out = calloc(4 * (nc + 1), sizeof(double));
   s->samples = calloc((size_t)NS * nx + 1, sizeof(double));
   s->fn_quad = calloc(nc + 1, sizeof(double));
   s->fn_carry = calloc(nc + 1, sizeof(double));
   s->fn_quad_t = s->fn_carry_t = NAN;
   jp_int sz_arg = 8, sz_res = 8, sz_iw = 0, sz_w = 0;
-  const jp_function *fns[7] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal,
-                               &c->jac_in, &c->dir_in};
-  for (int k = 0; k < 7; ++k) {
+  const jp_function *fns[9] = {&c->f, &c->jac, &c->contact, &c->wear, &c->normal,
+                               &c->jac_in, &c->dir_in, &c->gap_fn, &c->power_fn};
+  for (int k = 0; k < 9; ++k) {
     if (!fns[k]->eval) continue;
     if (fns[k]->sz_arg > sz_arg) sz_arg = fns[k]->sz_arg;
     if (fns[k]->sz_res > sz_res) sz_res = fns[k]->sz_res;
@@ -1508,7 +1540,7 @@ jp_sim *jp_create(const jp_config *config) {
       !s->rhs_u || !s->tmp_y2 ||
       !s->xs || !s->xdot || !s->tau || !s->u_hold || !s->tau_scene || !s->torque_same ||
       !s->v_imp || !s->flags || !s->armed || !s->rising ||
-      !s->open_phase || !s->c_out || !s->samples || !s->fn_quad || !s->fn_carry || !s->arg ||
+      !s->open_phase || !s->c_out || !s->g_out || !s->samples || !s->fn_quad || !s->fn_carry || !s->arg ||
       !s->res || !s->iw || !s->w || !s->jac_sparse) {
     jp_free(s);
     return NULL;
@@ -1551,7 +1583,7 @@ void jp_free(jp_sim *s) {
   void *ptrs[] = {s->D, s->D_save, s->work_n, s->J, s->LU, s->LT, s->JqT, s->piv, s->rhs_u,
                   s->y_pred,
                   s->psi, s->d, s->y_new, s->f_buf, s->dy, s->scal, s->err, s->tmp_y, s->tmp_y2, s->xs,
-                  s->xdot, s->tau, s->u_hold, s->tau_scene, s->torque_same, s->v_imp, s->flags,
+                  s->xdot, s->tau, s->u_hold, s->tau_scene, s->torque_same, s->v_imp, s->flags, s->g_out,
                   s->armed, s->rising, s->open_phase,
                   s->c_out, s->samples, s->fn_quad, s->fn_carry, s->arg, s->res, s->iw, s->w, s->jac_sparse, s->phases,
                   s->wear_out, s->wear_volume, s->wear_depth, s->Js, s->LUs, s->LTs,

@@ -70,7 +70,8 @@ class _Config(ctypes.Structure):
                 ("ns", ctypes.c_int), ("dp", _dbl_p), ("dc", _dbl_p), ("s0", _dbl_p),
                 ("jac_in", _Function), ("sp_p", _i64_p), ("sp_v", _i64_p),
                 ("sens_errcon", ctypes.c_int), ("sens_scale", _dbl_p),
-                ("dir_in", _Function), ("dir_k", ctypes.c_int)]
+                ("dir_in", _Function), ("dir_k", ctypes.c_int),
+                ("gap_fn", _Function), ("power_fn", _Function)]
 
 
 @functools.cache
@@ -181,7 +182,8 @@ class NativeIntegrator:
                  torques: tuple[TimeFunction, ...], *, rtol: float, atol: float,
                  max_steps: int, max_events: int, max_order: int = 5,
                  h_max: float = math.inf,
-                 h_init: float = 0.0, sensitivities: SensitivityInputs | None = None) -> None:
+                 h_init: float = 0.0, sensitivities: SensitivityInputs | None = None,
+                 model_gaps: bool = False) -> None:
         self.lib = driver_library()
         self.model = model
         self.nx = model.n_state
@@ -234,6 +236,11 @@ class NativeIntegrator:
             model.function("wear")
             cfg.wear, _ = _function(model, "wear")
             cfg.wear_bins = self.wear_bins
+        if model_gaps:
+            # A mechanism: its cut clearance joints' gaps and its driver's power come from
+            # the model (functions "gaps" and "drive_power"), not from coordinates.
+            cfg.gap_fn, _ = _function(model, "gaps")
+            cfg.power_fn, _ = _function(model, "drive_power")
         self.n_sensitivities = 0
         if sensitivities is not None and sensitivities.count:
             self._sensitivity_config(cfg, model, sensitivities)
