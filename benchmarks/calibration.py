@@ -1,6 +1,15 @@
-"""Calibration of the paper scene from synthetic measurements: recovery, coverage, cost.
+"""Calibration benchmarks: the cases made by an independent simulator, and the paper scene's draws.
 
+    python benchmarks/calibration.py --cases [NAME ...] --seeds 5 --out out/calibration-cases
     python benchmarks/calibration.py --out out/calibration [--draws 3] [--seeds 20]
+
+With ``--cases`` (no names: every case), each case of benchmarks/calibration_cases/ (made by
+its own simulator, reference.py, which shares no code with jointplay's model) is calibrated
+with ``--seeds`` noise seeds by running ``jointplay calibrate`` as a user would, and one table
+is written: OUT/cases.md, OUT/cases.csv, OUT/cases.json (see
+benchmarks/calibration_cases/runner.py and README.md there).
+
+Without ``--cases``, the paper scene's draws, as follows.
 
 Measurements: 2 s of tip position at 1 ms made by the paper scene with joint 2's and joint
 3's radial clearances and the journal friction drawn up to 50 % away from the scene's
@@ -35,6 +44,7 @@ import argparse
 import csv
 import os
 import platform
+import sys
 import time
 from pathlib import Path
 from typing import Any
@@ -196,13 +206,28 @@ def _count(rows: list[dict[str, Any]], key: str, unless: str | None = None) -> i
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", required=True, help="folder for the CSV and Markdown")
+    parser.add_argument("--cases", nargs="*", metavar="NAME",
+                        help="run the benchmark cases (no names: all of them) instead of the "
+                             "paper scene's draws")
     parser.add_argument("--draws", type=int, default=3, help="truths drawn for recovery")
-    parser.add_argument("--seeds", type=int, default=20, help="noise seeds for coverage")
+    parser.add_argument("--seeds", type=int, default=None,
+                        help="noise seeds: per case with --cases (default 5), else for the "
+                             "coverage part (default 20)")
+    parser.add_argument("--first-seed", type=int, default=0,
+                        help="with --cases: the first noise seed")
+    parser.add_argument("--timeout", type=float, default=1800.0,
+                        help="with --cases: seconds one calibration may take before it is "
+                             "stopped and reported as timed out")
     parser.add_argument("--first-draw", type=int, default=0,
                         help="skip the draws before this one (their truths are still drawn, "
                              "so draw N is the same truth in every run)")
     args = parser.parse_args()
     out = Path(args.out)
+    if args.cases is not None:
+        run_cases(args, out)
+        return
+    if args.seeds is None:
+        args.seeds = 20
     out.mkdir(parents=True, exist_ok=True)
     scene = jp.default_scene()
     model = jp.load_scene_model(scene)
@@ -222,6 +247,17 @@ def main() -> None:
     (out / "calibration.md").write_text(summary(rec, cov, command, reference_s))
     print(summary(rec, cov, command, reference_s))
     print(f"total {total:.0f} s wall")
+
+
+def run_cases(args: argparse.Namespace, out: Path) -> None:
+    sys.path.insert(0, str(Path(__file__).resolve().parent / "calibration_cases"))
+    from runner import run  # the cases' runner, beside their data
+
+    seeds = 5 if args.seeds is None else args.seeds
+    command = ("python benchmarks/calibration.py --cases " + " ".join(args.cases)
+               + f" --seeds {seeds}" + (f" --first-seed {args.first_seed}" if args.first_seed
+                                        else "") + f" --out {args.out}")
+    run(list(args.cases), seeds, args.first_seed, out, args.timeout, command.replace("  ", " "))
 
 
 if __name__ == "__main__":

@@ -95,7 +95,7 @@ def test_horizon_continuation_grows_the_window_from_the_previous_estimate() -> N
     assert result.simulations_by_kind["continuation windows"] > 0
     saved = result.to_dict()["continuation"]
     assert [s["window_end"] for s in saved] == pytest.approx([0.05, 0.1, 0.2, 0.4])
-    assert "## Horizon continuation" in report_text(result)
+    assert "4 fits over growing windows" in report_text(result)
 
 
 def test_horizon_windows() -> None:
@@ -257,7 +257,7 @@ def test_a_parameter_the_model_does_not_have() -> None:
 
 def test_a_fit_that_does_not_explain_the_data_claims_nothing() -> None:
     """Noise stated 100x smaller than it is: chi²/dof near 1e4, so no estimate is reported as
-    determined and the warning says the intervals are not valid."""
+    determined, one warning says why, and the interval spans the box the search covered."""
     scene = _ideal_scene(0.1)
     truth = {"payload.mass": 2.3}
     result = calibrate(scene, _synthetic(scene, truth, seed=3), list(truth), noise=NOISE / 100,
@@ -265,36 +265,68 @@ def test_a_fit_that_does_not_explain_the_data_claims_nothing() -> None:
                                                   profile_points=0))
     assert result.fit_explains_data is False
     assert result.residuals["normalised_chi2"] > 1e3
-    assert not result.estimates["payload.mass"].determined
-    assert any("intervals hold only at the best fit and are not valid" in w
-               for w in result.warnings)
+    estimate = result.estimates["payload.mass"]
+    assert not estimate.determined
+    start = estimate.start
+    assert estimate.low95 <= 0.5 * start and estimate.high95 >= 1.5 * start
+    assert len(result.warnings) == 1 and "nothing is determined" in result.warnings[0]
+    assert "larger than the noise" in result.warnings[0]
 
 
-def test_a_fit_above_its_chi2_quantile_claims_nothing() -> None:
-    """Noise stated 1.1x smaller than it is: chi²/dof near 1.21 on 401 degrees of freedom,
-    within dof + 5 sqrt(2 dof) (1.35 dof: the fit explains the data, no further starts) but
-    above chi2.ppf(0.975, dof) (1.14 dof): no estimate is reported as determined, a warning
-    says why, and the report says so at the top; with the noise stated as it is, the same
-    fit is consistent and its estimate determined."""
-    from jointplay.calibration.api import CONSISTENT
-
+@pytest.mark.parametrize(("factor", "side"), [(1.25, "larger"), (0.5, "smaller")])
+def test_a_chi2_outside_its_99_percent_range_claims_nothing(factor: float, side: str) -> None:
+    """Noise stated 1.25x too small (chi²/dof near 1.56 on 401 degrees of freedom, its 99 %
+    range 0.83-1.19) or 2x too large (near 0.25): nothing determined, one warning and the
+    report's top say why; with the noise stated as it is, the same fit is determined."""
     scene = _ideal_scene(0.2)
     truth = {"payload.mass": 2.3}
     measured = _synthetic(scene, truth, seed=3)
     options = CalibrationOptions(tighten=1.0, starts=1, scan_points=0, profile_points=0)
     honest = calibrate(scene, measured, list(truth), noise=NOISE, options=options)
-    assert honest.fit_consistent is True and honest.estimates["payload.mass"].determined
-    assert "chi2_upper_tail" in honest.residuals
-    low = calibrate(scene, measured, list(truth), noise=NOISE / 1.1, options=options)
-    stats = low.residuals
-    dof = stats["dof"]
-    assert stats["chi2"] <= dof + 5 * np.sqrt(2 * dof) and low.fit_explains_data is True
-    assert stats["chi2_upper_tail"] < 1 - CONSISTENT and low.fit_consistent is False
-    assert not low.estimates["payload.mass"].determined
-    assert any("neighbouring basin" in w and "no parameter is reported as determined" in w
-               for w in low.warnings)
-    assert "no parameter is reported as determined" in report_text(low)
-    assert low.to_dict()["fit_consistent"] is False
+    assert honest.fit_explains_data and honest.estimates["payload.mass"].determined
+    assert honest.warnings == ()
+    wrong = calibrate(scene, measured, list(truth), noise=NOISE / factor, options=options)
+    assert wrong.fit_explains_data is False
+    assert not wrong.estimates["payload.mass"].determined
+    assert len(wrong.warnings) == 1 and f"the residuals are {side} than the noise" \
+        in wrong.warnings[0]
+    assert "nothing is determined" in report_text(wrong)
+    assert wrong.to_dict()["fit_explains_data"] is False
+
+
+def test_the_noise_is_read_from_the_datas_scatter_through_the_impacts() -> None:
+    """Paper scene with clearance (impacts), 2 s at 1 ms, tip (1 µm) and joint angles
+    (5 µrad) over 5 noise seeds: each column's noise estimated from the data alone within
+    4 of the estimate's own standard deviations (about 2.5 %) of the truth, and the same
+    at 2 ms sampling; a misfit cannot move it (no model enters)."""
+    from jointplay.calibration.noise import column_noise
+
+    scene = jp.default_scene()
+    exact = jp.simulate(scene.with_run(rtol=2e-10, atol=3e-11), parameters={
+        "joint2.clearance": 23.949e-6, "joint3.clearance": 44.009e-6, "friction.mu": 0.071})
+    clean = np.column_stack([exact.tip_position, exact.q[:, 1:3]])
+    truth = np.array([1e-6, 1e-6, 5e-6, 5e-6])
+    for seed, step in itertools.product(range(5), (1, 2)):
+        rng = np.random.default_rng(seed)
+        values = (clean + truth * rng.standard_normal(clean.shape))[::step]
+        sigma, spread = column_noise(Measured("m", exact.t[::step], ("tip_x", "tip_y", "q2",
+                                                                     "q3"), values))
+        relative_std = np.sqrt(spread) / 2
+        assert np.all(relative_std < 0.04)
+        assert np.all(np.abs(sigma / truth - 1) <= 4 * relative_std), (seed, step, sigma)
+
+
+def test_the_whiteness_test_sees_slow_waves_the_chi2_range_misses() -> None:
+    """White residuals pass; a slow wave of a third of the noise (chi²/dof 1.06 on 1997,
+    inside its 99 % range 0.92-1.08) fails the Ljung-Box test."""
+    from jointplay.calibration.noise import residual_check
+
+    rng = np.random.default_rng(0)
+    white = rng.standard_normal((1000, 2))
+    assert residual_check(white, np.ones(2), 1997, None, ("a", "b")) is None
+    waves = white + 0.35 * np.sin(np.arange(1000) / 30)[:, None]
+    found = residual_check(waves, np.ones(2), 1997, None, ("a", "b"))
+    assert found is not None and "Ljung-Box" in found
 
 
 @pytest.mark.parametrize(("flags", "named"), [
@@ -513,7 +545,7 @@ def test_the_grid_line_finds_the_true_valley_the_grid_point_misses() -> None:
     def tracks(opening: ValleyScan | None) -> tuple[np.ndarray, list[Any], int]:
         # the valley lines' window lies beyond the record: until it the friction is held
         found, stages, runs = continuation(predictor, weights, np.array([grid_point, other]),
-                                           grid_point[None, :], True, 40, 0.02, 2.0,
+                                           grid_point[None, :], 40, 0.02, 2.0,
                                            dataclasses.replace(line, window=0.32),
                                            looser=100.0, workers=2, opening=opening)
         assert {s.window_end for s in stages} == {0.02}  # one window: the record's half
@@ -573,30 +605,29 @@ def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
     assert result.to_dict()["grid"]["axes"] == ["joint2.clearance", "joint3.clearance"]
 
 
-def _slow_in_a_worker(parent: int, index: int) -> int:
-    """index squared, after a long sleep where it runs in a forked worker (a stalled pool)."""
-    import os
-    import time
-
-    if os.getpid() != parent and index >= 2:
-        time.sleep(30)
-    return index * index
-
-
-def test_stalled_workers_give_way_to_this_process(monkeypatch: pytest.MonkeyPatch,
-                                                  capsys: pytest.CaptureFixture[str]) -> None:
-    """A pool that sends nothing for STALL_S seconds is killed; the pieces not yet back run
-    here, in order, and the numbers are those of a run without workers."""
-    import os
-    from functools import partial
-
-    from jointplay.calibration import workers
-
-    monkeypatch.setattr(workers, "STALL_S", 1.0)
-    job = partial(_slow_in_a_worker, os.getpid())
-    assert workers.parallel_map(job, 5, 2) == [0, 1, 4, 9, 16]
-    err = capsys.readouterr().err
-    assert "sent nothing for 1 s" in err and "remaining pieces in this process" in err
+@pytest.mark.slow
+def test_unequal_clearances_are_not_exchanged_with_the_noise_estimated() -> None:
+    """Paper scene, 2 s of tip at 1 ms with 1 µm of noise not stated, joint 3's clearance
+    1.7 times joint 2's and a higher friction (where a version that estimated the noise from
+    its residuals ended with the clearances exchanged, the noise 5x too large and every
+    interval excluding the truth): the noise estimated within 8 %, each clearance within 2 %
+    and the friction within 5 %, every parameter reported determined holding the truth in
+    its interval."""
+    scene = jp.default_scene()
+    truth = {"joint2.clearance": 21.5e-6, "joint3.clearance": 36.5e-6, "friction.mu": 0.07}
+    exact = jp.simulate(scene.with_run(rtol=2e-10, atol=3e-11), parameters=truth)
+    rng = np.random.default_rng(5)
+    tip = exact.tip_position + NOISE * rng.standard_normal(exact.tip_position.shape)
+    result = calibrate(scene, Measured("synthetic", exact.t.copy(), ("tip_x", "tip_y"), tip),
+                       list(truth), options=CalibrationOptions(profile_points=0))
+    assert not result.noise_stated
+    assert all(abs(v / NOISE - 1) < 0.08 for v in result.noise.values()), result.noise
+    for name, value in truth.items():
+        estimate = result.estimates[name]
+        goal = 0.05 if name == "friction.mu" else 0.02
+        assert abs(estimate.value - value) <= goal * value, name
+        if estimate.determined:
+            assert estimate.low95 <= value <= estimate.high95, name
 
 
 def _spread(values: np.ndarray, std: np.ndarray) -> Any:
@@ -684,18 +715,6 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
     lowest, rise = min(check.rivals, key=lambda r: r[1])
     assert rise < 0
     assert abs(difference(lowest) - difference(x_truth)) <= 10e-9
-    # followed over this record (0.32 s, then the whole 0.4 s), the rivals lead to a valley
-    # lower over the record than the fit and at most 20 nm from the truth along c2 - c3
-    # (the fit: 95 nm; measured 11.5 nm, the friction, which 0.4 s barely sees, 0.3 % off)
-    from jointplay.calibration.predict import chi2_at
-    from jointplay.calibration.valleys import FOLLOWED_RIVALS, follow_rivals
-
-    fits, runs = follow_rivals(predictor, np.array([NOISE, NOISE]), check, 20, 2.0, 100.0,
-                               workers=2)
-    assert 1 <= len(fits) <= FOLLOWED_RIVALS and runs > 0
-    best = min(fits, key=lambda f: f.chi2)
-    assert best.chi2 < chi2_at(predictor, np.array([NOISE, NOISE]), [fit])[0][0]
-    assert abs(difference(np.array(best.end)) - difference(x_truth)) <= 20e-9
 
 
 def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
@@ -718,11 +737,11 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     inside = values + np.array([5e-9, -4.2e-9, 0.0])
     far = values + np.array([-100e-9, 84e-9, 0.0])
     quiet = ValleyCheck(0.32, ((inside, 0.9),), spacing, 162)
-    low, high, determined, warnings = widened(spread, nothing, names, (quiet,))
+    low, high, determined, warnings = widened(spread, nothing, names, quiet)
     assert np.array_equal(low, spread.low95) and np.array_equal(high, spread.high95)
     assert determined.all() and warnings == []
     check = ValleyCheck(0.32, ((inside, 0.9), (far, -6.1)), spacing, 162)
-    low, high, determined, warnings = widened(spread, nothing, names, (check,))
+    low, high, determined, warnings = widened(spread, nothing, names, check)
     assert list(determined) == [False, False, True]
     assert low[0] == pytest.approx(far[0] - spacing[0]) and high[0] == spread.high95[0]
     assert high[1] == pytest.approx(far[1] + spacing[1]) and low[1] == spread.low95[1]
@@ -736,63 +755,15 @@ def test_the_valley_check_rivals_leave_the_clearances_not_determined() -> None:
     extent = (values + np.array([-400e-9, -336e-9, 0.0]), values + np.array([400e-9, 336e-9,
                                                                             0.0]))
     lined = ValleyCheck(0.32, ((inside, 0.9), (far, -6.1)), spacing, 162, extent)
-    low, high, determined, warnings = widened(spread, nothing, names, (lined,))
+    low, high, determined, warnings = widened(spread, nothing, names, lined)
     assert list(determined) == [False, False, True]
     assert low[:2] == pytest.approx(extent[0][:2]) and high[:2] == pytest.approx(extent[1][:2])
     assert low[2] == spread.low95[2] and high[2] == spread.high95[2]
     assert f"spans the check's line, {extent[0][0]:.6g} to {extent[1][0]:.6g}" in warnings[0]
     # a quiet check changes nothing, its extent whatever it is
     quiet = ValleyCheck(0.32, ((inside, 0.9),), spacing, 162, extent)
-    low, high, determined, _ = widened(spread, nothing, names, (quiet,))
+    low, high, determined, _ = widened(spread, nothing, names, quiet)
     assert np.array_equal(low, spread.low95) and determined.all()
-
-
-def test_a_fit_moved_by_the_valley_checks_rivals_is_not_determined_along_their_lines() -> None:
-    """Where the fit moved to a lower valley the check's rivals led to, every parameter the
-    lines move is not determined, its interval spanning every check's line (the one through
-    the fit it left and the one through the fit it moved to), whether or not the last check
-    found a rival; each interval holds every visited valley's estimate give or take 1.96 of
-    its standard deviations, and a parameter the lines do not move (the friction) whose
-    visited estimate lies outside its own interval is not determined; one inside it stays
-    determined, its interval widened with a warning."""
-    from jointplay.calibration.basins import Basins, threshold, widened
-    from jointplay.calibration.uncertainty import Z95
-    from jointplay.calibration.valleys import ValleyCheck
-
-    names = ("joint2.clearance", "joint3.clearance", "friction.mu")
-    values = np.array([30.11e-6, 32.08e-6, 0.0344437])
-    std = np.array([1e-8, 1.2e-8, 1.5e-6])
-    spread = _spread(values, std)
-    nothing = Basins(values, 3988.6, (), threshold(), (), 10, values[None, :])
-    spacing = np.array([5e-9, 4.2e-9, 0.0])
-    left = values + np.array([-23e-9, 33e-9, -2.5e-6])  # the fit it left
-    reach = np.array([400e-9, 336e-9, 0.0])
-    first = ValleyCheck(0.32, ((values, -2.0),), spacing, 162, (left - reach, left + reach))
-    last = ValleyCheck(0.32, (), spacing, 162, (values - reach, values + reach))
-    low, high, determined, warnings = widened(spread, nothing, names, (first, last), 30.5,
-                                              left[None, :])
-    assert list(determined) == [False, False, True]
-    assert low[0] == pytest.approx(left[0] - reach[0]) and high[0] == pytest.approx(
-        values[0] + reach[0])
-    assert low[1] == pytest.approx(values[1] - reach[1]) and high[1] == pytest.approx(
-        left[1] + reach[1])
-    assert low[2] == pytest.approx(left[2] - Z95 * std[2]) and high[2] == spread.high95[2]
-    assert len(warnings) == 3
-    assert warnings[0].startswith("joint2.clearance is not determined by the search: the fit "
-                                  "moved") and "30.5 lower in chi²" in warnings[0]
-    assert warnings[2].startswith("friction.mu: the fit moved to a lower valley")
-    # a visited valley whose friction lies outside the best's own interval
-    further = left + np.array([0.0, 0.0, -1.0e-6])
-    low, high, determined, warnings = widened(spread, nothing, names, (first, last), 30.5,
-                                              further[None, :])
-    assert list(determined) == [False, False, False]
-    assert low[2] == pytest.approx(further[2] - Z95 * std[2])
-    assert warnings[2].startswith("friction.mu is not determined by the search")
-    # the same checks without a move: the one rival lies inside the intervals, and the
-    # visited valleys are not looked at
-    low, high, determined, warnings = widened(spread, nothing, names, (first, last), 0.0,
-                                              further[None, :])
-    assert determined.all() and warnings == [] and np.array_equal(low, spread.low95)
 
 
 def test_the_valley_floor_is_reached_downhill() -> None:
@@ -853,8 +824,8 @@ def test_the_basin_lines_also_go_through_another_track_fit(
         monkeypatch: pytest.MonkeyPatch) -> None:
     """On the arm with ideal joints: another whole-record fit within the threshold plus
     SLACK, in another basin, doubles the basin check's line runs (the same lines through it); one
-    above that, or in the best's own basin, adds none. The earlier fits reach the check only
-    where the noise is stated (without it their chi² is in other units)."""
+    above that, or in the best's own basin, adds none. The earlier fits reach the check with
+    the noise stated or estimated (both weight the residuals by the noise)."""
     from jointplay.calibration import api
     from jointplay.calibration.api import prepare
     from jointplay.calibration.basins import SLACK, neighbouring_basins, threshold
@@ -897,7 +868,8 @@ def test_the_basin_lines_also_go_through_another_track_fit(
                                  horizon_first=0)
     calibrate(scene, measured, list(truth), noise=NOISE, options=options)
     calibrate(scene, measured, list(truth), options=options)
-    assert len(given) == 2 and len(given[0]) >= 1 and given[1] == ()
+    # with the noise estimated from the data's scatter the fits' chi² are in its units too
+    assert len(given) == 2 and len(given[0]) >= 1 and len(given[1]) >= 1
 
 
 def test_at_least_two_tracks_reach_the_whole_record(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -17,7 +17,6 @@ from jointplay.calibration.continuation import TRACK_MARGIN, Stage, ValleyScan, 
 from jointplay.calibration.fit import (
     Optimum,
     Scan,
-    explaining_limit,
     least_squares_fit,
     residual_statistics,
     starts_around,
@@ -31,34 +30,22 @@ from jointplay.calibration.grid import (
     others_first,
 )
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
+from jointplay.calibration.noise import column_noise, residual_check
 from jointplay.calibration.parameters import FreeParameters, free_parameters
 from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
 from jointplay.calibration.result import CalibrationResult, Estimate
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
-from jointplay.calibration.valleys import ValleyCheck, follow_rivals, valley_check
+from jointplay.calibration.valleys import valley_check
+from jointplay.calibration.workers import on_cluster
 from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import Scene
 
-CONSISTENT = 0.975
-"""With the noise stated, a fit in the basin of the true parameters has a chi² below
-``chi2.ppf(CONSISTENT, dof)`` in that share of noise draws. One above it explains the data
-(no further starts are tried below dof + CHI2_SIGMAS sqrt(2 dof)) but no parameter of it is
-reported as determined: on the paper scene a fit from 50 % away can end in a neighbouring
-basin of the rugged cost whose chi² lies 2-4 standard deviations above its expectation
-(benchmark draws 1 and 6: chi²/dof 1.05 and 1.08 on 3997 degrees of freedom, the friction
-15 and 6 of its standard deviations from the truth) and whose intervals miss the truth."""
-
 VALLEY_CHECK_REACH = 0.2
-"""How far the valley check's line reaches either side of the best fit, in grid spacings
-(on the paper scene 0.4 µm: the benchmark's fits that ended in a wrong valley lay 0.1-0.3 µm
-from the truth's along c2 - c3)."""
+"""How far the valley check's line reaches either side of the best fit, in grid spacings."""
 
 VALLEY_CHECK_LOOSER = 3.0
 """The valley check's runs use the fit's tolerances times this: their chi² are compared with
-the threshold (3.84). Over 0.32 s on benchmark draw 0, at 17 points 5 nm apart through the
-fit, chi² at 3, 10, 30 and 100 times the fit's tolerances differ from those at the fit's by
-up to 0.3, 1.3, 3.1 and 4.9 (the windows' own tolerances, 100 times), each run costing 1.08,
-0.96, 0.78 and 0.71 times one at the fit's."""
+the threshold (3.84), and at the windows' own (100 times) they are off by about that."""
 
 GRID_LINE_REACH = 1.5
 """How far the grid window's line reaches either side of the best grid point, in grid
@@ -68,42 +55,24 @@ can be a neighbour of that point."""
 
 @dataclass(frozen=True)
 class CalibrationOptions:
-    """How the fit runs. ``tighten``: the runs of the fit use the scene's tolerances divided
-    by this (a 1 µm sensor needs a model far more accurate than the scene's working
-    accuracy of about 3 µm at the tip). ``starts``: starts of the multi-start at most,
-    the first the given start, the rest a Latin hypercube within ±``spread`` (relative) of
-    it, run only while the best fit does not explain the data within the stated noise.
-    ``scan_points``: runs along the weakest direction of the first optimum (0: no scan),
-    local fits from the ``refine`` lowest minima along it. ``max_evaluations``: least-squares
-    evaluations per start. ``profile_points``: points of each cost profile (0: none).
-    ``horizon_first``: the first window (s) of the horizon continuation, grown by
-    ``horizon_growth`` each stage up to the whole record, each stage started at the last one's
-    estimate (0: no continuation, the fit starts on the whole record); the starts, the
-    exchanged clearances and the scan are the fallback where the whole-record fit does not
-    explain the data. ``grid_window``: the window (s) of the global stage, a grid of
-    ``grid_points`` values of each free clearance across ±``spread`` of the start, its runs at
-    the fit's tolerances times ``window_looser`` (as are the runs on every window shorter than
-    the record), whose ``grid_candidates`` lowest local minima
-    each start a track of the continuation, from ``grid_window`` on (0: no grid; the
-    continuation starts at ``horizon_first`` from the start). ``grid_line_points``: runs on
-    the grid's window along the clearances' rugged directions (those of the valley lines,
-    below) through the best grid point, GRID_LINE_REACH grid spacings either side, whose
-    ``valley_keep`` lowest minima take that point's place as tracks (0: no line): over 20 ms
-    the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's the lowest
-    by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
-    in. ``valley_window``, ``valley_points``, ``valley_keep``: the valley lines' first window
-    (s), runs per line and minima kept (see :func:`continuation`). ``basins``: look for the
-    other minima of the whole record's cost near the best fit, which the data cannot tell
-    from it, and widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
-    ``valley_check_points``: with the noise stated and the basin check on, runs over the
-    valley lines' first window along the clearances' rugged direction through the best fit,
-    VALLEY_CHECK_REACH grid spacings either side; a parameter the line moves whose interval
-    misses another valley there within the basin threshold of the fit's own is not
-    determined, its interval widened to span the line, and the lowest such valleys are
-    followed to the whole record, a fit that ends lower replacing the best
-    (:func:`valley_check`, :func:`follow_rivals`; 0: no check).
-    ``workers``: processes for the grid's runs, the tracks' fits and the lines' runs (the
-    results do not depend on it)."""
+    """How the fit runs. ``tighten``: the fit's runs use the scene's tolerances divided by
+    this. ``starts``: local fits of the fallback multi-start at most (the given start, then
+    a Latin hypercube within ±``spread``, relative), run while the best fit does not explain
+    the data; ``scan_points`` (0: none) and ``refine``: the fallback's scan of the weakest
+    direction. ``max_evaluations``: least-squares evaluations per local fit.
+    ``profile_points``: points of each cost profile (0: none). ``horizon_first``,
+    ``horizon_growth``: the continuation's first window (s; 0: the fit starts on the whole
+    record) and growth factor. ``grid_window``, ``grid_points``, ``grid_candidates``: the
+    global stage's window (s; 0: no grid), values per free clearance across ±``spread``, and
+    minima kept as tracks; ``window_looser``: the runs on windows shorter than the record use
+    the fit's tolerances times this. ``grid_line_points``: runs along the rugged directions
+    through the best grid point (0: none), GRID_LINE_REACH grid spacings either side.
+    ``valley_window``, ``valley_points``, ``valley_keep``: the continuation's valley lines
+    (see :func:`continuation`). ``basins``: the basin check
+    (:mod:`jointplay.calibration.basins`). ``valley_check_points``: with the basin check, the
+    valley check's runs (:func:`valley_check`; 0: none).
+    ``workers``: processes for the independent pieces (the results do not depend on it);
+    ``scheduler``: the address of a Dask scheduler whose cluster runs them instead."""
 
     tighten: float = 1000.0
     starts: int = 6
@@ -126,6 +95,7 @@ class CalibrationOptions:
     valley_check_points: int = 161
     basins: bool = True
     workers: int = 2
+    scheduler: str | None = None
 
     def __post_init__(self) -> None:
         checks = (("tighten", self.tighten >= 1, "must be >= 1"),
@@ -163,8 +133,11 @@ class Problem:
     model: Any
     measured: Measured
     free: FreeParameters
-    sigma: np.ndarray | None
+    sigma: np.ndarray
     options: CalibrationOptions
+    noise_spread: np.ndarray | None = None
+    """Where the noise was estimated: the relative variance of each column's estimated
+    variance (None: stated)."""
 
 
 def prepare(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
@@ -181,7 +154,11 @@ def prepare(scene: Scene, measured: str | Path | Measured, free: Sequence[str], 
     data = measured if isinstance(measured, Measured) else read_measured(measured, model)
     data = checked_for_scene(data, scene, parameters.size)
     sigma = noise_levels(noise, data)
-    return Problem(_fit_scene(scene, data, options), model, data, parameters, sigma, options)
+    spread = None
+    if sigma is None:
+        sigma, spread = column_noise(data)
+    return Problem(_fit_scene(scene, data, options), model, data, parameters, sigma, options,
+                   spread)
 
 
 def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
@@ -194,7 +171,8 @@ def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str]
     ``measured``: a CSV path (``time``, and any of ``tip_x``, ``tip_y``, ``q2``, ...), a
     results file (.h5) or a :class:`Measured`. ``free``: parameter names as ``--set`` takes
     them, plus ``jointN.clearance``. ``noise``: the sensors' standard deviations (one number,
-    or one per column); without it each column's noise is estimated from the residuals.
+    or one per column); without it each column's noise is estimated from the data's own
+    sample-to-sample scatter (:mod:`jointplay.calibration.noise`).
     ``start``: start values (default: the scene's). Bad input raises
     :class:`DescriptionError`; a run that stops at every start raises SimulationError.
     """
@@ -204,7 +182,13 @@ def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str]
 
 
 def run(problem: Problem) -> CalibrationResult:
-    """Fit a prepared problem, then state the estimates' uncertainty and the cost profiles."""
+    """Fit a prepared problem, then state the estimates' uncertainty and the cost profiles
+    (the pieces on the Dask cluster at ``options.scheduler``, if given)."""
+    with on_cluster(problem.options.scheduler):
+        return _run(problem)
+
+
+def _run(problem: Problem) -> CalibrationResult:
     from jointplay.calibration.profiles import cost_profiles
 
     wall0, cpu0 = timed()
@@ -216,8 +200,7 @@ def run(problem: Problem) -> CalibrationResult:
     stage_runs = 0
     grid = None
     valley = None
-    weights = problem.sigma if problem.sigma is not None else np.ones(
-        len(problem.measured.columns))
+    weights = problem.sigma
     if opts.horizon_first > 0:
         tracks, first = starts[:1], opts.horizon_first
         if opts.grid_window > 0:
@@ -239,9 +222,8 @@ def run(problem: Problem) -> CalibrationResult:
                 opening = ValleyScan(grid.window_end, opts.grid_line_points, GRID_LINE_REACH,
                                      opts.valley_keep, scale)
         survivors, stages, runs = continuation(
-            predictor, weights, tracks, starts, problem.sigma is not None,
-            opts.max_evaluations, first, opts.horizon_growth, valley, opts.window_looser,
-            opts.workers, opening)
+            predictor, weights, tracks, starts, opts.max_evaluations, first,
+            opts.horizon_growth, valley, opts.window_looser, opts.workers, opening)
         stage_runs += runs
         survivors, runs = _ranked(predictor, weights, survivors, opts.workers)
         stage_runs += runs
@@ -256,116 +238,56 @@ def run(problem: Problem) -> CalibrationResult:
                             max(problem.measured.size - problem.free.size, 1),
                             whole.evaluations, whole.evaluations, whole.message))
     free = problem.free
-    rounds = ValleyRounds(optimum)
-    if opts.basins and valley is not None and opts.valley_check_points > 0 \
-            and problem.sigma is not None:
-        # with the noise stated (the threshold is in chi² of the stated noise)
-        rounds = _valley_rounds(predictor, weights, optimum, ValleyScan(
-            opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1,
-            valley.scale), opts)
-        optimum = rounds.optimum
+    check = None
+    if opts.basins and valley is not None and opts.valley_check_points > 0:
+        check = valley_check(predictor, weights, optimum.values, ValleyScan(
+            opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1, valley.scale),
+            VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(), opts.workers)
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     line_runs = 0
     if opts.basins:
         found = neighbouring_basins(predictor, optimum.sigma, optimum.values,
                                     float(np.sum(optimum.residuals**2)), spread.covariance,
                                     opts.max_evaluations, opts.workers,
-                                    # with the noise estimated, the earlier fits' chi² are
-                                    # in other units (weights of one)
-                                    others=optimum.starts if problem.sigma is not None
-                                    else ())
+                                    others=optimum.starts)
         line_runs = found.line_runs
         moved = not np.array_equal(found.best, optimum.values)
         optimum = _after_basins(predictor, optimum, found, moved)
         if moved:
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
-        # the valleys visited that the whole record's chi² does not rule out as tracks are
-        # ruled out (TRACK_MARGIN)
-        close = [x for x, chi2 in rounds.visited
-                 if chi2 <= float(np.sum(optimum.residuals**2)) + TRACK_MARGIN]
-        low, high, determined, rival_warnings = widened(spread, found, free.names,
-                                                         rounds.checks, rounds.followed,
-                                                         np.array(close))
+        low, high, determined, rival_warnings = widened(spread, found, free.names, check)
         spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
     stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
-    explains = consistent = None
-    if problem.sigma is not None:
-        from scipy.stats import chi2
-
-        dof = max(stats["dof"], 1)
-        explains = bool(stats["chi2"] <= explaining_limit(dof))
-        consistent = bool(stats["chi2"] <= chi2.ppf(CONSISTENT, dof))
-        stats["chi2_upper_tail"] = float(chi2.sf(stats["chi2"], dof))
+    misfit = residual_check(fitted - problem.measured.values, optimum.sigma, stats["dof"],
+                            problem.noise_spread, problem.measured.columns)
     warnings = list(spread.warnings)
-    warnings += _fit_warnings(stats, explains, optimum.values, free)
-    if explains and not consistent:
-        warnings.append(_inconsistent_warning(stats))
+    if misfit is not None:
+        # nothing is determined: the intervals span the box the search covered
+        box = starts_around(free, 1, opts.spread, 0)[0]
+        width = np.where(box != 0, opts.spread * np.abs(box), opts.spread)
+        spread = dataclasses.replace(
+            spread, low95=np.minimum(spread.low95, np.maximum(box - width, free.lower)),
+            high95=np.maximum(spread.high95, np.minimum(box + width, free.upper)),
+            determined=np.zeros(free.size, dtype=bool))
+        warnings = [f"nothing is determined: {misfit}; each interval spans the box the "
+                    f"search covered (±{opts.spread:g} of the start). State the noise if "
+                    "you know it, or free what the model may lack"]
+    warnings += _bound_warnings(optimum.values, free)
     profiles, profile_runs = cost_profiles(predictor, optimum, spread, opts.profile_points,
                                            opts.workers)
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   wall1 - wall0, cpu1 - cpu0, explains, tuple(stages), stage_runs, grid,
-                   line_runs, profile_runs, consistent, rounds.runs)
-
-
-FOLLOW_ROUNDS = 2
-"""How many times at most the valley check's rivals are followed to the whole record
-(:func:`follow_rivals`), the check run again around each fit that ends lower: the valley a
-rival leads to can have rivals of its own, lower still."""
-
-@dataclass(frozen=True)
-class ValleyRounds:
-    """What the valley check and its rounds left: the fit (moved where a followed rival
-    ended lower), each round's check, how much lower in chi² the fit ended by moving (0
-    where it did not), the valleys visited (the fits left and the followed fits: estimate and
-    chi² over the whole record) and the runs of the checks and of the followed fits."""
-
-    optimum: Optimum
-    checks: tuple[ValleyCheck, ...] = ()
-    followed: float = 0.0
-    visited: tuple[tuple[np.ndarray, float], ...] = ()
-    runs: int = 0
-
-
-def _valley_rounds(predictor: Predictor, weights: np.ndarray, optimum: Optimum,
-                   scan: ValleyScan, opts: CalibrationOptions) -> ValleyRounds:
-    """The valley check through ``optimum``; while it finds rivals (FOLLOW_ROUNDS times at
-    most), the two lowest followed to the whole record, the fit moved to the lowest of
-    those fits where it ends lower, and the check run again around it."""
-    checks: list[ValleyCheck] = []
-    visited: list[tuple[np.ndarray, float]] = []
-    followed = 0.0
-    runs = 0
-    for round_ in range(FOLLOW_ROUNDS + 1):
-        check = valley_check(predictor, weights, optimum.values, scan, VALLEY_CHECK_LOOSER,
-                             opts.horizon_growth, basin_threshold(), opts.workers)
-        checks.append(check)
-        runs += check.runs
-        if round_ == FOLLOW_ROUNDS or not check.rivals:
-            break
-        fits, more = follow_rivals(predictor, weights, check, opts.max_evaluations,
-                                   opts.horizon_growth, opts.window_looser, opts.workers)
-        runs += more
-        optimum = dataclasses.replace(optimum, starts=optimum.starts + tuple(fits))
-        visited += [(np.asarray(f.end, dtype=float), f.chi2) for f in fits]
-        lowest = min(fits, key=lambda f: f.chi2, default=None)
-        current = float(np.sum(optimum.residuals**2))
-        if lowest is None or not lowest.chi2 < current:
-            break
-        followed += current - lowest.chi2
-        visited.append((optimum.values, current))
-        optimum = _moved_to(predictor, optimum, np.asarray(lowest.end, dtype=float))
-    return ValleyRounds(optimum, tuple(checks), followed, tuple(visited), runs)
+                   wall1 - wall0, cpu1 - cpu0, misfit is None, tuple(stages), stage_runs, grid,
+                   line_runs, profile_runs, check.runs if check else 0)
 
 
 WHOLE_RECORD_TRACKS = 2
 """The tracks fitted on the whole record at least (where that many reach it): a track's
 chi² at its last window's estimate can lie hundreds above its basin's floor on the whole
-record, and on the paper scene two basins 2.4 % apart in the clearances had the same chi² at
-1.28 s, the true one ranked second by one run on the whole record (benchmark draw 9)."""
+record, and two basins can rank the wrong way round there."""
 
 
 def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, workers: int
@@ -405,15 +327,12 @@ def _moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
             fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
             profiles: dict[str, dict[str, list[float]]], wall: float,
-            cpu: float, explains: bool | None, stages: tuple[Stage, ...] = (),
+            cpu: float, explains: bool, stages: tuple[Stage, ...] = (),
             stage_runs: int = 0, grid: GridResult | None = None,
             line_runs: int = 0, profile_runs: int = 0,
-            consistent: bool | None = None, check_runs: int = 0) -> CalibrationResult:
+            check_runs: int = 0) -> CalibrationResult:
     free = problem.free
-    # A fit that does not explain the data within the stated noise determines nothing: its
-    # optimum may be a local one, and its intervals are not valid; nor does one whose chi²
-    # a fit in the true basin would rarely reach (CONSISTENT).
-    determined = spread.determined & (explains is not False) & (consistent is not False)
+    determined = spread.determined & explains
     estimates = {
         name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
                        float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
@@ -427,7 +346,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
         covariance=spread.covariance, correlation=spread.correlation,
         condition_number=spread.condition_number, residuals=stats,
         noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
-        noise_stated=problem.sigma is not None, fitted=fitted, starts=optimum.starts,
+        noise_stated=problem.noise_spread is None, fitted=fitted, starts=optimum.starts,
         simulations=(predictor.counter.simulations + stage_runs + line_runs + profile_runs
                      + check_runs),
         simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs,
@@ -437,21 +356,9 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
         wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
         settings={"rtol": run_settings.rtol, "atol": run_settings.atol,
                   "t_end": run_settings.t_end, "output_step": run_settings.output_step,
-                  "starts": problem.options.starts, "spread": problem.options.spread,
-                  "seed": problem.options.seed,
-                  "max_evaluations": problem.options.max_evaluations,
-                  "horizon_first": problem.options.horizon_first,
-                  "horizon_growth": problem.options.horizon_growth,
-                  "grid_window": problem.options.grid_window,
-                  "grid_points": problem.options.grid_points,
-                  "grid_candidates": problem.options.grid_candidates,
-                  "grid_line_points": problem.options.grid_line_points,
-                  "valley_check_points": problem.options.valley_check_points,
-                  "window_looser": problem.options.window_looser,
-                  "basins": problem.options.basins,
-                  "workers": problem.options.workers,
+                  **dataclasses.asdict(problem.options),
                   "profile": "others fixed at their estimates"},
-        fit_explains_data=explains, fit_consistent=consistent, profiles=profiles,
+        fit_explains_data=explains, profiles=profiles,
         stages=stages, grid=grid)
 
 
@@ -466,26 +373,8 @@ def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) ->
     return scene.with_run(**changes)
 
 
-def _inconsistent_warning(stats: dict[str, Any]) -> str:
-    dof = max(stats["dof"], 1)
-    above = (stats["chi2"] - dof) / math.sqrt(2 * dof)
-    return (f"the fit's chi² lies {above:.2g} standard deviations above its degrees of freedom "
-            f"(chi²/dof = {stats['normalised_chi2']:.4g}; a fit in the basin of the true "
-            f"parameters reaches that in {100 * stats['chi2_upper_tail']:.2g} % of noise "
-            f"draws): it may sit in a neighbouring basin of the cost (impacts make it rugged), "
-            "where the intervals need not hold the truth, so no parameter is reported as "
-            "determined; more --starts, or a noise level you trust, may settle it")
-
-
-def _fit_warnings(stats: dict[str, Any], explains: bool | None, values: np.ndarray,
-                  free: FreeParameters) -> list[str]:
+def _bound_warnings(values: np.ndarray, free: FreeParameters) -> list[str]:
     out = []
-    if explains is False and stats["dof"] > 0:
-        out.append(f"the fit does not explain the data within the stated noise (chi²/dof = "
-                   f"{stats['normalised_chi2']:.3g}): a local minimum (impacts make the cost "
-                   "rugged; more --starts or --scan-points may find a better one), a model "
-                   "that lacks something the robot does, or noise larger than stated; the "
-                   "intervals hold only at the best fit and are not valid here")
     for k, name in enumerate(free.names):
         if values[k] <= free.lower[k] or values[k] >= free.upper[k]:
             out.append(f"{name} ended on its physical bound ({values[k]:.6g}): the optimum "

@@ -1,14 +1,10 @@
 """Neighbouring basins: the other minima of the whole record's cost that the data cannot
 tell from the best one, and the points of the cost's rugged floor they share it with.
 
-Impacts make the cost a field of basins: an impact that moves past a sample changes the
-residual abruptly. On the paper scene, with 2 s of tip position at 1 ms and 1 µm of noise,
-the minima lie two to three standard deviations apart (about 25 nm in the clearances), and
-along the direction the impacts make most rugged the floor of the basins can stay flat far
-beyond one basin's own curvature: on benchmark draw 6 the fit ended in a basin 23 nm from
-the one that holds the truth, 26 higher in chi²; on draw 4 the floor stays within 2.5 of
-the best fit's chi² 32 standard deviations away along that direction. The covariance at the
-best fit describes its own basin only, so its interval misses the others.
+Impacts make the cost a field of basins (an impact that moves past a sample changes the
+residual abruptly), a few standard deviations apart, whose floor can stay flat far beyond
+one basin's own curvature along the direction the impacts make most rugged. The covariance
+at the best fit describes its own basin only, so its interval misses the others.
 
 The check: lines through the best fit along each principal axis of its confidence
 ellipsoid, finely out to :data:`REACH_SIGMAS` standard deviations, then at
@@ -26,7 +22,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -34,7 +29,7 @@ import numpy as np
 from jointplay.calibration.continuation import loosened
 from jointplay.calibration.fit import Start, multi_start
 from jointplay.calibration.predict import Predictor, chi2_at_points, line_minima
-from jointplay.calibration.uncertainty import Z95, Uncertainty
+from jointplay.calibration.uncertainty import Uncertainty
 from jointplay.calibration.valleys import ValleyCheck
 
 CONFIDENCE = 0.95
@@ -49,9 +44,8 @@ STEP_SIGMAS = 1.0
 gets a point at most half a standard deviation from its floor (a quarter above it in chi²,
 where its curvature is the best's)."""
 FAR_SIGMAS = (8.0, 16.0, 32.0)
-"""The lines' points beyond the fine part, in standard deviations: along the direction the
-impacts make most rugged the cost's envelope can stay flat far beyond the best basin's own
-curvature (on benchmark draw 4, within 2.5 of the best at 32 standard deviations)."""
+"""The lines' points beyond the fine part, in standard deviations (the rugged floor can stay
+flat that far)."""
 SLACK = 10.0
 """chi² above the threshold still worth a local fit from a line's minimum."""
 FITS = 2
@@ -64,11 +58,9 @@ OTHER_CENTRES = 1
 """Other whole-record minima (within the threshold plus SLACK of the best) the lines also
 go through, at most."""
 LOOSER = 1.0
-"""The lines' runs use the fit's tolerances times this. Their chi² decide which points widen
-the intervals (those within 3.84 of the lowest), so they must be accurate to well under
-that: on benchmark draw 15, 13 points near the best fit, the chi² at the fit's tolerances
-differ from those at tolerances ten times tighter by -1.3 ± 0.4 (a common offset and a
-spread of 0.4), at ten times looser by 5.9-18 (a spread of ±4, the threshold's size)."""
+"""The lines' runs use the fit's tolerances times this: their chi² decide which points widen
+the intervals (within 3.84 of the lowest), so they must be accurate to well under that
+(ten times looser, they scatter by about the threshold's size)."""
 
 
 @dataclass(frozen=True)
@@ -140,8 +132,7 @@ def _other_centres(best: np.ndarray, best_chi2: float, covariance: np.ndarray,
     """The OTHER_CENTRES lowest minima of ``others`` within ``within`` of the best's chi²
     that lie in another basin (more than half a standard deviation away in some parameter):
     a whole-record fit from another track can stop a basin or two from a lower one that the
-    best's lines do not reach (benchmark draw 9: 46 nm from the true basin, 26 lower in chi²,
-    while the best lay 2.4 % away)."""
+    best's lines do not reach."""
     std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     near = sorted((s for s in others if not s.failed and math.isfinite(s.chi2)
                    and s.chi2 <= best_chi2 + within
@@ -192,22 +183,17 @@ def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,
 
 
 def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
-            checks: Sequence[ValleyCheck] = (), followed: float = 0.0,
-            visited: np.ndarray | None = None
+            check: ValleyCheck | None = None
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """The 95 % intervals widened to hold every point found inside them: each rival's basin
     (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations:
     the part of its basin below the threshold, its curvature taken as the best's) and every
     point of the lines within the threshold; which parameters stay determined (no rival
     outside the best's own interval); a warning for each interval a rival widens, or a
-    line's point by more than WARN_WIDENING; and, with ``checks`` (the valley checks, one
-    per round of :func:`~jointplay.calibration.valleys.follow_rivals`), each parameter
-    their lines move whose interval misses one of their rivals, or every such parameter
-    where the fit moved to a lower valley they led to (``followed``: how much lower), is not
-    determined, its interval widened to span the checks' whole lines (the search cannot tell
-    which valley holds the lowest minimum of the whole record's cost); where the fit so
-    moved, every interval widened to hold the ``visited`` valleys' estimates too (one per
-    row: see :func:`_valleys_visited`)."""
+    line's point by more than WARN_WIDENING; and, with ``check`` (the valley check), each
+    parameter its lines move whose interval misses one of its rivals is not determined, its
+    interval widened to span the check's whole lines (the search cannot tell which valley
+    holds the lowest minimum of the whole record's cost)."""
     low, high = spread.low95.copy(), spread.high95.copy()
     determined = spread.determined.copy()
     warnings: list[str] = []
@@ -249,108 +235,44 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
                 f"{basins.threshold:.3g} of the best ({inside}) lie up to {far:.4g} from the "
                 f"estimate, {far / std[k] if std[k] > 0 else math.inf:.3g} of its standard "
                 "deviations: its interval is widened to hold them")
-    _unexcluded(checks, followed, names, basins.threshold, (low, high, determined, warnings),
-                spread.low95, spread.high95)
-    if followed > 0 and visited is not None and len(visited):
-        _valleys_visited(np.asarray(visited).reshape(-1, len(names)), basins.best, names,
-                         spread, (low, high, determined, warnings))
+    if check is not None:
+        _unexcluded(check, names, basins.threshold, (low, high, determined, warnings),
+                    spread.low95, spread.high95)
     return low, high, determined, warnings
 
 
-def _unexcluded(checks: Sequence[ValleyCheck], followed: float, names: tuple[str, ...],
+def _unexcluded(check: ValleyCheck, names: tuple[str, ...],
                 limit: float, verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]],
                 low95: np.ndarray, high95: np.ndarray) -> None:
     """``verdict`` (low, high, determined, warnings) changed in place for the valley
-    checks' rivals outside the intervals ``low95`` to ``high95``: such a parameter's
-    interval spans the checks' whole lines. Why the whole line and not only the rivals'
-    valleys: where two valleys along it lie within the threshold, the comb's floors are
-    level to within the noise's reach, and the line resolves only the valleys it crosses
-    near their floors; on benchmark draw 15 it crossed the truth's valley 60 nm off its
-    floor and saw no minimum there, 0.29 µm from a fit whose rival it found 37 nm away.
-    Where the fit moved to a lower valley a rival led to (``followed``: how much lower its
-    chi² over the whole record ended, 0 where it did not move), every parameter the lines
-    move is not determined, its interval spanning every check's line: the search had
-    missed a lower valley once and cannot exclude another (on draw 15 the valley it moved
-    to, 30 lower, lies as far from the truth's, whose floor is 53 lower still, and the
-    check around it finds no rival)."""
+    check's rivals outside the intervals ``low95`` to ``high95``: such a parameter's
+    interval spans the check's whole lines (where two valleys along it lie within the
+    threshold, the line resolves only the valleys it crosses near their floors)."""
     low, high, determined, warnings = verdict
-    if not checks:
-        return
-    spacing = np.max([c.spacing for c in checks], axis=0)
+    spacing = check.spacing
     moved = spacing > 0
-    rivals = [rival for c in checks for rival in c.rivals]
-    points = np.array([p for p, _ in rivals]).reshape(-1, len(names))
-    rise = np.array([r for _, r in rivals])
+    points = np.array([p for p, _ in check.rivals]).reshape(-1, len(names))
+    rise = np.array([r for _, r in check.rivals])
     outside = ((points < low95) | (points > high95)) & moved
-    extents = [c.extent for c in checks if c.extent is not None]
     for k, name in enumerate(names):
         rows = np.flatnonzero(outside[:, k])
-        if not rows.size and not (followed > 0 and moved[k]):
+        if not rows.size:
             continue
         determined[k] = False
-        if rows.size:
-            low[k] = min(low[k], float(np.min(points[rows, k])) - spacing[k])
-            high[k] = max(high[k], float(np.max(points[rows, k])) + spacing[k])
-        for lowest, highest in extents:
-            low[k] = min(low[k], float(lowest[k]))
-            high[k] = max(high[k], float(highest[k]))
+        low[k] = min(low[k], float(np.min(points[rows, k])) - spacing[k])
+        high[k] = max(high[k], float(np.max(points[rows, k])) + spacing[k])
+        if check.extent is not None:
+            low[k] = min(low[k], float(check.extent[0][k]))
+            high[k] = max(high[k], float(check.extent[1][k]))
         partners = sorted(names[j] for j in np.flatnonzero(moved) if j != k)
         along = f" along {name} and {', '.join(partners)}" if partners else ""
-        if followed > 0:
-            warnings.append(
-                f"{name} is not determined by the search: the fit moved to a valley of the "
-                f"cost{along} that another valley over the first {checks[0].window_end:g} s "
-                f"led to, {followed:.3g} lower in chi² over the whole record; a search that "
-                "missed a lower valley once cannot exclude another: its interval spans the "
-                f"checks' lines, {low[k]:.6g} to {high[k]:.6g} (the other parameters' "
-                "estimates and intervals are those of the fit's valley)")
-            continue
         nearest = rows[np.argmin(rise[rows])]
         far = float(np.max(np.abs(points[rows, k] - (low95[k] + high95[k]) / 2)))
         warnings.append(
-            f"{name} is not determined by the search: over the first {checks[0].window_end:g} "
+            f"{name} is not determined by the search: over the first {check.window_end:g} "
             f"s {rows.size} other valley(s) of the cost{along} lie within chi² + {limit:.3g} "
             f"of the fit's own (the lowest {rise[nearest]:+.3g}), up to {far:.4g} from the "
             "estimate; over the whole record those valleys are too narrow for the search to "
             "tell which holds the lowest minimum: its interval spans the check's line, "
             f"{low[k]:.6g} to {high[k]:.6g} (the other parameters' estimates and intervals "
             "are those of the fit's valley)")
-
-
-def _valleys_visited(visited: np.ndarray, best: np.ndarray, names: tuple[str, ...],
-                     spread: Uncertainty,
-                     verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]) -> None:
-    """``verdict`` (low, high, determined, warnings) changed in place where the fit moved to
-    a lower valley the valley checks' rivals led to: each interval widened to hold every
-    ``visited`` valley's estimate (the fits the search left and those the rivals led to,
-    within TRACK_MARGIN of the best's chi²: a fit further above is ruled out as a track of
-    the continuation is) give or take Z95 of the best's standard deviations, and a parameter
-    with such an estimate outside the best's own interval not determined. Why: each valley's
-    estimates of the other parameters (the friction) are conditional on its clearances, and
-    a search that missed a lower valley once may have missed the true one; the valleys it
-    visited show by how much the estimates move from one valley to the next (on benchmark
-    draw 4, five fits in valleys 0.65-1.4 % from the true clearances put the friction 0.4 to
-    9.9e-5 of its value off, 0.2 to 2.3 standard deviations)."""
-    low, high, determined, warnings = verdict
-    std = np.where(np.isfinite(spread.std), spread.std, 0.0)
-    for k, name in enumerate(names):
-        lowest, highest = float(np.min(visited[:, k])), float(np.max(visited[:, k]))
-        before = high[k] - low[k]
-        low[k] = min(low[k], lowest - Z95 * float(std[k]))
-        high[k] = max(high[k], highest + Z95 * float(std[k]))
-        far = max(abs(lowest - best[k]), abs(highest - best[k]))
-        if not determined[k]:
-            continue
-        if lowest < spread.low95[k] or highest > spread.high95[k]:
-            determined[k] = False
-            warnings.append(
-                f"{name} is not determined by the search: the fit moved to a lower valley of "
-                f"the cost, and the valleys the search visited on the way put {name} up to "
-                f"{far:.4g} from the estimate, outside its own interval; its interval spans "
-                f"them, {low[k]:.6g} to {high[k]:.6g}")
-        elif high[k] - low[k] > WARN_WIDENING * before:
-            warnings.append(
-                f"{name}: the fit moved to a lower valley of the cost, and the valleys the "
-                f"search visited on the way put {name} up to {far:.4g} from the estimate "
-                f"(inside its own interval): its interval is widened to hold each of them "
-                f"with its own, {low[k]:.6g} to {high[k]:.6g}")

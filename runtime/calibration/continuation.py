@@ -5,10 +5,8 @@ tens of times in the first tens of milliseconds; over the whole record the cost 
 direction the tip sees least (on the paper scene the difference of two clearances) is a
 sawtooth of valleys a fraction of a micrometre wide, and a local fit from a start tens of
 micrometres away stops in the first valley it meets. Over a window that holds only the first
-impact of each journal the cost is one valley across the physical range (on the paper scene,
-three truths, chi² along c2 - c3 with their sum and the friction at the truth, 61 points
-0.5 µm apart across ±50 %: one minimum at 5 ms, two to five at 10 ms, ten to fifteen at
-20 ms). The window is then grown geometrically, each stage's fit started at the
+impact of each journal the cost is one valley, or a few, across the physical range. The
+window is then grown geometrically, each stage's fit started at the
 previous stage's estimate: a longer window narrows the valleys, and the previous estimate,
 determined more and more precisely, lies in the true one. Short windows are cheap: each
 stage's runs end at the window's end.
@@ -117,7 +115,7 @@ class ValleyScan:
 
 
 def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
-                 alternatives: np.ndarray, stated: bool, max_evaluations: int, first: float,
+                 alternatives: np.ndarray, max_evaluations: int, first: float,
                  growth: float, valley: ValleyScan | None = None, looser: float = 1.0,
                  workers: int = 1, opening: ValleyScan | None = None
                  ) -> tuple[np.ndarray, list[Stage], int]:
@@ -128,24 +126,20 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     window a track whose chi² lies more than TRACK_MARGIN above the best track's,
     or whose estimate joins a better track's, is dropped (a longer window only sharpens the
     difference). With a single track the first window's fit tries ``alternatives`` while
-    its fit does not explain that window within the stated noise. A stage whose every run
+    its fit does not explain that window within the noise. A stage whose every run
     stops ends the continuation at the previous estimates (the full-record fit and its
     fallbacks follow). The windows' runs use the fit's tolerances times ``looser`` (each
     window's fit only has to land in the right valley; the whole-record fit, at the fit's
     tolerances, sets the estimate), and each window's fit before the line scan at most
     WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first adds the
     lowest minima along lines through the best estimate as tracks (and so does each later
-    window, its lines reaching ``growth`` times less far): over windows of a few
-    tenths of a second the valleys along c2 - c3 are a fraction of a micrometre wide, and
-    the tracks carried from the short windows can each sit a valley or two from the true
-    one, which only the longer windows tell apart by their chi². Before the scan's window
+    window, its lines reaching ``growth`` times less far): over windows of a few tenths of
+    a second the valleys along the rugged directions are narrow, and a track carried from
+    the short windows can sit a valley or two from the true one. Before the scan's window
     the parameters the lines do not move (fitted over the whole record before) are held: a
-    short window sees them barely and, left free, they absorb the clearances' misfit (on the
-    paper scene the friction drifted 3 % from a value within 1 % of the truth, enough to
-    rank the true track below a wrong one at 0.16 s). With ``opening``, lines of the same
-    kind through the best track's start, with their own reach and points, put their lowest
-    minima in its place before the first window's fits (see
-    ``CalibrationOptions.grid_line_points``)."""
+    short window sees them barely and, left free, they absorb the clearances' misfit. With
+    ``opening``, lines of the same kind through the best track's start put their lowest
+    minima in its place before the first window's fits."""
     measured = predictor.measured
     ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first,
                            growth)
@@ -184,7 +178,7 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
         evaluations = max_evaluations if scanned else min(max_evaluations, WINDOW_EVALUATIONS)
         (fitted, unseen, window_stages), more = _window_fits(
             predictor, stage_scene, part, weights, alive, labels,
-            alternatives if k == 0 and len(alive) == 1 else None, evaluations, stated,
+            alternatives if k == 0 and len(alive) == 1 else None, evaluations,
             float(end), held_first, workers)
         runs += more
         stages += window_stages
@@ -216,7 +210,7 @@ window does not see (chi² inf, estimate unchanged), and the stages."""
 
 def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
                  weights: np.ndarray, alive: list[np.ndarray], labels: list[int],
-                 alternatives: np.ndarray | None, max_evaluations: int, stated: bool,
+                 alternatives: np.ndarray | None, max_evaluations: int,
                  end: float, held_first: np.ndarray, workers: int) -> tuple[Fitted, int]:
     """Each track's fit over one window, on up to ``workers`` processes (a track whose every
     run stops ends there), and the runs. With ``alternatives`` (a single track), its fit
@@ -224,7 +218,7 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
     def fit(i: int) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
         starts = alternatives if alternatives is not None else alive[i][None, :]
         return _stage_fit(predictor, stage_scene, part, weights,
-                          np.vstack([alive[i], starts[1:]]), max_evaluations, stated, end,
+                          np.vstack([alive[i], starts[1:]]), max_evaluations, end,
                           labels[i], held_first)
 
     fitted: list[tuple[int, np.ndarray, float]] = []
@@ -310,7 +304,7 @@ def _lines_chi2(predictor: Predictor, stage_scene: Scene, part: Measured,
 
 
 def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
-               starts: np.ndarray, max_evaluations: int, stated: bool, end: float,
+               starts: np.ndarray, max_evaluations: int, end: float,
                label: int, held_first: np.ndarray
                ) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
     """One track's fit over one window from ``starts[0]`` (the others tried while it does
@@ -330,7 +324,7 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
     stage = probe.for_free(_holding(predictor.free, x, held))
     try:
         x_next, record = multi_start(stage, weights, starts, max_evaluations,
-                                     stop_early=stated)
+                                     stop_early=True)
     except SimulationError:
         return None, runs + stage.counter.simulations
     runs += stage.counter.simulations

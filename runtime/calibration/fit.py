@@ -5,18 +5,16 @@
 with the Jacobian from the model's sensitivities. Impacts make the cost multimodal in the
 clearances (an impact that moves past a sample changes the residual abruptly), so the fit is
 restarted from a Latin hypercube of starts around the first one when the first optimum does
-not fit the data within the stated noise (chi² far above its degrees of freedom); without a
-stated noise every start is run and the best kept. A multi-start rather than a continuation
-in the contact stiffness: the stiffness is itself a parameter a user may free, and the
-restarts are independent runs that cost no more than the continuation's ladder of fits.
+not fit the data within the noise (chi² far above its degrees of freedom). A multi-start
+rather than a continuation in the contact stiffness: the stiffness is itself a parameter a
+user may free, and the restarts are independent runs that cost no more than the
+continuation's ladder of fits.
 """
 
 from __future__ import annotations
 
-import itertools
 import math
 import os
-import re
 import time
 from dataclasses import dataclass
 from typing import Any
@@ -75,44 +73,30 @@ def starts_around(free: FreeParameters, count: int, spread: float, seed: int) ->
     return np.vstack([first, low + sample * (high - low)])
 
 
-def least_squares_fit(predictor: Predictor, sigma: np.ndarray | None, starts: np.ndarray,
+def least_squares_fit(predictor: Predictor, sigma: np.ndarray, starts: np.ndarray,
                       max_evaluations: int, scan: Scan | None = None,
                       leading: int = 1, workers: int = 1) -> Optimum:
     """The best optimum over ``starts`` (then along the scan of the weakest direction, when
-    asked and the fit does not yet explain the data); with ``sigma`` None each column's noise
-    is estimated from the residuals of the best fit and the fit polished with it. The first
+    asked and the fit does not yet explain the data), ``sigma`` the noise (stated or estimated
+    from the data's scatter). The first
     ``leading`` starts (where more than one: each fitted, on up to ``workers`` processes,
     the best kept) come first, the rest (a multi-start's) last."""
-    stated = sigma is not None
-    weights: np.ndarray = sigma if sigma is not None else np.ones(
-        len(predictor.measured.columns))
+    weights = sigma
     best, record = multi_start(predictor, weights, starts[:leading], max_evaluations,
-                               stop_early=stated and leading == 1, workers=workers,
+                               stop_early=leading == 1, workers=workers,
                                settle=True)
-    exchanged = exchanged_clearances(predictor.free.names, best)
-    if len(exchanged) and not (stated and _explains(min(record, key=_chi2), predictor)):
-        more_best, more = multi_start(predictor, weights, np.vstack([best, exchanged]),
-                                       max_evaluations, stop_early=stated, settle=True)
-        record += more[1:]
-        best = more_best
-    if scan is not None and scan.points > 0 and not (stated and _explains(
-            min(record, key=_chi2), predictor)):
+    if scan is not None and scan.points > 0 and not _explains(min(record, key=_chi2),
+                                                              predictor):
         seeds = scan_weakest_direction(predictor, weights, best, starts[0], scan)
         more_best, more = multi_start(predictor, weights, np.vstack([best, seeds]),
-                                       max_evaluations, stop_early=stated, settle=True)
+                                       max_evaluations, stop_early=True, settle=True)
         record += more[1:]
         best = more_best
-    if len(starts) > leading and not (stated and _explains(min(record, key=_chi2),
-                                                           predictor)):
+    if len(starts) > leading and not _explains(min(record, key=_chi2), predictor):
         more_best, more = multi_start(predictor, weights, np.vstack([best, starts[leading:]]),
-                                       max_evaluations, stop_early=stated, settle=True)
+                                       max_evaluations, stop_early=True, settle=True)
         record += more[1:]
         best = more_best
-    if not stated:
-        weights = column_noise(predictor, best, predictor.free.size)
-        best, more = multi_start(predictor, weights, best[None, :], max_evaluations,
-                                  stop_early=False, settle=True)
-        record += more
     residuals = whitened(predictor.outputs(best) - predictor.measured.values, weights)
     jacobian = whitened(predictor.jacobian(best), weights)
     return Optimum(best, weights, residuals, jacobian, tuple(record))
@@ -127,19 +111,6 @@ class Scan:
     points: int
     spread: float
     refine: int
-
-
-def exchanged_clearances(names: tuple[str, ...], best: np.ndarray) -> np.ndarray:
-    """Starts with two free clearances exchanged, one per pair: a tip sees mostly the sum of
-    the journals' offsets, so the exchanged pair is a second valley the first fit rarely
-    crosses to (on the paper scene two of three benchmark draws ended near it)."""
-    joints = [k for k, name in enumerate(names) if re.fullmatch(r"joint\d+\.clearance", name)]
-    out = []
-    for a, b in itertools.combinations(joints, 2):
-        x = best.copy()
-        x[a], x[b] = best[b], best[a]
-        out.append(x)
-    return np.array(out).reshape(-1, best.size)
 
 
 def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
@@ -187,16 +158,6 @@ def explaining_limit(dof: int) -> float:
 
 def _explains(start: Start, predictor: Predictor) -> bool:
     return start.chi2 <= explaining_limit(predictor.measured.size - predictor.free.size)
-
-
-def column_noise(predictor: Predictor, values: np.ndarray, n_free: int) -> np.ndarray:
-    """Each column's noise estimated from its residuals (RMS, corrected for the parameters'
-    share of the degrees of freedom)."""
-    raw = predictor.outputs(values) - predictor.measured.values
-    n = raw.size
-    factor = math.sqrt(n / max(n - n_free, 1))
-    rms = np.sqrt(np.mean(raw**2, axis=0)) * factor
-    return np.where(rms > 0, rms, np.finfo(float).tiny)
 
 
 def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
@@ -251,17 +212,10 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
 SETTLED_SIGMAS = 0.1
 """A local fit ends at its best point once the step it would try next lies within this many
 standard deviations of it, in the metric of the Jacobian there (scaled by sqrt(chi²/dof)
-where the fit does not yet explain the data): on the model's smooth part such a step changes
-chi² by at most 2 SETTLED_SIGMAS sqrt(d) + SETTLED_SIGMAS² (d the Gauss-Newton step's
-predicted decrease), a few hundredths, where the integrator's own scatter of chi² is about
-±1 on the paper scene's whole record at the fit's tolerances. SciPy's ``xtol`` instead
-shrinks the trust region through rejected runs down to steps of 1e-8 of |x|, a thousandth
-of a standard deviation: on benchmark draw 14's whole-record fit (from its 1.28 s track's
-end) 20 runs where this rule takes 9, the two ends 0.05 standard deviations apart in that
-metric (each parameter under 0.04 of its own) and chi² 0.23 apart. Only the fits on the
-whole record settle (the fit's, its fallbacks', the basin check's): the windows' fits keep
-SciPy's tolerances, on which the continuation's choice of valleys was measured; settled
-there too, the 16 benchmark draws' calibrations lost one (draw 11 ended 5-7 % off)."""
+where the fit does not yet explain the data): such a step changes chi² by a few hundredths,
+below the integrator's own scatter of chi² (about ±1 on the paper scene's whole record),
+where SciPy's ``xtol`` goes on shrinking the trust region through rejected runs. Only the
+fits on the whole record settle; the windows' fits keep SciPy's tolerances."""
 
 
 class _Settled(Exception):

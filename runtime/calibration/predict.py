@@ -80,6 +80,20 @@ class Predictor:
         other._cache = self._cache
         return other
 
+    def __getstate__(self) -> dict[str, Any]:
+        # For a piece sent to a Dask worker: the compiled model does not pickle; the worker
+        # loads it again from the scene (the hash-keyed cache, or derived once there).
+        state = dict(self.__dict__)
+        state["model"] = None
+        state["_cache"] = {}
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        from jointplay.sim import load_scene_model
+
+        self.__dict__.update(state)
+        self.model = load_scene_model(self.scene)
+
     # -- the two things a fit asks for ---------------------------------------------------------
 
     def outputs(self, x: np.ndarray, *, with_jacobian: bool = True) -> np.ndarray:

@@ -12,7 +12,6 @@ from pathlib import Path
 
 import numpy as np
 
-from jointplay.calibration.api import CONSISTENT
 from jointplay.calibration.result import CalibrationResult
 from jointplay.common.files import OutputPlan
 
@@ -58,14 +57,9 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
               f"{', '.join(result.measured.columns)} from {result.measured.t[0]:g} s to "
               f"{result.measured.t[-1]:g} s.", ""]
     if result.fit_explains_data is False:
-        lines += ["**The fit does not explain the data within the stated noise: the estimates "
-                  "below are the best optimum found, not established values, and their "
-                  "intervals are not valid.**", ""]
-    elif result.fit_consistent is False:
-        lines += ["**The fit's chi² is higher than a fit in the basin of the true parameters "
-                  f"would reach in {100 * CONSISTENT:g} % of noise draws: it may be a "
-                  "neighbouring basin's, and no parameter is reported as determined (see the "
-                  "warnings).**", ""]
+        lines += ["**The residuals are not the noise: nothing is determined (see the "
+                  "warning); the estimates below are the best fit found, not established "
+                  "values.**", ""]
     lines += ["| parameter | start | estimate | std | 95 % interval | determined |",
               "|---|---|---|---|---|---|"]
     for e in result.estimates.values():
@@ -75,7 +69,8 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
     lines += [""]
     if result.warnings:
         lines += ["## Warnings", ""] + [f"- {w}" for w in result.warnings] + [""]
-    noise = "stated" if result.noise_stated else "estimated from the residuals"
+    noise = ("stated" if result.noise_stated
+             else "estimated from the data's own sample-to-sample scatter")
     lines += ["## Fit", "",
               f"- chi² = {stats['chi2']:.6g} on {stats['dof']} degrees of freedom "
               f"(chi²/dof = {stats['normalised_chi2']:.4g}); noise {noise}: "
@@ -90,48 +85,14 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
               f"{len(result.starts)} local fits",
               "- Jacobian: " + ", ".join(f"{k}: {v}" for k, v in result.jacobian_source.items()),
               f"- runs at rtol {result.settings['rtol']:g}, atol {result.settings['atol']:g}",
-              "", *_stages(result),
+              f"- search: {len(result.stages)} fits over growing windows"
+              + (f" from a grid of {result.grid.simulations} runs" if result.grid else "")
+              + " (`continuation` and `grid` in `calibration.json`)", "",
               "The 95 % intervals are ±1.96 standard deviations of the linearised "
               "covariance (JᵀJ)⁻¹ of the whitened residuals, clipped to the physical range; "
               "they hold where the fit explains the data (chi²/dof near 1). The cost "
               "profiles (`profiles.png`) hold the other parameters at their estimates.", ""]
     return "\n".join(lines)
-
-
-def _stages(result: CalibrationResult) -> list[str]:
-    """The horizon continuation's stages as a table (none where it did not run)."""
-    if not result.stages:
-        return ["No horizon continuation: the fit started on the whole record.", ""]
-    lines = ["## Horizon continuation", "",
-             "Fitted on a leading window of the data first, the window doubled (or as set) "
-             "each stage, each fit started at the previous estimate; the last stage is the "
-             "whole record, and its covariance is the one reported. A parameter the window "
-             "cannot see is held at its value in that stage; a window that sees none is "
-             "skipped.", "", *_grid(result),
-             "| window end (s) | track | samples | "
-             + " | ".join(f"`{n}`" for n in result.names)
-             + " | chi² | dof | evaluations | held |", "|---" * (len(result.names) + 7) + "|"]
-    for s in result.stages:
-        lines.append(f"| {s.window_end:g} | {s.track} | {s.samples} | "
-                     + " | ".join(f"{v:.8g}" for v in s.end)
-                     + f" | {s.chi2:.5g} | {s.dof} | {s.evaluations} | "
-                     + (", ".join(f"`{n}`" for n in s.held) or "none") + " |")
-    return [*lines, ""]
-
-
-def _grid(result: CalibrationResult) -> list[str]:
-    """A line on the global stage's grid (none where it did not run)."""
-    grid = result.grid
-    if grid is None:
-        return []
-    return [f"Global stage: a grid of {grid.points_per_axis} values of each of "
-            + ", ".join(f"`{a}`" for a in grid.axes)
-            + f" on the data up to {grid.window_end:g} s ({grid.simulations} runs); its "
-            f"{len(grid.candidates)} lowest local minima (chi² "
-            + ", ".join(f"{c:.4g}" for c in grid.chi2)
-            + ") started the tracks; a track far above the best one after a window is "
-            "dropped, and the best one is replaced by the lowest minima along lines across "
-            "the rugged directions at the line scan's window.", ""]
 
 
 def _correlations(result: CalibrationResult) -> str:

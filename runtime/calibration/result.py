@@ -51,8 +51,7 @@ class CalibrationResult:
     warnings: tuple[str, ...]
     settings: dict[str, Any]
     fit_explains_data: bool | None = None
-    fit_consistent: bool | None = None
-    """chi² within ``chi2.ppf(CONSISTENT, dof)`` (None: no noise stated)."""
+    """The residuals are the noise: chi² in its 99 % range, and white (runs test)."""
     stages: tuple[Stage, ...] = ()
     profiles: dict[str, dict[str, list[float]]] = field(default_factory=dict)
     grid: GridResult | None = None
@@ -94,7 +93,6 @@ class CalibrationResult:
             "cpu_time_s": self.cpu_time_s,
             "warnings": list(self.warnings),
             "fit_explains_data": self.fit_explains_data,
-            "fit_consistent": self.fit_consistent,
             "continuation": [{"window_end": s.window_end, "samples": s.samples,
                               "start": list(s.start), "end": list(s.end),
                               "chi2": number(s.chi2), "dof": s.dof,

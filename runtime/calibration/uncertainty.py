@@ -20,7 +20,8 @@ Z95 = 1.959963984540054
 RANK_TOLERANCE = 1e-10
 """Singular values of the correlation form below this fraction of the largest: rank lost."""
 MAX_CORRELATION = 0.99
-"""Pairs more correlated than this are reported as not separated by the data."""
+"""Pairs more correlated than this, one of them with a wide interval, are reported as not
+separated by the data."""
 MAX_RELATIVE_STD = 0.5
 """A 95 % interval wider than the value itself (std > half the value): not determined."""
 NULL_COMPONENT = 0.1
@@ -66,18 +67,18 @@ def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
     std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     std[undetermined] = np.inf
     correlation = _correlation(covariance, corr_form, lost, undetermined)
-    warnings = []
-    for i, j in zip(*np.triu_indices(n, 1), strict=True):
-        r = correlation[i, j]
-        if np.isfinite(r) and abs(r) > MAX_CORRELATION:
-            partners[int(i)].add(int(j))
-            partners[int(j)].add(int(i))
-            warnings.append(f"{names[i]} and {names[j]} are correlated {r:+.4f}: the data "
-                            "determine a combination of them, not each one")
     scale = np.where(values != 0, np.abs(values), np.where(np.isfinite(upper - lower),
                                                            upper - lower, 1.0))
     wide = std > MAX_RELATIVE_STD * scale
-    determined = ~(undetermined | wide | np.array([bool(partners[i]) for i in range(n)]))
+    # A correlation, however close to one, leaves a parameter determined where its own
+    # interval is narrow (the covariance already holds it): the verdict follows the interval.
+    for i, j in zip(*np.triu_indices(n, 1), strict=True):
+        r = correlation[i, j]
+        if np.isfinite(r) and abs(r) > MAX_CORRELATION and (wide[i] or wide[j]):
+            partners[int(i)].add(int(j))
+            partners[int(j)].add(int(i))
+    determined = ~(undetermined | wide)
+    warnings = []
     for i in np.flatnonzero(~determined):
         reason = _reason(int(i), names, partners, undetermined, std, values)
         warnings.append(f"{names[i]} is not determined by the data ({reason})")

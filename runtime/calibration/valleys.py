@@ -6,8 +6,7 @@ c2 - c3) is a comb of valleys a fraction of a nanometre wide, and the continuati
 valleys from the truth's with a chi² the noise explains. Over the continuation's first
 lined window (0.32 s) the valleys are about 10 nm wide, and a line of runs through the fit
 5 nm apart resolves them: :func:`valley_check` finds the other valleys there as low as the
-fit's own, and :func:`follow_rivals` carries the lowest of them to the whole record, where a
-lower fit replaces the best. What the check finds widens the intervals
+fit's own. What the check finds widens the intervals
 (:func:`jointplay.calibration.basins.widened`).
 """
 
@@ -23,13 +22,9 @@ from jointplay.calibration.continuation import (
     _lines_chi2,
     _rugged,
     _window_problem,
-    continuation,
     horizon_windows,
 )
-from jointplay.calibration.fit import Start, multi_start
 from jointplay.calibration.predict import Predictor, line_minima
-from jointplay.calibration.workers import parallel_map
-from jointplay.common.errors import SimulationError
 
 
 @dataclass(frozen=True)
@@ -55,18 +50,10 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     ``scan.reach`` times ``scan.scale`` either side; every other valley along it whose floor
     lies within ``within`` of (or below) the floor of ``best``'s own valley is a rival.
 
-    Over the whole record the valleys along c2 - c3 on the paper scene are a fraction of a
-    nanometre wide, the basin check's lines reach a few nanometres, and the continuation's
-    lines over 0.32-1.28 s are 25-100 nm apart: a fit can end a few valleys from the
-    truth's with a chi² the noise explains (benchmark draw 1: 95 nm along c2 - c3, the truth
-    7.3 lower over the whole record; draw 15: 0.29 µm, 69 lower). Over 0.32 s the valleys
-    are about 10 nm wide and a line 5 nm apart resolves them: there the truth's valley
-    lay 6.1 (draw 1) and 10.2 (draw 15) below the fit's, while on the draws whose fit held
-    the truth no other valley came within 3.84 but one (draw 12: 0.9 above, 30 nm away).
-    Following a rival to the whole record needs a search in the plane of the clearances
-    (on draw 15 the line passes 60 nm from the truth's c2 + c3, and a track carried from its
-    valley through 0.64 and 1.28 s ended in another), so the check only states what the
-    search cannot exclude."""
+    Over the whole record the valleys along the rugged direction are far narrower than the
+    continuation's lines resolve, so a fit can end a few valleys from the truth's with a
+    chi² the noise explains; over the first window they are wide enough for a line to
+    resolve them. The check states what the search cannot exclude."""
     measured = predictor.measured
     free = predictor.free
     ends = horizon_windows(measured.t, len(measured.columns), free.size, scan.window,
@@ -89,50 +76,6 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     points = np.array([p for line in lines for p in line]).reshape(-1, free.size)
     extent = (points.min(axis=0), points.max(axis=0)) if len(points) else None
     return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more, extent)
-
-
-FOLLOWED_RIVALS = 2
-"""The valley check's rivals followed to the whole record (the lowest first, one per
-worker): see :func:`follow_rivals`."""
-
-
-def follow_rivals(predictor: Predictor, weights: np.ndarray, check: ValleyCheck,
-                  max_evaluations: int, growth: float, looser: float, workers: int
-                  ) -> tuple[list[Start], int]:
-    """The whole-record fits from the FOLLOWED_RIVALS lowest of ``check``'s rivals, and the
-    runs: each rival carried through the windows from the check's own to the whole record's
-    as a track of the continuation is (each window's fit started at the previous estimate,
-    at the fit's tolerances times ``looser``), then fitted on the whole record (settling),
-    one rival per worker. Where a rival's valley over the check's window lies far below the
-    fit's own, the fit sits valleys from the truth: on benchmark draw 2 (measured on a second
-    machine, whose last bits differ) the fit ended 0.6-0.9 % off with chi²/dof 1.06, the
-    check found a valley 92 lower over 0.32 s, and that valley carried to the whole record
-    ended 0.016 % from the truth, 206 lower in chi²; a fit that ends lower than the best
-    replaces it."""
-    rivals = sorted(check.rivals, key=lambda r: r[1])[:FOLLOWED_RIVALS]
-
-    def follow(i: int) -> tuple[list[Start], int]:
-        point = np.asarray(rivals[i][0], dtype=float)[None, :]
-        probe = Predictor(predictor.scene, predictor.model, predictor.free,
-                          predictor.measured, compiled=predictor.compiled)
-        try:
-            tracks, _, runs = continuation(probe, weights, point, point, True,
-                                           max_evaluations, check.window_end, growth,
-                                           looser=looser)
-            if not len(tracks):
-                return [], runs
-            _, record = multi_start(probe, weights, tracks[:1], max_evaluations,
-                                    stop_early=True, settle=True)
-        except SimulationError:
-            return [], probe.counter.simulations
-        return record, runs + probe.counter.simulations
-
-    found: list[Start] = []
-    runs = 0
-    for record, more in parallel_map(follow, len(rivals), workers):
-        found += record
-        runs += more
-    return found, runs
 
 
 def _valley_floor(chi2: np.ndarray, i: int) -> int:

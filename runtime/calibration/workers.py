@@ -1,32 +1,47 @@
 """Independent pieces of a calibration (the grid's runs, the tracks' fits over a window, the
-lines' runs) on several cores.
+lines' runs) on several cores, or on a Dask cluster.
 
-The pieces share the compiled model, which cannot be pickled, so they run in processes
-forked from this one (each inherits the model and the job) and send back only numbers. The
-results do not depend on the number of workers: each piece is the same computation
-wherever it runs. Where ``fork`` is unavailable, or one worker is asked for, the pieces run
-here in turn.
+Locally the pieces share the compiled model, which cannot be pickled, so they run in a
+:class:`concurrent.futures.ProcessPoolExecutor` whose processes are forked from this one (each
+inherits the model and the job) and send back only numbers. On a cluster
+(:func:`on_cluster`) each piece travels pickled, its predictor reloading the model there
+(:meth:`jointplay.calibration.predict.Predictor.__setstate__`). The results do not depend on
+where the pieces run: each is the same computation. Where ``fork`` is unavailable, or one
+worker is asked for, the pieces run here in turn.
 
-A forked pool can hang (a child forked while another thread of this process held a lock it
-then needs). Nothing waits on it without a bound: when no piece has come back for
-:data:`STALL_S` seconds the pool is killed, one line on stderr says so, and the pieces not
-yet back run here in turn, which gives the same numbers.
+Nothing waits without a bound. A worker that dies (killed, out of memory) breaks the pool
+(``BrokenProcessPool``); one that sends nothing back for :data:`STALL_S` seconds is taken as
+stuck and the pool killed. Either way one line on stderr says so and the pieces not yet back
+run here in turn, which gives the same numbers. The workers ignore Ctrl-C from the moment
+they are forked: this process alone stops them (SIGKILL: they hold nothing to clean up), so an
+interrupt prints only the command's own line.
 """
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
+import os
 import sys
-from collections.abc import Callable, Sequence
+import time
+from collections.abc import Callable, Iterator, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from typing import Any
 
 from jointplay.common import interrupts
 
 _JOB: Callable[[int], Any] | None = None
-# The longest a calibration waits for the next piece from its worker processes (s). A piece
-# is one local fit over a window, or a chunk of short runs: seconds to a minute on a loaded
-# 2-core machine; the bound leaves room for a machine many times busier.
+_CLIENT: list[Any] = []  # the Dask client of :func:`on_cluster`, while inside it
+# Set while this process forks pool workers: the copies ignore Ctrl-C from their first
+# instruction on (see _quiet_in_copy).
+_FORKING = [False]
 STALL_S = 600.0
+"""The longest a calibration waits for the next piece from its workers (s). A piece is one
+local fit over a window, or a chunk of short runs: seconds to a minute on a loaded 2-core
+machine; the bound leaves room for a machine many times busier."""
+CONNECT_TIMEOUT_S = 20.0
+"""How long ``--scheduler`` waits for the cluster to answer."""
 
 
 def _call(index: int) -> Any:
@@ -34,30 +49,124 @@ def _call(index: int) -> Any:
     return _JOB(index)
 
 
+def _quiet_in_copy() -> None:
+    # Registered after jointplay.common.interrupts' own hook, so it runs after it in the copy
+    # and overrides the handler that hook restores.
+    if _FORKING[0]:
+        interrupts.ignore_in_child()
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_quiet_in_copy)
+
+
+@contextlib.contextmanager
+def on_cluster(address: str | None) -> Iterator[None]:
+    """Within: the pieces run on the Dask cluster whose scheduler is at ``address`` (None:
+    locally). An address that does not answer is a :class:`DescriptionError` naming
+    ``--scheduler``."""
+    if not address:
+        yield
+        return
+    from distributed import Client
+
+    from jointplay.common.errors import DescriptionError
+
+    try:
+        with interrupts.deferred():
+            client = Client(address, timeout=CONNECT_TIMEOUT_S)
+    except (OSError, TimeoutError) as err:
+        raise DescriptionError("--scheduler", f"cannot reach the Dask scheduler at "
+                               f"{address!r} ({err}); start it, or leave --scheduler out to "
+                               "run on this machine's cores") from None
+    _CLIENT.append(client)
+    try:
+        yield
+    finally:
+        _CLIENT.remove(client)
+        client.close()
+
+
 def parallel_map(job: Callable[[int], Any], count: int, workers: int) -> list[Any]:
-    """``[job(0), ..., job(count - 1)]``, on up to ``workers`` forked processes. ``job``
-    must catch its own failures and return them as values. If the workers stall (nothing
-    back for :data:`STALL_S` s), the rest run here."""
-    global _JOB
+    """``[job(0), ..., job(count - 1)]``, on up to ``workers`` forked processes (or on the
+    cluster of :func:`on_cluster`). ``job`` must catch its own failures and return them as
+    values. If a worker dies or the workers stall (nothing back for :data:`STALL_S` s), the
+    rest run here."""
+    if _CLIENT and count > 1:
+        return _on_dask(_CLIENT[-1], job, count)
     if workers <= 1 or count <= 1 or "fork" not in multiprocessing.get_all_start_methods():
         return [job(i) for i in range(count)]
+    done = _forked(job, count, min(workers, count))
+    return [done[i] if i in done else job(i) for i in range(count)]
+
+
+def _forked(job: Callable[[int], Any], count: int, workers: int) -> dict[int, Any]:
+    """The pieces that came back from a pool of ``workers`` forked processes, by index; the
+    pool is killed once every piece is back, a worker died, the workers stalled, or this
+    process is interrupted."""
+    global _JOB
     _JOB = job
-    done: list[Any] = []
+    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"))
+    done: dict[int, Any] = {}
     try:
-        with interrupts.started(
-                lambda: multiprocessing.get_context("fork").Pool(min(workers, count))) as pool:
-            pieces = pool.imap(_call, range(count), chunksize=1)
+        with interrupts.deferred():  # the first submission forks every worker
+            _FORKING[0] = True
             try:
-                for _ in range(count):
-                    done.append(pieces.next(timeout=STALL_S))
-            except multiprocessing.TimeoutError:
-                pool.terminate()
-                print(f"jointplay: calibration workers sent nothing for {STALL_S:g} s; "
-                      f"running the {count - len(done)} remaining pieces in this process",
-                      file=sys.stderr)
+                pending: dict[Future[Any], int] = {pool.submit(_call, i): i
+                                                   for i in range(count)}
+            finally:
+                _FORKING[0] = False
+        problem = None
+        while pending and problem is None:
+            finished, _ = wait(pending, timeout=STALL_S, return_when=FIRST_COMPLETED)
+            if not finished:
+                problem = f"sent nothing back for {STALL_S:g} s"
+            for future in finished:
+                index = pending.pop(future)
+                try:
+                    done[index] = future.result()
+                except BrokenProcessPool:
+                    problem = "lost a worker process (killed, or out of memory)"
+        if problem is not None:
+            print(f"jointplay: the calibration's worker processes {problem}; running the "
+                  f"{count - len(done)} remaining pieces in this process", file=sys.stderr)
     finally:
+        _stop(pool)
         _JOB = None
-    return done + [job(i) for i in range(len(done), count)]
+    return done
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """Kill the pool's workers and let the pool go, waiting on nothing they might hold."""
+    # The executor keeps its processes by pid; a worker killed mid-piece cannot leave a
+    # lock held that this process waits on, since nothing here joins the pool's queues.
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    for process in processes:
+        with contextlib.suppress(OSError):
+            process.kill()
+    pool.shutdown(wait=False, cancel_futures=True)
+    deadline = time.monotonic() + 5.0
+    for process in processes:  # reaped (a killed process exits at once)
+        process.join(max(0.0, deadline - time.monotonic()))
+
+
+def _on_dask(client: Any, job: Callable[[int], Any], count: int) -> list[Any]:
+    """The pieces on the cluster (which reruns a piece whose worker died); a piece not back
+    for :data:`STALL_S` s stops the run with one error line."""
+    from distributed import TimeoutError as DaskTimeout
+    from distributed import wait as dask_wait
+
+    from jointplay.common.errors import SimulationError
+
+    futures = client.map(job, list(range(count)), pure=False)
+    try:
+        dask_wait(futures, timeout=STALL_S)
+        return list(client.gather(futures))
+    except (DaskTimeout, TimeoutError):
+        raise SimulationError(float("nan"), f"the Dask cluster sent no result for {STALL_S:g} "
+                              "s; check its workers, or leave --scheduler out") from None
+    finally:
+        client.cancel(futures)
 
 
 def chunks(count: int, parts: int) -> list[Sequence[int]]:

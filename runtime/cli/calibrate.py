@@ -28,7 +28,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--noise", metavar="SIGMA|COLUMN=SIGMA,...",
                    help="the sensors' standard deviations: one number for every column, or "
                         "one per column (tip_x=1e-6,tip_y=1e-6); default: estimated from the "
-                        "residuals")
+                        "data's own sample-to-sample scatter")
     p.add_argument("--start", metavar="NAME=VALUE,...",
                    help="start values of free parameters (default: the scene's)")
     p.add_argument("--starts", type=int, default=6,
@@ -63,10 +63,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="runs over 0.32 s along the clearances' rugged direction through the "
                         "best fit, 0.2 grid spacings either side; a clearance whose interval "
                         "misses another valley within chi² + 3.84 of the fit's there is "
-                        "reported not determined, its interval spanning the line; the two "
-                        "lowest such valleys are followed to the whole record, and a fit "
-                        "that ends lower replaces the best (default 161; 0: no check; needs "
-                        "--noise)")
+                        "reported not determined, its interval spanning the line (default "
+                        "161; 0: no check)")
     p.add_argument("--no-basin-check", dest="basins", action="store_false",
                    help="skip the search for the other minima of the whole record's cost "
                         "near the best fit (lines along the axes of its confidence "
@@ -78,6 +76,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="the fit's runs use the scene's tolerances divided by this "
                         "(default 1000)")
     p.add_argument("--seed", type=int, default=0, help="seed of the further starts")
+    p.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run the calibration's parallel pieces on the Dask cluster whose "
+                        "scheduler is at ADDRESS (tcp://host:8786) instead of this machine's "
+                        "cores")
     p.add_argument("--quiet", action="store_true", help="print nothing but errors")
     p.set_defaults(func=cmd_calibrate)
     return p
@@ -104,9 +106,9 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
     result = run(problem)
     written = write_report(result, out, plan, command_line())
     if not args.quiet:
-        if result.fit_explains_data is False:
-            print("the fit does not explain the data within the stated noise: best optimum "
-                  "found, not established values")
+        if not result.noise_stated:
+            print("noise estimated from the data's scatter: " + ", ".join(
+                f"{c} {v:.3g}" for c, v in result.noise.items()))
         for e in result.estimates.values():
             std = f"{e.std:.3g}" if math.isfinite(e.std) else "inf"
             note = "" if e.determined else "  (NOT determined by the data)"
@@ -136,7 +138,7 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
                             grid_window=args.grid_window, grid_points=args.grid_points,
                             grid_line_points=args.grid_line_points,
                             valley_check_points=args.valley_check_points,
-                            basins=args.basins)
+                            basins=args.basins, scheduler=args.scheduler)
     except DescriptionError as err:
         flag = "--" + err.field.removeprefix("options.").replace("_", "-")
         if flag not in flags:

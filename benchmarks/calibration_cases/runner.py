@@ -1,0 +1,256 @@
+"""Run ``jointplay calibrate`` on every benchmark case and seed, as a user would; one table.
+
+Per case (data/NAME, written by generate.py) and noise seed: Gaussian noise of the case's
+standard deviations is added to the stored noiseless motion (seeded by the case's name and
+the seed), written to a CSV, and
+
+    jointplay calibrate data/NAME/scene.toml --measured FILE --free A,B,C --out DIR
+                        [--noise COLUMN=SIGMA,...]     (only where the case states the noise)
+
+runs in a process of its own. From its calibration.json: each parameter's estimate, its
+error (% of the truth), whether its 95 % interval holds the truth, its verdict; chi²/dof;
+the noise estimate against the truth where not stated. Wall time is the process's, CPU
+time the process's and its workers' (``resource.getrusage(RUSAGE_CHILDREN)``).
+
+Summary: coverage (the fraction of intervals holding the truth), parameters reported
+determined with the truth outside their interval, the accuracy goals (clearances within
+2 %, friction within 5 %, where determined), median and worst wall per case and overall.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import json
+import os
+import platform
+import resource
+import signal
+import subprocess
+import sys
+import time
+import zlib
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+DATA = HERE / "data"
+ACCURACY = {"clearance": 0.02, "mu": 0.05}  # relative error goals where determined
+
+
+def load_case(name: str) -> tuple[dict[str, Any], np.ndarray, list[str]]:
+    """The case's record, its noiseless table (time first) and the table's header; the
+    table's hash checked against the record's."""
+    folder = DATA / name
+    record = json.loads((folder / "case.json").read_text())
+    text = (folder / "truth.csv").read_text()
+    if hashlib.sha256(text.encode()).hexdigest() != record["truth_csv_sha256"]:
+        raise SystemExit(f"{folder / 'truth.csv'} does not match its case.json hash; rerun "
+                         "python benchmarks/calibration_cases/generate.py")
+    header = text.splitlines()[0].split(",")
+    table = np.loadtxt(folder / "truth.csv", delimiter=",", skiprows=1, ndmin=2)
+    return record, table, header
+
+
+def case_names() -> list[str]:
+    return sorted(p.name for p in DATA.iterdir() if (p / "case.json").is_file())
+
+
+def noisy_csv(record: dict[str, Any], table: np.ndarray, header: list[str], seed: int,
+              path: Path) -> None:
+    rng = np.random.default_rng([seed, zlib.crc32(record["name"].encode())])
+    noisy = table.copy()
+    for k, column in enumerate(header[1:], start=1):
+        noisy[:, k] += record["noise"][column] * rng.standard_normal(len(table))
+    lines = [",".join(header)] + [",".join(f"{v:.17g}" for v in row) for row in noisy]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def _calibrate_command() -> list[str]:
+    return [sys.executable, "-m", "jointplay.cli", "calibrate"]
+
+
+def run_one(name: str, seed: int, out: Path, timeout_s: float) -> dict[str, Any]:
+    """One calibration of case ``name`` with noise seed ``seed``; its row."""
+    record, table, header = load_case(name)
+    folder = out / "runs" / name / f"seed{seed}"
+    folder.mkdir(parents=True, exist_ok=True)
+    measured = folder / "measured.csv"
+    noisy_csv(record, table, header, seed, measured)
+    result_dir = folder / "calibration"
+    command = [*_calibrate_command(), str(DATA / name / "scene.toml"), "--measured",
+               str(measured), "--free", ",".join(record["free"]), "--out", str(result_dir)]
+    if record["noise_stated"]:
+        command += ["--noise", ",".join(f"{c}={s!r}" for c, s in record["noise"].items())]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    status = "ok"
+    with open(folder / "log.txt", "w") as log:
+        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
+                                   start_new_session=True)
+        try:
+            rc = process.wait(timeout=timeout_s)
+            if rc != 0:
+                status = f"exit {rc}"
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+            status = f"timeout {timeout_s:g} s"
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    row: dict[str, Any] = {"case": name, "seed": seed, "noise_stated": record["noise_stated"],
+                           "columns": "+".join(record["columns"]), "status": status,
+                           "wall_s": wall, "cpu_s": cpu, "command": " ".join(command)}
+    result_file = result_dir / "calibration.json"
+    if status != "ok" or not result_file.is_file():
+        row["status"] = status if status != "ok" else "no calibration.json"
+        row["parameters"] = {}
+        return row
+    result = json.loads(result_file.read_text())
+    row["parameters"] = {}
+    for pname in record["free"]:
+        truth = record["truth"][pname]
+        e = result["estimates"][pname]
+        row["parameters"][pname] = {
+            "truth": truth, "estimate": e["value"], "std": e.get("std"),
+            "low95": e["low95"], "high95": e["high95"],
+            "error_pct": 100.0 * (e["value"] - truth) / truth,
+            "covered": bool(e["low95"] <= truth <= e["high95"]),
+            "determined": bool(e["determined"]),
+            "inseparable": pname in record.get("inseparable", []),
+        }
+    residuals = result.get("residuals", {})
+    row["chi2_dof"] = residuals.get("normalised_chi2")
+    noise = result.get("noise", {}).get("std", {})
+    if isinstance(noise, dict):
+        row["noise_ratio"] = {c: noise[c] / s for c, s in record["noise"].items() if c in noise}
+    row["warnings"] = len(result.get("warnings", []))
+    row["reported_wall_s"] = result.get("wall_time_s")
+    return row
+
+
+def _goal(pname: str) -> float | None:
+    if pname.endswith(".clearance"):
+        return ACCURACY["clearance"]
+    if pname == "friction.mu":
+        return ACCURACY["mu"]
+    return None
+
+
+def summarise(rows: list[dict[str, Any]]) -> dict[str, Any]:
+    params = [(r, n, p) for r in rows for n, p in r["parameters"].items()]
+    determined = [(r, n, p) for r, n, p in params if p["determined"]]
+    goals = [(n, p, goal) for _, n, p in determined if (goal := _goal(n)) is not None]
+    walls = [r["wall_s"] for r in rows]
+    per_case: dict[str, list[float]] = {}
+    for r in rows:
+        per_case.setdefault(r["case"], []).append(r["wall_s"])
+    return {
+        "runs": len(rows), "failed": sum(r["status"] != "ok" for r in rows),
+        "intervals": len(params), "covered": sum(p["covered"] for _, _, p in params),
+        "determined": len(determined),
+        "determined_outside": sum(not p["covered"] for _, _, p in determined),
+        "goals_checked": len(goals),
+        "goals_met": sum(abs(p["error_pct"]) <= 100 * g for _, p, g in goals),
+        "wall_median_s": float(np.median(walls)) if walls else None,
+        "wall_worst_s": float(np.max(walls)) if walls else None,
+        "cpu_median_s": float(np.median([r["cpu_s"] for r in rows])) if rows else None,
+        "wall_by_case": {c: (float(np.median(w)), float(np.max(w))) for c, w in per_case.items()},
+    }
+
+
+def _cell(p: dict[str, Any]) -> str:
+    verdict = "det." if p["determined"] else "not det."
+    holds = "in" if p["covered"] else "**out**"
+    return f"{p['error_pct']:+.2f} % ({holds}, {verdict})"
+
+
+def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) -> str:
+    import scipy
+
+    load = ", ".join(f"{v:.2f}" for v in os.getloadavg())
+    lines = ["# Calibration benchmark: cases", "", "```sh", command, "```", "",
+             f"Machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
+             f"load average at the end {load} (times on a shared machine are inflated); "
+             f"Python {platform.python_version()}, NumPy {np.__version__}, "
+             f"SciPy {scipy.__version__}.", "",
+             "Each cell: error of the estimate (% of the truth), whether the 95 % interval "
+             "holds the truth, the verdict (determined or not).", "",
+             "| case | seed | noise | parameters | chi²/dof | noise est. / truth | warnings "
+             "| wall s | CPU s | status |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        params = "; ".join(f"{n}: {_cell(p)}" for n, p in r["parameters"].items())
+        ratio = r.get("noise_ratio") or {}
+        noise = "stated" if r["noise_stated"] else "estimated"
+        ratios = ", ".join(f"{c} {v:.2f}" for c, v in ratio.items()) \
+            if not r["noise_stated"] else "-"
+        chi2 = f"{r['chi2_dof']:.3g}" if r.get("chi2_dof") is not None else "-"
+        lines.append(f"| {r['case']} | {r['seed']} | {noise} | {params or '-'} | {chi2} | "
+                     f"{ratios} | {r.get('warnings', '-')} | {r['wall_s']:.1f} | "
+                     f"{r['cpu_s']:.1f} | {r['status']} |")
+    s = summary
+    cov = f"{s['covered']} of {s['intervals']}" + \
+        (f" ({s['covered'] / s['intervals']:.0%})" if s["intervals"] else "")
+    lines += ["", "## Summary", "",
+              f"- runs: {s['runs']}, failed or timed out: {s['failed']}",
+              f"- 95 % intervals holding the truth: {cov} (goal: at least 95 %)",
+              f"- reported determined with the truth outside the interval: "
+              f"{s['determined_outside']} of {s['determined']} determined (goal: 0)",
+              f"- accuracy where determined (clearances within 2 %, friction within 5 %): "
+              f"{s['goals_met']} of {s['goals_checked']}",
+              f"- wall per run, median / worst: {_s(s['wall_median_s'])} / "
+              f"{_s(s['wall_worst_s'])} s (goal: 60 / 120 s on 2 cores); CPU median "
+              f"{_s(s['cpu_median_s'])} s", "",
+              "| case | wall median / worst s |", "|---|---|"]
+    lines += [f"| {c} | {m:.1f} / {w:.1f} |" for c, (m, w) in s["wall_by_case"].items()]
+    return "\n".join(lines) + "\n"
+
+
+def _s(v: float | None) -> str:
+    return "-" if v is None else f"{v:.1f}"
+
+
+def flat_rows(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """One CSV row per case, seed and parameter."""
+    out = []
+    for r in rows:
+        base = {k: r.get(k) for k in ("case", "seed", "noise_stated", "columns", "status",
+                                      "chi2_dof", "warnings", "wall_s", "cpu_s")}
+        base["noise_ratio"] = ";".join(f"{c}={v:.4g}" for c, v in
+                                       (r.get("noise_ratio") or {}).items())
+        for n, p in (r["parameters"] or {"-": {}}).items():
+            out.append({**base, "parameter": n, **p})
+    return out
+
+
+def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: float,
+        command: str) -> dict[str, Any]:
+    known = case_names()
+    unknown = [c for c in cases if c not in known]
+    if unknown:
+        raise SystemExit(f"unknown case {unknown[0]!r}; cases: {', '.join(known)}")
+    out.mkdir(parents=True, exist_ok=True)
+    rows = []
+    for name in cases or known:
+        for seed in range(first_seed, first_seed + seeds):
+            row = run_one(name, seed, out, timeout_s)
+            print(f"{name} seed {seed}: {row['status']}, {row['wall_s']:.1f} s wall, "
+                  + "; ".join(f"{n} {_cell(p)}" for n, p in row["parameters"].items()),
+                  flush=True)
+            rows.append(row)
+    summary = summarise(rows)
+    (out / "cases.json").write_text(json.dumps({"command": command, "rows": rows,
+                                                "summary": summary}, indent=1) + "\n")
+    flat = flat_rows(rows)
+    fields = list(dict.fromkeys(k for row in flat for k in row))
+    with open(out / "cases.csv", "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=fields)
+        writer.writeheader()
+        writer.writerows(flat)
+    text = markdown(rows, summary, command)
+    (out / "cases.md").write_text(text)
+    print(text)
+    return summary

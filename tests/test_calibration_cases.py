@@ -1,0 +1,141 @@
+"""The calibration benchmark's cases (benchmarks/calibration_cases/): stored data, generator,
+independence of the reference simulator, and its agreement with ``jointplay simulate``.
+
+1. Every stored case is whole and current: truth.csv matches the hash in case.json, the hash
+   of the inputs (reference, robot file, case definition) is the current one, the truth and
+   scene file are what the definition gives.
+2. The generator imports nothing of jointplay.
+3. The stored motion (made by the reference at the truth) agrees with ``jointplay simulate``
+   at the truth, its tolerances tightened 1e4, over each case's whole record: tip within
+   5e-8 m and joint angles within 2e-7 rad (measured on the paper arm: 1.0e-8 m, 3.5e-8 rad
+   at the reference's rtol 1e-8; both integrators' errors are of that order). The benchmark's
+   noise is 1 µm and 5 µrad, 20x and 25x these bounds.
+4. A regeneration reproduces a stored case to 1e-9 (slow).
+5. The runner adds seeded noise of the stated size and reads a calibration's files.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import jointplay as jp
+
+CASES_DIR = Path(__file__).resolve().parents[1] / "benchmarks" / "calibration_cases"
+sys.path.insert(0, str(CASES_DIR))
+
+import cases as case_definitions  # noqa: E402
+import generate  # noqa: E402
+import runner  # noqa: E402
+
+TIP_TOLERANCE = 5e-8  # m
+ANGLE_TOLERANCE = 2e-7  # rad
+# The cases on the paper arm run in the quick tier; the other robots need a build of their own.
+PAPER_CASES = [c.name for c in case_definitions.CASES
+               if c.robot_file == case_definitions.PAPER_ROBOT]
+OTHER_CASES = [c.name for c in case_definitions.CASES
+               if c.robot_file != case_definitions.PAPER_ROBOT]
+
+
+def test_at_least_eight_cases_of_every_kind() -> None:
+    all_cases = case_definitions.CASES
+    assert len(all_cases) >= 8
+    excitations = {repr(sorted(c.torques.items())) for c in all_cases
+                   if c.robot_file == case_definitions.PAPER_ROBOT}
+    assert len(excitations) >= 4  # the default and at least three others
+    columns = {c.columns for c in all_cases}
+    assert ("tip_x", "tip_y") in columns and ("q2", "q3") in columns
+    assert any("tip_x" in c and "q2" in c for c in columns)
+    assert {c.noise_stated for c in all_cases} == {True, False}
+    assert len({c.robot_file for c in all_cases}) >= 3
+    for case in all_cases:
+        nominal = case_definitions.catalogue_values(case.robot_table(), case.free)
+        for name, value in case.true_values().items():
+            assert 0.5 * nominal[name] <= value <= 1.5 * nominal[name], (case.name, name)
+
+
+@pytest.mark.parametrize("case", case_definitions.CASES, ids=lambda c: c.name)
+def test_stored_case_is_whole_and_current(case: case_definitions.Case) -> None:
+    folder = case_definitions.DATA / case.name
+    record = json.loads((folder / "case.json").read_text())
+    text = (folder / "truth.csv").read_text()
+    assert hashlib.sha256(text.encode()).hexdigest() == record["truth_csv_sha256"]
+    assert record["input_sha256"] == generate.input_hash(case), \
+        "the case's inputs changed: rerun python benchmarks/calibration_cases/generate.py"
+    assert record["truth"] == case.true_values()
+    assert record["free"] == list(case.free) and record["columns"] == list(case.columns)
+    assert (folder / "scene.toml").read_text() == case.scene_text(folder)
+    table = np.loadtxt(folder / "truth.csv", delimiter=",", skiprows=1, ndmin=2)
+    samples = round(case.t_end / case.output_step) + 1
+    assert table.shape == (samples, 1 + len(case.columns))
+    assert np.all(np.isfinite(table))
+
+
+def test_generator_imports_no_jointplay() -> None:
+    code = ("import sys; sys.path.insert(0, sys.argv[1]); import generate, reference, cases; "
+            "bad = sorted(m for m in sys.modules if m.split('.')[0] == 'jointplay'); "
+            "print(bad); sys.exit(1 if bad else 0)")
+    done = subprocess.run([sys.executable, "-c", code, str(CASES_DIR)], capture_output=True,
+                          text=True, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def _compare_with_jointplay(name: str) -> None:
+    case = next(c for c in case_definitions.CASES if c.name == name)
+    folder = case_definitions.DATA / name
+    record, table, header = runner.load_case(name)
+    scene = jp.load_scene(folder / "scene.toml")
+    scene = scene.with_run(rtol=scene.run.rtol / 1e4, atol=scene.run.atol / 1e4)
+    result = jp.simulate(scene, parameters=record["truth"])
+    assert np.allclose(result.t, table[:, 0], rtol=0, atol=1e-12)
+    for k, column in enumerate(header[1:], start=1):
+        if column in ("tip_x", "tip_y"):
+            theirs = result.tip_position[:, ("tip_x", "tip_y").index(column)]
+            tolerance = TIP_TOLERANCE
+        else:
+            theirs = result.q[:, result.coordinate_names.index(column)]
+            tolerance = ANGLE_TOLERANCE
+        error = float(np.max(np.abs(table[:, k] - theirs)))
+        assert error <= tolerance, f"{case.name} {column}: {error:.3g} > {tolerance:g}"
+
+
+@pytest.mark.parametrize("name", PAPER_CASES)
+def test_reference_agrees_with_jointplay_on_the_paper_arm(name: str) -> None:
+    _compare_with_jointplay(name)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", OTHER_CASES)
+def test_reference_agrees_with_jointplay_on_other_robots(name: str) -> None:
+    _compare_with_jointplay(name)
+
+
+@pytest.mark.slow
+def test_regeneration_reproduces_a_stored_case(tmp_path: Path) -> None:
+    case = next(c for c in case_definitions.CASES if c.name == "paper-default-tip")
+    generate.generate(case, root=tmp_path)
+    fresh = np.loadtxt(tmp_path / case.name / "truth.csv", delimiter=",", skiprows=1)
+    stored = np.loadtxt(case_definitions.DATA / case.name / "truth.csv", delimiter=",",
+                        skiprows=1)
+    # Same code and inputs: equal up to the C compiler's rounding, far below the noise.
+    assert np.max(np.abs(fresh - stored)) <= 1e-9
+
+
+def test_runner_noise_is_seeded_and_of_the_stated_size(tmp_path: Path) -> None:
+    record, table, header = runner.load_case("paper-exchange-trap")
+    paths = [tmp_path / f"{k}.csv" for k in range(3)]
+    for path, seed in zip(paths, (0, 0, 1), strict=True):
+        runner.noisy_csv(record, table, header, seed, path)
+    a, b, c = (np.loadtxt(p, delimiter=",", skiprows=1) for p in paths)
+    assert np.array_equal(a, b) and not np.array_equal(a, c)
+    for k, column in enumerate(header[1:], start=1):
+        noise = a[:, k] - table[:, k]
+        # 2001 samples: the sample std is within 10 % of the truth (5 sigma).
+        assert abs(np.std(noise) / record["noise"][column] - 1) < 0.1
+    assert np.array_equal(a[:, 0], table[:, 0])
