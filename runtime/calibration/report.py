@@ -113,7 +113,8 @@ def _fit_figure(result: CalibrationResult, path: Path) -> None:
         ax.plot(measured.t, measured.values[:, k], ".", ms=2, color="0.5", label="measured",
                 rasterized=True)
         ax.plot(measured.t, result.fitted[:, k], "-", lw=1.0, color="C0", label="fitted")
-        ax.set_ylabel(f"{column} ({'m' if column.startswith('tip') else 'rad'})")
+        unit = result.settings.get("units", {}).get(column)  # a mechanism's outputs
+        ax.set_ylabel(f"{column} ({unit or ('m' if column.startswith('tip') else 'rad')})")
     axes[0, 0].legend(loc="best", fontsize=8)
     axes[-1, 0].set_xlabel("time (s)")
     fig.suptitle(f"{result.scene_name}: measured and fitted")

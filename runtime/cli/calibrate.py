@@ -88,7 +88,12 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 def cmd_calibrate(args: argparse.Namespace) -> int:
     from jointplay.calibration.api import CalibrationOptions, prepare, run
     from jointplay.calibration.report import output_plan, write_report
+    from jointplay.mechanism.reading import is_mechanism_file
 
+    if args.scene and is_mechanism_file(args.scene):
+        from jointplay.cli.calibrate_mechanism import cmd_calibrate_mechanism
+
+        return cmd_calibrate_mechanism(args)
     scene = scene_from_args(args)
     out = Path(args.out)
     check_writable_dir(out, "--out")
