@@ -85,7 +85,8 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
               f"{len(result.starts)} local fits",
               "- Jacobian: " + ", ".join(f"{k}: {v}" for k, v in result.jacobian_source.items()),
               f"- runs at rtol {result.settings['rtol']:g}, atol {result.settings['atol']:g}",
-              f"- search: {len(result.stages)} fits over growing windows"
+              f"- search: {result.settings['search']}" if "search" in result.settings
+              else f"- search: {len(result.stages)} fits over growing windows"
               + (f" from a grid of {result.grid.simulations} runs" if result.grid else "")
               + " (`continuation` and `grid` in `calibration.json`)", "",
               "The 95 % intervals are ±1.96 standard deviations of the linearised "

@@ -406,7 +406,9 @@ def _result(problem: MechanismProblem, predictor: MechanismPredictor, optimum: O
                   "output_step": run.output_step,
                   **{k: v for k, v in dataclasses.asdict(problem.options).items()
                      if k not in ARMS_ONLY},
-                  "search": "multi-start: a local fit from every start",
+                  "search": f"multi-start: a local fit from the start and from each of "
+                            f"{problem.options.starts - 1} points within "
+                            f"±{problem.options.spread:g} of it (relative)",
                   "profile": "others fixed at their estimates",
                   "units": {c: _unit(c, units) for c in problem.measured.columns}},
         fit_explains_data=explains, profiles=profiles)
