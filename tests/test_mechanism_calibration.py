@@ -146,3 +146,21 @@ def test_friction_of_a_frictionless_mechanism_is_refused() -> None:
     data = Measured("m", np.array([0.0, 1e-5, 2e-5]), ("guide.position",), np.zeros((3, 1)))
     with pytest.raises(DescriptionError, match=r"free friction\.mu: .*friction is off"):
         jp.calibrate(scene, data, ["friction.mu"])
+
+
+def test_a_results_file_gives_the_coordinates_and_eccentricities(
+        scene_file: Path, tmp_path: Path) -> None:
+    from jointplay.mechanism.calibration import prepare_mechanism
+
+    run = tmp_path / "run.h5"
+    assert main(["simulate", str(scene_file), "--no-verify", "--quiet", "--out",
+                 str(run)]) == 0
+    problem = prepare_mechanism(load_mechanism_scene(scene_file), run, ["friction.mu"],
+                                noise=NOISE)
+    assert problem.measured.columns == ("guide.position", "crank_pin.angle", "slider_pin.ex",
+                                        "slider_pin.ey")
+    assert problem.measured.t.size == 101
+    other = tmp_path / "other.h5"
+    other.write_text("not HDF5", encoding="utf-8")
+    with pytest.raises(DescriptionError, match="not a mechanism results file"):
+        prepare_mechanism(load_mechanism_scene(scene_file), other, ["friction.mu"])
