@@ -154,7 +154,7 @@ def prepare(scene: Scene | MechanismScene, measured: str | Path | Measured,
     if _is_mechanism(scene):  # a mechanism: jointplay.mechanism.calibration
         from jointplay.mechanism.calibration import prepare_mechanism
 
-        return prepare_mechanism(scene, measured, free, noise=noise,
+        return prepare_mechanism(scene, measured, free, noise=noise,  # type: ignore[arg-type, return-value]
                                  start=start, options=options, model=model)
     scene = cast(Scene, scene)
     options = options or CalibrationOptions()
@@ -205,7 +205,7 @@ def run(problem: Problem) -> CalibrationResult:
     if _is_mechanism(problem.scene):
         from jointplay.mechanism.calibration import run_mechanism
 
-        return run_mechanism(problem)
+        return run_mechanism(problem)  # type: ignore[arg-type]
     with on_cluster(problem.options.scheduler):
         return _run(problem)
 

@@ -104,7 +104,7 @@ def prepare_mechanism(scene: MechanismScene, measured: str | Path | Measured,
             else read_mechanism_measured(measured, model))
     if isinstance(measured, Measured):
         _check_columns(data, model)
-    data = on_output_grid(checked_for_scene(data, scene, parameters.size), scene)
+    data = on_output_grid(checked_for_scene(data, scene, parameters.size), scene)  # type: ignore[arg-type]
     sigma = noise_levels(noise, data)
     spread = None
     if sigma is None:
@@ -260,12 +260,12 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
     predictor = MechanismPredictor(problem.scene, problem.model, free, problem.measured)
     starts = starts_around(free, opts.starts, opts.spread, opts.seed)
     scan = Scan(opts.scan_points, opts.spread, opts.refine)
-    optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,
+    optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,  # type: ignore[arg-type]
                                 leading=len(starts), workers=opts.workers)
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     profiles, profile_runs, lower = _profiles(predictor, optimum, spread, opts)
     if lower is not None:  # a profile crossed a lower basin: fit from there, once
-        _, more = multi_start(predictor, problem.sigma, lower[None, :],
+        _, more = multi_start(predictor, problem.sigma, lower[None, :],  # type: ignore[arg-type]
                               opts.max_evaluations, stop_early=False, settle=True)
         optimum = dataclasses.replace(optimum, starts=optimum.starts + tuple(more))
         if not more[0].failed and more[0].chi2 < _chi2(optimum):
@@ -333,7 +333,7 @@ def _profiles(predictor: MechanismPredictor, optimum: Optimum, spread: Uncertain
                                  min(best[k] + half, free.upper[k]), points))
     every = [np.where(np.arange(free.size) == k, value, best)
              for k, grid in enumerate(grids) for value in grid]
-    values, runs = chi2_at_points(predictor, optimum.sigma, every,
+    values, runs = chi2_at_points(predictor, optimum.sigma, every,  # type: ignore[arg-type]
                                   opts.workers)
     out: dict[str, dict[str, list[float]]] = {}
     for k, name in enumerate(free.names):
