@@ -6,6 +6,7 @@ nothing written."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
@@ -164,3 +165,31 @@ def test_a_results_file_gives_the_coordinates_and_eccentricities(
     other.write_text("not HDF5", encoding="utf-8")
     with pytest.raises(DescriptionError, match="not a mechanism results file"):
         prepare_mechanism(load_mechanism_scene(scene_file), other, ["friction.mu"])
+
+
+def test_another_starts_minimum_within_the_threshold_leaves_the_parameter_undetermined(
+        ) -> None:
+    """The verdict's glue, without runs: a second start ending 10 standard deviations away,
+    chi² 1 above the best, lies inside the 95 % profile-likelihood interval; the interval
+    spans it and the parameter is not determined. Profile points within the threshold widen
+    the interval too; one 4 above the best does not."""
+    from jointplay.calibration.basins import widened
+    from jointplay.calibration.fit import Optimum, Start
+    from jointplay.calibration.uncertainty import uncertainty
+    from jointplay.mechanism.calibration import _basins
+
+    residuals = np.full(10, 1.0)  # chi² 10
+    jacobian = np.full((10, 1), 10.0 / np.sqrt(10.0))  # std 0.1
+    starts = (Start((1.0,), (1.0,), 10.0, 5, "best"), Start((3.0,), (2.0,), 11.0, 5, "other"))
+    optimum = Optimum(np.array([1.0]), np.ones(1), residuals, jacobian, starts)
+    spread = uncertainty(jacobian, optimum.values, np.array([0.0]), np.array([10.0]), ("p",))
+    assert spread.std[0] == pytest.approx(0.1)
+    found = _basins(optimum, spread, {})
+    low, high, determined, warnings = widened(spread, found, ("p",))
+    assert not determined[0] and low[0] < 1.0 - 0.19 and high[0] >= 2.0
+    assert "other minimum" in warnings[0]
+    alone = dataclasses.replace(optimum, starts=starts[:1])
+    profiles = {"p": {"value": [0.5, 1.25, 1.5], "chi2": [14.5, 12.0, 14.0]}}
+    low, high, determined, _ = widened(spread, _basins(alone, spread, profiles), ("p",))
+    assert determined[0] and high[0] == 1.25 and low[0] == pytest.approx(1.0 - 1.96 * 0.1,
+                                                                       rel=1e-3)
