@@ -18,10 +18,12 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     scene_argument(p)
     p.add_argument("--measured", required=True, metavar="FILE",
                    help="CSV with a header: time (s) and any of tip_x, tip_y (m), q2, ... "
-                        "(rad); or a results file (.h5)")
+                        "(rad); or a results file (.h5). For a mechanism file: time and any "
+                        "columns jointplay simulate --csv writes (guide.position, ...)")
     p.add_argument("--free", required=True, metavar="NAME[,NAME...]",
                    help="parameters to estimate: any robot parameter by name (friction.mu, "
-                        "link2.mass, ...) or jointN.clearance (bearing radius held)")
+                        "link2.mass, ...) or jointN.clearance (bearing radius held); for a "
+                        "mechanism, JOINT.clearance (slider_pin.clearance)")
     p.add_argument("--out", required=True, metavar="DIR",
                    help="folder for calibration.json, report.md, fit.png, residuals.png, "
                         "profiles.png (written all or none)")
