@@ -212,13 +212,15 @@ def test_a_sweep_of_a_mechanism(tmp_path: Path, capsys: pytest.CaptureFixture[st
     assert not (tmp_path / "bad").exists()
 
 
-def test_commands_for_arms_only_refuse_a_mechanism(tmp_path: Path,
-                                                   capsys: pytest.CaptureFixture[str]) -> None:
+def test_calibrate_checks_a_mechanisms_outputs_at_the_door(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """An arm's joint angle is no output of the slider-crank (tests/test_mechanism_calibration
+    calibrates one)."""
     measured = tmp_path / "measured.csv"
     measured.write_text("time,q2\n0,0\n", encoding="utf-8")
     assert main(["calibrate", str(SCENE), "--measured", str(measured), "--free",
-                 "friction.mu", "--out", str(tmp_path / "cal")]) == 2
-    assert "mechanism file" in capsys.readouterr().err
+                 "rod.mass", "--out", str(tmp_path / "cal")]) == 2
+    assert "q2: is not an output of this mechanism" in capsys.readouterr().err
     assert not (tmp_path / "cal").exists()
 
 

@@ -7,7 +7,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -40,6 +40,9 @@ from jointplay.calibration.workers import on_cluster
 from jointplay.common.errors import DescriptionError
 from jointplay.common.limits import MAX_CALIBRATION_RUNS
 from jointplay.scene.definition import Scene
+
+if TYPE_CHECKING:
+    from jointplay.mechanism.description import MechanismScene
 
 VALLEY_CHECK_REACH = 0.2
 """How far the valley check's line reaches either side of the best fit, in grid spacings."""
@@ -212,13 +215,20 @@ class Problem:
     variance (None: stated)."""
 
 
-def prepare(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
+def prepare(scene: Scene | MechanismScene, measured: str | Path | Measured,
+            free: Sequence[str], *,
             noise: float | Mapping[str, float] | None = None,
             start: Mapping[str, float] | None = None,
             options: CalibrationOptions | None = None, model: Any = None) -> Problem:
     """Check every input (raises :class:`DescriptionError` naming the file or the name)."""
     from jointplay.sim import load_scene_model
 
+    if _is_mechanism(scene):  # a mechanism: jointplay.mechanism.calibration
+        from jointplay.mechanism.calibration import prepare_mechanism
+
+        return prepare_mechanism(scene, measured, free, noise=noise,  # type: ignore[arg-type, return-value]
+                                 start=start, options=options, model=model)
+    scene = cast(Scene, scene)
     options = options or CalibrationOptions()
     model = model or load_scene_model(scene)
     names = [free] if isinstance(free, str) else list(free)
@@ -233,7 +243,8 @@ def prepare(scene: Scene, measured: str | Path | Measured, free: Sequence[str], 
                    spread)
 
 
-def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str], *,
+def calibrate(scene: Scene | MechanismScene, measured: str | Path | Measured,
+              free: Sequence[str], *,
               noise: float | Mapping[str, float] | None = None,
               start: Mapping[str, float] | None = None,
               options: CalibrationOptions | None = None, model: Any = None
@@ -246,8 +257,10 @@ def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str]
 
     Parameters
     ----------
-    scene : Scene
+    scene : Scene or MechanismScene
         The scene that was measured: its torques, initial state and the robot's other numbers.
+        A mechanism scene is calibrated on its outputs
+        (:mod:`jointplay.mechanism.calibration`).
     measured : str, pathlib.Path or Measured
         A CSV path (``time``, and any of ``tip_x``, ``tip_y``, ``q2``, ...), a results file
         (.h5) or a :class:`~jointplay.calibration.Measured`.
@@ -303,9 +316,19 @@ def calibrate(scene: Scene, measured: str | Path | Measured, free: Sequence[str]
     return run(problem)
 
 
+def _is_mechanism(scene: Any) -> bool:
+    from jointplay.mechanism.description import MechanismScene
+
+    return isinstance(scene, MechanismScene)
+
+
 def run(problem: Problem) -> CalibrationResult:
     """Fit a prepared problem, then state the estimates' uncertainty and the cost profiles
     (the pieces on the Dask cluster at ``options.scheduler``, if given)."""
+    if _is_mechanism(problem.scene):
+        from jointplay.mechanism.calibration import run_mechanism
+
+        return run_mechanism(problem)  # type: ignore[arg-type]
     with on_cluster(problem.options.scheduler):
         return _run(problem)
 

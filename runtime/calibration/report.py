@@ -85,7 +85,8 @@ def report_text(result: CalibrationResult, command: str = "") -> str:
               f"{len(result.starts)} local fits",
               "- Jacobian: " + ", ".join(f"{k}: {v}" for k, v in result.jacobian_source.items()),
               f"- runs at rtol {result.settings['rtol']:g}, atol {result.settings['atol']:g}",
-              f"- search: {len(result.stages)} fits over growing windows"
+              f"- search: {result.settings['search']}" if "search" in result.settings
+              else f"- search: {len(result.stages)} fits over growing windows"
               + (f" from a grid of {result.grid.simulations} runs" if result.grid else "")
               + " (`continuation` and `grid` in `calibration.json`)", "",
               "The 95 % intervals are ±1.96 standard deviations of the linearised "
@@ -113,7 +114,8 @@ def _fit_figure(result: CalibrationResult, path: Path) -> None:
         ax.plot(measured.t, measured.values[:, k], ".", ms=2, color="0.5", label="measured",
                 rasterized=True)
         ax.plot(measured.t, result.fitted[:, k], "-", lw=1.0, color="C0", label="fitted")
-        ax.set_ylabel(f"{column} ({'m' if column.startswith('tip') else 'rad'})")
+        unit = result.settings.get("units", {}).get(column)  # a mechanism's outputs
+        ax.set_ylabel(f"{column} ({unit or ('m' if column.startswith('tip') else 'rad')})")
     axes[0, 0].legend(loc="best", fontsize=8)
     axes[-1, 0].set_xlabel("time (s)")
     fig.suptitle(f"{result.scene_name}: measured and fitted")

@@ -19,10 +19,12 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     scene_argument(p)
     p.add_argument("--measured", required=True, metavar="FILE",
                    help="CSV with a header: time (s) and any of tip_x, tip_y (m), q2, ... "
-                        "(rad); or a results file (.h5)")
+                        "(rad); or a results file (.h5). For a mechanism file: time and any "
+                        "columns jointplay simulate --csv writes (guide.position, ...)")
     p.add_argument("--free", required=True, metavar="NAME[,NAME...]",
                    help="parameters to estimate: any robot parameter by name (friction.mu, "
-                        "link2.mass, ...) or jointN.clearance (bearing radius held)")
+                        "link2.mass, ...) or jointN.clearance (bearing radius held); for a "
+                        "mechanism, JOINT.clearance (slider_pin.clearance)")
     p.add_argument("--out", required=True, metavar="DIR",
                    help="folder for calibration.json, report.md, fit.png, residuals.png, "
                         "profiles.png (written all or none)")
@@ -89,8 +91,13 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 def cmd_calibrate(args: argparse.Namespace) -> int:
     from jointplay.calibration.api import CalibrationOptions, prepare, run
     from jointplay.calibration.report import output_plan, write_report
+    from jointplay.mechanism.reading import is_mechanism_file
 
     check_output_name("--out", args.out, "folder")
+    if args.scene and is_mechanism_file(args.scene):
+        from jointplay.cli.calibrate_mechanism import cmd_calibrate_mechanism
+
+        return cmd_calibrate_mechanism(args)
     scene = scene_from_args(args)
     out = Path(args.out)
     check_writable_dir(out, "--out")

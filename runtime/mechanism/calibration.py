@@ -1,0 +1,427 @@
+"""``jointplay.calibrate`` on a mechanism: its parameters estimated from measured outputs.
+
+The same weighted least squares as the serial arms' (:mod:`jointplay.calibration.fit`),
+the same uncertainty, residual check, result and report; what differs is the search. The
+arms' global stage (a grid of the clearances, a continuation over growing windows, valley
+lines) is tuned to their long records; a mechanism's run is a fraction of a second, so the
+search here is a multi-start: a local fit from the start and from each point of a seeded
+Latin hypercube within ±``spread`` of it, every one fitted, the lowest kept. The Jacobian
+is taken by central differences of whole runs (two per free parameter; the mechanism's
+compiled sensitivities do not exist).
+
+What the verdicts rest on: the other starts' minima and the cost profiles' points (one run
+per point along each parameter, the others held) are minima and points of the same cost;
+any of them within chi² + 3.84 of the best lies inside the 95 % profile-likelihood interval
+and widens it, and a parameter in which another start's minimum lies there, outside the
+best's own interval, is not determined (:func:`jointplay.calibration.basins.widened`). A fit
+whose residuals are not the noise determines nothing, as for the arms.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointplay.calibration.api import CalibrationOptions
+from jointplay.calibration.basins import Basins, widened
+from jointplay.calibration.basins import threshold as basin_threshold
+from jointplay.calibration.fit import (
+    Optimum,
+    Scan,
+    Start,
+    least_squares_fit,
+    multi_start,
+    residual_statistics,
+    starts_around,
+    timed,
+)
+from jointplay.calibration.measured import Measured, checked_for_scene, grid_indices, noise_levels
+from jointplay.calibration.noise import column_noise, residual_check
+from jointplay.calibration.parameters import FreeParameters
+from jointplay.calibration.predict import (
+    FD_RELATIVE_STEP,
+    Counter,
+    TrialFailed,
+    chi2_at_points,
+    whitened,
+)
+from jointplay.calibration.profiles import PROFILE_SIGMAS, UNDETERMINED_SPAN
+from jointplay.calibration.result import CalibrationResult, Estimate
+from jointplay.calibration.uncertainty import Uncertainty, uncertainty
+from jointplay.common.errors import DescriptionError
+from jointplay.mechanism.calibration_inputs import (
+    ACCELERATION,
+    ENERGIES,
+    RATE,
+    clearance_joint,
+    mechanism_free_parameters,
+    on_output_grid,
+    read_mechanism_measured,
+)
+from jointplay.mechanism.description import MechanismScene
+from jointplay.mechanism.model import MechanismModel, model_for
+
+ARMS_ONLY = ("horizon_first", "horizon_growth", "grid_window", "grid_points",
+             "grid_candidates", "window_looser", "valley_window", "valley_points",
+             "valley_keep", "grid_line_points", "valley_check_points", "basins")
+"""Options of the arms' global stage and checks, which a mechanism's search does not run."""
+LOWER_ELSEWHERE = 1.0
+"""A profile's point this much below the best chi² is another, lower basin: a local fit
+starts there."""
+
+
+@dataclass(frozen=True)
+class MechanismProblem:
+    """A checked calibration problem of a mechanism: everything validated, nothing run."""
+
+    scene: MechanismScene
+    model: MechanismModel
+    measured: Measured
+    free: FreeParameters
+    sigma: np.ndarray
+    options: CalibrationOptions
+    noise_spread: np.ndarray | None = None
+
+
+def prepare_mechanism(scene: MechanismScene, measured: str | Path | Measured,
+                      free: Sequence[str], *, noise: float | Mapping[str, float] | None = None,
+                      start: Mapping[str, float] | None = None,
+                      options: CalibrationOptions | None = None,
+                      model: MechanismModel | None = None) -> MechanismProblem:
+    """Check every input (raises :class:`DescriptionError` naming the file or the name)."""
+    options = options or CalibrationOptions()
+    _check_options(options)
+    model = model or model_for(scene.mechanism)
+    names = [free] if isinstance(free, str) else list(free)
+    parameters = mechanism_free_parameters(names, scene, model, start)
+    data = (measured if isinstance(measured, Measured)
+            else read_mechanism_measured(measured, model))
+    if isinstance(measured, Measured):
+        _check_columns(data, model)
+    data = on_output_grid(checked_for_scene(data, scene, parameters.size), scene)  # type: ignore[arg-type]
+    sigma = noise_levels(noise, data)
+    spread = None
+    if sigma is None:
+        sigma, spread = column_noise(data)
+    return MechanismProblem(_fit_scene(scene, data, options), model, data, parameters, sigma,
+                            options, spread)
+
+
+def calibrate_mechanism(scene: MechanismScene, measured: str | Path | Measured,
+                        free: Sequence[str], *,
+                        noise: float | Mapping[str, float] | None = None,
+                        start: Mapping[str, float] | None = None,
+                        options: CalibrationOptions | None = None,
+                        model: MechanismModel | None = None) -> CalibrationResult:
+    """Estimate the ``free`` parameters of a mechanism from ``measured`` outputs (see the
+    module docstring and :func:`jointplay.calibrate`)."""
+    return run_mechanism(prepare_mechanism(scene, measured, free, noise=noise, start=start,
+                                           options=options, model=model))
+
+
+def _check_options(options: CalibrationOptions) -> None:
+    default = CalibrationOptions()
+    for name in ARMS_ONLY:
+        if getattr(options, name) != getattr(default, name):
+            raise DescriptionError(f"options.{name}", "belongs to the serial arms' global "
+                                   "stage and checks; a mechanism is fitted by a multi-start "
+                                   "(options.starts, options.spread): leave it at its default")
+
+
+def _check_columns(measured: Measured, model: MechanismModel) -> None:
+    from jointplay.mechanism.calibration_inputs import output_columns
+
+    allowed = output_columns(model)
+    for column in measured.columns:
+        if column not in allowed:
+            raise DescriptionError(column, "is not an output of this mechanism; allowed: "
+                                   + ", ".join(allowed), measured.source)
+
+
+def _fit_scene(scene: MechanismScene, measured: Measured, options: CalibrationOptions
+               ) -> MechanismScene:
+    """The scene the fit runs: tolerances tightened, the run ending at the last measured
+    sample."""
+    run = scene.run
+    steps = max(1, round(measured.t[-1] / run.output_step))
+    return scene.with_run(t_end=min(run.t_end, steps * run.output_step),
+                          rtol=run.rtol / options.tighten, atol=run.atol / options.tighten)
+
+
+class MechanismPredictor:
+    """``outputs(x)`` (n_t, n_columns) and ``jacobian(x)`` (central differences) of the
+    measured columns at free-parameter values ``x``; the interface of
+    :class:`jointplay.calibration.predict.Predictor`, which the fit asks of it."""
+
+    compiled: tuple[str, ...] = ()
+
+    def __init__(self, scene: MechanismScene, model: MechanismModel, free: FreeParameters,
+                 measured: Measured) -> None:
+        self.scene = scene
+        self.model = model
+        self.free = free
+        self.measured = measured
+        self.counter = Counter()
+        grid = grid_indices(measured.t, scene.run.output_step)
+        assert grid is not None  # checked at the door (on_output_grid)
+        self._grid = grid
+        self._cache: dict[bytes, np.ndarray] = {}
+
+    def __getstate__(self) -> dict[str, Any]:
+        # For a piece sent to a Dask worker: the compiled model does not pickle
+        state = dict(self.__dict__)
+        state["model"], state["_cache"] = None, {}
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        self.__dict__.update(state)
+        self.model = model_for(self.scene.mechanism)
+
+    def outputs(self, x: np.ndarray, *, with_jacobian: bool = True) -> np.ndarray:
+        key = np.asarray(x, dtype=float).tobytes()
+        if key not in self._cache:
+            self._cache.clear()  # a fit asks for one point at a time
+            self._cache[key] = self._run(np.asarray(x, dtype=float))
+        return self._cache[key]
+
+    def jacobian(self, x: np.ndarray) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        jac = np.zeros((*self.outputs(x).shape, self.free.size))
+        for k in range(self.free.size):
+            h = FD_RELATIVE_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
+            up, down = x.copy(), x.copy()
+            up[k] = min(x[k] + h, self.free.upper[k])
+            down[k] = max(x[k] - h, self.free.lower[k])
+            jac[:, :, k] = (self._run(up) - self._run(down)) / (up[k] - down[k])
+        return jac
+
+    def values(self, x: np.ndarray) -> dict[str, float]:
+        """The mechanism's parameters at ``x`` (a clearance as its journal's radius)."""
+        out: dict[str, float] = {}
+        joints = {j.name: j for j in self.scene.mechanism.joints}
+        for name, value in zip(self.free.names, x, strict=True):
+            joint = clearance_joint(name, self.scene)
+            if joint is None:
+                out[name] = float(value)
+            else:
+                out[f"{joint}.journal_radius"] = (joints[joint].clearance["bearing_radius"]
+                                                  - float(value))
+        return out
+
+    def _run(self, x: np.ndarray) -> np.ndarray:
+        from jointplay.common.errors import SimulationError
+        from jointplay.mechanism.simulate import simulate_mechanism
+
+        described = ", ".join(f"{n} = {v:.6g}" for n, v in zip(self.free.names, x,
+                                                                 strict=True))
+        try:
+            scene = self.scene.with_mechanism(self.scene.mechanism.with_values(self.values(x)))
+            result = simulate_mechanism(scene, model=self.model)
+        except (SimulationError, DescriptionError) as err:
+            raise TrialFailed(f"the run at {described} stopped: {err}") from None
+        self.counter.add("plain")
+        return np.column_stack([_column(result, c)[self._grid] for c in self.measured.columns])
+
+
+def _column(result: Any, name: str) -> np.ndarray:
+    """One output of a mechanism run by its ``simulate --csv`` name."""
+    if name in ENERGIES:
+        return np.asarray(getattr(result, name))
+    if name.startswith(ACCELERATION):
+        return np.asarray(result.coordinate_acceleration(name.removeprefix(ACCELERATION)))
+    if name.startswith(RATE):
+        return np.asarray(result.rate(name.removeprefix(RATE)))
+    if name in result.coordinates:
+        return np.asarray(result.coordinate(name))
+    joint, _, what = name.rpartition(".")
+    j = result.cut_joints.index(joint)
+    if what == "normal_force":
+        return np.asarray(result.normal_force[:, j])
+    return np.asarray(result.eccentricity[:, j, 0 if what == "ex" else 1])
+
+
+def run_mechanism(problem: MechanismProblem) -> CalibrationResult:
+    """Fit a prepared problem (see the module docstring)."""
+    from jointplay.calibration.workers import on_cluster
+
+    with on_cluster(problem.options.scheduler):
+        return _run(problem)
+
+
+def _run(problem: MechanismProblem) -> CalibrationResult:
+    wall0, cpu0 = timed()
+    opts, free = problem.options, problem.free
+    predictor = MechanismPredictor(problem.scene, problem.model, free, problem.measured)
+    starts = starts_around(free, opts.starts, opts.spread, opts.seed)
+    scan = Scan(opts.scan_points, opts.spread, opts.refine)
+    optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,  # type: ignore[arg-type]
+                                leading=len(starts), workers=opts.workers)
+    spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
+    profiles, profile_runs, lower = _profiles(predictor, optimum, spread, opts)
+    if lower is not None:  # a profile crossed a lower basin: fit from there, once
+        _, more = multi_start(predictor, problem.sigma, lower[None, :],  # type: ignore[arg-type]
+                              opts.max_evaluations, stop_early=False, settle=True)
+        optimum = dataclasses.replace(optimum, starts=optimum.starts + tuple(more))
+        if not more[0].failed and more[0].chi2 < _chi2(optimum):
+            optimum = _moved_to(predictor, optimum, np.array(more[0].end))
+            spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
+                                 free.names)
+            profiles, runs, _ = _profiles(predictor, optimum, spread, opts)
+            profile_runs += runs
+    found = _basins(optimum, spread, profiles)
+    low, high, determined, rival_warnings = widened(spread, found, free.names)
+    spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
+                                 warnings=spread.warnings + tuple(rival_warnings))
+    fitted = predictor.outputs(optimum.values)
+    stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
+    misfit = residual_check(fitted - problem.measured.values, optimum.sigma, stats["dof"],
+                            problem.noise_spread, problem.measured.columns)
+    warnings = list(spread.warnings)
+    if misfit is not None:
+        # nothing is determined: the intervals span the box the search covered
+        box = starts_around(free, 1, opts.spread, 0)[0]
+        width = np.where(box != 0, opts.spread * np.abs(box), opts.spread)
+        spread = dataclasses.replace(
+            spread, low95=np.minimum(spread.low95, np.maximum(box - width, free.lower)),
+            high95=np.maximum(spread.high95, np.minimum(box + width, free.upper)),
+            determined=np.zeros(free.size, dtype=bool))
+        warnings = [f"nothing is determined: {misfit}; each interval spans the box the "
+                    f"search covered (±{opts.spread:g} of the start). State the noise if "
+                    "you know it, or free what the model may lack"]
+    warnings += [f"{name} ended on its physical bound ({optimum.values[k]:.6g}): the optimum "
+                 "may lie outside the range the model accepts"
+                 for k, name in enumerate(free.names)
+                 if not free.lower[k] < optimum.values[k] < free.upper[k]]
+    wall1, cpu1 = timed()
+    return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
+                   profile_runs, misfit is None, (wall1 - wall0, cpu1 - cpu0))
+
+
+def _chi2(optimum: Optimum) -> float:
+    return float(np.sum(optimum.residuals**2))
+
+
+def _moved_to(predictor: MechanismPredictor, optimum: Optimum, x: np.ndarray) -> Optimum:
+    residuals = whitened(predictor.outputs(x) - predictor.measured.values, optimum.sigma)
+    jacobian = whitened(predictor.jacobian(x), optimum.sigma)
+    return Optimum(x, optimum.sigma, residuals, jacobian, optimum.starts)
+
+
+def _profiles(predictor: MechanismPredictor, optimum: Optimum, spread: Uncertainty,
+              opts: CalibrationOptions
+              ) -> tuple[dict[str, dict[str, list[float]]], int, np.ndarray | None]:
+    """chi² along each parameter, the others held at the best fit (the arms' form:
+    :func:`jointplay.calibration.profiles.cost_profiles`), the runs, and the lowest point
+    found where it lies LOWER_ELSEWHERE below the best (else None)."""
+    free, best = predictor.free, optimum.values
+    points = opts.profile_points
+    if points == 0:
+        return {}, 0, None
+    chi2_min = _chi2(optimum)
+    jtj = np.sum(optimum.jacobian**2, axis=0)
+    grids = []
+    for k in range(free.size):
+        half = (PROFILE_SIGMAS * float(spread.std[k]) if math.isfinite(spread.std[k])
+                else UNDETERMINED_SPAN * (abs(best[k]) or 1.0))
+        grids.append(np.linspace(max(best[k] - half, free.lower[k]),
+                                 min(best[k] + half, free.upper[k]), points))
+    every = [np.where(np.arange(free.size) == k, value, best)
+             for k, grid in enumerate(grids) for value in grid]
+    values, runs = chi2_at_points(predictor, optimum.sigma, every,  # type: ignore[arg-type]
+                                  opts.workers)
+    out: dict[str, dict[str, list[float]]] = {}
+    for k, name in enumerate(free.names):
+        held = 1.0 / math.sqrt(jtj[k]) if jtj[k] > 0 else math.inf
+        out[name] = {"value": grids[k].tolist(),
+                     "chi2": [v if math.isfinite(v) else math.nan
+                              for v in values[k * points:(k + 1) * points]],
+                     "quadratic": (chi2_min + ((grids[k] - best[k]) / held) ** 2).tolist(),
+                     "estimate": [float(best[k])], "chi2_min": [chi2_min]}
+    finite = [(v, x) for v, x in zip(values, every, strict=True) if math.isfinite(v)]
+    lowest = min(finite, key=lambda f: f[0]) if finite else None
+    lower = lowest[1] if lowest and lowest[0] < chi2_min - LOWER_ELSEWHERE else None
+    return out, runs, lower
+
+
+def _basins(optimum: Optimum, spread: Uncertainty,
+            profiles: dict[str, dict[str, list[float]]]) -> Basins:
+    """What the search saw of the cost beside the best fit: the other starts' minima within
+    the threshold (each basin once: more than half a standard deviation from those counted)
+    and the profiles' points within it."""
+    limit = basin_threshold()
+    best, best_chi2 = optimum.values, _chi2(optimum)
+    std = np.sqrt(np.clip(np.diag(spread.covariance), 0.0, None))
+    std = np.where(np.isfinite(std), std, 0.0)
+    kept, rivals = [best], []
+    for s in sorted(optimum.starts, key=lambda s: s.chi2):
+        x = np.asarray(s.end, dtype=float)
+        if s.failed or not s.chi2 <= best_chi2 + limit:
+            continue
+        if any(np.all(np.abs(x - other) <= 0.5 * std) for other in kept):
+            continue
+        kept.append(x)
+        rivals.append(Start(tuple(best), tuple(x), s.chi2, 0, "another start's minimum"))
+    region = []
+    names = list(profiles)
+    for k, name in enumerate(names):
+        for value, chi2 in zip(profiles[name]["value"], profiles[name]["chi2"], strict=True):
+            if math.isfinite(chi2) and chi2 <= best_chi2 + limit:
+                region.append(np.where(np.arange(len(names)) == k, value, best))
+    return Basins(best, best_chi2, tuple(rivals), limit, (), 0,
+                  np.array(region).reshape(-1, best.size))
+
+
+def _result(problem: MechanismProblem, predictor: MechanismPredictor, optimum: Optimum,
+            spread: Uncertainty, fitted: np.ndarray, stats: dict[str, Any],
+            warnings: list[str], profiles: dict[str, dict[str, list[float]]],
+            profile_runs: int, explains: bool, seconds: tuple[float, float]
+            ) -> CalibrationResult:
+    free = problem.free
+    determined = spread.determined & explains
+    estimates = {
+        name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
+                       float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
+                       bool(determined[k]))
+        for k, name in enumerate(free.names)}
+    run = problem.scene.run
+    units = dict(zip(problem.model.coordinates, problem.model.units, strict=True))
+    return CalibrationResult(
+        scene_name=problem.scene.name, measured=problem.measured, estimates=estimates,
+        covariance=spread.covariance, correlation=spread.correlation,
+        condition_number=spread.condition_number, residuals=stats,
+        noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
+        noise_stated=problem.noise_spread is None, fitted=fitted, starts=optimum.starts,
+        simulations=predictor.counter.simulations + profile_runs,
+        simulations_by_kind={"fits": predictor.counter.simulations,
+                             "cost profiles": profile_runs},
+        jacobian_source={name: "central differences" for name in free.names},
+        wall_time_s=seconds[0], cpu_time_s=seconds[1], warnings=tuple(warnings),
+        settings={"rtol": run.rtol, "atol": run.atol, "t_end": run.t_end,
+                  "output_step": run.output_step,
+                  **{k: v for k, v in dataclasses.asdict(problem.options).items()
+                     if k not in ARMS_ONLY},
+                  "search": f"multi-start: a local fit from the start and from each of "
+                            f"{problem.options.starts - 1} points within "
+                            f"±{problem.options.spread:g} of it (relative)",
+                  "profile": "others fixed at their estimates",
+                  "units": {c: _unit(c, units) for c in problem.measured.columns}},
+        fit_explains_data=explains, profiles=profiles)
+
+
+def _unit(column: str, units: dict[str, str]) -> str:
+    base = column.removeprefix(ACCELERATION).removeprefix(RATE)
+    if base in units:
+        unit = units[base]
+        return (f"{unit}/s²" if column.startswith(ACCELERATION)
+                else f"{unit}/s" if column.startswith(RATE) else unit)
+    if column == "driving_torque":
+        return "N m"
+    if column in ENERGIES:
+        return "J"
+    return "N" if column.endswith("normal_force") else "m"
