@@ -190,6 +190,30 @@ def test_api_reference_documents_the_flat_api(site: Path) -> None:
     assert not missing, f"not in the API reference: {missing}"
 
 
+@needs_docs_extra
+def test_api_names_in_the_prose_link_to_their_entries(site: Path) -> None:
+    """`jointplay.simulate(...)`, `Stepper`, `calibrate(...)` in a page's text link to the API
+    reference's entry for that name (docs/hooks/api_links.py; autorefs resolves them)."""
+    sys.path.insert(0, str(DOCS / "hooks"))
+    try:
+        from api_links import link_names, public_names
+    finally:
+        sys.path.pop(0)
+    names = public_names(ROOT / "runtime" / "__init__.py")
+    import jointplay
+
+    assert names == {n for n in jointplay.__all__ if not n.startswith("_")}
+    text = "Call `jointplay.simulate(scene)` or `read(path)`; a `Stepper`, not `simulate`.\n"
+    assert link_names(text, names) == (
+        "Call [`jointplay.simulate(scene)`][jointplay.simulate] or [`read(path)`][jointplay.read];"
+        " a [`Stepper`][jointplay.Stepper], not `simulate`.\n")
+    assert link_names("```python\n`Stepper`\n```\n# `Stepper`\n", names) == \
+        "```python\n`Stepper`\n```\n# `Stepper`\n"
+    linked = [p for p in site.rglob("*.html") if p.name != "api.html"
+              and re.search(r'href="[^"]*api\.html#jointplay\.\w+"', p.read_text("utf-8"))]
+    assert len(linked) >= 10, f"only {len(linked)} pages link names to the API reference"
+
+
 def test_file_references_list_every_key() -> None:
     """Every key a robot or scene file accepts appears in its reference page."""
     from jointplay.robot import description, reading
@@ -235,7 +259,8 @@ window.addEventListener("load", () => setTimeout(() => {
   const images = [...document.querySelectorAll("article img")];
   const loaded = images.filter((i) => i.complete && i.naturalWidth > 0).length;
   const math = document.querySelectorAll("article .arithmatex").length;
-  const typeset = document.querySelectorAll("article .arithmatex mjx-container svg").length;
+  const typeset = [...document.querySelectorAll("article .arithmatex mjx-container")]
+    .filter((c) => c.querySelector("svg")).length;  // one per formula (an svg may nest others)
   const errors = document.querySelectorAll("article mjx-merror").length;
   const input = document.querySelector(".md-search__input");
   if (input) {
@@ -255,6 +280,7 @@ window.addEventListener("load", () => setTimeout(() => {
 
 def _render(page: Path, tmp: Path) -> dict[str, int | tuple[int, int]]:
     """Load ``page`` from disk in headless Chromium (no network) and read the probe."""
+    assert _CHROMIUM is not None
     probe = page.with_name("probe.html")
     html = page.read_text(encoding="utf-8").replace("</body>", _PROBE + "</body>")
     probe.write_text(html, encoding="utf-8")
@@ -286,7 +312,8 @@ def test_pages_render_their_math_and_figures_in_chromium(site: Path, tmp_path: P
             pytest.fail(f"JOINTPLAY_REQUIRE_BROWSER=1 but {message}")
         pytest.skip(message)
     expected = {"index.html": True, "tutorials/first-run.html": True,
-                "reference/api.html": False}
+                "explanation/controller.html": True, "gallery.html": False,
+                "results/control.html": False, "reference/api.html": False}
     for page, has_math_and_figures in expected.items():
         seen = _render(site / page, tmp_path)
         loaded, images = seen["images"]  # type: ignore[misc]
@@ -294,7 +321,7 @@ def test_pages_render_their_math_and_figures_in_chromium(site: Path, tmp_path: P
         assert loaded == images, f"{page}: {images - loaded} of {images} figures did not load"
         assert typeset == math, f"{page}: MathJax typeset {typeset} of {math} formulas"
         assert seen["errors"] == 0, f"{page}: MathJax reported errors"
-        assert seen["hits"] > 0, f"{page}: the search box found nothing from file://"
+        assert seen["hits"] != 0, f"{page}: the search box found nothing from file://"
         if has_math_and_figures:
             assert images >= 1 and math >= 1, (page, seen)
     api = (site / "reference" / "api.html").read_text(encoding="utf-8")
@@ -309,3 +336,25 @@ def test_site_home_shows_the_readme_commands() -> None:
     assert len(commands) == 2, "the README's first screen has two commands"
     for command in commands:
         assert command in home, f"docs/index.md does not show the README's `{command}`"
+
+
+def test_changelog_citation_and_licence() -> None:
+    """CHANGELOG.md is in Keep a Changelog form and shown on the site; CITATION.cff carries the
+    fields citation-file-format 1.2.0 requires; LICENSE is the licence pyproject.toml names;
+    the method's paper is cited with the same DOI on the landing page and in the
+    controller's explanation."""
+    yaml = pytest.importorskip("yaml")
+    changelog = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
+    assert changelog.startswith("# Changelog\n") and "keepachangelog.com" in changelog
+    assert "## [Unreleased]" in changelog
+    assert '--8<-- "CHANGELOG.md"' in (DOCS / "changelog.md").read_text(encoding="utf-8")
+    citation = yaml.safe_load((ROOT / "CITATION.cff").read_text(encoding="utf-8"))
+    assert citation["cff-version"] == "1.2.0"
+    assert {"message", "title", "authors"} <= set(citation) and citation["authors"]
+    assert citation["license"] == "MIT"
+    assert (ROOT / "LICENSE").read_text(encoding="utf-8").startswith("MIT License")
+    assert 'license = { text = "MIT" }' in (ROOT / "pyproject.toml").read_text(encoding="utf-8")
+    doi = "10.1177/1687814018812320"
+    for page in ("index.md", "explanation/controller.md"):
+        assert f"https://doi.org/{doi}" in (DOCS / page).read_text(encoding="utf-8"), page
+    assert doi in citation["message"]
