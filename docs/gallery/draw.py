@@ -73,13 +73,13 @@ GROUPS: dict[str, tuple[list[str], list[str]]] = {
 def _thumbnail(source: Path, target: Path) -> None:
     from PIL import Image
 
-    with Image.open(source) as image:
-        if image.width > WIDTH:
-            image = image.resize((WIDTH, round(image.height * WIDTH / image.width)),
-                                 Image.Resampling.LANCZOS)
-        # 256 colours hold a line figure's anti-aliasing; the file is a third of the size
-        image.convert("RGB").quantize(colors=256, method=Image.Quantize.MEDIANCUT).save(
-            target, optimize=True)
+    with Image.open(source) as opened:
+        image = opened.convert("RGB")
+    if image.width > WIDTH:
+        image = image.resize((WIDTH, round(image.height * WIDTH / image.width)),
+                             Image.Resampling.LANCZOS)
+    # 256 colours hold a line figure's anti-aliasing; the file is a third of the size
+    image.quantize(colors=256, method=Image.Quantize.MEDIANCUT).save(target, optimize=True)
 
 
 def draw(group: str) -> list[Path]:
