@@ -2,7 +2,7 @@
 
 The figure files a command writes are read from the source: every file name ending ``.png``
 that the runtime builds (a string or an f-string; ``{joint}`` stands for a joint number and
-is written ``N`` on the page, any other field for the name it holds, e.g. ``NAME``), and the
+is written ``N`` on the page, any other field for the name it holds, e.g. ``NAME``, ``STEM``), and the
 benchmark reports' stems. The page must name each in backticks and show a picture of it,
 drawn by ``python docs/gallery/draw.py``.
 """
@@ -67,7 +67,8 @@ def test_every_figure_on_the_page_is_drawn() -> None:
     assert not unused, f"pictures in docs/img/gallery/ the page does not show: {unused}"
     unmatched = set(shown)
     for name in sorted(figure_names()):
-        pattern = re.escape(name).replace("N", r"\d+").replace(r"NAME", r"\w+")
+        pattern = re.sub(r"[A-Z]+", lambda m: r"\d+" if m[0] == "N" else r"\w+",
+                         re.escape(name))
         if name == "NAME.png":
             continue
         found = {s for s in shown if re.fullmatch(pattern, s)}

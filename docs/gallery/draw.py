@@ -3,7 +3,7 @@ gallery page shows, and copy its figures into docs/img/gallery/ at thumbnail siz
 
     python docs/gallery/draw.py            # every command (about 10 minutes on 2 cores)
     python docs/gallery/draw.py simulate   # one group: simulate compare control study sweep
-                                           #            calibrate bench
+                                           #            calibrate mechanism bench
 
 tests/test_docs_gallery.py checks that the page lists exactly the figure files the commands
 write and that each listed figure is here.
@@ -62,6 +62,10 @@ GROUPS: dict[str, tuple[list[str], list[str]]] = {
                    "--free payload.mass,link2.com --noise tip_x=1e-6,tip_y=1e-6 "
                    "--out calibration --profile-points 5"],
                   ["calibration"]),
+    "mechanism": (["jointplay simulate scenes/slider_crank.toml --compare-ideal --plot mechanism "
+                   "--quiet",
+                   "jointplay sweep scenes/sweep_slider_crank.toml --out mechanism_sweep"],
+                  ["mechanism", "mechanism_sweep"]),
     "bench": (["jointplay bench work-precision --out bench --t-end 0.1 --repeats 1 "
                "--methods bdf,rk4 --rtols 1e-4,1e-6,1e-8 --steps 4e-5,1e-5 --quiet",
                "jointplay bench fidelity --out bench --t-end 0.2 --quiet",
@@ -98,6 +102,8 @@ def draw(group: str) -> list[Path]:
                 if folder in ("lubricated", "wear") and (GALLERY / png.name).exists() \
                         and png.name not in ("film_force.png", "wear.png"):
                     continue  # the dry run's figures of the same name stand for these
+                if folder == "mechanism" and png.name == "contact_force.png":
+                    continue  # the arm's figure of the same name stands for the mechanism's
                 _thumbnail(png, target)
                 written.append(target)
     return written
