@@ -73,10 +73,9 @@ class CalibrationResult:
     settings : dict
         The options and tolerances the fit ran with.
     fit_explains_data : bool or None
-        Whether chi² is within its two-sided 99 % range for the degrees of freedom (None: no
-        noise stated, nothing to judge against).
-    fit_consistent : bool or None
-        chi² within ``chi2.ppf(CONSISTENT, dof)`` (None: no noise stated).
+        Whether chi² is within its two-sided 99 % range for the degrees of freedom (widened by
+        the noise estimate's own spread where the noise was estimated) and the residuals pass
+        the Ljung-Box whiteness test (None: not judged).
     stages : tuple of Stage
         The stages of the horizon continuation, in order.
     profiles : dict
