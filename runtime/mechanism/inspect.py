@@ -32,8 +32,8 @@ def render(scene: MechanismScene, fmt: str = "text") -> str:
                f"{mechanism.driver.start:g} + {mechanism.driver.speed:g}*t")
         lines.append(f"{'- ' if md else '  '}driver angle of {mechanism.driver.joint}: {law} "
                      "(rad)")
-    for joint, text in mechanism.torques:
-        lines.append(f"{'- ' if md else '  '}torque across {joint}: {text} (N m)")
+    for joint_name, text in mechanism.torques:
+        lines.append(f"{'- ' if md else '  '}torque across {joint_name}: {text} (N m)")
     for force in mechanism.forces:
         lines.append(f"{'- ' if md else '  '}force {force.name} on {force.body} at "
                      f"({force.at[0]:g}, {force.at[1]:g}) m: ({force.x}, {force.y}) (N)")

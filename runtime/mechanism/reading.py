@@ -441,7 +441,12 @@ def _run(table: Any, problems: Problems) -> RunSettings:
             if key in table:
                 values[key] = number(table[key], f"run.{key}")
                 positive(f"run.{key}", values[key])
-    run = RunSettings(**{k: (int(v) if k == "max_steps" else v) for k, v in values.items()})
+    defaults = RunSettings()
+    run = RunSettings(t_end=values.get("t_end", defaults.t_end),
+                      output_step=values.get("output_step", defaults.output_step),
+                      rtol=values.get("rtol", defaults.rtol),
+                      atol=values.get("atol", defaults.atol),
+                      max_steps=int(values.get("max_steps", defaults.max_steps)))
     with problems.check():
         run.check()
     return run

@@ -109,12 +109,14 @@ def read_mechanism_result(path: str | Path, argument: str = "RUN.h5") -> Mechani
     impacts = Impacts(**{f.name: datasets[f"impacts/{f.name}"]
                          for f in dataclasses.fields(Impacts)})
     ideal = ({k: datasets[f"ideal/{k}"] for k in IDEAL} if "ideal/x" in datasets else None)
+    # The array fields, by the names the file stores them under (checked by the dataclass).
+    arrays: dict[str, Any] = {k: datasets[k] for k in ARRAYS}
     result = MechanismResult(
         name=str(attrs["name"]), coordinates=json.loads(attrs["coordinates"]),
         units=json.loads(attrs["units"]), cut_joints=json.loads(attrs["cut_joints"]),
         impacts=impacts, stats=json.loads(attrs["stats"]), rtol=float(attrs["rtol"]),
         atol=float(attrs["atol"]), ideal=ideal, output=str(attrs.get("output", "")),
-        **{k: datasets[k] for k in ARRAYS})
+        **arrays)
     if "accuracy" in attrs:
         result.notes.append(str(attrs["accuracy"]))
     return result

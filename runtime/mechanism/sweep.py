@@ -103,7 +103,7 @@ def load_mechanism_sweep(path: str | Path) -> MechanismSweep:
     if not isinstance(raw, dict) or not raw:
         problems.found.append(DescriptionError("parameters", "must hold one or more "
                                                "[parameters.\"NAME\"] tables", source))
-        problems.raise_any(source)
+        raw = {}  # reported with the problems below; no axes to read
     defaults = scene.mechanism.parameter_values()
     axes = []
     for name, spec in raw.items():

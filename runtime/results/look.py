@@ -12,7 +12,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -43,6 +43,7 @@ def read_result_checked(path: str | Path, argument: str = "RUN"
                                f"({err.field}: {err.message})") from None
 
 
+AnyResult = TypeVar("AnyResult")  # a results record of any kind: an arm's or a mechanism's
 UNCHECKED_NOTE = ("written before results files carried checksums: its numbers are read "
                   "unchecked (write it again with `jointplay simulate --out` to have them "
                   "checked)")
@@ -354,8 +355,9 @@ def plot_energies(runs: Sequence[tuple[str, SimulationResult]], path: Path) -> P
     return save(fig, path)
 
 
-def labelled(paths: Sequence[str | Path], results: Sequence[SimulationResult]
-             ) -> list[tuple[str, SimulationResult]]:
+def labelled(paths: Sequence[str | Path], results: Sequence[AnyResult]
+             ) -> list[tuple[str, AnyResult]]:
+    """Each result with the label of its file (an arm's or a mechanism's results alike)."""
     return list(zip(_labels(paths), results, strict=True))
 
 

@@ -13,8 +13,10 @@ from __future__ import annotations
 import ctypes
 import functools
 import math
+from collections.abc import Collection
 from importlib import resources
-from typing import Any
+from pathlib import Path
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -25,7 +27,40 @@ from jointplay.sim.torque_data import TorqueData as TorqueData
 from jointplay.sim.torque_data import torque_data
 from jointplay.sim.torque_data import traced_program as traced_program
 from jointplay.store.build import compile_source
-from jointplay.store.model import Model
+from jointplay.store.model import FastFunction, Model
+
+
+class _FunctionNames(Protocol):
+    @property
+    def functions(self) -> Collection[str]: ...
+
+
+class _WearSetting(Protocol):
+    @property
+    def wear(self) -> object | None: ...
+
+
+class IntegratorModel(Protocol):
+    """What the compiled loop asks of a model: an arm's :class:`jointplay.store.Model` or a
+    mechanism's :class:`jointplay.mechanism.model.MechanismModel`."""
+
+    @property
+    def library(self) -> Path: ...
+    @property
+    def n_state(self) -> int: ...
+    @property
+    def n_coordinates(self) -> int: ...
+    @property
+    def clearance_joints(self) -> list[int]: ...
+    @property
+    def torque_joints(self) -> list[int]: ...
+    @property
+    def layout(self) -> _FunctionNames: ...
+    @property
+    def structure(self) -> _WearSetting: ...
+
+    def function(self, name: str) -> FastFunction: ...
+
 
 # driver.c's status codes (enum at its top) and what each means to a user.
 OK, TOO_MUCH_WORK, STEP_COLLAPSED, NONFINITE, INTERRUPTED, BAD_TORQUE, CHATTER, NO_MEMORY = \
@@ -122,7 +157,8 @@ def _model_library(path: str) -> ctypes.CDLL:
     return lib
 
 
-def _function(model: Model, name: str, library: str | None = None) -> tuple[_Function, Any]:
+def _function(model: IntegratorModel, name: str,
+              library: str | None = None) -> tuple[_Function, Any]:
     """The generated function ``name`` of the model's eager library (or of ``library``)."""
     lib = _model_library(library or str(model.library))
     fn = _Function()
@@ -177,8 +213,8 @@ class NativeIntegrator:
     parameter, scaled like the state: see :meth:`sensitivity_rows`).
     """
 
-    def __init__(self, model: Model, p: np.ndarray, scale: np.ndarray, ecc_index: np.ndarray,
-                 clearance: np.ndarray, drive_index: np.ndarray,
+    def __init__(self, model: IntegratorModel, p: np.ndarray, scale: np.ndarray,
+                 ecc_index: np.ndarray, clearance: np.ndarray, drive_index: np.ndarray,
                  torques: tuple[TimeFunction, ...], *, rtol: float, atol: float,
                  max_steps: int, max_events: int, max_order: int = 5,
                  h_max: float = math.inf,
@@ -243,6 +279,9 @@ class NativeIntegrator:
             cfg.power_fn, _ = _function(model, "drive_power")
         self.n_sensitivities = 0
         if sensitivities is not None and sensitivities.count:
+            if not isinstance(model, Model):
+                raise TypeError("parameter sensitivities need an arm's model "
+                                f"(jointplay.store.Model), got {type(model).__name__}")
             self._sensitivity_config(cfg, model, sensitivities)
         self._config = cfg
         handle = self.lib.jp_create(ctypes.byref(cfg))
@@ -395,7 +434,7 @@ def raise_for_status(status: int, integ: NativeIntegrator, torque_fields: list[s
     raise MemoryError("the integrator ran out of memory for its contact-phase records")
 
 
-def map_function(model: Model, name: str, inputs: list[np.ndarray],
+def map_function(model: IntegratorModel, name: str, inputs: list[np.ndarray],
                  count: int) -> list[np.ndarray]:
     """Evaluate the model's function ``name`` on ``count`` samples in one C loop.
 
