@@ -2,9 +2,9 @@
 
 The figure files a command writes are read from the source: every file name ending ``.png``
 that the runtime builds (a string or an f-string; ``{joint}`` stands for a joint number and
-is written ``N`` on the page, any other field for the name it holds, e.g. ``NAME``, ``STEM``), and the
-benchmark reports' stems. The page must name each in backticks and show a picture of it,
-drawn by ``python docs/gallery/draw.py``.
+is written ``N`` on the page, any other field for the name it holds, e.g. ``NAME``,
+``STEM``), and the benchmark reports' stems. The page must name each in backticks and show
+a picture of it, drawn by ``python docs/gallery/draw.py``.
 """
 
 from __future__ import annotations

@@ -99,15 +99,8 @@ def merged_blocks(html: str) -> list[str]:
             if _MEANT_AS_BLOCK.match(line)]
 
 
-# Pages whose fix belongs to the calibration work: strict, so the test fails once they render
-# right and this list must shrink.
-_TO_FIX = {"docs/how-to/calibrate.md", "docs/results/calibration.md"}
-
-
 def _page_param(page: Path) -> object:
-    name = page.relative_to(ROOT).as_posix()
-    marks = [pytest.mark.xfail(strict=True, reason="a 3-space sub-list")] if name in _TO_FIX else []
-    return pytest.param(page, id=name, marks=marks)
+    return pytest.param(page, id=page.relative_to(ROOT).as_posix())
 
 
 @pytest.mark.parametrize("page", [_page_param(p) for p in PAGES])
@@ -144,20 +137,12 @@ def words(page: Path) -> int:
     return len(page.read_text(encoding="utf-8").split())
 
 
-def _length_param(page: Path) -> object:
-    name = page.relative_to(ROOT).as_posix()
-    marks = [pytest.mark.xfail(strict=True, reason="being cut to its budget")] \
-        if name in _TO_FIX else []
-    return pytest.param(page, id=name, marks=marks)
-
-
-@pytest.mark.parametrize("page", [_length_param(p) for p in PAGES])
+@pytest.mark.parametrize("page", [_page_param(p) for p in PAGES])
 def test_page_length(page: Path) -> None:
     limit = WORDS_PER_HOW_TO if page.parent.name == "how-to" else WORDS_PER_PAGE
     assert words(page) <= limit, f"{page.relative_to(ROOT)}: {words(page)} words (at most {limit})"
 
 
-@pytest.mark.xfail(strict=True, reason="the calibration pages are being cut to their budget")
 def test_docs_length_in_all() -> None:
     total = sum(words(p) for p in PAGES)
     assert total <= WORDS_IN_ALL, f"docs/ holds {total} words (at most {WORDS_IN_ALL})"
