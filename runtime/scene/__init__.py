@@ -1,6 +1,7 @@
 """Scenes: a robot, the effects it calls for, drive torques, an initial state and run settings.
 
-:mod:`.definition` reads and validates scene files, :mod:`.initial` their initial state;
+:mod:`.definition` reads and validates scene files, :mod:`.initial` their initial state,
+:mod:`.run_settings` their ``[run]`` table;
 :mod:`.expressions` and :mod:`.tables` hold the drive torques
 (restricted expressions and CSV tables, never executed as code).
 """

@@ -24,25 +24,33 @@ file, the field and what is allowed.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any
 
-from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import Problems, check_keys, read_toml
 from jointplay.robot import Joint, JointKind, Robot, load_robot, robot_from_dict
 from jointplay.scene.expressions import TimeFunction
 from jointplay.scene.initial import check_journals as _check_journals
+from jointplay.scene.initial import check_resting as _check_resting
+from jointplay.scene.initial import check_resting_depth as check_resting_depth
 from jointplay.scene.initial import (
     coordinate_names,
     validate_initial,
 )
-from jointplay.scene.initial import finite_number as _finite_number
 from jointplay.scene.initial import initial_numbers as _initial_numbers
+
+# The run settings live in their own module; their names stay importable from here.
+from jointplay.scene.run_settings import _RUN_KEYS as _RUN_KEYS
+from jointplay.scene.run_settings import ADAPTIVE as ADAPTIVE
+from jointplay.scene.run_settings import INTEGRATORS as INTEGRATORS
+from jointplay.scene.run_settings import PLAUSIBILITY as PLAUSIBILITY
+from jointplay.scene.run_settings import Plausibility as Plausibility
+from jointplay.scene.run_settings import RunSettings as RunSettings
+from jointplay.scene.run_settings import run_settings_from_table
 from jointplay.scene.torques import (
     check_finite,
     check_table_covers_run,
@@ -50,78 +58,11 @@ from jointplay.scene.torques import (
     read_torques,
 )
 
-INTEGRATORS: tuple[str, ...] = ("bdf", "cvodes", "idas", "rk4", "radau")
-ADAPTIVE: tuple[str, ...] = ("bdf", "cvodes", "idas")
-PLAUSIBILITY: tuple[str, ...] = ("stop", "warn", "off")
-"""What a run does when it leaves the physical domain (a journal driven through its bearing,
-an energy balance that no longer closes): stop with an error (the default), warn and return
-the result marked as implausible, or check nothing (:mod:`jointplay.sim.plausibility`)."""
-Plausibility = Literal["stop", "warn", "off"]
-
 # The settings of identification, the controller and studies may sit in a scene file too
 # (jointplay.neural.study.settings reads them; a simulation ignores them).
 _SETTINGS_KEYS = ("preset", "identify", "control", "study")
 _TOP_KEYS = ("name", "description", "robot", "constants", "torques", "initial", "run",
              *_SETTINGS_KEYS)
-_RUN_KEYS = ("t_end", "output_step", "integrator", "rtol", "atol", "step", "max_steps",
-             "plausibility")
-
-
-@dataclass(frozen=True)
-class RunSettings:
-    """How a scene is integrated.
-
-    The defaults are the cheapest setting measured to meet the project's working accuracy on
-    the default scene (tip error <= 1e-5 m, energy balance residual <= 0.1 % of the dissipated
-    energy; see docs/results/accuracy.md). Validated on construction.
-
-    Attributes
-    ----------
-    t_end : float
-        Duration of the run, s.
-    output_step : float
-        Time between output samples, s.
-    integrator : str
-        ``bdf`` (the compiled BDF, the default), ``cvodes``, ``idas`` (CasADi's SUNDIALS),
-        ``radau`` or ``rk4`` (fixed step).
-    rtol : float
-        The adaptive integrators' relative local error tolerance.
-    atol : float
-        Their absolute tolerance, in scaled units (radians and rad/s for angles; fractions of
-        the joint's radial clearance for eccentricities, and of the clearance per millisecond
-        for their rates), so one number serves both.
-    step : float
-        The fixed step of ``rk4`` and ``radau``, s; it must divide ``output_step``.
-    max_steps : int
-        Bound on the work between two outputs.
-    plausibility : {"stop", "warn", "off"}
-        What a run that leaves the physical domain does: ``"stop"`` (raise
-        :class:`~jointplay.SimulationError`), ``"warn"`` (one warning; the result is returned,
-        marked in ``result.implausible``) or ``"off"`` (see :data:`PLAUSIBILITY`).
-    """
-
-    t_end: float = 2.0
-    output_step: float = 1e-3
-    integrator: str = "bdf"
-    rtol: float = 2e-6
-    atol: float = 3e-7
-    step: float = 1e-5
-    max_steps: int = 200_000
-    plausibility: Plausibility = "stop"
-
-    def __post_init__(self) -> None:
-        # Built from a file, flags or the API alike, the settings are checked here, once.
-        _validate_run(self, None)
-
-    @property
-    def n_outputs(self) -> int:
-        return round(self.t_end / self.output_step)
-
-    @property
-    def steps_per_output(self) -> int:
-        return max(1, round(self.output_step / self.step))
-
-
 @dataclass(frozen=True)
 class Scene:
     """A validated scene: a robot, its drive torques, its initial state and how to integrate it.
@@ -278,54 +219,6 @@ class Scene:
         return replace(self, journals=journals)
 
 
-def _check_resting(journals: str, robot: Robot) -> None:
-    """"resting" is solved at run time (the static equilibrium: each journal carries the
-    weight beyond it, the drives hold the arm): what it needs is checked now, before any
-    model is compiled."""
-    if journals != "resting" or not any(j.has_clearance for j in robot.joints):
-        return
-    if not robot.drive:
-        raise _error("initial.journals", "\"resting\" holds the arm still with its drive "
-                     "torques: enable [robot.drive], or start the journals \"centred\" or at "
-                     "given eccentricities", None)
-    if not robot.gravity.enabled or not any(robot.gravity.vector):
-        raise _error("initial.journals", "\"resting\" rests each journal on its bearing "
-                     "under gravity: enable [robot.gravity], or start the journals "
-                     "\"centred\" or at given eccentricities", None)
-
-
-def check_resting_depth(robot: Robot) -> None:
-    """Refuse a resting start whose journals would rest deeper in their bearings than the
-    penetration stop allows (a payload of 1e5 kg, say), before any model is compiled.
-
-    At rest each clearance joint carries the weight of every link beyond it and the payload,
-    along gravity (the drive torques are moments), so the static penetration follows from
-    the Hertz law in closed form, delta = (W / K)^(1/n), with the pin-in-hole stiffness
-    K = 4 / (3 (s_b + s_j)) sqrt(R_b R_j / (R_b - R_j)), s = (1 - nu^2) / E. Only the Hertz
-    law of dry joints is estimated here; the others are checked at the run's first output."""
-    if robot.contact.stiffness != "hertz" or robot.lubrication.model != "none":
-        return
-    g = math.hypot(*robot.gravity.vector)
-    for j, joint in enumerate(robot.joints, start=1):
-        if not joint.has_clearance:
-            continue
-        weight = g * (sum(link.mass for link in robot.links[j - 1:]) + robot.payload_mass)
-        soft = ((1 - joint.bearing_nu ** 2) / joint.bearing_E
-                + (1 - joint.journal_nu ** 2) / joint.journal_E)
-        stiffness = 4.0 / (3.0 * soft) * math.sqrt(
-            joint.bearing_radius * joint.journal_radius
-            / (joint.bearing_radius - joint.journal_radius))
-        depth = (weight / stiffness) ** (1.0 / robot.contact.exponent)
-        bound = limits.MAX_PENETRATION_FRACTION * joint.journal_radius
-        if depth > bound:
-            raise _error("initial.journals", f"\"resting\": joint {j}'s journal would rest "
-                         f"{depth * 1e6:.4g} um deep in its bearing under the {weight:.4g} N "
-                         f"beyond it (Hertz), beyond the {bound * 1e6:.4g} um "
-                         f"({100 * limits.MAX_PENETRATION_FRACTION:g} % of its radius) the "
-                         "contact law describes: check the masses and the payload (or keep "
-                         "such a run with [run] plausibility = \"warn\")", None)
-
-
 def ideal_counterpart(robot: Robot) -> Robot:
     """The same robot with every clearance joint made ideal (and locked play made locked).
 
@@ -346,82 +239,6 @@ def ideal_counterpart(robot: Robot) -> Robot:
 
 def _error(field_name: str, message: str, source: str | None) -> DescriptionError:
     return DescriptionError(field_name, message, source)
-
-
-def _positive_number(value: Any, where: str, source: str | None) -> float:
-    number = _finite_number(value, where, source)
-    if number <= 0:
-        raise _error(where, f"must be > 0, got {value!r}", source)
-    return number
-
-
-def _validate_run(run: RunSettings, source: str | None) -> None:
-    # Each setting by itself (all reported together), then how they fit one another.
-    problems = Problems()
-    for name, low, high in (("t_end", 0.0, limits.MAX_T_END),
-                            ("output_step", limits.MIN_OUTPUT_STEP, math.inf),
-                            ("step", limits.MIN_STEP, math.inf),
-                            ("rtol", limits.MIN_RTOL, math.inf),
-                            ("atol", limits.MIN_ATOL, math.inf)):
-        with problems.check():
-            value = _positive_number(getattr(run, name), f"run.{name}", source)
-            if value > high:
-                raise _error(f"run.{name}", f"must be at most {high:g}, got {value:g}", source)
-            if value < low:
-                raise _error(f"run.{name}", f"must be at least {low:g}, got {value:g}", source)
-    with problems.check():
-        if not isinstance(run.plausibility, str) or run.plausibility not in PLAUSIBILITY:
-            hint = did_you_mean(str(run.plausibility), PLAUSIBILITY)
-            raise _error("run.plausibility", f"must be one of {', '.join(PLAUSIBILITY)}, got "
-                         f"{run.plausibility!r}{hint}", source)
-    with problems.check():
-        if not isinstance(run.integrator, str) or run.integrator not in INTEGRATORS:
-            hint = did_you_mean(str(run.integrator), INTEGRATORS)
-            raise _error("run.integrator", f"must be one of {', '.join(INTEGRATORS)}, got "
-                         f"{run.integrator!r}{hint}", source)
-    with problems.check():
-        if isinstance(run.max_steps, bool) or not isinstance(run.max_steps, int) \
-                or not 1 <= run.max_steps <= limits.MAX_MAX_STEPS:
-            raise _error("run.max_steps", f"must be an integer from 1 to "
-                         f"{limits.MAX_MAX_STEPS}, got {run.max_steps!r}", source)
-    with problems.check():
-        if isinstance(run.rtol, (int, float)) and run.rtol >= 1:
-            raise _error("run.rtol", f"must be < 1, got {run.rtol}", source)
-    problems.raise_any()
-    if run.t_end / run.output_step > limits.MAX_OUTPUTS + 0.5:
-        raise _error("run.output_step", f"gives {run.t_end / run.output_step:.3g} output "
-                     f"samples over run.t_end = {run.t_end:g} s; at most "
-                     f"{limits.MAX_OUTPUTS} are allowed (raise output_step or shorten t_end)",
-                     source)
-    if run.integrator not in ADAPTIVE and run.t_end / run.step > limits.MAX_FIXED_STEPS:
-        raise _error("run.step", f"gives {run.t_end / run.step:.3g} fixed steps over "
-                     f"run.t_end = {run.t_end:g} s; at most {limits.MAX_FIXED_STEPS} are "
-                     "allowed", source)
-    if run.output_step > run.t_end:
-        raise _error("run.output_step", f"must not exceed run.t_end ({run.t_end}), got "
-                     f"{run.output_step}", source)
-    if abs(run.n_outputs * run.output_step - run.t_end) > 1e-9 * run.t_end:
-        raise _error("run.output_step", f"must divide run.t_end ({run.t_end}) into whole "
-                     f"samples, got {run.output_step}", source)
-    if run.integrator not in ADAPTIVE and (run.step > run.output_step or abs(
-            run.steps_per_output * run.step - run.output_step) > 1e-9 * run.output_step):
-        raise _error("run.step", f"the fixed step must divide run.output_step "
-                     f"({run.output_step}), got {run.step}", source)
-
-
-def _run_settings(raw: Any, source: str | None) -> RunSettings:
-    # The same checks as run settings built in Python: RunSettings checks its own values.
-    problems = Problems()
-    if not isinstance(raw, Mapping):
-        check_keys(raw, _RUN_KEYS, "run", source)
-    with problems.check():
-        check_keys(raw, _RUN_KEYS, "run", source)
-    try:
-        run = RunSettings(**{k: v for k, v in raw.items() if k in _RUN_KEYS})
-    except DescriptionError as err:
-        problems.found.extend(err.problems)
-    problems.raise_any(source)
-    return run
 
 
 def _robot(raw: Any, base: Path | None, source: str | None) -> Robot:
@@ -548,7 +365,7 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | None = None,
             torques, texts = read_torques(data.get("torques", {}), robot, constants, base, source)
     run = RunSettings()
     with problems.check():
-        run = _run_settings(data.get("run", {}), source)
+        run = run_settings_from_table(data.get("run", {}), source)
     if robot is not None and texts:
         with problems.check():
             check_finite(torques, texts, robot, run, source)

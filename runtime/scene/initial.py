@@ -1,6 +1,6 @@
 """A scene's ``[initial]`` table: the coordinates and speeds it may name, their values checked
 (known names, finite, physically plausible, journals inside their bearings), and how the
-journals start (``journals = "centred"`` or ``"resting"``)."""
+journals start (``journals = "centred"`` or ``"resting"``, and what a resting start needs)."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
+from jointplay.common import limits
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import Problems, plausible
@@ -130,3 +131,51 @@ def check_journals(journals: Any, initial: Mapping[str, float], source: str | No
             raise _error("initial.journals", "\"resting\" starts at rest with the journals "
                          "where they rest: leave out the speeds and eccentricities "
                          f"({', '.join(given)})", source)
+
+
+def check_resting(journals: str, robot: Robot) -> None:
+    """"resting" is solved at run time (the static equilibrium: each journal carries the
+    weight beyond it, the drives hold the arm): what it needs is checked now, before any
+    model is compiled."""
+    if journals != "resting" or not any(j.has_clearance for j in robot.joints):
+        return
+    if not robot.drive:
+        raise _error("initial.journals", "\"resting\" holds the arm still with its drive "
+                     "torques: enable [robot.drive], or start the journals \"centred\" or at "
+                     "given eccentricities", None)
+    if not robot.gravity.enabled or not any(robot.gravity.vector):
+        raise _error("initial.journals", "\"resting\" rests each journal on its bearing "
+                     "under gravity: enable [robot.gravity], or start the journals "
+                     "\"centred\" or at given eccentricities", None)
+
+
+def check_resting_depth(robot: Robot) -> None:
+    """Refuse a resting start whose journals would rest deeper in their bearings than the
+    penetration stop allows (a payload of 1e5 kg, say), before any model is compiled.
+
+    At rest each clearance joint carries the weight of every link beyond it and the payload,
+    along gravity (the drive torques are moments), so the static penetration follows from
+    the Hertz law in closed form, delta = (W / K)^(1/n), with the pin-in-hole stiffness
+    K = 4 / (3 (s_b + s_j)) sqrt(R_b R_j / (R_b - R_j)), s = (1 - nu^2) / E. Only the Hertz
+    law of dry joints is estimated here; the others are checked at the run's first output."""
+    if robot.contact.stiffness != "hertz" or robot.lubrication.model != "none":
+        return
+    g = math.hypot(*robot.gravity.vector)
+    for j, joint in enumerate(robot.joints, start=1):
+        if not joint.has_clearance:
+            continue
+        weight = g * (sum(link.mass for link in robot.links[j - 1:]) + robot.payload_mass)
+        soft = ((1 - joint.bearing_nu ** 2) / joint.bearing_E
+                + (1 - joint.journal_nu ** 2) / joint.journal_E)
+        stiffness = 4.0 / (3.0 * soft) * math.sqrt(
+            joint.bearing_radius * joint.journal_radius
+            / (joint.bearing_radius - joint.journal_radius))
+        depth = (weight / stiffness) ** (1.0 / robot.contact.exponent)
+        bound = limits.MAX_PENETRATION_FRACTION * joint.journal_radius
+        if depth > bound:
+            raise _error("initial.journals", f"\"resting\": joint {j}'s journal would rest "
+                         f"{depth * 1e6:.4g} um deep in its bearing under the {weight:.4g} N "
+                         f"beyond it (Hertz), beyond the {bound * 1e6:.4g} um "
+                         f"({100 * limits.MAX_PENETRATION_FRACTION:g} % of its radius) the "
+                         "contact law describes: check the masses and the payload (or keep "
+                         "such a run with [run] plausibility = \"warn\")", None)
