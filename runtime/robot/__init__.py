@@ -1,7 +1,7 @@
 """Robot descriptions: the typed description a user writes (:mod:`.description`), reading it
 from TOML, dictionaries and flags (:mod:`.reading`), its validation (:mod:`.validation`), and
 its split into the compile-time :class:`~jointplay.robot.structure.Structure` and the run-time
-parameters (:mod:`.structure`)."""
+parameters (:mod:`.structure`), and those parameters by name (:mod:`.parameters`)."""
 
 from jointplay.robot.description import (
     CONTACT_LAWS,
