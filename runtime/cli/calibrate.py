@@ -20,7 +20,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--measured", required=True, metavar="FILE",
                    help="CSV with a header: time (s) and any of tip_x, tip_y (m), q2, ... "
                         "(rad); or a results file (.h5). For a mechanism file: time and any "
-                        "columns jointplay simulate --csv writes (guide.position, ...)")
+                        "columns of the CSV that simulate writes (guide.position, ...)")
     p.add_argument("--free", required=True, metavar="NAME[,NAME...]",
                    help="parameters to estimate: any robot parameter by name (friction.mu, "
                         "link2.mass, ...) or jointN.clearance (bearing radius held); for a "

@@ -310,7 +310,25 @@ def _check_floating(m: Mechanism, order: list[Joint], floating: list[str]) -> No
 
 @dataclass(frozen=True)
 class MechanismScene:
-    """A mechanism and what to run: the file's contents, validated."""
+    """A mechanism and what to run: the file's contents, validated.
+
+    Attributes
+    ----------
+    name : str
+        The scene's name.
+    description : str
+        One line on what it is.
+    mechanism : Mechanism
+        Bodies, joints, driver, loads, contact and friction.
+    run : RunSettings
+        Duration, output step, integrator and tolerances.
+    source : str or None
+        The file it was read from.
+    initial : dict of str to float
+        Starting values of coordinates for the assembly at t = 0.
+    output : str or None
+        The coordinate the run follows (the file's ``[output]``; None: the default rule).
+    """
 
     name: str
     description: str

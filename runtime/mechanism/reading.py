@@ -64,7 +64,31 @@ def is_mechanism_file(path: str | Path) -> bool:
 
 
 def load_mechanism_scene(path: str | Path) -> MechanismScene:
-    """Read and validate a mechanism file (DescriptionError naming every bad field)."""
+    """Read and validate a mechanism file.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The mechanism file (TOML, read as data, never executed).
+
+    Returns
+    -------
+    MechanismScene
+        The mechanism and its run settings.
+
+    Raises
+    ------
+    DescriptionError
+        Naming every bad field and its fix.
+
+    Examples
+    --------
+    >>> from importlib.resources import files
+    >>> import jointplay
+    >>> scene = jointplay.load_mechanism_scene(files("jointplay.scenes") / "slider_crank.toml")
+    >>> scene.name, scene.output_coordinate
+    ('slider_crank', 'guide.position')
+    """
     data, _ = read_toml(path, "mechanism")
     return mechanism_scene_from_dict(data, source=str(path))
 

@@ -35,13 +35,70 @@ _NEWTON_STEPS = 50
 class MechanismResult:
     """A mechanism run's samples and what was located (SI units).
 
-    ``x``: (samples, 2 n) coordinates then rates (names in ``coordinates``; the clock ``t``
-    last); ``acceleration``: (samples, n); per cut clearance joint (columns in
-    ``cut_joints``): ``eccentricity`` (samples, nc, 2), ``normal_force``, ``penetration``;
-    ``driving_torque`` (N m) and the energies (J): ``kinetic``, ``potential``,
-    ``contact_potential``, ``drive_work`` (the driver's and the applied loads' work since
-    t = 0, integrated in the loop) and ``dissipated``; ``impacts``: the located contact
-    phases."""
+    Attributes
+    ----------
+    name : str
+        The scene's name.
+    t : numpy.ndarray
+        Output times (s), shape (samples,).
+    coordinates : list of str
+        The tree coordinates' names, the clock ``t`` last.
+    units : list of str
+        Each coordinate's unit (m or rad).
+    x : numpy.ndarray
+        Coordinates then rates, shape (samples, 2 n).
+    acceleration : numpy.ndarray
+        The coordinates' second derivatives, shape (samples, n).
+    cut_joints : list of str
+        The cut clearance joints, in the order of the per-joint columns below.
+    clearance : numpy.ndarray
+        Each cut joint's radial clearance (m).
+    eccentricity : numpy.ndarray
+        Journal centre minus bearing centre (m), shape (samples, joints, 2).
+    normal_force : numpy.ndarray
+        Contact normal force (N), shape (samples, joints).
+    penetration : numpy.ndarray
+        Contact penetration (m), shape (samples, joints).
+    driving_torque : numpy.ndarray
+        The torque the driver applies to hold its prescribed motion (N m).
+    kinetic : numpy.ndarray
+        Kinetic energy (J).
+    potential : numpy.ndarray
+        Gravity's potential energy (J).
+    contact_potential : numpy.ndarray
+        Energy stored in the contacts' deformation (J).
+    drive_work : numpy.ndarray
+        The driver's and the applied loads' work since t = 0 (J), integrated in the loop.
+    dissipated : numpy.ndarray
+        Energy lost to contact damping and friction since t = 0 (J).
+    impacts : Impacts
+        The located contact phases (onset, peak force, penetration).
+    stats : dict
+        The integrator's statistics (steps, events, wall time).
+    rtol : float
+        The relative tolerance the run used.
+    atol : float
+        The absolute tolerance the run used.
+    ideal : dict or None
+        The ideal mechanism's coordinates, rates and accelerations at ``t`` (with
+        ``compare_ideal``).
+    accuracy : object or None
+        The accuracy statement (with ``verify``).
+    notes : list of str
+        What the run says about itself (skipped checks, ...).
+    output : str
+        The coordinate the summary and the figures follow.
+
+    Examples
+    --------
+    >>> from importlib.resources import files
+    >>> import jointplay
+    >>> path = files("jointplay.scenes") / "slider_crank.toml"
+    >>> scene = jointplay.load_mechanism_scene(path).with_run(t_end=0.004)
+    >>> result = jointplay.simulate_mechanism(scene)
+    >>> result.output, result.coordinate(result.output).shape == result.t.shape
+    ('guide.position', True)
+    """
 
     name: str
     t: np.ndarray
