@@ -17,6 +17,8 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import os
+import stat
 from pathlib import Path
 from typing import Any
 
@@ -78,9 +80,14 @@ def write_mechanism_result(result: MechanismResult, path: str | Path) -> None:
 
 
 def is_mechanism_result(path: str | Path) -> bool:
+    """Whether ``path`` is a mechanism results file (False for anything else, read or not)."""
     import h5py
 
     try:
+        # Only a regular file is opened: HDF5 would wait forever on a FIFO, and the readers
+        # that take it next refuse a FIFO or a device in one line.
+        if not stat.S_ISREG(os.stat(path).st_mode):
+            return False
         with h5py.File(path, "r") as fh:
             return bool(fh.attrs.get("format") == FORMAT)
     except (OSError, ValueError):
@@ -91,6 +98,13 @@ def read_mechanism_result(path: str | Path, argument: str = "RUN.h5") -> Mechani
     """Read a mechanism results file back (DescriptionError: not one, or changed since)."""
     import h5py
 
+    try:
+        regular = stat.S_ISREG(os.stat(path).st_mode)
+    except OSError as err:
+        raise DescriptionError(argument, f"{path} cannot be read ({err})") from None
+    if not regular:
+        raise DescriptionError(argument, f"{path} is not a regular file (a folder, device, "
+                               "FIFO or socket); give a mechanism results file (.h5)")
     try:
         fh = h5py.File(path, "r")
     except (OSError, ValueError) as err:
