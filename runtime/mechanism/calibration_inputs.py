@@ -32,7 +32,7 @@ from jointplay.calibration.measured import (
     grid_indices,
     read_csv_table,
 )
-from jointplay.calibration.parameters import FreeParameters
+from jointplay.calibration.parameters import FreeParameters, checked_free_parameters
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
 from jointplay.common.limits import MIN_RADIAL_CLEARANCE, PHYSICAL_RANGES
@@ -86,32 +86,11 @@ def mechanism_free_parameters(names: Sequence[str], scene: MechanismScene,
     """Check ``names`` against the mechanism and ``start`` against the physical ranges;
     raises :class:`DescriptionError` naming the first bad name (``free NAME``, ``start
     NAME``)."""
-    if not names:
-        raise DescriptionError("free", "no parameter names given; name at least one, e.g. "
-                               "friction.mu or slider_pin.clearance")
-    seen: set[str] = set()
-    for name in names:
-        if name in seen:
-            raise DescriptionError(f"free {name}", "is named twice; name it once")
-        seen.add(name)
-        _check_known(name, scene, model)
-    _check_radii(names, scene)
-    start = dict(start or {})
-    for name in start:
-        if name not in seen:
-            raise DescriptionError(f"start {name}", "is not a free parameter; give start "
-                                   f"values for the free ones only ({', '.join(names)})")
-    values, lower, upper = [], [], []
-    for name in names:
-        low, high = parameter_range(name, scene)
-        value = float(start[name]) if name in start else scene_value(name, scene)
-        if not math.isfinite(value) or not low <= value <= high:
-            raise DescriptionError(f"start {name}", f"{value!r} is outside its physical range "
-                                   f"[{low:g}, {high:g}]; start inside it")
-        values.append(value)
-        lower.append(low)
-        upper.append(high)
-    return FreeParameters(tuple(names), np.array(values), np.array(lower), np.array(upper))
+    return checked_free_parameters(
+        names, start, "friction.mu or slider_pin.clearance",
+        lambda name: _check_known(name, scene, model),
+        lambda name: parameter_range(name, scene), lambda name: scene_value(name, scene),
+        check_names=lambda given: _check_radii(given, scene))
 
 
 def scene_value(name: str, scene: MechanismScene) -> float:
