@@ -321,12 +321,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
             line_runs: int = 0, profile_runs: int = 0,
             check_runs: int = 0) -> CalibrationResult:
     free = problem.free
-    determined = spread.determined & explains
-    estimates = {
-        name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
-                       float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
-                       bool(determined[k]))
-        for k, name in enumerate(free.names)}
+    estimates = estimates_at(optimum.values, free, spread, explains)
     source = {name: ("compiled sensitivities" if name in predictor.compiled
                      else "central differences") for name in free.names}
     run_settings = problem.scene.run
@@ -360,6 +355,17 @@ def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) ->
     if run.integrator in ("bdf", "cvodes", "idas"):
         changes.update(rtol=run.rtol / options.tighten, atol=run.atol / options.tighten)
     return scene.with_run(**changes)
+
+
+def estimates_at(values: np.ndarray, free: FreeParameters, spread: Uncertainty,
+                 explains: bool) -> dict[str, Estimate]:
+    """Each free parameter's estimate at ``values`` with its interval; none is determined
+    where the fit does not explain the data (``explains`` false)."""
+    determined = spread.determined & explains
+    return {name: Estimate(name, float(values[k]), float(spread.std[k]),
+                           float(spread.low95[k]), float(spread.high95[k]),
+                           float(free.start[k]), bool(determined[k]))
+            for k, name in enumerate(free.names)}
 
 
 def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,

@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.api import CalibrationOptions, judged_fit
+from jointplay.calibration.api import CalibrationOptions, estimates_at, judged_fit
 from jointplay.calibration.basins import Basins, widened
 from jointplay.calibration.basins import threshold as basin_threshold
 from jointplay.calibration.fit import (
@@ -51,7 +51,7 @@ from jointplay.calibration.predict import (
     whitened,
 )
 from jointplay.calibration.profiles import PROFILE_SIGMAS, UNDETERMINED_SPAN
-from jointplay.calibration.result import CalibrationResult, Estimate
+from jointplay.calibration.result import CalibrationResult
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
 from jointplay.common.errors import DescriptionError
 from jointplay.mechanism.calibration_inputs import (
@@ -365,12 +365,7 @@ def _result(problem: MechanismProblem, predictor: MechanismPredictor, optimum: O
             profile_runs: int, explains: bool, seconds: tuple[float, float]
             ) -> CalibrationResult:
     free = problem.free
-    determined = spread.determined & explains
-    estimates = {
-        name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
-                       float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
-                       bool(determined[k]))
-        for k, name in enumerate(free.names)}
+    estimates = estimates_at(optimum.values, free, spread, explains)
     run = problem.scene.run
     units = dict(zip(problem.model.coordinates, problem.model.units, strict=True))
     return CalibrationResult(
