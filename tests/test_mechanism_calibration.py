@@ -142,6 +142,21 @@ def test_bad_input_is_one_line_exit_2_nothing_written(
     assert not out.exists()
 
 
+def test_a_table_with_a_byte_order_mark_reads_as_without(scene_file: Path, measured: Path,
+                                                         tmp_path: Path) -> None:
+    """A spreadsheet's CSV starts with a UTF-8 byte-order mark: the same samples."""
+    from jointplay.mechanism.calibration_inputs import read_mechanism_measured
+    from jointplay.mechanism.model import model_for
+
+    model = model_for(load_mechanism_scene(scene_file).mechanism)
+    marked = tmp_path / "marked.csv"
+    marked.write_bytes(b"\xef\xbb\xbf" + measured.read_bytes())
+    plain, bom = read_mechanism_measured(measured, model), read_mechanism_measured(marked, model)
+    assert bom.columns == plain.columns == COLUMNS
+    np.testing.assert_array_equal(bom.t, plain.t)
+    np.testing.assert_array_equal(bom.values, plain.values)
+
+
 def test_friction_of_a_frictionless_mechanism_is_refused() -> None:
     scene = load_mechanism_scene(SCENES / "slider_crank_0_1mm.toml")
     data = Measured("m", np.array([0.0, 1e-5, 2e-5]), ("guide.position",), np.zeros((3, 1)))

@@ -263,22 +263,8 @@ def _run(problem: Problem) -> CalibrationResult:
         spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                      warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
-    stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
-    misfit = residual_check(fitted - problem.measured.values, optimum.sigma, stats["dof"],
-                            problem.noise_spread, problem.measured.columns)
-    warnings = list(spread.warnings)
-    if misfit is not None:
-        # nothing is determined: the intervals span the box the search covered
-        box = starts_around(free, 1, opts.spread, 0)[0]
-        width = np.where(box != 0, opts.spread * np.abs(box), opts.spread)
-        spread = dataclasses.replace(
-            spread, low95=np.minimum(spread.low95, np.maximum(box - width, free.lower)),
-            high95=np.maximum(spread.high95, np.minimum(box + width, free.upper)),
-            determined=np.zeros(free.size, dtype=bool))
-        warnings = [f"nothing is determined: {misfit}; each interval spans the box the "
-                    f"search covered (±{opts.spread:g} of the start). State the noise if "
-                    "you know it, or free what the model may lack"]
-    warnings += _bound_warnings(optimum.values, free)
+    stats, misfit, spread, warnings = judged_fit(fitted, problem.measured, free, optimum,
+                                                 spread, problem.noise_spread, opts.spread)
     profiles, profile_runs = cost_profiles(predictor, optimum, spread, opts.profile_points,
                                            opts.workers)
     wall1, cpu1 = timed()
@@ -335,12 +321,7 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
             line_runs: int = 0, profile_runs: int = 0,
             check_runs: int = 0) -> CalibrationResult:
     free = problem.free
-    determined = spread.determined & explains
-    estimates = {
-        name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
-                       float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
-                       bool(determined[k]))
-        for k, name in enumerate(free.names)}
+    estimates = estimates_at(optimum.values, free, spread, explains)
     source = {name: ("compiled sensitivities" if name in predictor.compiled
                      else "central differences") for name in free.names}
     run_settings = problem.scene.run
@@ -374,6 +355,42 @@ def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) ->
     if run.integrator in ("bdf", "cvodes", "idas"):
         changes.update(rtol=run.rtol / options.tighten, atol=run.atol / options.tighten)
     return scene.with_run(**changes)
+
+
+def estimates_at(values: np.ndarray, free: FreeParameters, spread: Uncertainty,
+                 explains: bool) -> dict[str, Estimate]:
+    """Each free parameter's estimate at ``values`` with its interval; none is determined
+    where the fit does not explain the data (``explains`` false)."""
+    determined = spread.determined & explains
+    return {name: Estimate(name, float(values[k]), float(spread.std[k]),
+                           float(spread.low95[k]), float(spread.high95[k]),
+                           float(free.start[k]), bool(determined[k]))
+            for k, name in enumerate(free.names)}
+
+
+def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
+               optimum: Optimum, spread: Uncertainty, noise_spread: np.ndarray | None,
+               box_spread: float) -> tuple[dict[str, Any], str | None, Uncertainty,
+                                           list[str]]:
+    """The fit's residual statistics, why the residuals are not the noise (None: they
+    are), its intervals (spanning the searched box, ``box_spread`` of the start either
+    side, where they are not) and its warnings; for a scene's and a mechanism's fit alike."""
+    stats = residual_statistics(measured, fitted, optimum.sigma, free.size)
+    misfit = residual_check(fitted - measured.values, optimum.sigma, stats["dof"],
+                            noise_spread, measured.columns)
+    warnings = list(spread.warnings)
+    if misfit is not None:
+        # nothing is determined: the intervals span the box the search covered
+        box = starts_around(free, 1, box_spread, 0)[0]
+        width = np.where(box != 0, box_spread * np.abs(box), box_spread)
+        spread = dataclasses.replace(
+            spread, low95=np.minimum(spread.low95, np.maximum(box - width, free.lower)),
+            high95=np.maximum(spread.high95, np.minimum(box + width, free.upper)),
+            determined=np.zeros(free.size, dtype=bool))
+        warnings = [f"nothing is determined: {misfit}; each interval spans the box the "
+                    f"search covered (±{box_spread:g} of the start). State the noise if "
+                    "you know it, or free what the model may lack"]
+    return stats, misfit, spread, warnings + _bound_warnings(optimum.values, free)
 
 
 def _bound_warnings(values: np.ndarray, free: FreeParameters) -> list[str]:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import csv
 import io
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -120,6 +120,22 @@ def grid_indices(t: np.ndarray, output_step: float) -> np.ndarray | None:
 
 
 def _from_csv(path: Path, model: Model) -> Measured:
+    return read_csv_table(path, "time, tip_x, ...",
+                          lambda header, source: _checked_header(header, model, source),
+                          _checked_value)
+
+
+def read_csv_table(path: Path, example: str,
+                   header_columns: Callable[[list[str], str], list[str]],
+                   check_value: Callable[[float, str, str, str], None] | None = None,
+                   ) -> Measured:
+    """The measured samples of the CSV table ``path``, every cell checked.
+
+    ``example`` begins the header the error for an empty file suggests; ``header_columns``
+    checks the header (stripped cells) and gives the measured columns; ``check_value``, if
+    given, checks each finite value (value, its text, ``row N column NAME``, column) beyond
+    being a number. Both the scene and the mechanism calibrations read their tables here.
+    """
     source = str(path)
     if path.stat().st_size > MAX_TABLE_BYTES:
         raise DescriptionError("measured", f"is larger than {MAX_TABLE_BYTES >> 20} MiB; "
@@ -132,42 +148,57 @@ def _from_csv(path: Path, model: Model) -> Measured:
                                "header row, or a results file (.h5)", source) from None
     rows = [row for row in csv.reader(io.StringIO(text)) if any(c.strip() for c in row)]
     if not rows:
-        raise DescriptionError("measured", "is empty; give a header row (time, tip_x, ...) "
+        raise DescriptionError("measured", f"is empty; give a header row ({example}) "
                                "and the samples", source)
     header = [c.strip() for c in rows[0]]
-    columns = _checked_header(header, model, source)
+    columns = header_columns(header, source)
     data = np.empty((len(rows) - 1, len(header)))
     for i, row in enumerate(rows[1:], start=2):
         if len(row) != len(header):
             raise DescriptionError(f"row {i}", f"has {len(row)} cells, the header "
                                    f"{len(header)}; give every column in every row", source)
         for k, cell in enumerate(row):
-            data[i - 2, k] = _cell(cell, i, header[k], source)
+            value = _cell(cell, i, header[k], source)
+            if check_value is not None and header[k] != "time":
+                check_value(value, f"row {i} column {header[k]}", header[k], source)
+            data[i - 2, k] = value
     t = data[:, header.index("time")]
     values = data[:, [header.index(c) for c in columns]]
-    return _checked_times(Measured(source, t, tuple(columns), values))
+    return checked_times(Measured(source, t, tuple(columns), values))
 
 
-def _checked_header(header: Sequence[str], model: Model, source: str) -> list[str]:
-    allowed = [*TIP_COLUMNS, *angle_columns(model)]
+def checked_header(header: Sequence[str], allowed: Sequence[str], source: str,
+                   not_allowed: str, refused: Mapping[str, str] | None = None) -> list[str]:
+    """The measured columns of ``header``: ``time`` and names from ``allowed``, each once.
+
+    A name outside ``allowed`` gets ``not_allowed`` (what it is not) with the allowed names;
+    a name in ``refused`` gets its message there instead.
+    """
+    listed = ", ".join(allowed)
     if "time" not in header:
         raise DescriptionError("time", "column is missing; the header needs time (s) and "
-                               f"any of {', '.join(allowed)}", source)
+                               f"any of {listed}", source)
     seen: set[str] = set()
     for name in header:
         if name in seen:
             raise DescriptionError(name or "header", "column appears twice; name each once",
                                    source)
         seen.add(name)
+        if refused and name in refused:
+            raise DescriptionError(name, refused[name], source)
         if name != "time" and name not in allowed:
-            raise DescriptionError(name or "header", "is not a column this model can be "
-                                   f"compared on; allowed: time, {', '.join(allowed)}"
+            raise DescriptionError(name or "header", f"{not_allowed}; allowed: time, {listed}"
                                    + did_you_mean(name, ["time", *allowed]), source)
     columns = [c for c in header if c != "time"]
     if not columns:
         raise DescriptionError("header", "has a time column only; add measured columns ("
-                               f"{', '.join(allowed)})", source)
+                               f"{listed})", source)
     return columns
+
+
+def _checked_header(header: Sequence[str], model: Model, source: str) -> list[str]:
+    return checked_header(header, [*TIP_COLUMNS, *angle_columns(model)], source,
+                          "is not a column this model can be compared on")
 
 
 def _cell(text: str, row: int, column: str, source: str) -> float:
@@ -179,15 +210,19 @@ def _cell(text: str, row: int, column: str, source: str) -> float:
     if not math.isfinite(value):
         raise DescriptionError(f"row {row} column {column}", f"is {text.strip()}; every cell "
                                "must be a finite number (drop or fill missing samples)", source)
-    if column != "time" and abs(value) > MAX_MEASURED:
-        unit = "m" if column in TIP_COLUMNS else "rad"
-        raise DescriptionError(f"row {row} column {column}", f"is {value:g} {unit}; a measured "
-                               f"value must lie within ±{MAX_MEASURED:g} {unit} (check the "
-                               "units: metres and radians)", source)
     return value
 
 
-def _checked_times(measured: Measured) -> Measured:
+def _checked_value(value: float, where: str, column: str, source: str) -> None:
+    if abs(value) > MAX_MEASURED:
+        unit = "m" if column in TIP_COLUMNS else "rad"
+        raise DescriptionError(where, f"is {value:g} {unit}; a measured "
+                               f"value must lie within ±{MAX_MEASURED:g} {unit} (check the "
+                               "units: metres and radians)", source)
+
+
+def checked_times(measured: Measured) -> Measured:
+    """``measured`` if it has enough samples at strictly increasing times."""
     t = measured.t
     if t.size < MIN_SAMPLES:
         raise DescriptionError("time", f"has {t.size} samples; a calibration needs at least "
@@ -225,5 +260,5 @@ def _from_results(path: Path, model: Model) -> Measured:
     if np.any(np.abs(values) > MAX_MEASURED):
         raise DescriptionError("measured", f"holds values beyond ±{MAX_MEASURED:g} (m or rad); "
                                "give a run of a real robot", str(path))
-    return _checked_times(Measured(str(path), np.asarray(result.t, float), tuple(columns),
+    return checked_times(Measured(str(path), np.asarray(result.t, float), tuple(columns),
                                    values))

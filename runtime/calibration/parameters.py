@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -74,15 +74,37 @@ def free_parameters(names: Sequence[str], scene: Scene, model: Model,
     Raises :class:`DescriptionError` naming the first bad name: unknown, repeated, absent
     from this model (friction in a frictionless robot), or a start outside its range.
     """
+    return checked_free_parameters(
+        names, start, "friction.mu or joint2.clearance",
+        lambda name: _check_known(name, scene, model, flag),
+        lambda name: physical_range(name, scene), lambda name: scene_value(name, scene),
+        flag=flag)
+
+
+def checked_free_parameters(names: Sequence[str], start: Mapping[str, float] | None,
+                            example: str, check_known: Callable[[str], None],
+                            value_range: Callable[[str], tuple[float, float]],
+                            own_value: Callable[[str], float],
+                            check_names: Callable[[Sequence[str]], None] | None = None,
+                            flag: str = "free") -> FreeParameters:
+    """The free parameters ``names`` starting at ``start`` (else ``own_value``), checked.
+
+    ``example`` names two free parameters for the error when none is given; ``check_known``
+    refuses a name the model lacks, ``check_names`` (if given) the names together;
+    ``value_range`` gives each name's bounds. Both the scene's and the mechanism's
+    calibrations check their free names here.
+    """
     if not names:
         raise DescriptionError(flag, "no parameter names given; name at least one, e.g. "
-                               "friction.mu or joint2.clearance")
+                               f"{example}")
     seen: set[str] = set()
     for name in names:
         if name in seen:
             raise DescriptionError(f"{flag} {name}", "is named twice; name it once")
         seen.add(name)
-        _check_known(name, scene, model, flag)
+        check_known(name)
+    if check_names is not None:
+        check_names(names)
     start = dict(start or {})
     for name in start:
         if name not in seen:
@@ -90,8 +112,8 @@ def free_parameters(names: Sequence[str], scene: Scene, model: Model,
                                    f"values for the free ones only ({', '.join(names)})")
     values, lower, upper = [], [], []
     for name in names:
-        low, high = physical_range(name, scene)
-        value = float(start[name]) if name in start else scene_value(name, scene)
+        low, high = value_range(name)
+        value = float(start[name]) if name in start else own_value(name)
         if not math.isfinite(value) or not low <= value <= high:
             raise DescriptionError(f"start {name}", f"{value!r} is outside its physical range "
                                    f"[{low:g}, {high:g}]; start inside it")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -89,8 +90,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def cmd_calibrate(args: argparse.Namespace) -> int:
-    from jointplay.calibration.api import CalibrationOptions, prepare, run
-    from jointplay.calibration.report import output_plan, write_report
+    from jointplay.calibration.api import prepare, run
     from jointplay.mechanism.reading import is_mechanism_file
 
     check_output_name("--out", args.out, "folder")
@@ -99,19 +99,38 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
 
         return cmd_calibrate_mechanism(args)
     scene = scene_from_args(args)
+    return calibrate_and_report(
+        args, scene.source,
+        lambda measured, free, **kw: prepare(scene, measured, free, **kw), run,
+        lambda problem, _: (f"calibrating {', '.join(problem.free.names)} of {scene.name} on "
+                            f"{problem.measured.t.size} samples of "
+                            f"{', '.join(problem.measured.columns)}"),
+        _flagged)
+
+
+def calibrate_and_report(args: argparse.Namespace, source: str,
+                         prepare: Callable[..., Any], run: Callable[[Any], Any],
+                         announce: Callable[[Any, Any], str],
+                         flagged: Callable[[DescriptionError], DescriptionError]) -> int:
+    """The steps a scene's and a mechanism's calibration share: plan the outputs, parse the
+    flags, ``prepare(measured, free, noise=, start=, options=)`` (a DescriptionError passed
+    through ``flagged``), print ``announce(problem, options)``, ``run(problem)``, write the
+    report and print its findings."""
+    from jointplay.calibration.api import CalibrationOptions
+    from jointplay.calibration.report import output_plan, write_report
+
     out = Path(args.out)
     check_writable_dir(out, "--out")
-    plan = output_plan(out, {"scene": scene.source, "--measured": args.measured})
+    plan = output_plan(out, {"scene": source, "--measured": args.measured})
     free = [n.strip() for n in args.free.split(",") if n.strip()]
     options = _options(args, CalibrationOptions)
     try:
-        problem = prepare(scene, args.measured, free, noise=_noise(args.noise),
+        problem = prepare(args.measured, free, noise=_noise(args.noise),
                           start=_start(args.start), options=options)
     except DescriptionError as err:
-        raise _flagged(err) from None
+        raise flagged(err) from None
     if not args.quiet:
-        print(f"calibrating {', '.join(problem.free.names)} of {scene.name} on "
-              f"{problem.measured.t.size} samples of {', '.join(problem.measured.columns)}")
+        print(announce(problem, options))
     result = run(problem)
     written = write_report(result, out, plan, command_line())
     if not args.quiet:

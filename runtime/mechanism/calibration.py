@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.api import CalibrationOptions
+from jointplay.calibration.api import CalibrationOptions, estimates_at, judged_fit
 from jointplay.calibration.basins import Basins, widened
 from jointplay.calibration.basins import threshold as basin_threshold
 from jointplay.calibration.fit import (
@@ -37,12 +37,11 @@ from jointplay.calibration.fit import (
     Start,
     least_squares_fit,
     multi_start,
-    residual_statistics,
     starts_around,
     timed,
 )
 from jointplay.calibration.measured import Measured, checked_for_scene, grid_indices, noise_levels
-from jointplay.calibration.noise import column_noise, residual_check
+from jointplay.calibration.noise import column_noise
 from jointplay.calibration.parameters import FreeParameters
 from jointplay.calibration.predict import (
     FD_RELATIVE_STEP,
@@ -52,7 +51,7 @@ from jointplay.calibration.predict import (
     whitened,
 )
 from jointplay.calibration.profiles import PROFILE_SIGMAS, UNDETERMINED_SPAN
-from jointplay.calibration.result import CalibrationResult, Estimate
+from jointplay.calibration.result import CalibrationResult
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
 from jointplay.common.errors import DescriptionError
 from jointplay.mechanism.calibration_inputs import (
@@ -279,25 +278,8 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
     spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                  warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
-    stats = residual_statistics(problem.measured, fitted, optimum.sigma, free.size)
-    misfit = residual_check(fitted - problem.measured.values, optimum.sigma, stats["dof"],
-                            problem.noise_spread, problem.measured.columns)
-    warnings = list(spread.warnings)
-    if misfit is not None:
-        # nothing is determined: the intervals span the box the search covered
-        box = starts_around(free, 1, opts.spread, 0)[0]
-        width = np.where(box != 0, opts.spread * np.abs(box), opts.spread)
-        spread = dataclasses.replace(
-            spread, low95=np.minimum(spread.low95, np.maximum(box - width, free.lower)),
-            high95=np.maximum(spread.high95, np.minimum(box + width, free.upper)),
-            determined=np.zeros(free.size, dtype=bool))
-        warnings = [f"nothing is determined: {misfit}; each interval spans the box the "
-                    f"search covered (±{opts.spread:g} of the start). State the noise if "
-                    "you know it, or free what the model may lack"]
-    warnings += [f"{name} ended on its physical bound ({optimum.values[k]:.6g}): the optimum "
-                 "may lie outside the range the model accepts"
-                 for k, name in enumerate(free.names)
-                 if not free.lower[k] < optimum.values[k] < free.upper[k]]
+    stats, misfit, spread, warnings = judged_fit(fitted, problem.measured, free, optimum,
+                                                 spread, problem.noise_spread, opts.spread)
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
                    profile_runs, misfit is None, (wall1 - wall0, cpu1 - cpu0))
@@ -383,12 +365,7 @@ def _result(problem: MechanismProblem, predictor: MechanismPredictor, optimum: O
             profile_runs: int, explains: bool, seconds: tuple[float, float]
             ) -> CalibrationResult:
     free = problem.free
-    determined = spread.determined & explains
-    estimates = {
-        name: Estimate(name, float(optimum.values[k]), float(spread.std[k]),
-                       float(spread.low95[k]), float(spread.high95[k]), float(free.start[k]),
-                       bool(determined[k]))
-        for k, name in enumerate(free.names)}
+    estimates = estimates_at(optimum.values, free, spread, explains)
     run = problem.scene.run
     units = dict(zip(problem.model.coordinates, problem.model.units, strict=True))
     return CalibrationResult(

@@ -18,8 +18,6 @@ checked before any run; the times must lie on the run's output grid.
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 import re
 from collections.abc import Mapping, Sequence
@@ -27,11 +25,17 @@ from pathlib import Path
 
 import numpy as np
 
-from jointplay.calibration.measured import MIN_SAMPLES, Measured, grid_indices
-from jointplay.calibration.parameters import FreeParameters
+from jointplay.calibration.measured import (
+    Measured,
+    checked_header,
+    checked_times,
+    grid_indices,
+    read_csv_table,
+)
+from jointplay.calibration.parameters import FreeParameters, checked_free_parameters
 from jointplay.common.errors import DescriptionError
 from jointplay.common.hints import did_you_mean
-from jointplay.common.limits import MAX_TABLE_BYTES, MIN_RADIAL_CLEARANCE, PHYSICAL_RANGES
+from jointplay.common.limits import MIN_RADIAL_CLEARANCE, PHYSICAL_RANGES
 from jointplay.mechanism.description import MechanismScene
 from jointplay.mechanism.model import MechanismModel
 
@@ -82,32 +86,11 @@ def mechanism_free_parameters(names: Sequence[str], scene: MechanismScene,
     """Check ``names`` against the mechanism and ``start`` against the physical ranges;
     raises :class:`DescriptionError` naming the first bad name (``free NAME``, ``start
     NAME``)."""
-    if not names:
-        raise DescriptionError("free", "no parameter names given; name at least one, e.g. "
-                               "friction.mu or slider_pin.clearance")
-    seen: set[str] = set()
-    for name in names:
-        if name in seen:
-            raise DescriptionError(f"free {name}", "is named twice; name it once")
-        seen.add(name)
-        _check_known(name, scene, model)
-    _check_radii(names, scene)
-    start = dict(start or {})
-    for name in start:
-        if name not in seen:
-            raise DescriptionError(f"start {name}", "is not a free parameter; give start "
-                                   f"values for the free ones only ({', '.join(names)})")
-    values, lower, upper = [], [], []
-    for name in names:
-        low, high = parameter_range(name, scene)
-        value = float(start[name]) if name in start else scene_value(name, scene)
-        if not math.isfinite(value) or not low <= value <= high:
-            raise DescriptionError(f"start {name}", f"{value!r} is outside its physical range "
-                                   f"[{low:g}, {high:g}]; start inside it")
-        values.append(value)
-        lower.append(low)
-        upper.append(high)
-    return FreeParameters(tuple(names), np.array(values), np.array(lower), np.array(upper))
+    return checked_free_parameters(
+        names, start, "friction.mu or slider_pin.clearance",
+        lambda name: _check_known(name, scene, model),
+        lambda name: parameter_range(name, scene), lambda name: scene_value(name, scene),
+        check_names=lambda given: _check_radii(given, scene))
 
 
 def scene_value(name: str, scene: MechanismScene) -> float:
@@ -198,83 +181,12 @@ def on_output_grid(measured: Measured, scene: MechanismScene) -> Measured:
 
 
 def _from_csv(path: Path, model: MechanismModel) -> Measured:
-    source = str(path)
-    if path.stat().st_size > MAX_TABLE_BYTES:
-        raise DescriptionError("measured", f"is larger than {MAX_TABLE_BYTES >> 20} MiB; "
-                               "give fewer samples", source)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError:
-        raise DescriptionError("measured", "is not a UTF-8 text table; give a CSV with a "
-                               "header row, or a results file (.h5)", source) from None
-    rows = [row for row in csv.reader(io.StringIO(text)) if any(c.strip() for c in row)]
-    if not rows:
-        raise DescriptionError("measured", "is empty; give a header row (time, "
-                               "guide.position, ...) and the samples", source)
-    header = [c.strip() for c in rows[0]]
-    columns = _checked_header(header, model, source)
-    data = np.empty((len(rows) - 1, len(header)))
-    for i, row in enumerate(rows[1:], start=2):
-        if len(row) != len(header):
-            raise DescriptionError(f"row {i}", f"has {len(row)} cells, the header "
-                                   f"{len(header)}; give every column in every row", source)
-        for k, cell in enumerate(row):
-            data[i - 2, k] = _cell(cell, i, header[k], source)
-    t = data[:, header.index("time")]
-    values = data[:, [header.index(c) for c in columns]]
-    return _checked_times(Measured(source, t, tuple(columns), values))
-
-
-def _checked_header(header: Sequence[str], model: MechanismModel, source: str) -> list[str]:
-    allowed = output_columns(model)
-    listed = ", ".join(allowed)
-    if "time" not in header:
-        raise DescriptionError("time", f"column is missing; the header needs time (s) and any "
-                               f"of {listed}", source)
-    seen: set[str] = set()
-    for name in header:
-        if name in seen:
-            raise DescriptionError(name or "header", "column appears twice; name each once",
-                                   source)
-        seen.add(name)
-        if name in (CLOCK, RATE + CLOCK, ACCELERATION + CLOCK):
-            raise DescriptionError(name, "is the model's clock (time itself), not a "
-                                   "measurement; drop the column", source)
-        if name != "time" and name not in allowed:
-            raise DescriptionError(name or "header", "is not an output of this mechanism; "
-                                   f"allowed: time, {listed}"
-                                   + did_you_mean(name, ["time", *allowed]), source)
-    columns = [c for c in header if c not in ("time", CLOCK, RATE + CLOCK,
-                                               ACCELERATION + CLOCK)]
-    if not columns:
-        raise DescriptionError("header", f"has a time column only; add measured columns "
-                               f"({listed})", source)
-    return columns
-
-
-def _cell(text: str, row: int, column: str, source: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise DescriptionError(f"row {row} column {column}", f"is not a number ({text!r})",
-                               source) from None
-    if not math.isfinite(value):
-        raise DescriptionError(f"row {row} column {column}", f"is {text.strip()}; every cell "
-                               "must be a finite number (drop or fill missing samples)", source)
-    return value
-
-
-def _checked_times(measured: Measured) -> Measured:
-    t = measured.t
-    if t.size < MIN_SAMPLES:
-        raise DescriptionError("time", f"has {t.size} samples; a calibration needs at least "
-                               f"{MIN_SAMPLES}", measured.source)
-    steps = np.diff(t)
-    if np.any(steps <= 0):
-        k = int(np.argmax(steps <= 0))
-        raise DescriptionError("time", f"must increase strictly: {t[k + 1]:g} s follows "
-                               f"{t[k]:g} s (sample {k + 2})", measured.source)
-    return measured
+    clock = "is the model's clock (time itself), not a measurement; drop the column"
+    refused = {name: clock for name in (CLOCK, RATE + CLOCK, ACCELERATION + CLOCK)}
+    return read_csv_table(path, "time, guide.position, ...",
+                          lambda header, source: checked_header(
+                              header, output_columns(model), source,
+                              "is not an output of this mechanism", refused))
 
 
 def _from_results(path: Path, model: MechanismModel) -> Measured:
@@ -295,5 +207,5 @@ def _from_results(path: Path, model: MechanismModel) -> Measured:
                                 for j in range(len(model.cut_joint_names)) for k in (0, 1))])
     if not np.all(np.isfinite(values)):
         raise DescriptionError("measured", "holds values that are not finite", str(path))
-    return _checked_times(Measured(str(path), np.asarray(result.t, float), tuple(columns),
+    return checked_times(Measured(str(path), np.asarray(result.t, float), tuple(columns),
                                    values))
