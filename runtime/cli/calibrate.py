@@ -108,7 +108,7 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
         _flagged)
 
 
-def calibrate_and_report(args: argparse.Namespace, source: str,
+def calibrate_and_report(args: argparse.Namespace, source: str | None,
                          prepare: Callable[..., Any], run: Callable[[Any], Any],
                          announce: Callable[[Any, Any], str],
                          flagged: Callable[[DescriptionError], DescriptionError]) -> int:
