@@ -34,25 +34,17 @@ from typing import Any
 
 import numpy as np
 
+from jointplay.common.timing import per_call_seconds
+
 SCENES = ("scenes/slider_crank.toml", "scenes/slider_crank_0_1mm.toml")
 TOLERANCES = (1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
 
 
-def _cpu_per_call(function: Any, inputs: list[np.ndarray], batch_s: float = 0.05) -> float:
-    """CPU seconds per call (``time.process_time``) over a batch of about ``batch_s``."""
+def _cpu_per_call(function: Any, inputs: list[np.ndarray]) -> float:
+    """CPU seconds per call (``time.process_time``), the median of calibrated batches."""
     for slot, value in zip(function.inputs, inputs, strict=True):
         slot[:] = value
-    trigger = function.trigger
-    trigger()
-    number = 1
-    while True:
-        t0 = time.process_time()
-        for _ in range(number):
-            trigger()
-        elapsed = time.process_time() - t0
-        if elapsed >= batch_s or number >= 1 << 22:
-            return elapsed / number
-        number *= 2
+    return per_call_seconds(function.trigger, clock=time.process_time)
 
 
 def _timed(rows: list[dict[str, Any]], rounds: int = 7) -> None:
