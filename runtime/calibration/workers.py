@@ -141,11 +141,17 @@ def _stop(pool: ProcessPoolExecutor) -> None:
     # The executor keeps its processes by pid; a worker killed mid-piece cannot leave a
     # lock held that this process waits on, since nothing here joins the pool's queues.
     processes = list((getattr(pool, "_processes", None) or {}).values())
+    manager = getattr(pool, "_executor_manager_thread", None)
     for process in processes:
         with contextlib.suppress(OSError):
             process.kill()
     pool.shutdown(wait=False, cancel_futures=True)
+    # The pool's own thread reaps the killed workers too; a join here racing it can find the
+    # child already reaped but its exit not yet recorded (the process would still read as
+    # running), so that thread is let finish first, within the same bound.
     deadline = time.monotonic() + 5.0
+    if manager is not None:
+        manager.join(max(0.0, deadline - time.monotonic()))
     for process in processes:  # reaped (a killed process exits at once)
         process.join(max(0.0, deadline - time.monotonic()))
 
