@@ -127,8 +127,8 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     or whose estimate joins a better track's, is dropped (a longer window only sharpens the
     difference). With a single track the first window's fit tries ``alternatives`` while
     its fit does not explain that window within the noise. A stage whose every run
-    stops ends the continuation at the previous estimates (the full-record fit and its
-    fallbacks follow). The windows' runs use the fit's tolerances times ``looser`` (each
+    stops ends the continuation at the previous estimates (the full-record fit follows).
+    The windows' runs use the fit's tolerances times ``looser`` (each
     window's fit only has to land in the right valley; the whole-record fit, at the fit's
     tolerances, sets the estimate), and each window's fit before the line scan at most
     WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first adds the

@@ -26,7 +26,9 @@ class CalibrationOptions:
     starts : int
         Starts of the multi-start at most: the first the given start, the rest a Latin
         hypercube within ±``spread`` (relative) of it, run only while the best fit does not
-        explain the data within the stated noise.
+        explain the data within the stated noise; only without the continuation
+        (``horizon_first`` 0): with it, the tracks it carries are the whole-record fit's
+        starts.
     spread : float
         The relative half-width of the region the starts and the grid cover.
     seed : int
@@ -37,14 +39,13 @@ class CalibrationOptions:
         Points of each cost profile (0: none).
     scan_points : int
         Runs along the weakest direction of the first optimum (0: no scan), local fits from
-        the ``refine`` lowest minima along it.
+        the ``refine`` lowest minima along it; only without the continuation, as ``starts``.
     refine : int
         See ``scan_points``.
     horizon_first : float
         The first window (s) of the horizon continuation, grown by ``horizon_growth`` each stage
         up to the whole record, each stage started at the last one's estimate (0: no
-        continuation, the fit starts on the whole record); the starts and the scan are the
-        fallback where the whole-record fit does not explain the data.
+        continuation, the fit starts on the whole record from ``starts``, then the scan).
     horizon_growth : float
         See ``horizon_first``.
     grid_window : float

@@ -36,15 +36,16 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--start", metavar="NAME=VALUE,...",
                    help="start values of free parameters (default: the scene's)")
     p.add_argument("--starts", type=int, default=6,
-                   help="local fits at most: the start, then a Latin hypercube within "
-                        "--spread of it, tried while the fit does not explain the data "
-                        "(default 6)")
+                   help="without the continuation (--horizon-first 0): local fits at "
+                        "most, the start, then a Latin hypercube within --spread of it, "
+                        "tried while the fit does not explain the data (default 6)")
     p.add_argument("--spread", type=float, default=0.5,
                    help="relative half-width of the box of further starts and of the scan "
                         "(default 0.5)")
     p.add_argument("--scan-points", type=int, default=201,
-                   help="runs along the weakest direction of the first fit, where impacts "
-                        "make the cost rugged (default 201; 0: no scan)")
+                   help="without the continuation: runs along the weakest direction of the "
+                        "first fit, where impacts make the cost rugged (default 201; 0: no "
+                        "scan)")
     p.add_argument("--horizon-first", type=float, default=0.005,
                    help="first window (s) of the horizon continuation: the fit runs on the "
                         "data up to it, then on windows longer by the growth factor below, each "
