@@ -503,7 +503,9 @@ def test_grid_finds_the_true_valley_of_the_clearances() -> None:
     predictor = Predictor(fit_scene, model, free, measured)
     found = grid_candidates(predictor, np.array([NOISE, NOISE]), free.start,
                             Grid(0.02, 11, 0.5, 3, 100.0))
-    assert found is not None and found.points_per_axis == 11 and found.simulations == 121
+    # 121 points, and 2-4 runs choosing the window's tolerances (window_looseness)
+    assert found is not None and found.points_per_axis == 11
+    assert 121 + 2 <= found.simulations <= 121 + 4
     spacing = 30e-6 / 10
     best = found.candidates[0]
     assert abs(best[0] - truth["joint2.clearance"]) <= spacing
@@ -513,7 +515,7 @@ def test_grid_finds_the_true_valley_of_the_clearances() -> None:
     # the same grid on two forked processes: the same numbers
     again = grid_candidates(predictor, np.array([NOISE, NOISE]), free.start,
                             Grid(0.02, 11, 0.5, 3, 100.0), workers=2)
-    assert again is not None and again.simulations == 121
+    assert again is not None and again.simulations == found.simulations
     assert np.array_equal(again.candidates, found.candidates) and again.chi2 == found.chi2
 
 

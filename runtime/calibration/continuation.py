@@ -86,6 +86,53 @@ def loosened(scene: Scene, factor: float) -> Scene:
     return scene.with_run(rtol=run.rtol * factor, atol=run.atol * factor)
 
 
+WINDOW_MODEL_ERROR = 1.0
+"""The most the runs at a window's loosened tolerances may differ from those at the fit's
+own, as a chi² (the whitened difference's sum of squares) at the best track's estimate: the
+chi² of two fits then differ by about the model's error at most, far inside the margins the
+tracks are compared by. A loosening that keeps a short window's runs within the noise can
+move a long one's by thousands of chi² (100 times looser on a fast excitation: the truth's
+chi² over 1.5 s 38 000 instead of 1 560), and ranks the tracks by the integrator's error."""
+
+
+def window_looseness(predictor: Predictor, weights: np.ndarray, x: np.ndarray, end: float,
+                     most: float) -> tuple[float, int]:
+    """The loosest of ``most``, ``most``/10, ... , 1 (times the fit's tolerances) whose runs
+    over the samples up to ``end`` stay within WINDOW_MODEL_ERROR of the fit's own at ``x``;
+    and the runs it took. A run that stops counts as too loose; one that stops at the fit's
+    own tolerances leaves ``most`` (the window's fits then meet the failure themselves)."""
+    factors = []
+    factor = most
+    while factor > 1:
+        factors.append(factor)
+        factor /= 10
+    if not factors:
+        return 1.0, 0
+    runs = 0
+
+    def outputs(factor: float) -> np.ndarray | None:
+        nonlocal runs
+        part, scene = _window_problem(predictor, end, factor)
+        probe = Predictor(scene, predictor.model, predictor.free, part,
+                          compiled=predictor.compiled)
+        try:
+            return probe.outputs(x, with_jacobian=False)
+        except TrialFailed:
+            return None
+        finally:
+            runs += probe.counter.simulations
+
+    reference = outputs(1.0)
+    if reference is None:
+        return most, runs
+    for factor in factors:
+        loose = outputs(factor)
+        if loose is not None and np.sum(whitened(loose - reference, weights)**2) \
+                <= WINDOW_MODEL_ERROR:
+            return factor, runs
+    return 1.0, runs
+
+
 def window(measured: Measured, end: float) -> Measured:
     """The samples of ``measured`` up to ``end``."""
     keep = measured.t <= end * (1 + 1e-9)
@@ -128,7 +175,8 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     difference). With a single track the first window's fit tries ``alternatives`` while
     its fit does not explain that window within the noise. A stage whose every run
     stops ends the continuation at the previous estimates (the full-record fit follows).
-    The windows' runs use the fit's tolerances times ``looser`` (each
+    The windows' runs use the fit's tolerances times ``looser`` at most (each window the
+    loosest that keeps its runs within the noise, :func:`window_looseness`; each
     window's fit only has to land in the right valley; the whole-record fit, at the fit's
     tolerances, sets the estimate), and each window's fit before the line scan at most
     WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first adds the
@@ -150,6 +198,10 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     scanned = valley is None
     scans = 0
     for k, end in enumerate(ends):
+        # a longer window is never run looser than a shorter one needed
+        looser, more = window_looseness(predictor, weights, alive[0], end, looser) \
+            if alive else (looser, 0)
+        runs += more
         part, stage_scene = _window_problem(predictor, end, looser)
         dof = max(part.size - predictor.free.size, 1)
         scans_here = []

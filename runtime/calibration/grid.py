@@ -19,7 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jointplay.calibration.continuation import _holding, loosened, window
+from jointplay.calibration.continuation import (
+    _holding,
+    loosened,
+    window,
+    window_looseness,
+)
 from jointplay.calibration.fit import multi_start
 from jointplay.calibration.parameters import FreeParameters
 from jointplay.calibration.predict import Predictor, chi2_at_points
@@ -33,7 +38,9 @@ class Grid:
     """How the grid runs: a window ending at ``window_end`` (s), at most ``points`` values
     of each free clearance (fewer per axis with more than two, keeping the grid at most
     ``points`` squared runs) across ±``spread`` (relative) of the start, the runs at the
-    fit's tolerances times ``looser``; ``candidates``: the lowest local minima kept."""
+    fit's tolerances times ``looser`` at most (the loosest that keeps them within the noise:
+    :func:`~jointplay.calibration.continuation.window_looseness`); ``candidates``: the
+    lowest local minima kept."""
 
     window_end: float
     points: int
@@ -44,7 +51,9 @@ class Grid:
 
 @dataclass(frozen=True)
 class GridResult:
-    """The candidates (best first), their window chi², the grid's axes and its runs."""
+    """The candidates (best first), their window chi², the grid's axes and its runs (the
+    grid's points, and the two to four that chose their tolerances:
+    :func:`~jointplay.calibration.continuation.window_looseness`)."""
 
     candidates: np.ndarray
     chi2: tuple[float, ...]
@@ -62,8 +71,9 @@ def clearance_axes(names: tuple[str, ...]) -> list[int]:
 def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
                  looser: float, max_evaluations: int) -> tuple[np.ndarray, int]:
     """``start`` with the free parameters other than the clearances fitted over the whole
-    record, the clearances held, the runs at the fit's tolerances times ``looser``; and the
-    runs. Why: the grid holds them, and they are far better determined by the whole record
+    record, the clearances held, the runs at the fit's tolerances times ``looser`` at most
+    (:func:`~jointplay.calibration.continuation.window_looseness`); and the runs. Why: the
+    grid holds them, and they are far better determined by the whole record
     than by the grid's window (on the paper scene the friction from 50 % away moves the tip by
     millimetres over 2 s, the clearances by tens of micrometres: held at the scene's values,
     the fit ends within 1.6 % of the true friction on benchmark draws 0, 3 and 4, where over
@@ -74,16 +84,18 @@ def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
         return start, 0
     held = np.zeros(free.size, dtype=bool)
     held[axes] = True
+    looser, runs = window_looseness(predictor, weights, start, float(predictor.measured.t[-1]),
+                                    looser)
     coarse = loosened(predictor.scene, looser)
     probe = Predictor(coarse, predictor.model, _holding(free, start, held), predictor.measured,
                       compiled=predictor.compiled)
     try:
         x, _ = multi_start(probe, weights, start[None, :], max_evaluations, stop_early=False)
     except SimulationError:
-        return start, probe.counter.simulations
+        return start, runs + probe.counter.simulations
     x = np.asarray(x, dtype=float)
     x[axes] = start[axes]
-    return x, probe.counter.simulations
+    return x, runs + probe.counter.simulations
 
 
 def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
@@ -103,9 +115,10 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
     scene = predictor.scene
     step = scene.run.output_step
     run = scene.run
+    looser, checks = window_looseness(predictor, weights, start, grid.window_end, grid.looser)
     coarse = loosened(scene.with_run(t_end=min(run.t_end, math.ceil(grid.window_end / step
                                                                     - 1e-9) * step)),
-                      grid.looser)
+                      looser)
     probe = Predictor(coarse, predictor.model, free, part, compiled=predictor.compiled)
     shape = (per_axis,) * len(axes)
     indices = list(itertools.product(range(per_axis), repeat=len(axes)))
@@ -119,6 +132,7 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
 
     points = [point(index) for index in indices]
     values_chi2, runs = chi2_at_points(probe, weights, points, workers)
+    runs += checks
     chi2 = np.full(shape, np.inf)
     for index, value in zip(indices, values_chi2, strict=True):
         chi2[index] = value

@@ -51,7 +51,9 @@ class CalibrationOptions:
     grid_window : float
         The window (s) of the global stage: a grid of ``grid_points`` values of each free
         clearance across ±``spread`` of the start, its runs at the fit's tolerances times
-        ``window_looser`` (as are the runs on every window shorter than the record), whose
+        ``window_looser`` at most (as are the runs on every window shorter than the record:
+        each window the loosest of ``window_looser``, a tenth of it, ..., 1 whose runs stay
+        within a chi² of 1 of the fit's own at the best estimate), whose
         ``grid_candidates`` lowest local minima each start a track of the continuation, from
         ``grid_window`` on (0: no grid; the continuation starts at ``horizon_first`` from the
         start).
