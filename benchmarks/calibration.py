@@ -19,9 +19,9 @@ tighter), with 1 µm of Gaussian noise on each coordinate. Two parts:
 - recovery: for each draw, ``jointplay.calibrate`` from the scene's values with its default
   options (the global stage: friction first over the whole record, a 16 x 16 grid of the
   clearances on 20 ms, its minima carried as tracks through windows of 20 ms to 1.28 s with
-  lines across c2 - c3 from 0.32 s on; two worker processes; exchanged clearances, scan of
-  the weakest direction and multi-start where the whole-record fit does not explain the
-  data): the relative error of each estimate,
+  lines across c2 - c3 from 0.32 s on, each window at the loosest tolerances that keep its
+  runs within the noise; the valley and basin checks; two worker processes): the relative
+  error of each estimate,
   whether its 95 % interval holds the truth, chi²/dof, runs, wall and CPU seconds;
 - coverage: the first draw's truth measured with ``--seeds`` noise seeds, each fit started at
   the truth (one local fit on the whole record, no continuation: the global search is the

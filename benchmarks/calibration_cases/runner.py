@@ -130,7 +130,30 @@ def run_one(name: str, seed: int, out: Path, timeout_s: float) -> dict[str, Any]
         row["noise_ratio"] = {c: noise[c] / s for c, s in record["noise"].items() if c in noise}
     row["warnings"] = len(result.get("warnings", []))
     row["reported_wall_s"] = result.get("wall_time_s")
+    row["stages"] = stage_effects(result)
     return row
+
+
+def stage_effects(result: dict[str, Any]) -> dict[str, Any]:
+    """What each stage of the search did in one calibration (from its calibration.json):
+    its runs, and whether the checks after the whole-record fit changed the outcome: the
+    basin check moved the estimate to a lower minimum or widened an interval, the valley
+    check widened one, the residual check withdrew every verdict."""
+    warnings = result.get("warnings", [])
+    stages = result.get("continuation") or []
+    record_end = stages[-1]["end"] if stages else None
+    estimate = [e["value"] for e in result["estimates"].values()]
+    moved = record_end is not None and not np.allclose(estimate, record_end, rtol=1e-12,
+                                                       atol=0.0)
+    return {
+        "runs": result.get("simulations_by_kind", {}),
+        "basin check moved the estimate": bool(moved),
+        "basin check widened": any("other minimum" in w or "not the quadratic" in w
+                                   for w in warnings),
+        "valley check widened": any("not determined by the search" in w for w in warnings),
+        "residual check withdrew the verdicts": any(w.startswith("nothing is determined")
+                                                    for w in warnings),
+    }
 
 
 def _goal(pname: str) -> float | None:
@@ -207,6 +230,26 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
               f"{_s(s['cpu_median_s'])} s", "",
               "| case | wall median / worst s |", "|---|---|"]
     lines += [f"| {c} | {m:.1f} / {w:.1f} |" for c, (m, w) in s["wall_by_case"].items()]
+    lines += ["", "## What each stage did", "",
+              "Runs of each stage, and whether a check after the whole-record fit changed "
+              "the outcome (yes: it did in that run).", "",
+              "| case | seed | grid and windows | valley check | basin lines | basin check "
+              "moved / widened | valley check widened | residual check withdrew |",
+              "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        st = r.get("stages")
+        if not st:
+            continue
+        runs = st["runs"]
+
+        def yes(key: str, stages: dict[str, Any] = st) -> str:
+            return "yes" if stages[key] else "no"
+
+        lines.append(f"| {r['case']} | {r['seed']} | {runs.get('continuation windows', 0)} | "
+                     f"{runs.get('valley check', 0)} | {runs.get('basin lines', 0)} | "
+                     f"{yes('basin check moved the estimate')} / {yes('basin check widened')}"
+                     f" | {yes('valley check widened')} | "
+                     f"{yes('residual check withdrew the verdicts')} |")
     return "\n".join(lines) + "\n"
 
 
@@ -240,6 +283,9 @@ def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: flo
             done = out / "runs" / name / f"seed{seed}" / "row.json"
             if resume and done.is_file():  # a finished run of an earlier, interrupted call
                 row = json.loads(done.read_text())
+                result_file = done.parent / "calibration" / "calibration.json"
+                if "stages" not in row and row["status"] == "ok" and result_file.is_file():
+                    row["stages"] = stage_effects(json.loads(result_file.read_text()))
             else:
                 row = run_one(name, seed, out, timeout_s)
                 done.write_text(json.dumps(row, indent=1) + "\n")
