@@ -458,8 +458,8 @@ def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> 
 def test_grid_local_minima_and_track_pruning() -> None:
     """The grid's local minima (diagonal neighbours included) and the rule that carries
     tracks from one window to the next: a track more than TRACK_MARGIN (50) above the best
-    one, or 5 sqrt(2 dof) where that is less, is dropped, and so is one that has joined a
-    better track."""
+    one, or 5 sqrt(2 dof) where that is less, either times the best's chi²/dof where that
+    exceeds 1, is dropped, and so is one that has joined a better track."""
     from jointplay.calibration.continuation import _surviving
     from jointplay.calibration.grid import _local_minima
     from jointplay.calibration.parameters import FreeParameters
@@ -472,13 +472,18 @@ def test_grid_local_minima_and_track_pruning() -> None:
     free = FreeParameters(("a", "b"), np.array([1.0, 1.0]), np.array([0.0, 0.0]),
                           np.array([2.0, 2.0]))
     dof = 200  # 5 sqrt(400) = 100: the margin is TRACK_MARGIN, 50
-    tracks = [(0, np.array([1.0, 1.0]), 300.5), (1, np.array([1.2, 0.8]), 250.0),
-              (2, np.array([1.2, 0.8 + 1e-6]), 260.0), (3, np.array([0.9, 1.1]), 299.0)]
+    tracks = [(0, np.array([1.0, 1.0]), 240.5), (1, np.array([1.2, 0.8]), 190.0),
+              (2, np.array([1.2, 0.8 + 1e-6]), 200.0), (3, np.array([0.9, 1.1]), 239.0)]
     kept = _surviving(tracks, dof, free)
     assert [label for label, _, _ in kept] == [1, 3]
     dof = 8  # 5 sqrt(16) = 20 < 50: the margin is 20
-    tracks = [(0, np.array([1.0, 1.0]), 270.5), (1, np.array([1.2, 0.8]), 250.0),
-              (3, np.array([0.9, 1.1]), 269.0)]
+    tracks = [(0, np.array([1.0, 1.0]), 27.5), (1, np.array([1.2, 0.8]), 7.0),
+              (3, np.array([0.9, 1.1]), 26.0)]
+    assert [label for label, _, _ in _surviving(tracks, dof, free)] == [1, 3]
+    # the best does not explain the window (chi²/dof 2.5): the margin is 2.5 x 50 = 125
+    dof = 200
+    tracks = [(0, np.array([1.0, 1.0]), 626.0), (1, np.array([1.2, 0.8]), 500.0),
+              (3, np.array([0.9, 1.1]), 624.0)]
     assert [label for label, _, _ in _surviving(tracks, dof, free)] == [1, 3]
 
 

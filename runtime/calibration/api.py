@@ -258,7 +258,7 @@ def _run(problem: Problem) -> CalibrationResult:
         found = neighbouring_basins(predictor, optimum.sigma, optimum.values,
                                     float(np.sum(optimum.residuals**2)), spread.covariance,
                                     opts.max_evaluations, opts.workers,
-                                    others=optimum.starts)
+                                    others=optimum.starts, axes=spread.seen_covariance)
         line_runs = found.line_runs
         moved = not np.array_equal(found.best, optimum.values)
         optimum = _after_basins(predictor, optimum, found, moved)

@@ -38,6 +38,10 @@ class Uncertainty:
     high95: np.ndarray
     determined: np.ndarray
     warnings: tuple[str, ...]
+    seen_covariance: np.ndarray | None = None
+    """The covariance within the directions the data see (the pseudo-inverse): finite where
+    ``covariance`` is infinite for the undetermined parameters; its principal axes with
+    nonzero variance are the directions the estimates can be moved along and checked."""
 
 
 def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
@@ -89,7 +93,8 @@ def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
                                            np.inf, covariance),
                        std=std, correlation=correlation, condition_number=condition,
                        low95=np.maximum(low, lower), high95=np.minimum(high, upper),
-                       determined=determined, warnings=tuple(warnings))
+                       determined=determined, warnings=tuple(warnings),
+                       seen_covariance=covariance)
 
 
 def _correlation(covariance: np.ndarray, corr_form: np.ndarray, lost: np.ndarray,

@@ -39,6 +39,8 @@ class ValleyCheck:
     spacing: np.ndarray
     runs: int
     extent: tuple[np.ndarray, np.ndarray] | None = None
+    centre: np.ndarray | None = None
+    """The point the line passes through (the fit it checks)."""
 
 
 def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
@@ -75,7 +77,8 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
         spacing = np.maximum(spacing, np.abs(directions[n]) * (steps[1] - steps[0]))
     points = np.array([p for line in lines for p in line]).reshape(-1, free.size)
     extent = (points.min(axis=0), points.max(axis=0)) if len(points) else None
-    return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more, extent)
+    return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more, extent,
+                       np.array(best, dtype=float))
 
 
 def _valley_floor(chi2: np.ndarray, i: int) -> int:

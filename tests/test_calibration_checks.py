@@ -1,0 +1,100 @@
+"""The calibration's checks around a fit: the windows' tolerances chosen against the noise,
+the basin check along the directions the data see where some parameters are inseparable,
+and the intervals of the parameters a valley check's rivals carry with them."""
+
+from __future__ import annotations
+
+import numpy as np
+
+import jointplay as jp
+from jointplay.calibration import Measured
+from jointplay.calibration.basins import _carried, _line_points
+from jointplay.calibration.continuation import WINDOW_MODEL_ERROR, window_looseness
+from jointplay.calibration.parameters import free_parameters
+from jointplay.calibration.predict import Predictor
+from jointplay.calibration.uncertainty import Z95, uncertainty
+from jointplay.calibration.valleys import ValleyCheck
+
+
+def _paper_predictor() -> Predictor:
+    scene = jp.default_scene().with_run(t_end=0.04)
+    exact = jp.simulate(scene.with_run(rtol=2e-11, atol=3e-12))
+    measured = Measured("noiseless", exact.t.copy(), ("tip_x", "tip_y"),
+                        exact.tip_position.copy())
+    model = jp.load_scene_model(scene)
+    free = free_parameters(["joint2.clearance", "joint3.clearance"], scene, model, None)
+    return Predictor(scene.with_run(rtol=2e-9, atol=3e-10), model, free, measured)
+
+
+def test_window_tolerances_follow_the_noise() -> None:
+    """A noise far above the integrator's error allows the loosest tolerances asked for; a
+    noise far below it (1e-13 m: the runs 10 and 100 times looser differ from the fit's own
+    by more than a chi² of WINDOW_MODEL_ERROR) leaves the fit's own; one run at the fit's
+    tolerances and one per factor tried."""
+    predictor = _paper_predictor()
+    x = predictor.free.start
+    loose, runs = window_looseness(predictor, np.array([1e-3, 1e-3]), x, 0.04, 100.0)
+    assert (loose, runs) == (100.0, 2)
+    tight, runs = window_looseness(predictor, np.array([1e-13, 1e-13]), x, 0.04, 100.0)
+    assert (tight, runs) == (1.0, 3)
+    assert WINDOW_MODEL_ERROR == 1.0
+    assert window_looseness(predictor, np.array([1e-13, 1e-13]), x, 0.04, 1.0) == (1.0, 0)
+
+
+def _inseparable_jacobian() -> np.ndarray:
+    """Three parameters, the first two acting only through their sum (two moduli through
+    the contact stiffness), the third (a friction) correlated with that sum."""
+    rng = np.random.default_rng(7)
+    a, b = rng.standard_normal(200), rng.standard_normal(200)
+    return np.column_stack([a, a, 0.3 * a + b])
+
+
+def test_basin_lines_follow_the_directions_the_data_see() -> None:
+    """With an inseparable pair the covariance is infinite and its axes give no line; the
+    covariance within the seen directions gives one line per seen direction (two of three),
+    none along the pair's difference."""
+    jac = _inseparable_jacobian()
+    values = np.array([2.0, 2.0, 5.0])
+    lower, upper = np.zeros(3), np.full(3, 10.0)
+    spread = uncertainty(jac, values, lower, upper, ("E1", "E2", "mu"))
+    assert not spread.determined[0] and not spread.determined[1] and spread.determined[2]
+    assert _line_points(values, spread.covariance, lower, upper) == []
+    assert spread.seen_covariance is not None
+    lines = _line_points(values, spread.seen_covariance, lower, upper)
+    assert len(lines) == 2
+    for line in lines:
+        steps = np.array(line) - values
+        # no step moves the two moduli apart: the data cannot see their difference
+        np.testing.assert_allclose(steps[:, 0], steps[:, 1], rtol=1e-9, atol=1e-12)
+
+
+def test_valley_rivals_widen_the_intervals_they_carry() -> None:
+    """A rival valley 10 standard deviations along the first parameter (the clearance the
+    check's line moves) carries the correlated second (a friction the line holds) by its
+    regression on the first: the second's interval is widened to hold that value give or
+    take 1.96 of its standard deviations; an uncorrelated third keeps its interval."""
+    rng = np.random.default_rng(3)
+    c, m, u = (rng.standard_normal(400) for _ in range(3))
+    basis, _ = np.linalg.qr(np.column_stack([c, m]))
+    u -= basis @ (basis.T @ u)  # the third's column orthogonal to the others: uncorrelated
+    jac = np.column_stack([c, 0.8 * c + 0.6 * m, u])
+    values = np.array([30.0, 5.0, 7.0])
+    names = ("c", "mu", "u")
+    spread = uncertainty(jac, values, np.full(3, -100.0), np.full(3, 100.0), names)
+    std = spread.std
+    rival = values + np.array([10 * std[0], 0.0, 0.0])
+    check = ValleyCheck(0.32, ((rival, 1.0),), np.array([0.1 * std[0], 0.0, 0.0]), 0,
+                        None, values.copy())
+    low, high = spread.low95.copy(), spread.high95.copy()
+    determined = spread.determined.copy()
+    warnings: list[str] = []
+    _carried(check, names, spread, (low, high, determined, warnings))
+    covariance = spread.covariance
+    shifted = values[1] + covariance[1, 0] / covariance[0, 0] * (rival[0] - values[0])
+    assert abs(shifted - values[1]) > 5 * std[1]  # outside the fit's own interval
+    np.testing.assert_allclose([low[1], high[1]],
+                               [min(spread.low95[1], shifted - Z95 * std[1]),
+                                max(spread.high95[1], shifted + Z95 * std[1])], rtol=1e-12)
+    assert low[2] == spread.low95[2] and high[2] == spread.high95[2]
+    assert determined[1] and determined[2]  # still narrow beside their values
+    assert len(warnings) == 1 and warnings[0].startswith("mu: its interval is widened")
