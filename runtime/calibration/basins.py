@@ -328,5 +328,5 @@ def _unexcluded(check: ValleyCheck, names: tuple[str, ...],
             f"of the fit's own (the lowest {rise[nearest]:+.3g}), up to {far:.4g} from the "
             "estimate; over the whole record those valleys are too narrow for the search to "
             "tell which holds the lowest minimum: its interval spans the check's line, "
-            f"{low[k]:.6g} to {high[k]:.6g} (the other parameters' estimates and intervals "
-            "are those of the fit's valley)")
+            f"{low[k]:.6g} to {high[k]:.6g} (the other parameters' estimates are those of "
+            "the fit's valley)")
