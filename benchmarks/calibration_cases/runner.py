@@ -145,9 +145,13 @@ def stage_effects(result: dict[str, Any]) -> dict[str, Any]:
     estimate = [e["value"] for e in result["estimates"].values()]
     moved = record_end is not None and not np.allclose(estimate, record_end, rtol=1e-12,
                                                        atol=0.0)
+    whole = stages[-1]["chi2"] if stages else None
+    final = result.get("residuals", {}).get("chi2")
     return {
         "runs": result.get("simulations_by_kind", {}),
         "basin check moved the estimate": bool(moved),
+        "chi2 lowered by": (whole - final) if moved and whole is not None
+        and final is not None else 0.0,
         "basin check widened": any("other minimum" in w or "not the quadratic" in w
                                    for w in warnings),
         "valley check widened": any("not determined by the search" in w for w in warnings),
@@ -234,7 +238,8 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
               "Runs of each stage, and whether a check after the whole-record fit changed "
               "the outcome (yes: it did in that run).", "",
               "| case | seed | grid and windows | valley check | basin lines | basin check "
-              "moved / widened | valley check widened | residual check withdrew |",
+              "moved (chi² lower by) / widened | valley check widened | residual check "
+              "withdrew |",
               "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         st = r.get("stages")
@@ -247,10 +252,16 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
 
         lines.append(f"| {r['case']} | {r['seed']} | {runs.get('continuation windows', 0)} | "
                      f"{runs.get('valley check', 0)} | {runs.get('basin lines', 0)} | "
-                     f"{yes('basin check moved the estimate')} / {yes('basin check widened')}"
+                     f"{_moved(st)} / {yes('basin check widened')}"
                      f" | {yes('valley check widened')} | "
                      f"{yes('residual check withdrew the verdicts')} |")
     return "\n".join(lines) + "\n"
+
+
+def _moved(stages: dict[str, Any]) -> str:
+    if not stages["basin check moved the estimate"]:
+        return "no"
+    return f"yes ({stages.get('chi2 lowered by', 0.0):.3g})"
 
 
 def _s(v: float | None) -> str:
@@ -284,7 +295,7 @@ def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: flo
             if resume and done.is_file():  # a finished run of an earlier, interrupted call
                 row = json.loads(done.read_text())
                 result_file = done.parent / "calibration" / "calibration.json"
-                if "stages" not in row and row["status"] == "ok" and result_file.is_file():
+                if row["status"] == "ok" and result_file.is_file():
                     row["stages"] = stage_effects(json.loads(result_file.read_text()))
             else:
                 row = run_one(name, seed, out, timeout_s)
