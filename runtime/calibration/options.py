@@ -77,7 +77,7 @@ class CalibrationOptions:
         by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
         in.
     valley_check_points : int
-        With the noise stated and the basin check on: runs over the valley lines' first window
+        With the basin check on: runs over the valley lines' first window
         along the clearances' rugged direction through the best fit, VALLEY_CHECK_REACH grid
         spacings either side; a parameter the line moves whose interval misses another valley
         there within the basin threshold of the fit's own is not determined, its interval
