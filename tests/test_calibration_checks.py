@@ -98,3 +98,27 @@ def test_valley_rivals_widen_the_intervals_they_carry() -> None:
     assert low[2] == spread.low95[2] and high[2] == spread.high95[2]
     assert determined[1] and determined[2]  # still narrow beside their values
     assert len(warnings) == 1 and warnings[0].startswith("mu: its interval is widened")
+
+
+def test_the_carried_interval_spans_the_whole_line() -> None:
+    """Where the check's line reaches 20 standard deviations either side (its extent), the
+    carried parameter's interval holds its regression value at both ends, as the moved
+    parameters' intervals span the line: a truth beside the fit's valley on the side away
+    from the rival stays inside."""
+    rng = np.random.default_rng(3)
+    c, m, u = (rng.standard_normal(400) for _ in range(3))
+    jac = np.column_stack([c, 0.8 * c + 0.6 * m, u])
+    values = np.array([30.0, 5.0, 7.0])
+    names = ("c", "mu", "u")
+    spread = uncertainty(jac, values, np.full(3, -100.0), np.full(3, 100.0), names)
+    std, covariance = spread.std, spread.covariance
+    reach = np.array([20 * std[0], 0.0, 0.0])
+    check = ValleyCheck(0.32, ((values + reach / 2, 1.0),), np.array([0.1 * std[0], 0, 0]), 0,
+                        (values - reach, values + reach), values.copy())
+    low, high = spread.low95.copy(), spread.high95.copy()
+    _carried(check, names, spread, (low, high, spread.determined.copy(), []))
+    slope = covariance[1, 0] / covariance[0, 0]
+    ends = values[1] + slope * np.array([-reach[0], reach[0]])
+    np.testing.assert_allclose([low[1], high[1]],
+                               [ends.min() - Z95 * std[1], ends.max() + Z95 * std[1]],
+                               rtol=1e-12)

@@ -21,6 +21,7 @@ minimum lies outside the best's own interval is not determined.
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -253,8 +254,9 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
 def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
              verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]) -> None:
     """``verdict`` changed in place for the parameters the valley check's lines do not move
-    (the friction beside the clearances): in each rival valley they would take other values,
-    carried by their correlation with the clearances. Their shift there is estimated from the
+    (the friction beside the clearances): in each rival valley, and anywhere along the line
+    the clearances' intervals now span, they would take other values, carried by their
+    correlation with the clearances. Their shift there is estimated from the
     covariance (the regression of each on the moved parameters, the valleys taken as copies
     of the fit's shifted along the rugged direction) and their intervals widened to hold
     it, each give or take its own 1.96 standard deviations; the verdict then follows the
@@ -275,8 +277,13 @@ def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
     fixed = ~moved
     regression = covariance[np.ix_(fixed, moved)] @ np.linalg.pinv(
         covariance[np.ix_(moved, moved)])
-    shifted = check.centre[fixed] + (points[outside][:, moved] - check.centre[moved]) \
-        @ regression.T
+    # The rivals, and (as the clearances' intervals span the check's whole line, which can
+    # pass beside a valley's floor) the corners of the line's extent in the moved parameters.
+    reached = [points[outside][:, moved]]
+    if check.extent is not None:
+        bounds = [(check.extent[0][k], check.extent[1][k]) for k in np.flatnonzero(moved)]
+        reached.append(np.array(list(itertools.product(*bounds))))
+    shifted = check.centre[fixed] + (np.vstack(reached) - check.centre[moved]) @ regression.T
     half = Z95 * np.sqrt(np.clip(np.diag(covariance)[fixed], 0.0, None))
     partners = ", ".join(names[j] for j in np.flatnonzero(moved))
     for n, k in enumerate(np.flatnonzero(fixed)):
