@@ -122,3 +122,37 @@ def test_the_carried_interval_spans_the_whole_line() -> None:
     np.testing.assert_allclose([low[1], high[1]],
                                [ends.min() - Z95 * std[1], ends.max() + Z95 * std[1]],
                                rtol=1e-12)
+
+
+def test_a_distrusted_search_reports_nothing_determined() -> None:
+    """Residuals that are the noise, but a reason to distrust the search's valley (a held
+    parameter that ended far from its held value): nothing is determined, each interval
+    spans the searched box, one warning gives the reason and what to do; the fit still
+    explains the data. Without the reason the verdicts are the covariance's."""
+    from jointplay.calibration.api import judged_fit
+    from jointplay.calibration.fit import Optimum
+    from jointplay.calibration.parameters import FreeParameters
+
+    rng = np.random.default_rng(5)
+    t = np.arange(400) * 1e-3
+    noise = 1e-6 * rng.standard_normal((t.size, 2))
+    measured = Measured("synthetic", t, ("tip_x", "tip_y"), noise)
+    fitted = np.zeros_like(noise)
+    sigma = np.array([1e-6, 1e-6])
+    free = FreeParameters(("joint2.clearance", "friction.mu"), np.array([3e-5, 0.05]),
+                          np.array([1e-9, 0.0]), np.array([1e-2, 1.0]))
+    jac = rng.standard_normal((2 * t.size, 2)) * np.array([1e9, 1e4])
+    values = np.array([3.1e-5, 0.048])
+    spread = uncertainty(jac, values, free.lower, free.upper, free.names)
+    optimum = Optimum(values, sigma, (noise / sigma).ravel(), jac, ())
+    _, misfit, trusted, warnings = judged_fit(fitted, measured, free, optimum, spread, None,
+                                              0.5)
+    assert misfit is None and trusted.determined.all() and not warnings
+    reason = "friction.mu, held through the first windows, ended 40% from there"
+    _, misfit, distrusted, warnings = judged_fit(fitted, measured, free, optimum, spread,
+                                                 None, 0.5, reason)
+    assert misfit is None and not distrusted.determined.any()
+    np.testing.assert_allclose(distrusted.low95, [1.5e-5, 0.025])
+    np.testing.assert_allclose(distrusted.high95, [4.5e-5, 0.075])
+    assert len(warnings) == 1 and warnings[0].startswith(f"nothing is determined: {reason}")
+    assert "--start" in warnings[0]
