@@ -600,7 +600,8 @@ def test_paper_scene_clearances_recovered_from_half_a_range_away() -> None:
     measured = Measured("synthetic", exact.t.copy(), ("tip_x", "tip_y"), tip)
     result = calibrate(scene, measured, list(truth), noise=NOISE,
                        options=CalibrationOptions(profile_points=0))
-    assert result.grid is not None and result.grid.simulations == 256
+    # 256 points, and 2-4 runs choosing the window's tolerances
+    assert result.grid is not None and 256 + 2 <= result.grid.simulations <= 256 + 4
     assert max(s.track for s in result.stages) >= 1  # more than one track was carried
     assert result.fit_explains_data
     basin_fits = len(result.starts) - 1
