@@ -210,16 +210,34 @@ def _run(problem: Problem) -> CalibrationResult:
             centre, runs = others_first(predictor, weights, starts[0], opts.window_looser,
                                         opts.max_evaluations)
             stage_runs += runs
-        first_pass = _global_pass(predictor, weights, centre, starts, opts)
-        grid, valley, stages = first_pass.grid, first_pass.valley, first_pass.stages
-        stage_runs += first_pass.runs
-        if len(first_pass.survivors):
+            grid = grid_candidates(predictor, weights, centre, Grid(
+                opts.grid_window, opts.grid_points, opts.spread, opts.grid_candidates,
+                opts.window_looser), opts.workers)
+        tracks, first = starts[:1], opts.horizon_first
+        opening = None
+        if grid is not None and len(grid.candidates):
+            tracks, first = grid.candidates, grid.window_end
+            stage_runs += grid.simulations
+            scale = grid_scale(problem.free, centre, grid, opts.spread)
+            if opts.valley_window > 0:
+                valley = ValleyScan(opts.valley_window, opts.valley_points, 2.0,
+                                    opts.valley_keep, scale)
+            if opts.grid_line_points > 0:
+                opening = ValleyScan(grid.window_end, opts.grid_line_points, GRID_LINE_REACH,
+                                     opts.valley_keep, scale)
+        survivors, stages, runs = continuation(
+            predictor, weights, tracks, starts, opts.max_evaluations, first,
+            opts.horizon_growth, valley, opts.window_looser, opts.workers, opening)
+        stage_runs += runs
+        survivors, runs = _ranked(predictor, weights, survivors, opts.workers)
+        stage_runs += runs
+        if len(survivors):
             # The tracks alone start the whole-record fit: a multi-start and a scan there
             # (the method without continuation) never found a lower minimum on the
             # benchmark's cases, whose whole-record cost is rugged at tens of nanometres.
-            starts, scan = first_pass.survivors, None
+            starts, scan = survivors, None
         else:
-            starts = np.vstack([first_pass.survivors, starts[1:]])
+            starts = np.vstack([survivors, starts[1:]])
     leading = len(starts) - (opts.starts - 1) if scan is not None else len(starts)
     optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,
                                 leading=leading, workers=opts.workers)
@@ -276,48 +294,6 @@ benchmark cases whose clearances came out right it moved by 1.2 % at most; on a 
 draw whose search ended 1.8 % off in both clearances (chi²/dof 0.994, every interval
 missing the truth) it moved by 40 %, and a second search holding it at the whole-record
 value ended no nearer (its best whole-record fit 60 above the first's)."""
-
-
-@dataclass(frozen=True)
-class GlobalPass:
-    """One pass of the global stage: the grid, the continuation's tracks ranked on the whole
-    record, their stages and runs, and the valley lines' settings (None without a grid)."""
-
-    survivors: np.ndarray
-    stages: list[Stage]
-    runs: int
-    grid: GridResult | None
-    valley: ValleyScan | None
-
-
-def _global_pass(predictor: Predictor, weights: np.ndarray, centre: np.ndarray,
-                 starts: np.ndarray, opts: CalibrationOptions) -> GlobalPass:
-    """The grid around ``centre`` (where ``grid_window`` asks for one) and the continuation
-    from its candidates (else from ``starts[0]``), the tracks ranked on the whole record."""
-    grid = None
-    if opts.grid_window > 0:
-        grid = grid_candidates(predictor, weights, centre, Grid(
-            opts.grid_window, opts.grid_points, opts.spread, opts.grid_candidates,
-            opts.window_looser), opts.workers)
-    tracks, first = starts[:1], opts.horizon_first
-    valley = opening = None
-    runs = 0
-    if grid is not None and len(grid.candidates):
-        tracks, first = grid.candidates, grid.window_end
-        runs += grid.simulations
-        scale = grid_scale(predictor.free, centre, grid, opts.spread)
-        if opts.valley_window > 0:
-            valley = ValleyScan(opts.valley_window, opts.valley_points, 2.0,
-                                opts.valley_keep, scale)
-        if opts.grid_line_points > 0:
-            opening = ValleyScan(grid.window_end, opts.grid_line_points, GRID_LINE_REACH,
-                                 opts.valley_keep, scale)
-    survivors, stages, more = continuation(
-        predictor, weights, tracks, starts, opts.max_evaluations, first,
-        opts.horizon_growth, valley, opts.window_looser, opts.workers, opening)
-    runs += more
-    survivors, more = _ranked(predictor, weights, survivors, opts.workers)
-    return GlobalPass(survivors, stages, runs + more, grid, valley)
 
 
 def _whole_stage(problem: Problem, fits: Sequence[Any]) -> Stage:
