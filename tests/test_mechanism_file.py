@@ -106,8 +106,8 @@ def test_the_command_refuses_with_exit_2_and_writes_nothing(tmp_path: Path,
     assert main(["simulate", str(path), "--plot", str(figures)]) == 2
     assert "did you mean 'mass'" in capsys.readouterr().err
     assert not figures.exists()
-    assert main(["simulate", str(SCENE), "--animate", str(tmp_path / "a.gif")]) == 2
-    assert "--animate" in capsys.readouterr().err
+    assert main(["simulate", str(SCENE), "--animate", str(tmp_path / "a.avi")]) == 2
+    assert "must end in .gif or .mp4" in capsys.readouterr().err
     assert main(["simulate", str(SCENE), "--set", "crank.mas=1"]) == 2
     assert "--set crank.mas" in capsys.readouterr().err
     # A number of an effect the file switched off would change nothing: refused.

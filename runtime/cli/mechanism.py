@@ -14,7 +14,6 @@ from jointplay.common.errors import DescriptionError
 
 # Flags of ``simulate`` that mechanism runs do not take yet, and why.
 _UNSUPPORTED = {
-    "animate": "mechanism runs have no animation yet",
     "integrator": "mechanism runs use the compiled BDF only",
     "step": "mechanism runs use the compiled BDF only (no fixed step)",
     "plausibility": "mechanism runs stop on a failed step; they have no plausibility setting",
@@ -85,6 +84,11 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
         plan.file("--out", args.out)
     if args.plot:
         plan.folder("--plot", args.plot, "its figures", pattern="*.png")
+    if args.animate:
+        from jointplay.results.animate import check_animation_path
+
+        plan.file("--animate", args.animate)
+        check_animation_path(args.animate)
     plan.check()
     quiet = args.quiet
     t0 = time.perf_counter()
@@ -119,6 +123,11 @@ def cmd_simulate_mechanism(args: argparse.Namespace) -> int:
 
             make_folder(args.plot, "--plot")
             written += [str(p) for p in write_figures(result, args.plot)]
+        if args.animate:
+            from jointplay.mechanism.animate import animate_mechanism
+
+            written.append(str(animate_mechanism(scene, result, args.animate, quiet=quiet,
+                                                 model=model)))
     if not quiet:
         for line in summary_lines(result):
             print(line)

@@ -58,8 +58,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                        help="override run.output_step (s): the spacing of the output samples; "
                             "it must divide run.t_end")
     p_sim.add_argument("--animate", metavar="FILE.gif|mp4",
-                       help="write an animation of the arm, each journal's orbit magnified in "
-                            "an inset (mp4 needs ffmpeg)")
+                       help="write an animation of the arm or the mechanism, each journal's "
+                            "orbit magnified in an inset (mp4 needs ffmpeg)")
     p_sim.add_argument("--t-end", type=float, help="override run.t_end (s)")
     plausibility_argument(p_sim)
     p_sim.add_argument("--set", action="append", metavar="NAME=VALUE",

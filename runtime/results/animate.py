@@ -105,25 +105,9 @@ def _figure(result: SimulationResult, points: np.ndarray) -> tuple[Any, dict[str
         (marker,) = arm.plot([], [], "o", ms=13, mfc="none", mec=color, mew=2.2, zorder=3,
                              label=f"joint {joint} (clearance)")
         markers.append(marker)
-        ax = fig.add_subplot(grid[k, 1])
-        c_um = 1e6 * float(result.radial_clearance[k])
-        angle = np.linspace(0.0, 2.0 * np.pi, 181)
-        ax.plot(c_um * np.cos(angle), c_um * np.sin(angle), color="0.3", lw=1.2)
-        lim = 1.25 * max(c_um, 1e6 * float(np.max(np.linalg.norm(result.eccentricity[:, k],
-                                                                  axis=1))))
-        ax.set_xlim(-lim, lim)
-        ax.set_ylim(-lim, lim)
-        ax.set_aspect("equal")
-        ax.tick_params(labelsize=7)
-        ax.set_title(f"joint {joint}: journal centre [µm]\nc = {c_um:.3g} µm", fontsize=8,
-                     color=color)
-        for side in ax.spines.values():
-            side.set_edgecolor(color)
-            side.set_linewidth(1.8)
-        (trail,) = ax.plot([], [], color="C0", lw=0.8, alpha=0.8)
-        (hits,) = ax.plot([], [], "x", color="C3", ms=4, mew=1.0)
-        (now,) = ax.plot([], [], "o", color=color, ms=6, mec="k")
-        insets.append((trail, hits, now))
+        insets.append(clearance_inset(fig.add_subplot(grid[k, 1]), f"joint {joint}", color,
+                                      float(result.radial_clearance[k]),
+                                      result.eccentricity[:, k]))
     arm.legend(loc="upper left", fontsize=8)
     title = arm.set_title("")
     # The one text that changes per frame: short, so that each frame renders few glyphs.
@@ -131,6 +115,42 @@ def _figure(result: SimulationResult, points: np.ndarray) -> tuple[Any, dict[str
                      fontsize=11, bbox={"boxstyle": "round", "fc": "w", "ec": "0.6"})
     return fig, {"links": links, "markers": markers, "insets": insets, "title": title,
                  "clock": clock}
+
+
+def clearance_inset(ax: Any, label: str, color: str, clearance: float,
+                    eccentricity: np.ndarray) -> tuple[Any, Any, Any]:
+    """Draw a clearance joint's inset on ``ax``: its clearance circle in micrometres, scaled
+    to hold every eccentricity (m, (samples, 2)); return its moving lines (trail, impact
+    onsets, journal centre now), each set by :func:`draw_inset`."""
+    c_um = 1e6 * clearance
+    angle = np.linspace(0.0, 2.0 * np.pi, 181)
+    ax.plot(c_um * np.cos(angle), c_um * np.sin(angle), color="0.3", lw=1.2)
+    lim = 1.25 * max(c_um, 1e6 * float(np.max(np.linalg.norm(eccentricity, axis=1))))
+    ax.set_xlim(-lim, lim)
+    ax.set_ylim(-lim, lim)
+    ax.set_aspect("equal")
+    ax.tick_params(labelsize=7)
+    ax.set_title(f"{label}: journal centre [µm]\nc = {c_um:.3g} µm", fontsize=8, color=color)
+    for side in ax.spines.values():
+        side.set_edgecolor(color)
+        side.set_linewidth(1.8)
+    (trail,) = ax.plot([], [], color="C0", lw=0.8, alpha=0.8)
+    (hits,) = ax.plot([], [], "x", color="C3", ms=4, mew=1.0)
+    (now,) = ax.plot([], [], "o", color=color, ms=6, mec="k")
+    return trail, hits, now
+
+
+def draw_inset(inset: tuple[Any, Any, Any], t: np.ndarray, i: int, eccentricity: np.ndarray,
+               onsets: np.ndarray) -> None:
+    """Set an inset's lines for sample i: the orbit over the last TRAIL of the run, the
+    impact onsets ``onsets`` (m, (k, 2)) seen so far, the journal centre now."""
+    trail, hits, now = inset
+    span = float(t[-1] - t[0]) if t.size > 1 else 1.0
+    first = int(np.searchsorted(t, t[i] - TRAIL * span))
+    e = 1e6 * eccentricity[first:i + 1]
+    trail.set_data(e[:, 0], e[:, 1])
+    hits.set_data(1e6 * onsets[:, 0], 1e6 * onsets[:, 1])
+    now.set_data([e[-1, 0]], [e[-1, 1]])
 
 
 def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS,
@@ -141,8 +161,6 @@ def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS
     artists that move (blitting), and the frame is taken straight from the canvas buffer:
     about 20x faster than drawing the whole figure per frame.
     """
-    from tqdm import tqdm
-
     path = check_animation_path(path)
     points = arm_points(result)
     frames = frame_indices(result.n_samples, max_frames)
@@ -152,7 +170,6 @@ def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS
     speed = (span / max(len(frames) - 1, 1)) * fps  # simulated seconds per video second
     joints = np.asarray(result.impacts.joint)
     onsets = np.asarray(result.impacts.eccentricity).reshape(-1, 2)
-    um = 1e6
     moving = [art["links"], *art["markers"], art["clock"],
               *(line for inset in art["insets"] for line in inset)]
     art["title"].set_text(f"{result.scene_name}: played at {speed:.3g} x real time")
@@ -162,17 +179,26 @@ def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS
         for k, joint in enumerate(result.clearance_joints):
             at = points[i, joint - 1]  # the bearing centre: the end of the previous link
             art["markers"][k].set_data([at[0]], [at[1]])
-            trail, hits, now = art["insets"][k]
-            first = int(np.searchsorted(t, t[i] - TRAIL * span))
-            e = um * result.eccentricity[first:i + 1, k]
-            trail.set_data(e[:, 0], e[:, 1])
             seen = (joints == joint) & (result.impacts.time <= t[i])
-            hits.set_data(um * onsets[seen, 0], um * onsets[seen, 1])
-            now.set_data([e[-1, 0]], [e[-1, 1]])
+            draw_inset(art["insets"][k], t, i, result.eccentricity[:, k], onsets[seen])
         art["clock"].set_text(f"t = {t[i]:.4f} s")
 
-    # Lay the figure out once (the constrained layout would be solved again on every frame),
-    # then draw everything that does not move as the background.
+    write_frames(fig, moving, draw, frames, path, fps=fps, quiet=quiet)
+    return path
+
+
+def write_frames(fig: Any, moving: list[Any], draw: Callable[[int], None],
+                 frames: np.ndarray, path: Path, *, fps: int = FPS, quiet: bool = True) -> None:
+    """Write ``path`` (.gif or .mp4, atomically) with one frame per sample index in
+    ``frames``: ``draw(i)`` updates the ``moving`` artists for sample i.
+
+    The figure is laid out once (the constrained layout would be solved again on every
+    frame), everything that does not move is drawn once as the background, and each frame
+    restores it and draws only the moving artists (blitting), taken straight from the
+    canvas buffer.
+    """
+    from tqdm import tqdm
+
     draw(int(frames[0]))
     fig.canvas.draw()
     fig.set_layout_engine("none")
@@ -193,7 +219,6 @@ def animate_result(result: SimulationResult, path: str | Path, *, fps: int = FPS
                 artist.draw(renderer)
             sink(np.asarray(canvas.buffer_rgba()))
             bar.update(1)
-    return path
 
 
 def _colours(artists: list[Any]) -> np.ndarray:
@@ -265,4 +290,5 @@ def _frame_sink(path: Path, size: tuple[int, int], fps: int, colours: np.ndarray
         raise OSError(f"ffmpeg failed (exit status {status}): {error.strip()[-300:]}")
 
 
-__all__ = ["animate_result", "arm_points", "check_animation_path", "frame_indices"]
+__all__ = ["animate_result", "arm_points", "check_animation_path", "frame_indices",
+           "write_frames"]
