@@ -83,3 +83,17 @@ def test_animation_frames_are_limited(tmp_path: Path) -> None:
     path = animate_mechanism(scene, result, tmp_path / "a.gif", max_frames=6)
     with Image.open(path) as image:
         assert image.n_frames == 6
+
+
+def test_the_docstring_example_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import doctest
+
+    from jointplay.mechanism import animate
+
+    monkeypatch.chdir(tmp_path)  # the example writes crank.gif
+    (test,) = doctest.DocTestFinder(recurse=False).find(animate.animate_mechanism,
+                                                        "animate_mechanism", globs={})
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+    runner.run(test)
+    assert runner.summarize(verbose=False).failed == 0
+    assert (tmp_path / "crank.gif").is_file()
