@@ -30,6 +30,7 @@ import casadi as ca
 import sympy as sp
 
 from jointplay.derive import laws
+from jointplay.derive.fixed_step import RADAU_NEWTON_ITERATIONS, fixed_step_functions
 from jointplay.derive.to_casadi import SympyToCasadi
 from jointplay.mechanism.structure import (
     MechanismStructure,
@@ -333,10 +334,15 @@ def functions(structure: MechanismStructure) -> list[ca.Function]:
                           ["x", "p"], ["e", "e_q", "e_theta", "gamma"], opts)
     ideal = ca.Function("ideal_residual", [x, eq.acc_input, tau, p], [eq.ideal_residual],
                         ["x", "a", "tau", "p"], ["residual"], opts)
-    return [fd, jac, contact, gaps, power, outputs, closure, ideal]
+    # The fixed-step methods (run.integrator = "rk4" or "radau"), as for the serial arms; the
+    # runtime reads Radau's Newton iteration count (its cost per step) from the library.
+    rk4, radau = fixed_step_functions(fd, jac)
+    iterations = ca.Function("radau_newton_iterations", [], [ca.DM(RADAU_NEWTON_ITERATIONS)],
+                             [], ["iterations"])
+    return [fd, jac, contact, gaps, power, outputs, closure, ideal, rk4, radau, iterations]
 
 
-GENERATOR_FILES = ("mechanism.py", "laws.py", "to_casadi.py")
+GENERATOR_FILES = ("mechanism.py", "laws.py", "to_casadi.py", "fixed_step.py")
 
 
 def generator_version() -> str:

@@ -12,33 +12,36 @@ import numpy as np
 
 from jointplay.common.errors import DescriptionError
 
-# Flags of ``simulate`` that mechanism runs do not take yet, and why.
+# Flags of ``simulate`` that mechanism runs do not take, and why.
 _UNSUPPORTED = {
-    "integrator": "mechanism runs use the compiled BDF only",
-    "step": "mechanism runs use the compiled BDF only (no fixed step)",
     "plausibility": "mechanism runs stop on a failed step; they have no plausibility setting",
 }
+_RUN_SETTINGS = ("rtol", "atol", "t_end", "output_step", "max_steps", "step")
 
 
 def refuse_unsupported(args: argparse.Namespace) -> None:
     for flag, why in _UNSUPPORTED.items():
-        if flag == "integrator" and args.integrator == "bdf":
-            continue
         if getattr(args, flag, None) not in (None, False):
             raise DescriptionError(f"--{flag.replace('_', '-')}", f"{why}; drop the flag")
 
 
 def scene_with_overrides(args: argparse.Namespace) -> Any:
+    from jointplay.mechanism.description import INTEGRATORS
     from jointplay.mechanism.reading import load_mechanism_scene
 
     scene = load_mechanism_scene(args.scene)
-    changes = {k: v for k, v in (("rtol", args.rtol), ("atol", args.atol),
-                                 ("t_end", args.t_end), ("output_step", args.output_step))
-               if v is not None}
+    changes: dict[str, Any] = {
+        k: v for k, v in (("rtol", args.rtol), ("atol", args.atol), ("t_end", args.t_end),
+                          ("output_step", args.output_step),
+                          ("step", getattr(args, "step", None))) if v is not None}
+    integrator = getattr(args, "integrator", None)
     values: dict[str, float] = {}
     for item in getattr(args, "set", None) or []:
         name, sep, value = item.partition("=")
         name = name.strip()
+        if name == "run.integrator":
+            integrator = value.strip()
+            continue
         try:
             number = float(value)
         except ValueError:
@@ -51,12 +54,17 @@ def scene_with_overrides(args: argparse.Namespace) -> Any:
         else:
             values[name] = number
     for key, value in changes.items():
-        if key not in ("rtol", "atol", "t_end", "output_step", "max_steps"):
+        if key not in _RUN_SETTINGS:
             raise DescriptionError(f"--set run.{key}", "is not a run setting of a mechanism "
                                    "(run.t_end, run.output_step, run.rtol, run.atol, "
-                                   "run.max_steps)")
+                                   "run.max_steps, run.integrator, run.step)")
         if not value > 0:
             raise DescriptionError(f"run.{key}", f"must be > 0, got {value!r}")
+    if integrator is not None:
+        if integrator not in INTEGRATORS:
+            raise DescriptionError("--integrator", f"a mechanism runs with "
+                                   f"{', '.join(INTEGRATORS)}, got {integrator!r}")
+        changes["integrator"] = integrator
     if changes:
         scene = scene.with_run(**{k: int(v) if k == "max_steps" else v
                                   for k, v in changes.items()})
@@ -143,11 +151,10 @@ def summary_lines(result: Any) -> list[str]:
     for j, joint in enumerate(result.cut_joints):
         rows = result.impacts.joint == j + 1
         if rows.any():
-            k = int(np.argmax(np.where(rows, result.impacts.peak_force, -np.inf)))
+            force, at, located = result.largest_contact_force(j + 1)
+            how = "located" if located else "on the samples: a fixed step locates no peaks"
             out.append(f"  {joint}: {int(rows.sum())} impacts, largest contact force "
-                       f"{result.impacts.peak_force[k]:.4g} N at "
-                       f"{result.impacts.peak_force_time[k]:.6g} s "
-                       f"(located), largest eccentricity "
+                       f"{force:.4g} N at {at:.6g} s ({how}), largest eccentricity "
                        f"{np.max(np.hypot(*result.eccentricity[:, j].T)) * 1e3:.4g} mm "
                        f"(clearance {result.clearance[j] * 1e3:.4g} mm)")
     torque = result.driving_torque

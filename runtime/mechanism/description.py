@@ -16,6 +16,8 @@ from dataclasses import dataclass, field
 from typing import Any, cast
 
 from jointplay.common.errors import DescriptionError
+from jointplay.common.hints import did_you_mean
+from jointplay.common.limits import MAX_FIXED_STEPS
 from jointplay.mechanism.structure import (
     CLEARANCE_KEYS,
     JointStructure,
@@ -76,6 +78,11 @@ class Force:
     y: str
 
 
+INTEGRATORS = ("bdf", "rk4", "radau")
+"""A mechanism's integrators: the compiled BDF with located events (the default), or RK4 or
+Radau IIA at a fixed step with onsets located between step ends (the serial arms' methods)."""
+
+
 @dataclass(frozen=True)
 class RunSettings:
     t_end: float = 0.012
@@ -83,10 +90,16 @@ class RunSettings:
     rtol: float = 1.0e-6
     atol: float = 1.0e-6  # scaled: rad, and fractions of the smallest radial clearance (m)
     max_steps: int = 200000
+    integrator: str = "bdf"
+    step: float = 1.0e-7  # s: the fixed step of rk4 and radau; it must divide output_step
 
     @property
     def n_outputs(self) -> int:
         return round(self.t_end / self.output_step)
+
+    @property
+    def steps_per_output(self) -> int:
+        return max(1, round(self.output_step / self.step))
 
     def check(self) -> None:
         n = self.t_end / self.output_step
@@ -96,6 +109,22 @@ class RunSettings:
         if round(n) > 10_000_000:
             raise DescriptionError("run.output_step", "asks for more than 1e7 samples; make "
                                    "it larger")
+        if self.integrator not in INTEGRATORS:
+            hint = did_you_mean(str(self.integrator), INTEGRATORS)
+            raise DescriptionError("run.integrator", f"must be one of {', '.join(INTEGRATORS)} "
+                                   f"for a mechanism, got {self.integrator!r}{hint}")
+        if self.integrator == "bdf":
+            return
+        if not (math.isfinite(self.step) and self.step > 0):
+            raise DescriptionError("run.step", f"must be > 0, got {self.step!r}")
+        if self.step > self.output_step or abs(self.steps_per_output * self.step
+                                               - self.output_step) > _DIVIDES * self.output_step:
+            raise DescriptionError("run.step", f"the fixed step must divide run.output_step "
+                                   f"({self.output_step:g} s), got {self.step:g}")
+        if self.t_end / self.step > MAX_FIXED_STEPS:
+            raise DescriptionError("run.step", f"gives {self.t_end / self.step:.3g} fixed steps "
+                                   f"over run.t_end = {self.t_end:g} s; at most "
+                                   f"{MAX_FIXED_STEPS} are allowed")
 
 
 @dataclass(frozen=True)
@@ -348,7 +377,7 @@ class MechanismScene:
 
         return self.output or default_output(self.mechanism)
 
-    def with_run(self, **changes: float) -> MechanismScene:
+    def with_run(self, **changes: float | str) -> MechanismScene:
         run = cast(RunSettings, _replace(self.run, **changes))
         run.check()
         return dataclasses.replace(self, run=run)

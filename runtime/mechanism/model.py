@@ -32,8 +32,8 @@ from jointplay.store.model import FastFunction
 from jointplay.store.stamp import _derive_folder
 
 FUNCTIONS = ("forward_dynamics", "jac_forward_dynamics", "contact", "gaps", "drive_power",
-             "outputs", "closure", "ideal_residual")
-_GENERATOR_FILES = ("mechanism.py", "laws.py", "to_casadi.py")
+             "outputs", "closure", "ideal_residual", "rk4_step", "radau_step")
+_GENERATOR_FILES = ("mechanism.py", "laws.py", "to_casadi.py", "fixed_step.py")
 
 
 def input_hash(structure: MechanismStructure) -> str:
@@ -67,12 +67,25 @@ class MechanismModel:
         # The compiled integrator's time-function inputs (the arms' drive torques): here the
         # applied loads, by position in the input tau.
         self.torque_joints: list[int] = list(range(1, self.n_loads + 1))
-        self.layout = SimpleNamespace(functions=set(FUNCTIONS))
+        self._casadi: dict[str, ca.Function] = {}
+        # What the integrators ask of a model's layout: its functions by name (the arms'
+        # layout.json entries; here only Radau's Newton iteration count is read).
+        iterations = int(self.casadi_function("radau_newton_iterations")()["iterations"])
+        self.layout = SimpleNamespace(functions={
+            name: SimpleNamespace(newton_iterations=iterations if name == "radau_step" else None)
+            for name in FUNCTIONS})
         self._functions: dict[str, FastFunction] = {}
+
+    def casadi_function(self, name: str) -> ca.Function:
+        """The compiled function as a CasADi Function (for graphs built on it: the fixed-step
+        methods' blocks of steps)."""
+        if name not in self._casadi:
+            self._casadi[name] = ca.external(name, str(self.library))
+        return self._casadi[name]
 
     def function(self, name: str) -> FastFunction:
         if name not in self._functions:
-            self._functions[name] = FastFunction(ca.external(name, str(self.library)),
+            self._functions[name] = FastFunction(self.casadi_function(name),
                                                  frozenset({"e_q", "jac_x"}))
         return self._functions[name]
 

@@ -76,9 +76,10 @@ def write_figures(result: MechanismResult, folder: str | Path) -> list[Path]:
         ax = axes[0, 0]
         for j, joint in enumerate(result.cut_joints):
             ax.plot(t, result.normal_force[:, j], lw=0.8, label=f"{joint} (samples)")
-            rows = result.impacts.joint == j + 1
-            ax.plot(result.impacts.peak_force_time[rows], result.impacts.peak_force[rows],
-                    "v", ms=4, label=f"{joint}: located peaks")
+            rows = (result.impacts.joint == j + 1) & np.isfinite(result.impacts.peak_force)
+            if rows.any():  # a fixed-step run locates no peaks
+                ax.plot(result.impacts.peak_force_time[rows], result.impacts.peak_force[rows],
+                        "v", ms=4, label=f"{joint}: located peaks")
         ax.set_ylabel("contact force (N)")
         ax.legend(loc="best", fontsize=8)
         _revolutions_axis(ax, result)

@@ -49,7 +49,7 @@ _GRAVITY = ("enabled", "vector")
 _CONTACT = ("law", "exponent", "restitution", "impact_speed_floor")
 _FRICTION = ("law", "ramp", "mu", "v0", "v1")
 _OUTPUT = ("coordinate",)
-_RUN = ("t_end", "output_step", "rtol", "atol", "max_steps")
+_RUN = ("t_end", "output_step", "rtol", "atol", "max_steps", "integrator", "step")
 CONTACT_LAWS = ("lankarani-nikravesh", "hunt-crossley", "gonthier", "flores")
 KINDS = ("ideal", "clearance", "locked")
 
@@ -459,18 +459,22 @@ def _forces(value: Any, bodies: set[str], taken: set[str], problems: Problems
 
 def _run(table: Any, problems: Problems) -> RunSettings:
     values: dict[str, float] = {}
+    defaults = RunSettings()
+    integrator = defaults.integrator
     with problems.check():
         check_keys(table, _RUN, "run")
         for key in _RUN:
-            if key in table:
+            if key == "integrator" and key in table:
+                integrator = str(table[key])
+            elif key in table:
                 values[key] = number(table[key], f"run.{key}")
                 positive(f"run.{key}", values[key])
-    defaults = RunSettings()
     run = RunSettings(t_end=values.get("t_end", defaults.t_end),
                       output_step=values.get("output_step", defaults.output_step),
                       rtol=values.get("rtol", defaults.rtol),
                       atol=values.get("atol", defaults.atol),
-                      max_steps=int(values.get("max_steps", defaults.max_steps)))
+                      max_steps=int(values.get("max_steps", defaults.max_steps)),
+                      integrator=integrator, step=values.get("step", defaults.step))
     with problems.check():
         run.check()
     return run

@@ -7,7 +7,8 @@ dataset of float64 in SI units, names as :class:`MechanismResult`'s fields): ``t
 ``impacts`` (one dataset per column of the located contact phases); the group ``ideal``
 (``x``, ``acceleration``, ``driving_torque``) when the run was compared with the ideal
 mechanism. The attributes ``coordinates``, ``units``, ``cut_joints`` (JSON), ``clearance``,
-``rtol``, ``atol``, ``stats`` (JSON), ``output`` (the coordinate the figures follow) and
+``rtol``, ``atol``, ``integrator`` (and ``step`` at a fixed step), ``stats`` (JSON), ``output``
+(the coordinate the figures follow) and
 ``accuracy`` (the statement's lines, when checked). The attribute ``sha256`` is the hash of
 every dataset's name and bytes: a file changed since is refused when read.
 """
@@ -70,6 +71,9 @@ def write_mechanism_result(result: MechanismResult, path: str | Path) -> None:
         attrs["units"] = json.dumps(result.units)
         attrs["cut_joints"] = json.dumps(result.cut_joints)
         attrs["rtol"], attrs["atol"] = result.rtol, result.atol
+        attrs["integrator"] = result.integrator
+        if result.step is not None:
+            attrs["step"] = result.step
         attrs["output"] = result.output
         attrs["stats"] = json.dumps({k: float(v) for k, v in result.stats.items()})
         if result.accuracy is not None:
@@ -130,6 +134,8 @@ def read_mechanism_result(path: str | Path, argument: str = "RUN.h5") -> Mechani
         units=json.loads(attrs["units"]), cut_joints=json.loads(attrs["cut_joints"]),
         impacts=impacts, stats=json.loads(attrs["stats"]), rtol=float(attrs["rtol"]),
         atol=float(attrs["atol"]), ideal=ideal, output=str(attrs.get("output", "")),
+        integrator=str(attrs.get("integrator", "bdf")),
+        step=float(attrs["step"]) if "step" in attrs else None,
         **arrays)
     if "accuracy" in attrs:
         result.notes.append(str(attrs["accuracy"]))

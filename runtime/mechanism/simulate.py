@@ -88,6 +88,11 @@ class MechanismResult:
         What the run says about itself (skipped checks, ...).
     output : str
         The coordinate the summary and the figures follow.
+    integrator : str
+        ``bdf`` (events and peaks located), or ``rk4`` / ``radau`` at a fixed step (the impact
+        table has the onset columns only).
+    step : float or None
+        The fixed step (s) of ``rk4`` and ``radau``; None for ``bdf``.
 
     Examples
     --------
@@ -127,6 +132,9 @@ class MechanismResult:
     # The coordinate the summary and the figures follow (the file's [output], or the rule of
     # jointplay.mechanism.output)
     output: str = ""
+    # The integration method and, for rk4 and radau, the fixed step (s)
+    integrator: str = "bdf"
+    step: float | None = None
 
     def coordinate(self, name: str) -> np.ndarray:
         return self.x[:, self.coordinates.index(name)]
@@ -155,6 +163,20 @@ class MechanismResult:
                 "median_peak_force": float(np.median(peaks)) if peaks.size else np.nan,
                 "largest_peak_force": float(np.max(peaks)) if peaks.size else np.nan,
                 "median_approach_speed": float(np.median(speeds)) if speeds.size else np.nan}
+
+    def largest_contact_force(self, joint: int) -> tuple[float, float, bool]:
+        """Cut joint ``joint``'s (1-based) largest contact force (N), when (s), and whether it
+        was located (bdf: the phases' located peaks) or read off the samples (a fixed step
+        locates no peaks); (0, NaN, False) without contact."""
+        rows = (self.impacts.joint == joint) & np.isfinite(self.impacts.peak_force)
+        if rows.any():
+            k = int(np.argmax(np.where(rows, self.impacts.peak_force, -np.inf)))
+            return float(self.impacts.peak_force[k]), float(self.impacts.peak_force_time[k]), True
+        force = self.normal_force[:, joint - 1]
+        if not np.any(force > 0):
+            return 0.0, float("nan"), False
+        k = int(np.argmax(force))
+        return float(force[k]), float(self.t[k]), False
 
     @property
     def energy_residual(self) -> np.ndarray:
@@ -228,21 +250,48 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     run = scene.run
     x0 = assembled_state(model, p, start=scene.initial)
     loads = load_functions(scene)
-    nc = len(model.clearance_joints)
-    clearance = np.array([j.radial_clearance for j in scene.mechanism.joints
-                          if j.kind == "clearance" and j.name in model.cut_joint_names])
     clearance = np.array([next(j.radial_clearance for j in scene.mechanism.joints
                                if j.name == name) for name in model.cut_joint_names])
+    t = np.arange(run.n_outputs + 1) * run.output_step
+    started = time.perf_counter()
+    if run.integrator == "bdf":
+        x, v_imp, work, dissipated, impacts, counts = _run_bdf(model, scene, p, x0, loads,
+                                                               clearance, t)
+    else:
+        from jointplay.mechanism.fixed import run_fixed
+
+        x, v_imp, work, dissipated, impacts, counts = run_fixed(
+            model, scene, p, x0, _scale(model, scene), loads)
+    wall = time.perf_counter() - started
+    tau = _load_values(loads, t)
+    samples = _samples(model, p, x, v_imp, tau)
+    _check_penetration(scene, model, impacts, t, samples["penetration"])
+    fixed = run.integrator != "bdf"
+    result = MechanismResult(
+        name=scene.name, t=t, coordinates=list(model.coordinates), units=list(model.units),
+        x=x, cut_joints=list(model.cut_joint_names), clearance=clearance, drive_work=work,
+        dissipated=dissipated, impacts=impacts, stats={"wall_time_s": wall, **counts},
+        rtol=run.rtol, atol=run.atol, output=scene.output_coordinate,
+        integrator=run.integrator, step=run.step if fixed else None,
+        **cast(dict[str, Any], samples))
+    if compare_ideal:
+        result.ideal = ideal_motion(model, p, t, scene.initial, tau, guess=x)
+    return result
+
+
+def _run_bdf(model: MechanismModel, scene: MechanismScene, p: np.ndarray, x0: np.ndarray,
+             loads: tuple[Any, ...], clearance: np.ndarray, t: np.ndarray
+             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, Impacts, dict[str, int]]:
+    """The compiled BDF (driver.c) with every onset, separation and peak located."""
+    run = scene.run
+    nc = len(model.clearance_joints)
     integ = NativeIntegrator(model, p, _scale(model, scene), np.zeros((nc, 2), np.int32),
                              clearance, np.zeros(0, np.int32), loads, rtol=run.rtol,
                              atol=run.atol, max_steps=run.max_steps, max_events=MAX_EVENTS,
                              model_gaps=True)
-    t = np.arange(run.n_outputs + 1) * run.output_step
-    started = time.perf_counter()
     integ.reset(x0)
     _, v_first = integ.flags()
     values, v_out, status = integ.integrate(float(t[-1]), t[1:])
-    wall = time.perf_counter() - started
     if status:
         raise_for_status(status, integ, list(model.structure.load_inputs), lambda: None)
     nx = model.n_state
@@ -256,32 +305,28 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
     for r in np.flatnonzero(~np.isfinite(rows[:, 9])):  # phases open at the end
         rows[r, 11:14] += final[nx + 1 + 3 * int(rows[r, 0]):nx + 4 + 3 * int(rows[r, 0])]
     impacts = phase_table(cast(Any, SimpleNamespace(model=model)), rows, float(t[-1]))
-    tau = _load_values(loads, t)
-    samples = _samples(model, p, x, v_imp, tau)
-    _check_penetration(scene, model, impacts)
-    stats = {"wall_time_s": wall, **integ.stats()}
-    result = MechanismResult(
-        name=scene.name, t=t, coordinates=list(model.coordinates), units=list(model.units),
-        x=x, cut_joints=list(
-            model.cut_joint_names), clearance=clearance, drive_work=work,
-        dissipated=dissipated, impacts=impacts, stats=stats, rtol=run.rtol, atol=run.atol,
-        output=scene.output_coordinate, **cast(dict[str, Any], samples))
-    if compare_ideal:
-        result.ideal = ideal_motion(model, p, t, scene.initial, tau, guess=x)
-    return result
+    return x, v_imp, work, dissipated, impacts, integ.stats()
 
 
-def _check_penetration(scene: MechanismScene, model: MechanismModel, impacts: Impacts
-                       ) -> None:
+def _check_penetration(scene: MechanismScene, model: MechanismModel, impacts: Impacts,
+                       t: np.ndarray, penetration: np.ndarray) -> None:
     """Stop (SimulationError) where a journal went further into its bearing than the contact
     laws describe (:data:`jointplay.common.limits.MAX_PENETRATION_FRACTION` of its radius),
-    by each contact phase's located deepest point: a state no metal joint survives, reached
-    only from an impossible input."""
+    by each contact phase's located deepest point (the samples' ``penetration`` at a fixed
+    step, which locates no peaks): a state no metal joint survives, reached only from an
+    impossible input."""
     from jointplay.common.limits import MAX_PENETRATION_FRACTION
 
     joints = {j.name: j for j in scene.mechanism.joints}
     for k, name in enumerate(model.cut_joint_names):
         limit = MAX_PENETRATION_FRACTION * joints[name].clearance["journal_radius"]
+        deep = np.flatnonzero(penetration[:, k] > limit)
+        if deep.size and not np.any(impacts.max_penetration[impacts.joint == k + 1] > limit):
+            raise SimulationError(float(t[deep[0]]), f"the journal of {name} is "
+                                  f"{penetration[deep[0], k]:.3g} m into its bearing here, "
+                                  f"beyond {MAX_PENETRATION_FRACTION:g} of its radius that "
+                                  "the contact laws describe; check the masses, speeds and "
+                                  "materials, or shorten run.step")
         rows = np.flatnonzero((impacts.joint == k + 1) & (impacts.max_penetration > limit))
         if rows.size:
             first = rows[np.argmin(impacts.time[rows])]

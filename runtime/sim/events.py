@@ -31,10 +31,8 @@ class _EventState:
         """Joint i (index into the clearance joints) comes into contact at state x."""
         self.flags[i] = 1.0
         self.v_imp[i] = speed
-        joint = int(self.pr.model.clearance_joints[i])
-        ex, ey = (float(x[self.pr.model.coordinates.index(f"{axis}{joint}")])
-                  for axis in ("ex", "ey"))
-        self.impacts.append((t, joint, speed, ex, ey))
+        ex, ey = self.pr.eccentricity_at(x, i)
+        self.impacts.append((t, int(self.pr.model.clearance_joints[i]), speed, ex, ey))
 
     def gap(self, x: np.ndarray) -> np.ndarray:
         """Per joint: > 0 where the penetration disagrees with the joint's flag."""

@@ -47,9 +47,7 @@ def _steps_function(step: ca.Function, pr: _Problem, method: str, steps: int) ->
         else:
             x = out
         states.append(x)
-        tau_end = tau[:, 3 * i + 2]
-        drive = sum((tau_end[kk] * x[pr.n + ii] for kk, ii in enumerate(pr.angle_index)),
-                    ca.MX(0))
+        drive = pr.drive_power_casadi(x, tau[:, 3 * i + 2], p, v)
         diss = ca.MX(0)
         if contact is not None:
             c = contact(x, p, v)
@@ -162,7 +160,7 @@ class _FixedSteps:
             raise SimulationError(float(t_start[bad]), f"{self.method} at step {self.h:g} s "
                                   "produced a non-finite state: the step is beyond the method's "
                                   "stability limit for this contact stiffness; reduce run.step "
-                                  "or use cvodes",
+                                  f"or use {self.pr.adaptive_fallback}",
                                   _nearest_contact_joint(self.pr, state, self.events.v_imp))
 
     def _check_newton(self, newton: np.ndarray, state: np.ndarray, t_start: np.ndarray) -> None:
@@ -202,8 +200,7 @@ def _run_fixed(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumula
 
 def _power_at(pr: _Problem, events: _EventState, state: np.ndarray, t: float) -> np.ndarray:
     """The drive power and the power dissipated in contact at one state."""
-    tau = pr.tau(t)[0]
-    drive = sum(tau[kk] * state[pr.n + ii] for kk, ii in enumerate(pr.angle_index))
+    drive = pr.drive_power_at(state, pr.tau(t)[0], events.v_imp)
     diss = float(np.sum(pr.contact_at(state, events.v_imp)["dissipation"])) if pr.nc else 0.0
     return np.array([drive, diss])
 

@@ -77,6 +77,9 @@ def _scaling(model: Model, p: np.ndarray) -> np.ndarray:
 class _Problem:
     """The compiled model, a parameter vector and torque functions, ready to integrate."""
 
+    # The method a fixed-step run that fails is told to use instead.
+    adaptive_fallback = "cvodes"
+
     def __init__(self, model: Model, scene: Scene, p: np.ndarray) -> None:
         self.model = model
         self.scene = scene
@@ -119,6 +122,22 @@ class _Problem:
         assert self._contact is not None
         out = self._contact(x, self.p, v_imp)
         return dict(zip(self._contact.function.name_out(), out, strict=True))
+
+    def eccentricity_at(self, x: np.ndarray, i: int) -> tuple[float, float]:
+        """Clearance joint i's (index into the clearance joints) eccentricity at state x."""
+        joint = int(self.model.clearance_joints[i])
+        ex, ey = (float(x[self.model.coordinates.index(f"{axis}{joint}")])
+                  for axis in ("ex", "ey"))
+        return ex, ey
+
+    def drive_power_casadi(self, x: Any, tau: Any, p: Any, v_imp: Any) -> Any:
+        """The drives' power at state x with torques tau (W), in a CasADi graph."""
+        return sum((tau[kk] * x[self.n + ii] for kk, ii in enumerate(self.angle_index)),
+                   ca.MX(0))
+
+    def drive_power_at(self, x: np.ndarray, tau: np.ndarray, v_imp: np.ndarray) -> float:
+        """The drives' power at state x with torques tau (W)."""
+        return float(sum(tau[kk] * x[self.n + ii] for kk, ii in enumerate(self.angle_index)))
 
 
 
