@@ -4,6 +4,7 @@ impacts, the energy balance, and the errors a user meets."""
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import numpy as np
@@ -28,7 +29,7 @@ def test_order_on_free_flight(method: str, order: float) -> None:
     steps = 3 if method == "rk4" else 2
     ends = [simulate_mechanism(base.with_run(integrator=method, step=span / 2 ** k)).x[-1]
             for k in range(1, steps + 3)]
-    changes = np.array([np.max(np.abs(a - b)[:3]) for a, b in zip(ends, ends[1:])])
+    changes = np.array([np.max(np.abs(a - b)[:3]) for a, b in itertools.pairwise(ends)])
     rates = np.log2(changes[:-1] / changes[1:])
     assert np.all(np.abs(rates - order) < 0.1), rates
 
@@ -65,7 +66,7 @@ def test_energy_balance_with_elastic_contact() -> None:
 
 def test_settings_and_errors(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     scene = load_mechanism_scene(TENTH)
-    with pytest.raises(DescriptionError, match="must divide run.output_step") as info:
+    with pytest.raises(DescriptionError, match=r"must divide run\.output_step") as info:
         scene.with_run(integrator="rk4", step=3e-7)
     assert info.value.field == "run.step"
     with pytest.raises(DescriptionError, match="for a mechanism") as info:

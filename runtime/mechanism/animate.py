@@ -102,9 +102,9 @@ def body_paths(scene: MechanismScene, result: MechanismResult,
                 ground.append(local)
                 ground_labels.append(j)
                 if joint.type == "prismatic":
-                    angle = values[f"{j}.angle"]
+                    turn = values[f"{j}.angle"]  # the guide's axis, turned by the joint's angle
                     axis = np.array([values[f"{j}.axis_x"], values[f"{j}.axis_y"]])
-                    c, s = np.cos(angle), np.sin(angle)
+                    c, s = np.cos(turn), np.sin(turn)
                     axis = np.array([c * axis[0] - s * axis[1], s * axis[0] + c * axis[1]])
                     guides.append((local, axis / np.linalg.norm(axis)))
                 continue

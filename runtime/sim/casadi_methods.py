@@ -57,8 +57,7 @@ class _AdaptiveIntegrator:
         t = t0 + s * span
         tau = pr.tau_casadi(t) + hold
         xdot = model.casadi_function("forward_dynamics")(x, tau, p, v_imp)
-        drive_power = sum((tau[k] * x[pr.n + i] for k, i in enumerate(pr.angle_index)),
-                          ca.MX(0))
+        drive_power = pr.drive_power_casadi(x, tau, p, v_imp)
         quad = []
         dissipation = ca.MX(0)
         if pr.nc:
