@@ -18,7 +18,6 @@ the two ways of getting this answer, not the two integrators' cores.
 
 from __future__ import annotations
 
-import argparse
 import datetime
 import math
 import os
@@ -33,6 +32,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from exudyn_slider_crank import SliderCrank, simulate
+from slider_crank_ladder import ladder_arguments, write_outputs
 
 from jointplay.bench import machine_facts, markdown_table, to_csv
 from jointplay.mechanism.model import model_for
@@ -86,13 +86,7 @@ def score(rungs: list[dict[str, Any]], target: float) -> dict[str, Any] | None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", type=Path, required=True)
-    parser.add_argument("--target", type=float, default=1e-6, help="slider error (m)")
-    parser.add_argument("--repeats", type=int, default=5, help="jointplay runs per rung")
-    args = parser.parse_args(argv)
-    if args.repeats < 1 or not args.target > 0.0:
-        parser.error("--repeats must be >= 1 and --target > 0")
+    args = ladder_arguments(__doc__, argv, repeats=5)
     load_start = " ".join(f"{v:.2f}" for v in os.getloadavg())
     scene = load_mechanism_scene(str(SCENE))
     model = model_for(scene.mechanism)
@@ -125,12 +119,8 @@ def main(argv: list[str] | None = None) -> int:
               f"- load average (1/5/15 min) at the start: {load_start}",
               *(f"- {k}: {v}" for k, v in machine_facts().items()), ""]
     report = "\n".join(lines)
-    args.out.mkdir(parents=True, exist_ok=True)
-    for name, text in (("slider_crank_peers.md", report),
-                       ("slider_crank_peers.csv", to_csv(rows, [k for k, _, _ in COLUMNS]))):
-        tmp = args.out / (name + ".part")
-        tmp.write_text(text, encoding="utf-8")
-        tmp.replace(args.out / name)
+    write_outputs(args.out, {"slider_crank_peers.md": report,
+                              "slider_crank_peers.csv": to_csv(rows, [k for k, _, _ in COLUMNS])})
     print(report)
     return 0
 
