@@ -36,8 +36,8 @@ POSITION_TOLERANCE = 1e-6
 
 @dataclass(frozen=True)
 class MechanismAccuracy:
-    setting: str  # how this run was integrated ("rtol / atol 1e-09 / 1e-09", "rk4 step 1e-07 s")
-    check_setting: str  # the same for the tighter run
+    setting: str  # how this run was integrated ("1e-09 / 1e-09", "rk4 step 1e-07 s")
+    check_setting: str  # the tighter run's ("rtol / atol 1e-10 / 1e-10", "rk4 step 1e-08 s")
     position_error: float  # m, max over samples before `departs` (all samples if never)
     velocity_error: float  # m/s, the same for the rates of the positions
     departs: float | None  # s, first sample where positions differ by > POSITION_TOLERANCE
@@ -55,6 +55,7 @@ class MechanismAccuracy:
     def lines(self) -> list[str]:
         out = [f"accuracy (against the same run at {self.check_setting}; this run "
                f"{self.setting}):"]
+        remedy = "shorten the step" if "step" in self.setting else "tighten the tolerances"
         if self.departs is None:
             out.append(f"  positions (sliders, journals) within {self.position_error:.2g} m "
                        f"and rates within {self.velocity_error:.2g} m/s over the whole run "
@@ -64,8 +65,7 @@ class MechanismAccuracy:
                        f"{self.departs:.6g} s; from there the two runs differ by more than "
                        f"{POSITION_TOLERANCE:g} m (by up to {self.final_difference:.2g} m by "
                        f"{self.t_end:g} s): after it this run's trajectory is not known to "
-                       f"{POSITION_TOLERANCE:g} m; compare statistics, or tighten the "
-                       "tolerances (or the step)")
+                       f"{POSITION_TOLERANCE:g} m; compare statistics, or {remedy}")
         if self.agreement_horizon >= self.t_end:
             out.append(f"  impacts: the same {self.impacts} in both runs")
         else:
@@ -113,7 +113,7 @@ def compare(result: MechanismResult, check: MechanismResult) -> MechanismAccurac
     statistics = () if departs is None else (result.contact_statistics(departs),
                                              check.contact_statistics(departs))
     return MechanismAccuracy(
-        setting=_setting(result), check_setting=_setting(check),
+        setting=_setting(result, False), check_setting=_setting(check, True),
         position_error=float(np.max(diff[:upto], initial=0.0)),
         velocity_error=float(np.max(rate_diff[:upto], initial=0.0)),
         departs=departs, statistics=statistics,
@@ -124,10 +124,12 @@ def compare(result: MechanismResult, check: MechanismResult) -> MechanismAccurac
         t_end=float(result.t[-1]))
 
 
-def _setting(result: MechanismResult) -> str:
+def _setting(result: MechanismResult, named: bool) -> str:
+    """How a run was integrated, as the statement prints it (the tolerances ``named`` in the
+    tighter run's, where they are read first)."""
     if result.step is not None:
         return f"{result.integrator} step {result.step:g} s"
-    return f"rtol / atol {result.rtol:g} / {result.atol:g}"
+    return f"{'rtol / atol ' if named else ''}{result.rtol:g} / {result.atol:g}"
 
 
 def with_accuracy(result: MechanismResult, scene: MechanismScene,
