@@ -266,3 +266,20 @@ def test_results_file_plot_and_compare(tmp_path: Path, capsys: pytest.CaptureFix
     assert main(["plot", str(b), "--out", str(tmp_path / "plots_b")]) == 2
     assert "changed after it was written" in capsys.readouterr().err
     assert not (tmp_path / "plots_b").exists()
+
+
+def test_the_arms_entry_points_point_a_mechanism_to_its_own(tmp_path: Path) -> None:
+    """jointplay.simulate, Stepper and read, given a mechanism, say which function takes it
+    (they failed on a missing attribute)."""
+    import jointplay
+    from jointplay.mechanism.results import write_mechanism_result
+
+    scene = load_mechanism_scene(SCENE).with_run(t_end=0.001)
+    for entry in (jointplay.simulate, jointplay.Stepper):
+        with pytest.raises(DescriptionError, match=r"simulate_mechanism\(scene\)") as info:
+            entry(scene)  # type: ignore[arg-type]
+        assert info.value.field == "scene"
+    path = tmp_path / "crank.h5"
+    write_mechanism_result(jointplay.simulate_mechanism(scene), path)
+    with pytest.raises(DescriptionError, match="read_mechanism_result"):
+        jointplay.read(path)

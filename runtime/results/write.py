@@ -210,6 +210,9 @@ def read_checked(path: str | Path) -> tuple[SimulationResult, bool]:
     checked = integrity.verify(root, path)
     fmt, version = _text(root.attrs.get("format")), root.attrs.get("format_version")
     known = (1, netcdf.UNCHECKED_VERSION, netcdf.FORMAT_VERSION)
+    if fmt == "jointplay-mechanism":  # the mechanism results' FORMAT
+        raise DescriptionError("format", "this is a mechanism's results file: read it with "
+                               "jointplay.mechanism.results.read_mechanism_result", str(path))
     if fmt != FORMAT or not isinstance(version, int | np.integer) or version not in known:
         raise DescriptionError("format", f"expected {FORMAT} version {netcdf.FORMAT_VERSION} "
                                f"(or 1, 2), found {integrity.shown(fmt)} version "

@@ -55,6 +55,18 @@ METHODS: dict[str, Method] = {"bdf": run_bdf, "cvodes": _run_adaptive, "idas": _
                               "rk4": _run_fixed, "radau": _run_fixed}
 
 
+def _refuse_mechanism(scene: object, what: str) -> None:
+    """A mechanism's scene has its own entry point: say which, not fail on a missing robot."""
+    from jointplay.mechanism.description import MechanismScene
+
+    if isinstance(scene, MechanismScene):
+        from jointplay.common.errors import DescriptionError
+
+        raise DescriptionError("scene", f"is a mechanism ({scene.name}); {what} takes a serial "
+                               "arm's scene: simulate a mechanism with "
+                               "jointplay.simulate_mechanism(scene)", scene.source)
+
+
 def simulate(scene: Scene, *, model: Model | None = None,
              parameters: Mapping[str, float] | Sequence[float] | None = None,
              compare_ideal: bool = False, quiet: bool = True,
@@ -131,6 +143,7 @@ def simulate(scene: Scene, *, model: Model | None = None,
     """
     from tqdm import tqdm
 
+    _refuse_mechanism(scene, "simulate")
     if plausibility is not None:
         scene = scene.with_run(plausibility=plausibility)
     if verify and not can_check_accuracy(scene):

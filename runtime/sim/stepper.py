@@ -86,6 +86,9 @@ class Stepper:
     def __init__(self, scene: Scene, *, model: Model | None = None,
                  parameters: Mapping[str, float] | Sequence[float] | None = None,
                  sample_time: float | None = None, substeps: int = 1) -> None:
+        from jointplay.sim import _refuse_mechanism
+
+        _refuse_mechanism(scene, "Stepper")
         run = scene.run
         if run.integrator not in ADAPTIVE:
             raise ValueError(f"Stepper needs an adaptive integrator ({', '.join(ADAPTIVE)}), "
