@@ -671,8 +671,9 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
     """Paper scene, the first 0.4 s of benchmark draw 1 (truth c2 = 26.115 µm, c3 =
     25.648 µm, 1 µm noise of seed 1), through the whole-record fit the benchmark ends in,
     95 nm from the truth along c2 - c3 (the truth 7.3 lower in chi² over the whole record).
-    The check's line over 0.32 s (161 runs 5 nm apart, and one for its direction) finds a
-    valley lower than the fit's own within 10 nm of the truth along c2 - c3."""
+    The check's lines over 0.32 s (one along each direction of the clearances, 161 runs 5 nm
+    apart each, and one run for the directions) find a valley lower than the fit's own within
+    10 nm of the truth along c2 - c3."""
     from jointplay.calibration.basins import threshold
     from jointplay.calibration.continuation import ValleyScan
     from jointplay.calibration.parameters import free_parameters
@@ -690,8 +691,8 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
     check = valley_check(predictor, np.array([NOISE, NOISE]), fit,
                          ValleyScan(0.32, 161, 0.2, 1, (2e-6, 2e-6, 0.0)), 3.0, 2.0,
                          threshold(), workers=2)
-    assert check.window_end == pytest.approx(0.32) and check.runs == 162
-    assert check.extent is not None  # the line's ends, 80 steps of its spacing either side
+    assert check.window_end == pytest.approx(0.32) and check.runs == 2 * 161 + 1
+    assert check.extent is not None  # the lines' ends, 80 steps of its spacing either side
     assert np.all(check.extent[1] - check.extent[0]
                   == pytest.approx(160 * check.spacing, rel=1e-6, abs=1e-15))
     assert check.spacing[2] == 0 and 4e-9 <= max(check.spacing) <= 5e-9 * (1 + 1e-9)

@@ -78,10 +78,10 @@ class CalibrationOptions:
         in.
     valley_check_points : int
         With the basin check on: runs over the valley lines' first window
-        along the clearances' rugged direction through the best fit, VALLEY_CHECK_REACH grid
-        spacings either side; a parameter the line moves whose interval misses another valley
+        along each direction of the clearances through the best fit, VALLEY_CHECK_REACH grid
+        spacings either side; a parameter the lines move whose interval misses another valley
         there within the basin threshold of the fit's own is not determined, its interval
-        widened to span the line (:func:`valley_check`; 0: no check).
+        widened to span the lines (:func:`valley_check`; 0: no check).
     basins : bool
         Look for the other minima of the whole record's cost near the best fit, which the data
         cannot tell from it, and widen the intervals to hold them
