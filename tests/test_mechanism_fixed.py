@@ -98,3 +98,22 @@ def test_the_command_states_accuracy_and_keeps_the_method(tmp_path: Path,
     assert (back.integrator, back.step) == ("rk4", 1e-6)
     write_mechanism_result(back, tmp_path / "again.h5")
     assert read_mechanism_result(tmp_path / "again.h5").step == 1e-6
+
+
+def test_applied_loads_enter_each_stage(tmp_path: Path) -> None:
+    """A torque varying in time on the crank pin and a force on the slider, at a fixed step:
+    the loads are evaluated at RK4's stage times, so the run agrees with the BDF at 1e-12
+    (slider within 1e-7 m; measured 2.3e-8 m) and the drive work with it (within 0.5 %;
+    measured 0.14 %)."""
+    text = TENTH.read_text(encoding="utf-8").replace(
+        "[run]", '[mechanism.torques]\ncrank_pin = "0.5*sin(1000*t)"\n\n[[mechanism.forces]]\n'
+        'name = "gas"\nbody = "slider"\nx = "-20"\ny = "0"\n\n[run]')
+    path = tmp_path / "loads.toml"
+    path.write_text(text, encoding="utf-8")
+    scene = load_mechanism_scene(path)
+    reference = simulate_mechanism(scene.with_run(rtol=1e-12, atol=1e-12))
+    result = simulate_mechanism(scene.with_run(integrator="rk4", step=1e-7))
+    slider = result.coordinate("guide.position") - reference.coordinate("guide.position")
+    assert np.max(np.abs(slider)) < 1e-7
+    assert len(result.impacts) == len(reference.impacts)
+    assert result.drive_work[-1] == pytest.approx(reference.drive_work[-1], rel=5e-3)

@@ -46,11 +46,9 @@ class MechanismFixedProblem:
 
     def tau(self, t: np.ndarray | float) -> np.ndarray:
         """The applied loads at times t: shape (len(t), loads)."""
-        times = np.atleast_1d(np.asarray(t, dtype=float))
-        if not self._loads:
-            return np.zeros((times.size, 0))
-        return np.stack([np.broadcast_to(np.asarray(f.numpy(times), dtype=float), times.shape)
-                         for f in self._loads], axis=1)
+        from jointplay.mechanism.simulate import _load_values
+
+        return _load_values(self._loads, np.atleast_1d(np.asarray(t, dtype=float)))
 
     def contact_at(self, x: np.ndarray, v_imp: np.ndarray) -> dict[str, np.ndarray]:
         assert self._contact is not None
