@@ -117,3 +117,17 @@ def test_applied_loads_enter_each_stage(tmp_path: Path) -> None:
     assert np.max(np.abs(slider)) < 1e-7
     assert len(result.impacts) == len(reference.impacts)
     assert result.drive_work[-1] == pytest.approx(reference.drive_work[-1], rel=5e-3)
+
+
+def test_the_skipped_check_is_priced_as_ten_runs(monkeypatch: pytest.MonkeyPatch,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    """At a fixed step the accuracy check reruns at a step 10x shorter: past the budget the
+    command skips it and says so, the estimate being ten times the run."""
+    import jointplay.cli.simulate as simulate_cli
+
+    monkeypatch.setattr(simulate_cli, "VERIFY_BUDGET_S", 0.0)
+    assert main(["simulate", str(TENTH), "--integrator", "rk4", "--step", "1e-6", "--t-end",
+                 "0.001"]) == 0
+    out = capsys.readouterr().out
+    assert "accuracy not checked: the check (the same run at a step 10x shorter)" in out
+    assert "against the same run" not in out
