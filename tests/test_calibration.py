@@ -910,3 +910,24 @@ def test_on_a_quadratic_cost_the_basin_lines_stay_inside_the_intervals() -> None
                 if rise <= threshold():
                     assert np.all(np.abs(x - best) <= Z95 * std * (1 + 1e-9))
     assert _line_points(np.zeros(2), np.full((2, 2), np.inf), np.zeros(2), np.ones(2)) == []
+
+
+@pytest.mark.slow
+def test_the_valley_check_runs_only_where_the_noise_explains_the_residuals() -> None:
+    """The paper scene's first 0.1 s of tip, clearances and friction free, a small global
+    stage (valley lines and check from 40 ms): with the noise stated as it is the check runs
+    (a line per direction of the clearances and the run choosing its tolerances); stated 100
+    times too small, chi²/dof is far outside its range, nothing can be determined, and the
+    check's runs are skipped."""
+    scene = jp.default_scene().with_run(t_end=0.1)
+    truth = {"joint2.clearance": 30.3e-6, "joint3.clearance": 29.8e-6, "friction.mu": 0.05}
+    measured = _synthetic(scene, truth, seed=0)
+    options = CalibrationOptions(profile_points=0, grid_points=5, grid_line_points=0,
+                                 valley_window=0.04, valley_points=9, valley_check_points=9)
+    right = calibrate(scene, measured, list(truth), noise=NOISE, options=options)
+    assert right.fit_explains_data
+    assert right.simulations_by_kind["valley check"] >= 2 * 9
+    wrong = calibrate(scene, measured, list(truth), noise=NOISE / 100, options=options)
+    assert not wrong.fit_explains_data
+    assert wrong.simulations_by_kind["valley check"] == 0
+    assert not any(e.determined for e in wrong.estimates.values())

@@ -247,10 +247,6 @@ def _run(problem: Problem) -> CalibrationResult:
         if grid is not None and valley is not None else 0.0
     free = problem.free
     check = None
-    if opts.basins and valley is not None and opts.valley_check_points > 0:
-        check = valley_check(predictor, weights, optimum.values, ValleyScan(
-            opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1, valley.scale),
-            VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(), opts.workers)
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     line_runs = 0
     if opts.basins:
@@ -264,10 +260,22 @@ def _run(problem: Problem) -> CalibrationResult:
         if moved:
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
+    fitted = predictor.outputs(optimum.values)
+    if opts.basins:
+        # The valley check only decides which estimates stay determined: where the noise
+        # does not explain the residuals, or the held parameters drifted, none is, and its
+        # runs (a tenth of the search's time) are skipped.
+        if valley is not None and opts.valley_check_points > 0 and drift <= HELD_DRIFT \
+                and residual_check(fitted - problem.measured.values, optimum.sigma,
+                                   problem.measured.size - free.size, problem.noise_spread,
+                                   problem.measured.columns) is None:
+            check = valley_check(predictor, weights, optimum.values, ValleyScan(
+                opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1,
+                valley.scale), VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(),
+                opts.workers)
         low, high, determined, rival_warnings = widened(spread, found, free.names, check)
         spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                      warnings=spread.warnings + tuple(rival_warnings))
-    fitted = predictor.outputs(optimum.values)
     distrust = None
     if drift > HELD_DRIFT:
         names = ", ".join(n for n, h in zip(free.names, valley.held_before, strict=True) if h) \

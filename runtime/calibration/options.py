@@ -81,7 +81,8 @@ class CalibrationOptions:
         along each direction of the clearances through the best fit, VALLEY_CHECK_REACH grid
         spacings either side; a parameter the lines move whose interval misses another valley
         there within the basin threshold of the fit's own is not determined, its interval
-        widened to span the lines (:func:`valley_check`; 0: no check).
+        widened to span the lines (:func:`valley_check`; 0: no check). Run only where the
+        noise explains the residuals (otherwise nothing is determined).
     basins : bool
         Look for the other minima of the whole record's cost near the best fit, which the data
         cannot tell from it, and widen the intervals to hold them
