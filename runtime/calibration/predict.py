@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import inspect
 import math
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -259,7 +258,3 @@ def whitened(values: np.ndarray, sigma: np.ndarray) -> np.ndarray:
     """(n_t, n_columns[, n_p]) divided by each column's standard deviation, flattened to rows."""
     scaled = values / (sigma[None, :, None] if values.ndim == 3 else sigma[None, :])
     return scaled.reshape(values.shape[0] * values.shape[1], *values.shape[2:])
-
-
-def overrides_text(values: Mapping[str, float]) -> str:
-    return ", ".join(f"{k}={v:.9g}" for k, v in values.items() if math.isfinite(v))
