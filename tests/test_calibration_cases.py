@@ -162,3 +162,49 @@ def test_summary_counts_coverage_verdicts_and_goals() -> None:
     assert (s["goals_checked"], s["goals_met"]) == (3, 2)
     assert (s["wall_median_s"], s["wall_worst_s"]) == (20.0, 30.0)
     assert s["wall_by_case"] == {"a": (15.0, 20.0), "b": (30.0, 30.0)}
+
+
+def test_the_stage_benchmark_removes_each_stage_and_puts_it_back() -> None:
+    """benchmarks/calibration_stages.py: inside each removal the search's function is
+    replaced (or an option turns the stage off), outside it the original is back; the
+    later-lines removal keeps the first window's lines and drops the later ones; the summary
+    counts and lists what moved against the full search."""
+    sys.path.insert(0, str(CASES_DIR.parent))
+    import calibration_stages as stages
+
+    from jointplay.calibration import api, basins, continuation, valleys
+
+    places = [(continuation, "_line_minima"), (basins, "_line_points"),
+              (basins, "_other_centres"), (valleys, "_rugged"), (api, "others_first")]
+    originals = [getattr(m, n) for m, n in places]
+    for name, (remove, options) in stages.STAGES.items():
+        with remove():
+            replaced = [getattr(m, n) is not f for (m, n), f in zip(places, originals,
+                                                                    strict=True)]
+        assert any(replaced) != bool(options), name  # a replacement or an option, not both
+        assert all(getattr(m, n) is f for (m, n), f in zip(places, originals, strict=True))
+
+    class Part:
+        def __init__(self, end: float) -> None:
+            self.t = np.array([0.0, end])
+
+    calls = []
+    first = stages.CalibrationOptions().valley_window
+    with stages._replaced(continuation, "_line_minima",
+                          lambda *args: calls.append(args[2].t[-1]) or ([1], 7)), \
+            stages._without_later_lines():
+        assert continuation._line_minima(None, None, Part(first)) == ([1], 7)
+        assert continuation._line_minima(None, None, Part(2 * first)) == ([], 0)
+    assert calls == [first]
+
+    def row(stage: str, error: float, determined: bool) -> dict[str, object]:
+        return {"stage": stage, "case": "a", "seed": 0, "runs": 10, "wall_s": 1.0,
+                "parameters": {"friction.mu": {"error_pct": error, "covered": True,
+                                               "determined": determined}}}
+
+    text = stages.markdown([row("full", 0.01, True), row("basin-lines", 0.30, False),
+                            row("later-lines", 0.02, True)], "cmd")
+    assert "| basin-lines | 1 of 1 | 0 | 0 | 10 | 1.0 |" in text
+    assert "- **basin-lines**: a seed 0 friction.mu: +0.01 % (in, det.) → +0.30 % (in, " \
+        "not det.)" in text
+    assert "- **later-lines**: no change" in text
