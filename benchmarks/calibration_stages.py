@@ -11,8 +11,6 @@ seed, ``jointplay.calibrate`` runs in this process with its default options, onc
   and 1.28 s on a 2 s record; the lines at 0.32 s stay);
 - ``basin-lines``: the basin check runs no lines (it still compares the other tracks'
   whole-record fits with the best);
-- ``weakest-direction``: the valley check scans every direction of the clearances but the
-  weakest;
 - ``valley-check``: no valley check (``valley_check_points = 0``);
 - ``grid-line``: no line through the best grid point (``grid_line_points = 0``);
 - ``others-first``: the friction is not fitted over the whole record before the grid (the
@@ -49,7 +47,6 @@ from jointplay.calibration import (  # noqa: E402
     basins,
     calibrate,
     continuation,
-    valleys,
 )
 from jointplay.calibration.fit import timed  # noqa: E402
 from jointplay.common.files import atomic_write_text  # noqa: E402
@@ -89,15 +86,6 @@ def _without_basin_lines() -> Iterator[None]:
         yield
 
 
-def _without_weakest_direction() -> contextlib.AbstractContextManager[None]:
-    rugged = valleys._rugged
-
-    def but_weakest(*args: Any, weakest: bool = False) -> Any:
-        return rugged(*args, weakest=False)
-
-    return _replaced(valleys, "_rugged", but_weakest)
-
-
 def _without_others_first() -> contextlib.AbstractContextManager[None]:
     return _replaced(api, "others_first", lambda predictor, weights, start, *rest: (start, 0))
 
@@ -106,7 +94,6 @@ STAGES: dict[str, tuple[Callable[[], contextlib.AbstractContextManager[None]], d
 STAGES = {
     "later-lines": (_without_later_lines, {}),
     "basin-lines": (_without_basin_lines, {}),
-    "weakest-direction": (_without_weakest_direction, {}),
     "valley-check": (contextlib.nullcontext, {"valley_check_points": 0}),
     "grid-line": (contextlib.nullcontext, {"grid_line_points": 0}),
     "others-first": (_without_others_first, {}),

@@ -291,12 +291,11 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
 
 
 def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
-            x: np.ndarray, scale: np.ndarray, weakest: bool = False
-            ) -> tuple[list[np.ndarray], int]:
+            x: np.ndarray, scale: np.ndarray) -> tuple[list[np.ndarray], int]:
     """The directions to scan at ``x`` among the parameters whose ``scale`` is not 0 (a step
     of 1 moves each by at most its ``scale``): the eigenvectors of the window's scaled
-    information matrix there, all but the weakest where more than one parameter moves (all
-    of them with ``weakest``); and the runs. Inside one valley the weakest direction is
+    information matrix there, all but the weakest where more than one parameter moves; and
+    the runs. Inside one valley the weakest direction is
     usually the smooth one the local fit follows (on the paper scene's tip the sum of the
     clearances, which only the tip's slow sag sets), while the impacts make the cost rugged
     across the others (the difference of the clearances, whose valleys a local fit cannot
@@ -311,7 +310,7 @@ def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: n
     scaled = jac[:, moving] * scale[moving]
     _, vectors = np.linalg.eigh(scaled.T @ scaled)
     out = []
-    for v in vectors.T[1:] if vectors.shape[1] > 1 and not weakest else vectors.T:
+    for v in vectors.T[1:] if vectors.shape[1] > 1 else vectors.T:
         direction = np.zeros(scale.size)
         direction[moving] = v * scale[moving]
         out.append(direction / np.max(np.abs(direction[moving]) / scale[moving]))

@@ -77,8 +77,9 @@ class CalibrationOptions:
         by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
         in.
     valley_check_points : int
-        With the basin check on: runs over the valley lines' first window
-        along each direction of the clearances through the best fit, VALLEY_CHECK_REACH grid
+        With the basin check on: runs over the valley lines' first window along the
+        clearances' rugged directions (those of the valley lines) through the best fit,
+        VALLEY_CHECK_REACH grid
         spacings either side; a parameter the lines move whose interval misses another valley
         there within the basin threshold of the fit's own is not determined, its interval
         widened to span the lines (:func:`valley_check`; 0: no check). Run only where the

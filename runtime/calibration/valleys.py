@@ -5,7 +5,7 @@ c2 - c3) is a comb of valleys a fraction of a nanometre wide, and the continuati
 (:mod:`jointplay.calibration.continuation`) are 25-100 nm apart: a fit can end a few
 valleys from the truth's with a chi² the noise explains. Over the continuation's first
 lined window (0.32 s) the valleys are about 10 nm wide, and lines of runs through the fit
-5 nm apart, one along each direction of the clearances, resolve them: :func:`valley_check`
+5 nm apart along the clearances' rugged directions resolve them: :func:`valley_check`
 finds the other valleys there as low as the fit's own. What the check finds widens the intervals
 (:func:`jointplay.calibration.basins.widened`).
 """
@@ -63,12 +63,11 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     if not ends:
         return ValleyCheck(0.0, (), np.zeros(free.size), 0)
     part, stage_scene = _window_problem(predictor, ends[0], looser)
-    # Every direction, the weakest too: where the data set both the difference and the sum
-    # of the clearances (the tip and the joint angles measured), the sum's valleys are as
-    # narrow (a fit once ended 0.2 % off both, 5 standard deviations, with the truth's valley
-    # 50 lower in chi² along the weakest direction).
+    # The rugged directions only: the weakest one, scanned too for a while, changed no
+    # interval's coverage on the eleven benchmark cases over five noise seeds once the
+    # check ran at the final estimate, and cost correct verdicts and half the check's runs.
     directions, runs = _rugged(predictor, stage_scene, part, weights, best,
-                               np.asarray(scan.scale), weakest=True)
+                               np.asarray(scan.scale))
     steps = np.linspace(-scan.reach, scan.reach, 2 * (scan.points // 2) + 1)
     lines, values, more = _lines_chi2(predictor, stage_scene, part, weights, best,
                                       directions, steps, workers)

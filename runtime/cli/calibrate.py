@@ -65,12 +65,12 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "through the best grid point, 1.5 grid spacings either side; their "
                         "lowest minima take its place as tracks (default 151; 0: no line)")
     p.add_argument("--valley-check-points", type=int, default=161,
-                   help="runs over 0.32 s along each direction of the clearances through "
-                        "the best fit, 0.2 grid spacings either side; a clearance whose "
-                        "interval misses another valley within chi² + 3.84 of the fit's there "
-                        "is reported not determined, its interval spanning the lines; run "
-                        "only where the noise explains the residuals (default 161 per "
-                        "direction; 0: no check)")
+                   help="runs over 0.32 s along the clearances' rugged directions (all "
+                        "but the weakest) through the best fit, 0.2 grid spacings either "
+                        "side; a clearance whose interval misses another valley within "
+                        "chi² + 3.84 of the fit's there is reported not determined, its "
+                        "interval spanning the lines; run only where the noise explains the "
+                        "residuals (default 161 per direction; 0: no check)")
     p.add_argument("--no-basin-check", dest="basins", action="store_false",
                    help="skip the search for the other minima of the whole record's cost "
                         "near the best fit (lines along the axes of its confidence "
