@@ -46,9 +46,9 @@ class MechanismFixedProblem:
 
     def tau(self, t: np.ndarray | float) -> np.ndarray:
         """The applied loads at times t: shape (len(t), loads)."""
-        from jointplay.mechanism.simulate import _load_values
+        from jointplay.mechanism.simulate import load_values
 
-        return _load_values(self._loads, np.atleast_1d(np.asarray(t, dtype=float)))
+        return load_values(self._loads, np.atleast_1d(np.asarray(t, dtype=float)))
 
     def contact_at(self, x: np.ndarray, v_imp: np.ndarray) -> dict[str, np.ndarray]:
         assert self._contact is not None

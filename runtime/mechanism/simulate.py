@@ -263,7 +263,7 @@ def simulate_mechanism(scene: MechanismScene, *, model: MechanismModel | None = 
         x, v_imp, work, dissipated, impacts, counts = run_fixed(
             model, scene, p, x0, _scale(model, scene), loads)
     wall = time.perf_counter() - started
-    tau = _load_values(loads, t)
+    tau = load_values(loads, t)
     samples = _samples(model, p, x, v_imp, tau)
     _check_penetration(scene, model, impacts, t, samples["penetration"])
     fixed = run.integrator != "bdf"
@@ -348,7 +348,7 @@ def load_functions(scene: MechanismScene) -> tuple[Any, ...]:
                  for text in scene.mechanism.load_expressions())
 
 
-def _load_values(loads: tuple[Any, ...], t: np.ndarray) -> np.ndarray:
+def load_values(loads: tuple[Any, ...], t: np.ndarray) -> np.ndarray:
     """The loads at times t: (len(t), loads)."""
     if not loads:
         return np.zeros((len(t), 0))

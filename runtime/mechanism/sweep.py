@@ -146,9 +146,9 @@ def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool =
     from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
     from jointplay.mechanism.model import model_for
     from jointplay.mechanism.simulate import (
-        _load_values,
         ideal_motion,
         load_functions,
+        load_values,
         simulate_mechanism,
     )
 
@@ -168,7 +168,7 @@ def run_mechanism_sweep(sweep: MechanismSweep, out: str | Path, *, quiet: bool =
         try:
             ideal: dict[str, np.ndarray] | None = ideal_motion(
                 model, p, result.t, scene.initial,
-                _load_values(load_functions(scene), result.t), guess=result.x)
+                load_values(load_functions(scene), result.t), guess=result.x)
         except DescriptionError:
             ideal = None
         stats = result.contact_statistics()
