@@ -377,7 +377,7 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
     stage = probe.for_free(_holding(predictor.free, x, held))
     try:
         x_next, record = multi_start(stage, weights, starts, max_evaluations,
-                                     stop_early=True, settle=True)
+                                     stop_early=True)
     except SimulationError:
         return None, runs + stage.counter.simulations
     runs += stage.counter.simulations

@@ -214,9 +214,8 @@ SETTLED_SIGMAS = 0.1
 standard deviations of it, in the metric of the Jacobian there (scaled by sqrt(chi²/dof)
 where the fit does not yet explain the data): such a step changes chi² by a few hundredths,
 below the integrator's own scatter of chi² (about ±1 on the paper scene's whole record),
-where SciPy's ``xtol`` goes on shrinking the trust region through rejected runs. The
-windows' fits settle too: each only has to bring its track into its valley, which a step
-of a tenth of the window's own standard deviation does not leave."""
+where SciPy's ``xtol`` goes on shrinking the trust region through rejected runs. Only the
+fits on the whole record settle; the windows' fits keep SciPy's tolerances."""
 
 
 class _Settled(Exception):
