@@ -63,9 +63,9 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     if not ends:
         return ValleyCheck(0.0, (), np.zeros(free.size), 0)
     part, stage_scene = _window_problem(predictor, ends[0], looser)
-    # The rugged directions only: the weakest one, scanned too for a while, changed no
-    # interval's coverage on the eleven benchmark cases over five noise seeds once the
-    # check ran at the final estimate, and cost correct verdicts and half the check's runs.
+    # The rugged directions only: with the check at the final estimate, a line along the
+    # weakest one too changed no interval's coverage on the eleven benchmark cases over
+    # five noise seeds, and cost eight correct verdicts and half the check's runs.
     directions, runs = _rugged(predictor, stage_scene, part, weights, best,
                                np.asarray(scan.scale))
     steps = np.linspace(-scan.reach, scan.reach, 2 * (scan.points // 2) + 1)
