@@ -79,11 +79,11 @@ class CalibrationOptions:
     valley_check_points : int
         With the basin check on: runs over the valley lines' first window along the
         clearances' rugged directions (those of the valley lines) through the best fit,
-        VALLEY_CHECK_REACH grid
-        spacings either side; a parameter the lines move whose interval misses another valley
-        there within the basin threshold of the fit's own is not determined, its interval
-        widened to span the lines (:func:`valley_check`; 0: no check). Run only where the
-        noise explains the residuals (otherwise nothing is determined).
+        VALLEY_CHECK_REACH grid spacings either side; a parameter the lines move whose
+        interval misses another valley there within the basin threshold of the fit's own is
+        not determined, its interval widened to span the lines (:func:`valley_check`; 0: no
+        check). Run only where the noise explains the residuals (otherwise nothing is
+        determined).
     basins : bool
         Look for the other minima of the whole record's cost near the best fit, which the data
         cannot tell from it, and widen the intervals to hold them
