@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import signal
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -19,6 +20,11 @@ _CACHE: dict[str, Any] = {}
 
 
 def pytest_configure(config: pytest.Config) -> None:
+    # The suite presses Ctrl-C at the commands it runs, in this process and in children. Run
+    # as a shell's background job, it would start with SIGINT ignored, which the commands
+    # (and every child, across exec) keep: give it Python's usual handler instead.
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
     kept = os.environ.get("JOINTPLAY_TEST_CACHE")
     root = Path(kept) if kept else Path(tempfile.mkdtemp(prefix="jointplay-test-cache-"))
     _CACHE.update(root=root, temporary=not kept, previous=os.environ.get("JOINTPLAY_CACHE"))

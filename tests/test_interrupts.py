@@ -29,10 +29,15 @@ def only_line(err: str) -> None:
 
 
 def press_ctrl_c(command: list[str], env: dict[str, str], marker: bytes, *, wait: float,
-                 presses: int, timeout: float) -> tuple[int, str]:
-    """Run ``command``; once its stdout shows ``marker``, wait ``wait`` s, then send SIGINT
-    ``presses`` times 50 ms apart (fewer if it has ended). Its exit status and stderr."""
-    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+                 presses: int, timeout: float, ignored: bool = False) -> tuple[int, str]:
+    """Run ``command`` (``ignored``: with SIGINT ignored, as a shell starts a background
+    job); once its stdout shows ``marker``, wait ``wait`` s, then send SIGINT ``presses``
+    times 50 ms apart (fewer if it has ended). Its exit status and stderr."""
+    def ignore() -> None:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env,
+                            preexec_fn=ignore if ignored else None)
     assert proc.stdout is not None
     try:
         seen = b""
@@ -46,12 +51,28 @@ def press_ctrl_c(command: list[str], env: dict[str, str], marker: bytes, *, wait
                 break
             proc.send_signal(signal.SIGINT)
             time.sleep(0.05)
-        _, err = proc.communicate(timeout=timeout)
+        try:
+            _, err = proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            pytest.fail(f"no end within {timeout} s of Ctrl-C; {_signal_state(proc.pid)}")
     finally:
         if proc.poll() is None:
             proc.kill()
             proc.wait()
     return proc.returncode, err.decode(errors="replace")
+
+
+def _signal_state(pid: int) -> str:
+    """What each of the process's threads blocks, ignores, catches and has pending, and where
+    it waits: what a press that was not acted on needs to be explained."""
+    lines = []
+    for task in sorted(Path(f"/proc/{pid}/task").glob("*")):
+        with open(task / "status", encoding="utf-8") as status:
+            fields = [line.strip() for line in status
+                      if line.startswith(("Name", "State", "Sig", "ShdPnd"))]
+        wchan = (task / "wchan").read_text(encoding="utf-8") if (task / "wchan").exists() else ""
+        lines.append(f"thread {task.name}: {'; '.join(fields)}; wchan {wchan}")
+    return "\n".join(lines)
 
 
 @pytest.mark.parametrize("integrator", ["bdf", "cvodes", "idas", "rk4", "radau"])
@@ -142,6 +163,19 @@ def test_interrupt_while_importing(tmp_path: Path) -> None:
     assert code == 130, text
     only_line(text)
     assert not out.exists()
+
+
+def test_started_with_ctrl_c_ignored_it_stays_ignored(tmp_path: Path) -> None:
+    """A command started with SIGINT ignored (``cmd &`` in a script, ``nohup``) keeps it
+    ignored, during its imports and its run alike: three presses, and it runs to its end."""
+    out = tmp_path / "r.h5"
+    command = [sys.executable, "-m", "jointplay.cli", "simulate", "--integrator", "rk4",
+               "--t-end", "0.2", "--step", "1e-6", "--out", str(out)]
+    code, text = press_ctrl_c(command, {**os.environ, "PYTHONUNBUFFERED": "1"}, b"ready in",
+                              wait=0.3, presses=3, timeout=120, ignored=True)
+    assert code == 0, text
+    assert "interrupted" not in text
+    assert out.exists()
 
 
 def test_fixed_step_blocks_change_nothing(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -12,6 +12,10 @@ still ends with one line, exit 130. Before the command line takes over, while th
 import, :func:`guard_imports` (run first thing by ``import jointplay`` in the ``jointplay``
 program only) turns Ctrl-C into that same line and exit status at once: nothing has been
 written yet.
+
+A process started with SIGINT ignored (a shell script's background job, ``nohup``) keeps
+ignoring it from start to end, as Python itself does: these handlers are installed only where
+SIGINT is not ignored. SIGTERM still stops it in order.
 """
 
 from __future__ import annotations
@@ -65,8 +69,9 @@ def installed() -> Iterator[None]:
         return
     _state["interrupted"] = 0
     _state["status"] = EXIT_INTERRUPTED
-    previous = signal.signal(signal.SIGINT, _on_sigint), signal.signal(signal.SIGTERM,
-                                                                       _on_sigterm)
+    ignored = signal.getsignal(signal.SIGINT) is signal.SIG_IGN  # inherited: kept
+    previous = (signal.SIG_IGN if ignored else signal.signal(signal.SIGINT, _on_sigint),
+                signal.signal(signal.SIGTERM, _on_sigterm))
     _state["installed"] = 1
     try:
         yield
@@ -74,7 +79,8 @@ def installed() -> Iterator[None]:
         # First of all, a press from here on is only recorded: were the handler still ours
         # once "installed" is dropped, a press as the command finishes would raise a
         # KeyboardInterrupt out of the command line, a traceback.
-        signal.signal(signal.SIGINT, _record_only)
+        if not ignored:
+            signal.signal(signal.SIGINT, _record_only)
         unreported = sys.exc_info()[0] is KeyboardInterrupt  # raised past the command
         _state["installed"] = 0
         if _state["interrupted"] and _is_program():
@@ -209,6 +215,9 @@ def _recording() -> Iterator[int]:
     """Within (main thread only): SIGINT only recorded, the handler put aside (see
     :func:`_restore_in_copy`); yields whether an interrupt was recorded before."""
     before = _state["interrupted"]
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:  # ignored stays ignored
+        yield before
+        return
     previous = signal.signal(signal.SIGINT, _record_only)
     _replaced.append(previous)
     try:
