@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from jointplay.cli.summary import divided_steps_lines
 from jointplay.common.errors import DescriptionError
 
 # Flags of ``simulate`` that mechanism runs do not take, and why.
@@ -162,6 +163,7 @@ def summary_lines(result: Any) -> list[str]:
                        f"{force:.4g} N at {at:.6g} s ({how}), largest eccentricity "
                        f"{np.max(np.hypot(*result.eccentricity[:, j].T)) * 1e3:.4g} mm "
                        f"(clearance {result.clearance[j] * 1e3:.4g} mm)")
+    out += divided_steps_lines(result.stats)
     torque = result.driving_torque
     out.append(f"  driving torque from {torque.min():.4g} to {torque.max():.4g} N m (on the "
                "samples)")

@@ -78,6 +78,15 @@ def film_lines(result: Any) -> list[str]:
     return lines
 
 
+def divided_steps_lines(stats: Any) -> list[str]:
+    """A line on the Radau steps that failed at ``run.step`` and were taken in parts."""
+    count = int(stats.get("subdivided_steps", 0))
+    if not count:
+        return []
+    return [f"  {count} radau steps failed at run.step and were taken in 10x shorter parts "
+            "(100x, 1000x where a part failed too)"]
+
+
 def summary(result: Any) -> str:
     """A few lines a person reads after a run."""
     st = result.stats
@@ -92,6 +101,7 @@ def summary(result: Any) -> str:
         f"(drive work {result.energy['drive_work'][-1]:.4g} J, dissipated "
         f"{result.energy['dissipated'][-1]:.4g} J)",
     ]
+    lines += divided_steps_lines(st)
     if getattr(result, "implausible", None):
         lines.append("  IMPLAUSIBLE (kept with plausibility = warn): the contact laws do not "
                      "describe this run; see the warning above")

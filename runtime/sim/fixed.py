@@ -4,9 +4,10 @@ interpolating the penetration between step ends, and the step redone with the ca
 
 from __future__ import annotations
 
+import copy
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NoReturn
 
 import casadi as ca
 import numpy as np
@@ -22,6 +23,11 @@ from jointplay.sim.problem import (
     _Problem,
     _Trajectory,
 )
+
+SUBDIVISION = 10
+"""A Radau step that fails (its Newton iteration, a non-finite state) is taken as this many."""
+MAX_SUBDIVISIONS = 3
+"""How many times over a failed step is divided before the run stops (1000 shorter)."""
 
 
 def _steps_function(step: ca.Function, pr: _Problem, method: str, steps: int) -> ca.Function:
@@ -77,6 +83,7 @@ class _Block:
     powers: np.ndarray
     deltas: np.ndarray
     rates: np.ndarray
+    failures: list[str | None]  # per step: why it cannot be accepted, or None
 
     def replace_from(self, j: int, redone: _Block) -> None:
         """Steps from j on are ``redone``'s."""
@@ -84,6 +91,12 @@ class _Block:
                                   (redone.states, redone.powers, redone.deltas, redone.rates),
                                   strict=True):
             target[j:] = values
+        self.failures[j:] = redone.failures
+
+    def first_failure(self, i: int) -> int:
+        """The first step from i on that failed (the block's length if none did)."""
+        return next((k for k in range(i, len(self.failures)) if self.failures[k]),
+                    len(self.failures))
 
 
 @dataclass
@@ -115,6 +128,7 @@ class _FixedSteps:
         run = pr.scene.run
         self.pr, self.events, self.stats = pr, events, stats
         self.method, self.h = run.integrator, run.step
+        self.depth = 0  # how many times these steps were divided (see finer)
         self._step = pr.model.casadi_function(f"{self.method}_step")
         m = min(run.steps_per_output, FIXED_BLOCK_STEPS)
         batch = _steps_function(self._step, pr, self.method, m)
@@ -127,22 +141,57 @@ class _FixedSteps:
                                      "regenerate the model with `jointplay derive`")
         self._evals_per_step = 4 if self.method == "rk4" else 3 * (1 + newton_iterations)
 
-    def block(self, state: np.ndarray, t_start: np.ndarray) -> _Block:
-        """The steps starting at the times ``t_start``, the first from ``state``."""
+    def block(self, state: np.ndarray, t_start: np.ndarray,
+              v_imp: np.ndarray | None = None) -> _Block:
+        """The steps starting at the times ``t_start``, the first from ``state``, with the
+        impact speeds ``v_imp`` (the captured ones by default)."""
         fn = self._batch_of(t_start.size)
         interrupts.raise_if_interrupted()
         out = [np.asarray(o) for o in fn(state, self._stage_torques(t_start), self.h,
-                                         self.pr.p, self.events.v_imp)]
+                                         self.pr.p, self.events.v_imp if v_imp is None
+                                         else v_imp)]
         counts = self.stats.counts
         counts["steps"] += t_start.size
         counts["rhs_evaluations"] += self._evals_per_step * t_start.size
         if self.method == "radau":
             counts["jacobian_evaluations"] += t_start.size
         states = out[0].T
-        self._check_finite(states, state, t_start)
-        if self.method == "radau":
-            self._check_newton(out[4].ravel(), state, t_start)
-        return _Block(states, out[1].T, out[2].T, out[3].T)
+        # A step that failed is reported only if it would be accepted: one computed after an
+        # onset with the speed of no impact (or of the last) is redone anyway.
+        failures: list[str | None] = [None] * t_start.size
+        finite = np.all(np.isfinite(states), axis=1)
+        newton = out[4].ravel() if self.method == "radau" else np.zeros(t_start.size)
+        limit = RADAU_NEWTON_TOLERANCE * np.max(self.pr.scale)
+        for k in np.flatnonzero(~finite | (newton > limit)):
+            failures[k] = (
+                f"{self.method} at step {self.h:g} s produced a non-finite state: the step "
+                "is beyond the method's stability limit for this contact stiffness; reduce "
+                f"run.step or use {self.pr.adaptive_fallback}" if not finite[k] else
+                f"Radau's Newton iteration did not converge (last update {newton[k]:.3g}); "
+                "reduce run.step")
+        return _Block(states, out[1].T, out[2].T, out[3].T, failures)
+
+    def finer(self) -> _FixedSteps:
+        """These steps, :data:`SUBDIVISION` times shorter (for one step that failed)."""
+        finer = copy.copy(self)
+        finer.h, finer.depth = self.h / SUBDIVISION, self.depth + 1
+        return finer
+
+    def fail(self, block: _Block, j: int, state: np.ndarray, t_start: float) -> NoReturn:
+        """Stop the run at step j of ``block`` (which failed), taken from ``state``."""
+        why = str(block.failures[j])
+        if self.depth:
+            why += (f" (the step of {self.h * SUBDIVISION ** self.depth:g} s failed, and so "
+                    f"did its parts down to {self.h:g} s)")
+        raise SimulationError(t_start, why,
+                              _nearest_contact_joint(self.pr, state, self.events.v_imp))
+
+    def approach_speeds(self, accepted: _Accepted) -> np.ndarray:
+        """The impact speeds, with every joint out of contact given the speed at which it
+        closes at the accepted end: the speed of an impact met within the next step, to
+        first order (the captured one belongs to the last impact, or to none)."""
+        free = self.events.flags < 0.5
+        return np.where(free, np.maximum(accepted.rate, 0.0), self.events.v_imp)
 
     def _batch_of(self, size: int) -> ca.Function:
         if size not in self._batches:
@@ -152,25 +201,6 @@ class _FixedSteps:
     def _stage_torques(self, t_start: np.ndarray) -> np.ndarray:
         times = (t_start[:, None] + self.h * self._fractions[None, :]).ravel()
         return self.pr.tau(times).T  # (ntau, 3 * steps)
-
-    def _check_finite(self, states: np.ndarray, state: np.ndarray, t_start: np.ndarray) -> None:
-        finite = np.all(np.isfinite(states), axis=1)
-        if not np.all(finite):
-            bad = int(np.argmin(finite))
-            raise SimulationError(float(t_start[bad]), f"{self.method} at step {self.h:g} s "
-                                  "produced a non-finite state: the step is beyond the method's "
-                                  "stability limit for this contact stiffness; reduce run.step "
-                                  f"or use {self.pr.adaptive_fallback}",
-                                  _nearest_contact_joint(self.pr, state, self.events.v_imp))
-
-    def _check_newton(self, newton: np.ndarray, state: np.ndarray, t_start: np.ndarray) -> None:
-        limit = RADAU_NEWTON_TOLERANCE * np.max(self.pr.scale)
-        if np.any(newton > limit):
-            bad = int(np.argmax(newton > limit))
-            raise SimulationError(float(t_start[bad]), "Radau's Newton iteration did not "
-                                  f"converge (last update {newton[bad]:.3g}); reduce "
-                                  "run.step", _nearest_contact_joint(self.pr, state,
-                                                                     self.events.v_imp))
 
 
 def _run_fixed(pr: _Problem, x0: np.ndarray, traj: _Trajectory, stats: _Accumulated,
@@ -213,18 +243,52 @@ def _advance(steps: _FixedSteps, accepted: _Accepted, t_start: np.ndarray) -> No
     block = steps.block(accepted.x, t_start)
     i = 0
     while i < m:
-        j = _first_disagreement(steps.events, block.deltas, i, m)
+        j = min(_first_disagreement(steps.events, block.deltas, i, m), block.first_failure(i))
         if j > i:  # accept steps i .. j-1
             accepted.accept(steps.h, block, i, j)
         if j == m:
             break
-        if _switch_flags(steps, accepted, block, t_start, j):
+        if block.failures[j]:
+            _take_failed_step(steps, accepted, float(t_start[j]), block, j)
+            i = j + 1
+            if i < m:  # the block's later steps followed the failed one: redone
+                block.replace_from(i, steps.block(accepted.x, t_start[i:]))
+        elif _switch_flags(steps, accepted, block, t_start, j):
             # Steps from j on used a stale impact speed: redo them with the captured one.
             block.replace_from(j, steps.block(accepted.x, t_start[j:]))
             i = j  # step j is accepted by the scan (its flags now agree)
         else:
             accepted.accept(steps.h, block, j, j + 1)
             i = j + 1
+
+
+def _take_failed_step(steps: _FixedSteps, accepted: _Accepted, t: float, block: _Block,
+                      j: int) -> None:
+    """Take the step from t that failed as step j of ``block``, or stop the run.
+
+    A step that meets an onset does so with the last impact's speed (or none): under a
+    damping law built for low restitution, a slow one makes contact a wall that no Newton
+    iteration gets through. Retaken with each free joint's closing speed, the step locates
+    its onset and is taken again with the speed captured there. A step that still fails is
+    taken as :data:`SUBDIVISION` shorter ones (each of them handled so in turn), at most
+    :data:`MAX_SUBDIVISIONS` times over. Radau's failures are its own step's (L-stable, it
+    checks its iteration); RK4's non-finite state grew over the steps before, and stops the
+    run at once."""
+    if steps.method != "radau":
+        steps.fail(block, j, accepted.x, t)
+    start = np.array([t])
+    retaken = steps.block(accepted.x, start, steps.approach_speeds(accepted))
+    flags = steps.events.flags > 0.5
+    if not retaken.failures[0] and np.any(~flags & (retaken.deltas[0] > 0)):
+        _switch_flags(steps, accepted, retaken, start, 0)
+        captured = steps.block(accepted.x, start)
+        accepted.accept(steps.h, retaken if captured.failures[0] else captured, 0, 1)
+        return
+    if steps.depth == MAX_SUBDIVISIONS:
+        steps.fail(block, j, accepted.x, t)
+    finer = steps.finer()
+    steps.stats.counts["subdivided_steps"] = steps.stats.counts.get("subdivided_steps", 0) + 1
+    _advance(finer, accepted, t + finer.h * np.arange(SUBDIVISION))
 
 
 def _first_disagreement(events: _EventState, deltas: np.ndarray, i: int, m: int) -> int:
