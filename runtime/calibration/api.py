@@ -418,12 +418,14 @@ def estimates_at(values: np.ndarray, free: FreeParameters, spread: Uncertainty,
 
 def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
                optimum: Optimum, spread: Uncertainty, noise_spread: np.ndarray | None,
-               box_spread: float, distrust: str | None = None
+               box_spread: float, distrust: str | None = None, advice: str | None = None,
+               reached: np.ndarray | None = None
                ) -> tuple[dict[str, Any], str | None, Uncertainty, list[str]]:
     """The fit's residual statistics, why the residuals are not the noise (None: they
     are), its intervals (spanning the searched box, ``box_spread`` of the start either
     side, where they are not, or where ``distrust`` says why the search's valley cannot be
-    trusted) and its warnings; for a scene's and a mechanism's fit alike."""
+    trusted, ``advice`` what to do then; with ``reached``, the same box about that point
+    too) and its warnings; for a scene's and a mechanism's fit alike."""
     stats = residual_statistics(measured, fitted, optimum.sigma, free.size)
     misfit = residual_check(fitted - measured.values, optimum.sigma, stats["dof"],
                             noise_spread, measured.columns)
@@ -431,17 +433,22 @@ def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
     reason = misfit or distrust
     if reason is not None:
         # nothing is determined: the intervals span the box the search covered
-        box = starts_around(free, 1, box_spread, 0)[0]
-        width = np.where(box != 0, box_spread * np.abs(box), box_spread)
-        spread = dataclasses.replace(
-            spread, low95=np.minimum(spread.low95, np.maximum(box - width, free.lower)),
-            high95=np.maximum(spread.high95, np.minimum(box + width, free.upper)),
-            determined=np.zeros(free.size, dtype=bool))
-        advice = ("State the noise if you know it, or free what the model may lack"
-                  if misfit is not None else "Start from values nearer the truth (--start), "
-                  "or measure a longer or slower motion")
+        low, high = spread.low95, spread.high95
+        for box in [starts_around(free, 1, box_spread, 0)[0],
+                    *([] if reached is None else [reached])]:
+            width = np.where(box != 0, box_spread * np.abs(box), box_spread)
+            low = np.minimum(low, np.maximum(box - width, free.lower))
+            high = np.maximum(high, np.minimum(box + width, free.upper))
+        spread = dataclasses.replace(spread, low95=low, high95=high,
+                                     determined=np.zeros(free.size, dtype=bool))
+        if misfit is not None:
+            advice = "State the noise if you know it, or free what the model may lack"
+        elif advice is None:
+            advice = ("Start from values nearer the truth (--start), or measure a longer or "
+                      "slower motion")
         warnings = [f"nothing is determined: {reason}; each interval spans the box the "
-                    f"search covered (±{box_spread:g} of the start). {advice}"]
+                    f"search covered (±{box_spread:g} of the start"
+                    f"{'' if reached is None else ' and of the estimate'}). {advice}"]
     return stats, misfit, spread, warnings + _bound_warnings(optimum.values, free)
 
 

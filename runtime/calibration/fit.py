@@ -245,7 +245,15 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
             raise _Settled
         wanted, first[0] = first[0], False
         evaluations[0] += 1
-        r = whitened(predictor.outputs(x, with_jacobian=wanted) - measured.values, weights)
+        try:
+            r = whitened(predictor.outputs(x, with_jacobian=wanted) - measured.values, weights)
+        except TrialFailed:
+            # A predictor that retreats (a mechanism's) gives SciPy a non-finite residual,
+            # on which it shrinks its trust region; the first point's failure ends the fit.
+            if evaluations[0] == 1 or not getattr(predictor, "retreats_from_failures", False):
+                raise
+            last[0], last[1] = np.array(x), math.inf
+            return np.full(measured.size, np.inf)
         last[0], last[1] = np.array(x), float(r @ r)
         return r
 

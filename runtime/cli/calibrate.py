@@ -52,7 +52,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                         "from the last estimate, up to the whole record (default 0.005; 0: "
                         "fit the whole record at once)")
     p.add_argument("--horizon-growth", type=float, default=2.0,
-                   help="factor each window of the continuation grows by (default 2)")
+                   help="factor each window of the continuation grows by, a mechanism's "
+                        "too (default 2)")
     p.add_argument("--grid-window", type=float, default=0.02,
                    help="window (s) of the global stage: a grid of the free clearances on the "
                         "data up to it, its lowest minima carried as tracks through the "

@@ -1,5 +1,6 @@
 """``jointplay calibrate`` on a mechanism file: the same command, the mechanism's outputs
-measured and a multi-start fit (:mod:`jointplay.mechanism.calibration`)."""
+measured, a multi-start over its first impacts and a continuation to the whole record
+(:mod:`jointplay.mechanism.calibration`)."""
 
 from __future__ import annotations
 
@@ -9,15 +10,18 @@ from jointplay.common.errors import DescriptionError
 
 # The options of the arms' global stage and checks, by flag: a mechanism's search does not
 # run them (jointplay.mechanism.calibration.ARMS_ONLY).
-_FLAGS = {"horizon_first": "--horizon-first", "horizon_growth": "--horizon-growth",
-          "grid_window": "--grid-window", "grid_points": "--grid-points",
-          "grid_line_points": "--grid-line-points",
+_FLAGS = {"horizon_first": "--horizon-first", "grid_window": "--grid-window",
+          "grid_points": "--grid-points", "grid_line_points": "--grid-line-points",
           "valley_check_points": "--valley-check-points", "basins": "--no-basin-check"}
 
 
 def cmd_calibrate_mechanism(args: argparse.Namespace) -> int:
     from jointplay.cli.calibrate import _flagged, calibrate_and_report
-    from jointplay.mechanism.calibration import prepare_mechanism, run_mechanism
+    from jointplay.mechanism.calibration import (
+        FIRST_WINDOW_IMPACTS,
+        prepare_mechanism,
+        run_mechanism,
+    )
     from jointplay.mechanism.reading import load_mechanism_scene
 
     scene = load_mechanism_scene(args.scene)
@@ -27,7 +31,8 @@ def cmd_calibrate_mechanism(args: argparse.Namespace) -> int:
         if name in _FLAGS:
             return DescriptionError(_FLAGS[name], "belongs to the serial arms' global stage "
                                     "and checks; a mechanism is fitted by a multi-start "
-                                    "(--starts, --spread): drop the flag")
+                                    "and a continuation (--starts, --spread, "
+                                    "--horizon-growth): drop the flag")
         return _flagged(err)
 
     return calibrate_and_report(
@@ -37,5 +42,7 @@ def cmd_calibrate_mechanism(args: argparse.Namespace) -> int:
         lambda problem, options: (
             f"calibrating {', '.join(problem.free.names)} of mechanism {scene.name} on "
             f"{problem.measured.t.size} samples of {', '.join(problem.measured.columns)} "
-            f"(a local fit from each of {options.starts} starts)"),
+            f"(a local fit from each of {options.starts} starts; where a run holds more than "
+            f"{FIRST_WINDOW_IMPACTS} impacts, over its first ones, then continued over "
+            "growing windows)"),
         flagged)

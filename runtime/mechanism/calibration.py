@@ -2,19 +2,25 @@
 
 The same weighted least squares as the serial arms' (:mod:`jointplay.calibration.fit`),
 the same uncertainty, residual check, result and report; what differs is the search. The
-arms' global stage (a grid of the clearances, a continuation over growing windows, valley
-lines) is tuned to their long records; a mechanism's run is a fraction of a second, so the
-search here is a multi-start: a local fit from the start and from each point of a seeded
-Latin hypercube within ±``spread`` of it, every one fitted, the lowest kept. The Jacobian
-is taken by central differences of whole runs (two per free parameter; the mechanism's
-compiled sensitivities do not exist).
+arms' global stage (a grid of the clearances, valley lines, basin and valley checks) is tuned
+to their records; here the search is a multi-start and a continuation. Each impact that moves
+past a sample changes the residuals abruptly, so over many impacts the cost is a comb of
+narrow valleys; over the first few it is one. A local fit runs from the start and from each
+point of a seeded Latin hypercube within ±``spread`` of it over a first window that holds
+:data:`FIRST_WINDOW_IMPACTS` impacts of a run at the start values; the minima that explain
+that window's data within the noise (the lowest, if none does) are tracks, each fitted again
+over a window ``horizon_growth`` times longer, from its last estimate, up to the whole record,
+where the lowest is the estimate. A record of fewer impacts is fitted whole. The Jacobian is
+taken by central differences of whole runs (two per free parameter, :data:`FD_STEP`; the
+mechanism's compiled sensitivities do not exist).
 
-What the verdicts rest on: the other starts' minima and the cost profiles' points (one run
-per point along each parameter, the others held) are minima and points of the same cost;
-any of them within chi² + 3.84 of the best lies inside the 95 % profile-likelihood interval
-and widens it, and a parameter in which another start's minimum lies there, outside the
-best's own interval, is not determined (:func:`jointplay.calibration.basins.widened`). A fit
-whose residuals are not the noise determines nothing, as for the arms.
+What the verdicts rest on: the other starts' (or tracks') minima and the cost profiles'
+points (one run per point along each parameter, the others held) are minima and points of
+the same cost; any of them within chi² + 3.84 of the best lies inside the 95 %
+profile-likelihood interval and widens it, and a parameter in which another minimum lies
+there, outside the best's own interval, is not determined
+(:func:`jointplay.calibration.basins.widened`). A fit whose residuals are not the noise
+determines nothing, as for the arms.
 """
 
 from __future__ import annotations
@@ -31,10 +37,12 @@ import numpy as np
 from jointplay.calibration.api import CalibrationOptions, estimates_at, judged_fit
 from jointplay.calibration.basins import Basins, widened
 from jointplay.calibration.basins import threshold as basin_threshold
+from jointplay.calibration.continuation import horizon_windows, window
 from jointplay.calibration.fit import (
     Optimum,
     Scan,
     Start,
+    explaining_limit,
     least_squares_fit,
     multi_start,
     starts_around,
@@ -44,7 +52,6 @@ from jointplay.calibration.measured import Measured, checked_for_scene, grid_ind
 from jointplay.calibration.noise import column_noise
 from jointplay.calibration.parameters import FreeParameters
 from jointplay.calibration.predict import (
-    FD_RELATIVE_STEP,
     Counter,
     TrialFailed,
     chi2_at_points,
@@ -66,10 +73,28 @@ from jointplay.mechanism.calibration_inputs import (
 from jointplay.mechanism.description import MechanismScene
 from jointplay.mechanism.model import MechanismModel, model_for
 
-ARMS_ONLY = ("horizon_first", "horizon_growth", "grid_window", "grid_points",
+ARMS_ONLY = ("horizon_first", "grid_window", "grid_points",
              "grid_candidates", "window_looser", "valley_window", "valley_points",
              "valley_keep", "grid_line_points", "valley_check_points", "basins")
 """Options of the arms' global stage and checks, which a mechanism's search does not run."""
+FIRST_WINDOW_IMPACTS = 6
+"""The continuation's first window ends halfway between this impact of a run at the start
+values and the next: on the 0.1 mm slider-crank with friction, the first millisecond, where a
+multi-start finds the truth (over 4 ms the cost along mu jumps by tens of thousands between
+values 0.001 apart)."""
+FD_STEP = 1e-5
+"""Central-difference step, relative to the parameter's magnitude. Over a window of many
+impacts a valley of the cost is narrow (along mu on the slider-crank over 4 ms, chi² rises
+by 50 within 2e-6 of its floor): a step of 1e-2 spans several valleys, and the fit stopped
+in none (over 12 ms: mu 21 % off); steps of 1e-4 and 1e-6 gave the same fits to 1e-4
+relative. The runs' own error (tolerances 1000 times the scene's) is far below the step."""
+MODEL_ERROR_LIMIT = 1.0
+"""The most that runs at tolerances 10 times tighter than the fit's may differ from its own
+at the estimate, as a chi² (the whitened difference's sum of squares), for any verdict to
+stand: beyond it the record outlasts the time over which the motion is known to the noise.
+Measured on the slider-crank with friction over a revolution: 8e-5 to 0.02 at five truths,
+and 1.1e5 at one (0.14 mm, mu 0.018; 0.53 over its first 4 ms), whose fit reported
+intervals 4e-12 m wide."""
 LOWER_ELSEWHERE = 1.0
 """A profile's point this much below the best chi² is another, lower basin: a local fit
 starts there."""
@@ -130,7 +155,8 @@ def _check_options(options: CalibrationOptions) -> None:
         if getattr(options, name) != getattr(default, name):
             raise DescriptionError(f"options.{name}", "belongs to the serial arms' global "
                                    "stage and checks; a mechanism is fitted by a multi-start "
-                                   "(options.starts, options.spread): leave it at its default")
+                                   "and a continuation (options.starts, options.spread, "
+                                   "options.horizon_growth): leave it at its default")
 
 
 def _check_columns(measured: Measured, model: MechanismModel) -> None:
@@ -159,6 +185,9 @@ class MechanismPredictor:
     :class:`jointplay.calibration.predict.Predictor`, which the fit asks of it."""
 
     compiled: tuple[str, ...] = ()
+    retreats_from_failures = True
+    """A fit steps back from a trial point whose run stops (at the fit's tolerances a run
+    near a grazing impact can) instead of ending there (see _local_fit)."""
 
     def __init__(self, scene: MechanismScene, model: MechanismModel, free: FreeParameters,
                  measured: Measured) -> None:
@@ -193,11 +222,21 @@ class MechanismPredictor:
         x = np.asarray(x, dtype=float)
         jac = np.zeros((*self.outputs(x).shape, self.free.size))
         for k in range(self.free.size):
-            h = FD_RELATIVE_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
+            h = FD_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
             up, down = x.copy(), x.copy()
             up[k] = min(x[k] + h, self.free.upper[k])
             down[k] = max(x[k] - h, self.free.lower[k])
-            jac[:, :, k] = (self._run(up) - self._run(down)) / (up[k] - down[k])
+            sides = []
+            for point in (up, down):  # where one side's run stops, the other's alone
+                try:
+                    sides.append((point, self._run(point)))
+                except TrialFailed:
+                    sides.append((x, self.outputs(x)))
+            (a, y_a), (b, y_b) = sides
+            if a[k] == b[k]:
+                raise TrialFailed(f"the runs either side of {self.free.names[k]} = "
+                                  f"{x[k]:.6g} stopped")
+            jac[:, :, k] = (y_a - y_b) / (a[k] - b[k])
         return jac
 
     def values(self, x: np.ndarray) -> dict[str, float]:
@@ -213,7 +252,25 @@ class MechanismPredictor:
                                                   - float(value))
         return out
 
+    def window(self, end: float) -> MechanismPredictor:
+        """This predictor over the samples up to ``end``, its runs ending at the output step
+        that holds it; their runs are counted with this one's."""
+        step = self.scene.run.output_step
+        t_end = min(self.scene.run.t_end, math.ceil(end / step - 1e-9) * step)
+        part = MechanismPredictor(self.scene.with_run(t_end=t_end), self.model, self.free,
+                                  window(self.measured, end))
+        part.counter = self.counter
+        return part
+
+    def impact_times(self, x: np.ndarray) -> np.ndarray:
+        """The onsets (s) of a run at ``x``."""
+        return np.asarray(self._simulate(np.asarray(x, dtype=float)).impacts.time)
+
     def _run(self, x: np.ndarray) -> np.ndarray:
+        result = self._simulate(x)
+        return np.column_stack([_column(result, c)[self._grid] for c in self.measured.columns])
+
+    def _simulate(self, x: np.ndarray) -> Any:
         from jointplay.common.errors import SimulationError
         from jointplay.mechanism.simulate import simulate_mechanism
 
@@ -225,7 +282,7 @@ class MechanismPredictor:
         except (SimulationError, DescriptionError) as err:
             raise TrialFailed(f"the run at {described} stopped: {err}") from None
         self.counter.add("plain")
-        return np.column_stack([_column(result, c)[self._grid] for c in self.measured.columns])
+        return result
 
 
 def _column(result: Any, name: str) -> np.ndarray:
@@ -257,10 +314,7 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
     wall0, cpu0 = timed()
     opts, free = problem.options, problem.free
     predictor = MechanismPredictor(problem.scene, problem.model, free, problem.measured)
-    starts = starts_around(free, opts.starts, opts.spread, opts.seed)
-    scan = Scan(opts.scan_points, opts.spread, opts.refine)
-    optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,  # type: ignore[arg-type]
-                                leading=len(starts), workers=opts.workers)
+    optimum, windows = _search(problem, predictor)
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
     profiles, profile_runs, lower = _profiles(predictor, optimum, spread, opts)
     if lower is not None:  # a profile crossed a lower basin: fit from there, once
@@ -278,11 +332,90 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
     spread = dataclasses.replace(spread, low95=low, high95=high, determined=determined,
                                  warnings=spread.warnings + tuple(rival_warnings))
     fitted = predictor.outputs(optimum.values)
-    stats, misfit, spread, warnings = judged_fit(fitted, problem.measured, free, optimum,
-                                                 spread, problem.noise_spread, opts.spread)
+    model_error = _model_error(predictor, optimum)
+    distrust = None
+    if not model_error <= MODEL_ERROR_LIMIT:
+        distrust = (f"runs at tolerances 10 times tighter than the fit's differ from its own "
+                    f"by chi² {model_error:.3g} at the estimate (more than "
+                    f"{MODEL_ERROR_LIMIT:g}): over this record the motion depends on the "
+                    "integrator's last digits")
+    stats, misfit, spread, warnings = judged_fit(
+        fitted, problem.measured, free, optimum, spread, problem.noise_spread, opts.spread,
+        distrust, "Fit a shorter record, over which runs 10 times tighter agree",
+        reached=optimum.values)
+    stats["model_error_chi2"] = model_error if math.isfinite(model_error) else None
     wall1, cpu1 = timed()
     return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   profile_runs, misfit is None, (wall1 - wall0, cpu1 - cpu0))
+                   profile_runs, misfit is None, (wall1 - wall0, cpu1 - cpu0), windows)
+
+
+def _search(problem: MechanismProblem, predictor: MechanismPredictor
+            ) -> tuple[Optimum, list[float]]:
+    """The best fit over the whole record (see the module docstring), and the windows' ends
+    the continuation went through (none: the record was fitted whole)."""
+    opts, sigma = problem.options, problem.sigma
+    starts = starts_around(problem.free, opts.starts, opts.spread, opts.seed)
+    ends = _windows(problem, predictor)
+    if not ends:
+        scan = Scan(opts.scan_points, opts.spread, opts.refine)
+        return least_squares_fit(predictor, sigma, starts, opts.max_evaluations, scan,  # type: ignore[arg-type]
+                                 leading=len(starts), workers=opts.workers), []
+    tracks = starts
+    for end in [*ends, None]:
+        part = predictor if end is None else predictor.window(end)
+        _, record = multi_start(part, sigma, tracks, opts.max_evaluations,  # type: ignore[arg-type]
+                                stop_early=False, workers=opts.workers, settle=end is None)
+        tracks = _tracks(record, part)
+    best = tracks[0]
+    residuals = whitened(predictor.outputs(best) - predictor.measured.values, sigma)
+    jacobian = whitened(predictor.jacobian(best), sigma)
+    return Optimum(best, sigma, residuals, jacobian, tuple(record)), ends
+
+
+def _model_error(predictor: MechanismPredictor, optimum: Optimum) -> float:
+    """chi² of the difference between runs at tolerances 10 times tighter than the fit's and
+    its own, at the estimate (inf where the tighter run stops)."""
+    run = predictor.scene.run
+    tighter = MechanismPredictor(predictor.scene.with_run(rtol=run.rtol / 10,
+                                                          atol=run.atol / 10),
+                                 predictor.model, predictor.free, predictor.measured)
+    tighter.counter = predictor.counter
+    try:
+        difference = tighter.outputs(optimum.values) - predictor.outputs(optimum.values)
+    except TrialFailed:
+        return math.inf
+    residual = whitened(difference, optimum.sigma)
+    return float(residual @ residual)
+
+
+def _windows(problem: MechanismProblem, predictor: MechanismPredictor) -> list[float]:
+    """The continuation's windows' ends (s), the whole record not among them: from halfway
+    between the FIRST_WINDOW_IMPACTS-th impact of a run at the start values and the next,
+    ``horizon_growth`` times longer each (none where that run has no more impacts, or
+    stops: the fit on the whole record meets the failure itself)."""
+    try:
+        onsets = predictor.impact_times(problem.free.start)
+    except TrialFailed:
+        return []
+    if onsets.size <= FIRST_WINDOW_IMPACTS:
+        return []
+    first = 0.5 * (onsets[FIRST_WINDOW_IMPACTS - 1] + onsets[FIRST_WINDOW_IMPACTS])
+    measured = problem.measured
+    return horizon_windows(measured.t, len(measured.columns), problem.free.size, first,
+                           problem.options.horizon_growth)
+
+
+def _tracks(record: list[Start], part: MechanismPredictor) -> np.ndarray:
+    """The fits' ends that explain the window's data within the noise, lowest first, each
+    once (the lowest alone where none does)."""
+    fitted = sorted((s for s in record if not s.failed), key=lambda s: s.chi2)
+    limit = explaining_limit(part.measured.size - part.free.size)
+    kept: list[np.ndarray] = []
+    for s in fitted:
+        end = np.asarray(s.end, dtype=float)
+        if (s.chi2 <= limit or not kept) and not any(np.array_equal(end, k) for k in kept):
+            kept.append(end)
+    return np.array(kept)
 
 
 def _chi2(optimum: Optimum) -> float:
@@ -362,8 +495,8 @@ def _basins(optimum: Optimum, spread: Uncertainty,
 def _result(problem: MechanismProblem, predictor: MechanismPredictor, optimum: Optimum,
             spread: Uncertainty, fitted: np.ndarray, stats: dict[str, Any],
             warnings: list[str], profiles: dict[str, dict[str, list[float]]],
-            profile_runs: int, explains: bool, seconds: tuple[float, float]
-            ) -> CalibrationResult:
+            profile_runs: int, explains: bool, seconds: tuple[float, float],
+            windows: list[float]) -> CalibrationResult:
     free = problem.free
     estimates = estimates_at(optimum.values, free, spread, explains)
     run = problem.scene.run
@@ -383,12 +516,21 @@ def _result(problem: MechanismProblem, predictor: MechanismPredictor, optimum: O
                   "output_step": run.output_step,
                   **{k: v for k, v in dataclasses.asdict(problem.options).items()
                      if k not in ARMS_ONLY},
-                  "search": f"multi-start: a local fit from the start and from each of "
-                            f"{problem.options.starts - 1} points within "
-                            f"±{problem.options.spread:g} of it (relative)",
+                  "search": _search_text(problem.options, windows),
                   "profile": "others fixed at their estimates",
                   "units": {c: _unit(c, units) for c in problem.measured.columns}},
         fit_explains_data=explains, profiles=profiles)
+
+
+def _search_text(options: CalibrationOptions, windows: list[float]) -> str:
+    """The search, in words, for the report."""
+    text = (f"multi-start: a local fit from the start and from each of {options.starts - 1} "
+            f"points within ±{options.spread:g} of it (relative)")
+    if not windows:
+        return text
+    later = [f"{w:.4g} s" for w in windows[1:]] + ["the whole record"]
+    return (f"{text}, over the first {windows[0]:.4g} s; then the fits that explain it, each "
+            f"refitted from its last estimate over {', '.join(later)}")
 
 
 def _unit(column: str, units: dict[str, str]) -> str:
