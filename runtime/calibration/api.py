@@ -430,7 +430,7 @@ def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
     misfit = residual_check(fitted - measured.values, optimum.sigma, stats["dof"],
                             noise_spread, measured.columns)
     warnings = list(spread.warnings)
-    reason = misfit or distrust
+    reason = "; and ".join(r for r in (misfit, distrust) if r is not None) or None
     if reason is not None:
         # nothing is determined: the intervals span the box the search covered
         low, high = spread.low95, spread.high95
@@ -441,14 +441,16 @@ def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
             high = np.maximum(high, np.minimum(box + width, free.upper))
         spread = dataclasses.replace(spread, low95=low, high95=high,
                                      determined=np.zeros(free.size, dtype=bool))
+        advices = []
         if misfit is not None:
-            advice = "State the noise if you know it, or free what the model may lack"
-        elif advice is None:
-            advice = ("Start from values nearer the truth (--start), or measure a longer or "
-                      "slower motion")
+            advices.append("State the noise if you know it, or free what the model may lack")
+        if distrust is not None:
+            advices.append(advice or "Start from values nearer the truth (--start), or "
+                           "measure a longer or slower motion")
         warnings = [f"nothing is determined: {reason}; each interval spans the box the "
                     f"search covered (±{box_spread:g} of the start"
-                    f"{'' if reached is None else ' and of the estimate'}). {advice}"]
+                    f"{'' if reached is None else ' and of the estimate'}). "
+                    f"{'. '.join(advices)}"]
     return stats, misfit, spread, warnings + _bound_warnings(optimum.values, free)
 
 

@@ -7,7 +7,8 @@ to their records; here the search is a multi-start and a continuation. Each impa
 past a sample changes the residuals abruptly, so over many impacts the cost is a comb of
 narrow valleys; over the first few it is one. A local fit runs from the start and from each
 point of a seeded Latin hypercube within ±``spread`` of it over a first window that holds
-:data:`FIRST_WINDOW_IMPACTS` impacts of a run at the start values; the minima that explain
+:data:`FIRST_WINDOW_IMPACTS` impacts of a run at the start values (or a shorter one, where
+no fit explains it: :data:`SHORTER_FIRST_WINDOWS`); the minima that explain
 that window's data within the noise (the lowest, if none does) are tracks, each fitted again
 over a window ``horizon_growth`` times longer, from its last estimate, up to the whole record,
 where the lowest is the estimate. A record of fewer impacts is fitted whole. The Jacobian is
@@ -82,6 +83,14 @@ FIRST_WINDOW_IMPACTS = 6
 values and the next: on the 0.1 mm slider-crank with friction, the first millisecond, where a
 multi-start finds the truth (over 4 ms the cost along mu jumps by tens of thousands between
 values 0.001 apart)."""
+SHORTER_FIRST_WINDOWS = 3
+"""How many times over the first window is shortened (by ``horizon_growth``) where no
+start's fit explains it: at 0.055 mm the first millisecond holds more impacts than at the
+start's 0.1 mm, and on 2 of 5 noise seeds every start ended in another valley there."""
+SAME_TRACK = 1e-4
+"""Tracks whose ends differ by at most this, relative, in every parameter are one track: fits
+from different starts that meet on one valley floor end a few 1e-5 apart (its width over a
+revolution, relative, is about 2e-4)."""
 FD_STEP = 1e-5
 """Central-difference step, relative to the parameter's magnitude. Over a window of many
 impacts a valley of the cost is narrow (along mu on the slider-crank over 4 ms, chi² rises
@@ -89,12 +98,13 @@ by 50 within 2e-6 of its floor): a step of 1e-2 spans several valleys, and the f
 in none (over 12 ms: mu 21 % off); steps of 1e-4 and 1e-6 gave the same fits to 1e-4
 relative. The runs' own error (tolerances 1000 times the scene's) is far below the step."""
 MODEL_ERROR_LIMIT = 1.0
-"""The most that runs at tolerances 10 times tighter than the fit's may differ from its own
-at the estimate, as a chi² (the whitened difference's sum of squares), for any verdict to
-stand: beyond it the record outlasts the time over which the motion is known to the noise.
-Measured on the slider-crank with friction over a revolution: 8e-5 to 0.02 at five truths,
-and 1.1e5 at one (0.14 mm, mu 0.018; 0.53 over its first 4 ms), whose fit reported
-intervals 4e-12 m wide."""
+"""The most that runs at tolerances 10 times looser than the fit's may differ from its own at
+the estimate, as a chi² (the whitened difference's sum of squares), for any verdict to stand:
+a bound on the fit's own runs' error (10 times tighter runs can stop where the fit's are
+already at 1e-12). Beyond it the record may outlast the time over which the motion is known
+to the noise. Measured on the slider-crank with friction over a revolution: 3e-4 to 0.18 at
+six truths, and 1.2e5 at one (0.14 mm, mu 0.018; 7.4 over its first 4 ms), whose fit
+reported intervals 4e-12 m wide (runs 10 times tighter than the fit's differ by 1.1e5)."""
 LOWER_ELSEWHERE = 1.0
 """A profile's point this much below the best chi² is another, lower basin: a local fit
 starts there."""
@@ -222,22 +232,31 @@ class MechanismPredictor:
         x = np.asarray(x, dtype=float)
         jac = np.zeros((*self.outputs(x).shape, self.free.size))
         for k in range(self.free.size):
-            h = FD_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
+            jac[:, :, k] = self._difference(x, k)
+        return jac
+
+    def _difference(self, x: np.ndarray, k: int) -> np.ndarray:
+        """d outputs / d x[k]: central, or one-sided where one side's run stops; where both
+        stop (a run at the fit's tolerances can, near a grazing impact), a step 10 and then
+        100 times longer."""
+        for scale in (1.0, 10.0, 100.0):
+            h = scale * FD_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
             up, down = x.copy(), x.copy()
             up[k] = min(x[k] + h, self.free.upper[k])
             down[k] = max(x[k] - h, self.free.lower[k])
             sides = []
-            for point in (up, down):  # where one side's run stops, the other's alone
+            for point in (up, down):
                 try:
                     sides.append((point, self._run(point)))
                 except TrialFailed:
-                    sides.append((x, self.outputs(x)))
-            (a, y_a), (b, y_b) = sides
-            if a[k] == b[k]:
-                raise TrialFailed(f"the runs either side of {self.free.names[k]} = "
-                                  f"{x[k]:.6g} stopped")
-            jac[:, :, k] = (y_a - y_b) / (a[k] - b[k])
-        return jac
+                    continue
+            if len(sides) == 1:
+                sides.append((x, self.outputs(x)))
+            if len(sides) == 2 and sides[0][0][k] != sides[1][0][k]:
+                (a, y_a), (b, y_b) = sides
+                return (y_a - y_b) / (a[k] - b[k])
+        raise TrialFailed(f"the runs either side of {self.free.names[k]} = {x[k]:.6g} "
+                          "stopped, at steps up to 100 times the usual")
 
     def values(self, x: np.ndarray) -> dict[str, float]:
         """The mechanism's parameters at ``x`` (a clearance as its journal's radius)."""
@@ -335,13 +354,13 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
     model_error = _model_error(predictor, optimum)
     distrust = None
     if not model_error <= MODEL_ERROR_LIMIT:
-        distrust = (f"runs at tolerances 10 times tighter than the fit's differ from its own "
+        distrust = (f"runs at tolerances 10 times looser than the fit's differ from its own "
                     f"by chi² {model_error:.3g} at the estimate (more than "
-                    f"{MODEL_ERROR_LIMIT:g}): over this record the motion depends on the "
-                    "integrator's last digits")
+                    f"{MODEL_ERROR_LIMIT:g}): over this record the runs are not known to "
+                    "follow the motion within the noise")
     stats, misfit, spread, warnings = judged_fit(
         fitted, problem.measured, free, optimum, spread, problem.noise_spread, opts.spread,
-        distrust, "Fit a shorter record, over which runs 10 times tighter agree",
+        distrust, "Fit a shorter record, over which runs 10 times looser agree",
         reached=optimum.values)
     stats["model_error_chi2"] = model_error if math.isfinite(model_error) else None
     wall1, cpu1 = timed()
@@ -360,28 +379,53 @@ def _search(problem: MechanismProblem, predictor: MechanismPredictor
         scan = Scan(opts.scan_points, opts.spread, opts.refine)
         return least_squares_fit(predictor, sigma, starts, opts.max_evaluations, scan,  # type: ignore[arg-type]
                                  leading=len(starts), workers=opts.workers), []
-    tracks = starts
-    for end in [*ends, None]:
+    # The first window: where no start's fit explains it, shorter ones (each a factor
+    # horizon_growth) while they hold enough samples, SHORTER_FIRST_WINDOWS at most.
+    tracks, explained = _first_tracks(problem, predictor, starts, ends[0])
+    for _ in range(SHORTER_FIRST_WINDOWS):
+        shorter = ends[0] / opts.horizon_growth
+        if explained or not _enough(problem, shorter):
+            break
+        ends.insert(0, shorter)
+        tracks, explained = _first_tracks(problem, predictor, starts, shorter)
+    for end in [*ends[1:], None]:
         part = predictor if end is None else predictor.window(end)
         _, record = multi_start(part, sigma, tracks, opts.max_evaluations,  # type: ignore[arg-type]
                                 stop_early=False, workers=opts.workers, settle=end is None)
-        tracks = _tracks(record, part)
+        tracks, _ = _tracks(record, part)
     best = tracks[0]
     residuals = whitened(predictor.outputs(best) - predictor.measured.values, sigma)
     jacobian = whitened(predictor.jacobian(best), sigma)
     return Optimum(best, sigma, residuals, jacobian, tuple(record)), ends
 
 
+def _first_tracks(problem: MechanismProblem, predictor: MechanismPredictor,
+                  starts: np.ndarray, end: float) -> tuple[np.ndarray, bool]:
+    """Every start fitted over the samples up to ``end``: :func:`_tracks` of the fits."""
+    part = predictor.window(end)
+    _, record = multi_start(part, problem.sigma, starts,  # type: ignore[arg-type]
+                            problem.options.max_evaluations, stop_early=False,
+                            workers=problem.options.workers)
+    return _tracks(record, part)
+
+
+def _enough(problem: MechanismProblem, end: float) -> bool:
+    """Whether the samples up to ``end`` hold more numbers than twice the free parameters."""
+    measured = problem.measured
+    count = np.count_nonzero(measured.t <= end * (1 + 1e-9)) * len(measured.columns)
+    return bool(count >= 2 * problem.free.size + 1)
+
+
 def _model_error(predictor: MechanismPredictor, optimum: Optimum) -> float:
-    """chi² of the difference between runs at tolerances 10 times tighter than the fit's and
-    its own, at the estimate (inf where the tighter run stops)."""
+    """chi² of the difference between runs at tolerances 10 times looser than the fit's and
+    its own, at the estimate (inf where the looser run stops)."""
     run = predictor.scene.run
-    tighter = MechanismPredictor(predictor.scene.with_run(rtol=run.rtol / 10,
-                                                          atol=run.atol / 10),
-                                 predictor.model, predictor.free, predictor.measured)
-    tighter.counter = predictor.counter
+    looser = MechanismPredictor(predictor.scene.with_run(rtol=run.rtol * 10,
+                                                         atol=run.atol * 10),
+                                predictor.model, predictor.free, predictor.measured)
+    looser.counter = predictor.counter
     try:
-        difference = tighter.outputs(optimum.values) - predictor.outputs(optimum.values)
+        difference = looser.outputs(optimum.values) - predictor.outputs(optimum.values)
     except TrialFailed:
         return math.inf
     residual = whitened(difference, optimum.sigma)
@@ -405,17 +449,19 @@ def _windows(problem: MechanismProblem, predictor: MechanismPredictor) -> list[f
                            problem.options.horizon_growth)
 
 
-def _tracks(record: list[Start], part: MechanismPredictor) -> np.ndarray:
+def _tracks(record: list[Start], part: MechanismPredictor) -> tuple[np.ndarray, bool]:
     """The fits' ends that explain the window's data within the noise, lowest first, each
-    once (the lowest alone where none does)."""
+    once (ends within SAME_TRACK of one kept are one track), and whether any does (if none,
+    the lowest alone)."""
     fitted = sorted((s for s in record if not s.failed), key=lambda s: s.chi2)
     limit = explaining_limit(part.measured.size - part.free.size)
     kept: list[np.ndarray] = []
     for s in fitted:
         end = np.asarray(s.end, dtype=float)
-        if (s.chi2 <= limit or not kept) and not any(np.array_equal(end, k) for k in kept):
+        if (s.chi2 <= limit or not kept) and not any(
+                np.all(np.abs(end - k) <= SAME_TRACK * np.abs(k)) for k in kept):
             kept.append(end)
-    return np.array(kept)
+    return np.array(kept), bool(fitted) and fitted[0].chi2 <= limit
 
 
 def _chi2(optimum: Optimum) -> float:
