@@ -305,3 +305,22 @@ def test_a_mechanisms_fit_steps_back_from_a_run_that_stops() -> None:
     goes_on = _local_fit(_Walled(retreats=True), np.ones(1), np.array([0.0]), 40)  # type: ignore[arg-type]
     assert not goes_on.failed
     assert 0.5 < goes_on.end[0] <= 0.9 and goes_on.chi2 < 10.0  # chi² 10 at the start
+
+
+@pytest.mark.slow
+def test_the_benchmark_on_exudyns_data_runs(tmp_path: Path) -> None:
+    """``benchmarks/mechanism_calibration.py --quick --seeds 1``: Exudyn's revolution at the
+    example's truth, calibrated from the scene's values; both intervals hold the truth, both
+    parameters determined, the table and the CSV written."""
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parents[1]
+    done = subprocess.run([sys.executable, "benchmarks/mechanism_calibration.py", "--out",
+                           str(tmp_path), "--quick", "--seeds", "1"], cwd=root,
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr[-2000:]
+    table = (tmp_path / "mechanism_calibration.md").read_text(encoding="utf-8")
+    assert "| 0.102 | 0.013 | stated | 2 of 2 | 2 (0) |" in table, table
+    rows = (tmp_path / "mechanism_calibration.csv").read_text(encoding="utf-8").splitlines()
+    assert len(rows) == 2
