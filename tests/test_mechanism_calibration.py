@@ -173,6 +173,7 @@ BAD = [
     (["--free", "friction.mu", "--start", "friction.mu=9"], None, "--start friction.mu"),
     (["--free", "friction.mu", "--noise", "tip_x=1e-6"], None, "--noise tip_x"),
     (["--free", "friction.mu", "--grid-window", "0.01"], None, "--grid-window"),
+    (["--free", "friction.mu", "--horizon-first", "0.01"], None, "--horizon-first"),
     (["--free", "friction.mu"], "time,tip_x\n0,0\n1e-5,0\n2e-5,0\n", "tip_x"),
     (["--free", "friction.mu"], "time,t\n0,0\n1e-5,0\n2e-5,0\n", "t: is the model's clock"),
     (["--free", "friction.mu"], "time,guide.position\n0,0\n1e-5,0\n1.5e-5,0\n",
@@ -324,3 +325,19 @@ def test_the_benchmark_on_exudyns_data_runs(tmp_path: Path) -> None:
     assert "| 0.102 | 0.013 | stated | 2 of 2 | 2 (0) |" in table, table
     rows = (tmp_path / "mechanism_calibration.csv").read_text(encoding="utf-8").splitlines()
     assert len(rows) == 2
+
+
+def test_the_continuations_growth_is_a_mechanisms_option_its_first_window_is_not(
+        scene_file: Path, measured: Path) -> None:
+    """``horizon_growth`` shapes a mechanism's continuation too; ``horizon_first`` belongs to
+    the arms (a mechanism's first window holds its first impacts) and is refused, naming it."""
+    from jointplay.mechanism.calibration import prepare_mechanism
+
+    scene = load_mechanism_scene(scene_file)
+    problem = prepare_mechanism(scene, measured, ["friction.mu"], noise=NOISE,
+                                options=CalibrationOptions(horizon_growth=3.0))
+    assert problem.options.horizon_growth == 3.0
+    with pytest.raises(DescriptionError, match=r"options\.horizon_growth") as info:
+        prepare_mechanism(scene, measured, ["friction.mu"], noise=NOISE,
+                          options=CalibrationOptions(horizon_first=0.01))
+    assert info.value.field == "options.horizon_first"

@@ -109,7 +109,9 @@ a bound on the fit's own runs' error (10 times tighter runs can stop where the f
 already at 1e-12). Beyond it the record may outlast the time over which the motion is known
 to the noise. Measured on the slider-crank with friction over a revolution: 3e-4 to 0.18 at
 six truths, and 1.2e5 at one (0.14 mm, mu 0.018; 7.4 over its first 4 ms), whose fit
-reported intervals 4e-12 m wide (runs 10 times tighter than the fit's differ by 1.1e5)."""
+reported intervals 4e-12 m wide (runs 10 times tighter than the fit's differ by 1.1e5); at
+the estimates on Exudyn's data (benchmarks/mechanism_calibration.py, 5 seeds), 1.5e-4 to
+1.9 at four truths and 3,400 to 18,000 at that one."""
 LOWER_ELSEWHERE = 1.0
 """A profile's point this much below the best chi² is another, lower basin: a local fit
 starts there."""
