@@ -159,8 +159,9 @@ def summary_lines(result: Any) -> list[str]:
         if rows.any():
             force, at, located = result.largest_contact_force(j + 1)
             how = "located" if located else "on the samples: a fixed step locates no peaks"
-            out.append(f"  {joint}: {int(rows.sum())} impacts, largest contact force "
-                       f"{force:.4g} N at {at:.6g} s ({how}), largest eccentricity "
+            count = int(rows.sum())
+            out.append(f"  {joint}: {count} impact{'' if count == 1 else 's'}, largest contact "
+                       f"force {force:.4g} N at {at:.6g} s ({how}), largest eccentricity "
                        f"{np.max(np.hypot(*result.eccentricity[:, j].T)) * 1e3:.4g} mm "
                        f"(clearance {result.clearance[j] * 1e3:.4g} mm)")
     out += divided_steps_lines(result.stats)
