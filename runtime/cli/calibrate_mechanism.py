@@ -17,11 +17,8 @@ _FLAGS = {"horizon_first": "--horizon-first", "grid_window": "--grid-window",
 
 def cmd_calibrate_mechanism(args: argparse.Namespace) -> int:
     from jointplay.cli.calibrate import _flagged, calibrate_and_report
-    from jointplay.mechanism.calibration import (
-        FIRST_WINDOW_IMPACTS,
-        prepare_mechanism,
-        run_mechanism,
-    )
+    from jointplay.mechanism.calibration import prepare_mechanism, run_mechanism
+    from jointplay.mechanism.calibration_search import FIRST_WINDOW_IMPACTS
     from jointplay.mechanism.reading import load_mechanism_scene
 
     scene = load_mechanism_scene(args.scene)
