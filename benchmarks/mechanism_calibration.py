@@ -1,6 +1,7 @@
 """Mechanism calibration on data from an outside simulator: the slider-crank over a revolution.
 
     python benchmarks/mechanism_calibration.py --out DIR [--seeds 5] [--quick]
+        [--truths C:MU,...] [--first-seed N]
 
 The measured motion is Exudyn's (``tests/exudyn_slider_crank.py``: its own equations and
 contact law, none of jointplay's model code; it agrees with ``jointplay simulate`` at the
@@ -102,10 +103,16 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seeds", type=int, default=5, help="noise seeds per truth")
     parser.add_argument("--quick", action="store_true",
                         help="the first truth only, noise stated (a check of the script)")
+    parser.add_argument("--truths", metavar="C:MU,...",
+                        help="other truths (clearance m, mu), e.g. 8e-5:0.009 (held-out cases)")
+    parser.add_argument("--first-seed", type=int, default=0, help="the first noise seed")
     args = parser.parse_args(argv)
     if args.seeds < 1:
         parser.error("--seeds must be >= 1")
     truths = TRUTHS[:1] if args.quick else TRUTHS
+    if args.truths:
+        truths = tuple((float(c), float(mu)) for c, mu in
+                       (pair.split(":") for pair in args.truths.split(",")))
     modes = (True,) if args.quick else (True, False)
     text = SCENE.read_text(encoding="utf-8").replace("bearing_radius = 10.5e-3",
                                                      f"bearing_radius = {BEARING!r}")
@@ -121,7 +128,7 @@ def main(argv: list[str] | None = None) -> int:
             exact = exudyn_record(*truth, times)
             for stated in modes:
                 rows = []
-                for seed in range(args.seeds):
+                for seed in range(args.first_seed, args.first_seed + args.seeds):
                     wall = time.perf_counter()
                     result = calibrate_once(scene_path, times, exact, seed, stated, folder)
                     row: dict[str, Any] = {"clearance": truth[0], "mu": truth[1],

@@ -261,10 +261,9 @@ def _first_tracks(problem: MechanismProblem, predictor: MechanismPredictor,
 
 
 def _enough(problem: MechanismProblem, end: float) -> bool:
-    """Whether the samples up to ``end`` hold more numbers than twice the free parameters."""
-    measured = problem.measured
-    count = np.count_nonzero(measured.t <= end * (1 + 1e-9)) * len(measured.columns)
-    return bool(count >= 2 * problem.free.size + 1)
+    """Whether the samples up to ``end`` hold more numbers than twice the free parameters
+    (as :func:`horizon_windows` asks of a first window)."""
+    return window(problem.measured, end).size >= 2 * problem.free.size + 1
 
 
 def model_error(predictor: MechanismPredictor, optimum: Optimum) -> float:
