@@ -203,7 +203,7 @@ def test_fixed_step_blocks_change_nothing(monkeypatch: pytest.MonkeyPatch) -> No
 _PRESS_WHILE_FORKING = """
 import os, signal, sys
 from jointplay.common import interrupts
-from jointplay.calibration.workers import parallel_map
+from jointplay.common.pool import parallel_map
 
 def press():
     os.kill(os.getpid(), signal.SIGINT)

@@ -39,7 +39,7 @@ from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
 from jointplay.calibration.result import CalibrationResult, Estimate
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
 from jointplay.calibration.valleys import valley_check
-from jointplay.calibration.workers import on_cluster
+from jointplay.common.pool import on_cluster
 from jointplay.scene.definition import Scene
 
 if TYPE_CHECKING:

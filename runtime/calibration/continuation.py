@@ -31,8 +31,8 @@ from jointplay.calibration.predict import (
     line_minima,
     whitened,
 )
-from jointplay.calibration.workers import parallel_map
 from jointplay.common.errors import SimulationError
+from jointplay.common.pool import parallel_map
 from jointplay.scene.definition import Scene
 
 

@@ -30,7 +30,7 @@ from jointplay.calibration.predict import (
     line_minima,
     whitened,
 )
-from jointplay.calibration.workers import parallel_map
+from jointplay.common.pool import parallel_map
 
 CHI2_SIGMAS = 5.0
 """A fit whose chi² exceeds dof + CHI2_SIGMAS sqrt(2 dof) does not explain the data within

@@ -19,8 +19,8 @@ import numpy as np
 
 from jointplay.calibration.measured import TIP_COLUMNS, Measured, grid_indices
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.workers import chunks, parallel_map
 from jointplay.common.errors import DescriptionError
+from jointplay.common.pool import chunks, parallel_map
 from jointplay.scene.definition import Scene
 from jointplay.store.model import Model
 

@@ -156,7 +156,7 @@ def _fit_scene(scene: MechanismScene, measured: Measured, options: CalibrationOp
 
 def run_mechanism(problem: MechanismProblem) -> CalibrationResult:
     """Fit a prepared problem (see the module docstring)."""
-    from jointplay.calibration.workers import on_cluster
+    from jointplay.common.pool import on_cluster
 
     with on_cluster(problem.options.scheduler):
         return _run(problem)

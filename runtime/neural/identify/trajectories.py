@@ -18,8 +18,8 @@ from typing import Any
 
 import numpy as np
 
-from jointplay.common import interrupts
 from jointplay.common.errors import DescriptionError
+from jointplay.common.pool import parallel_map
 from jointplay.neural.identify.config import IdentifyConfig
 from jointplay.neural.identify.excitation import (
     Chirp,
@@ -243,44 +243,10 @@ def collect(scene: Any, config: IdentifyConfig, inner: InnerLoop, limits: np.nda
     workers = config.workers or min(4, os.cpu_count() or 1)
     workers = max(1, min(workers, len(tasks)))
     _models(scene)  # compile (or load) once before any worker starts
-    results: list[Trajectory] = []
     with tqdm(total=len(tasks), disable=quiet, unit="traj", desc="simulating") as bar:
-        if workers == 1:
-            for task in tasks:
-                results.append(run_task(task))
-                bar.update(1)
-        else:
-            results = _pool_run(tasks, workers, bar)
-    return results
-
-
-def _pool_run(tasks: Sequence[_Task], workers: int, bar: Any) -> list[Trajectory]:
-    """The trajectories of ``tasks``, in order, from ``workers`` processes; Ctrl-C stops them
-    without waiting."""
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    # fork where there is one: no re-import of the caller's main module, and the compiled
-    # models are already loaded; workers use numpy and CasADi only.
-    methods = multiprocessing.get_all_start_methods()
-    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    # Workers leave Ctrl-C to this process, which stops them without waiting.
-    pool = ProcessPoolExecutor(workers, mp_context=context,
-                               initializer=interrupts.ignore_in_child)
-    results: list[Trajectory] = []
-    try:
-        with interrupts.deferred():  # it forks the workers: a Ctrl-C meanwhile, after
-            mapped = pool.map(run_task, tasks)
-        for traj in mapped:
-            results.append(traj)
-            bar.update(1)
-    except BaseException:
-        for process in list(getattr(pool, "_processes", {}).values()):
-            process.terminate()
-        pool.shutdown(wait=False, cancel_futures=True)
-        raise
-    pool.shutdown()
-    return results
+        # forked workers inherit the loaded models; they use numpy and CasADi only
+        return parallel_map(lambda i: run_task(tasks[i]), len(tasks), workers,
+                            label="identification", on_result=lambda _: bar.update(1))
 
 
 def check_finite(trajectories: Sequence[Trajectory]) -> None:

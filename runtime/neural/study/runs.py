@@ -8,7 +8,7 @@ from functools import partial
 from pathlib import Path
 from typing import Any
 
-from jointplay.common import interrupts
+from jointplay.common.pool import parallel_map
 from jointplay.neural.control.loop_accuracy import accuracy_columns, check_tolerance, loop_accuracy
 from jointplay.neural.control.metrics import SPLIT_METRICS
 from jointplay.neural.model.narx import MODEL_FILE, REJECTED_FILE, load_narx, robot_identity
@@ -109,27 +109,12 @@ def _dummy_model(scene: Any) -> Any:
 
 
 def pool_map(indices: list[int], workers: int, quiet: bool, label: str) -> list[Any]:
+    """The rows of STUDY_JOBS' ``indices``, on up to ``workers`` forked processes."""
     from tqdm import tqdm
 
-    out: list[Any] = []
     with tqdm(total=len(indices), disable=quiet, desc=label, unit="run") as bar:
-        if workers <= 1:
-            for i in indices:
-                out.append(_run_unit(i))
-                bar.update(1)
-        else:
-            import multiprocessing
-            from concurrent.futures import ProcessPoolExecutor
-
-            methods = multiprocessing.get_all_start_methods()
-            context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-            with ProcessPoolExecutor(workers, mp_context=context) as pool:
-                with interrupts.deferred():  # it forks the workers: a Ctrl-C, after
-                    mapped = pool.map(_run_unit, indices)
-                for rows in mapped:
-                    out.append(rows)
-                    bar.update(1)
-    return out
+        return parallel_map(lambda k: _run_unit(indices[k]), len(indices), workers,
+                            label="study", on_result=lambda _: bar.update(1))
 
 
 def _matches(narx: Any, scene: Any, seed: int, identify_args: dict[str, Any]) -> bool:

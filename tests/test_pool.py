@@ -1,6 +1,7 @@
-"""The calibration's worker pool: a dead or stuck worker is detected and the run goes on with
-the same numbers; Ctrl-C prints the command's one line and leaves no worker behind; the pieces
-run on a Dask cluster give the same numbers as here."""
+"""The worker pool (calibration, identification, study): a dead or stuck worker is detected and
+the run goes on with the same numbers; a piece's error is raised here; Ctrl-C prints the
+command's one line and leaves no worker behind; the pieces run on a Dask cluster give the same
+numbers as here."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from jointplay.calibration import workers
+from jointplay.common import pool
 
 
 def _stuck_in_a_worker(parent: int, index: int) -> int:
@@ -34,9 +35,9 @@ def test_stuck_workers_give_way_to_this_process(monkeypatch: pytest.MonkeyPatch,
                                                 capsys: pytest.CaptureFixture[str]) -> None:
     """A pool that sends nothing back for STALL_S seconds is killed; the pieces not yet back
     run here, in order, and the numbers are those of a run without workers."""
-    monkeypatch.setattr(workers, "STALL_S", 1.0)
+    monkeypatch.setattr(pool, "STALL_S", 1.0)
     started = time.monotonic()
-    assert workers.parallel_map(partial(_stuck_in_a_worker, os.getpid()), 5, 2) \
+    assert pool.parallel_map(partial(_stuck_in_a_worker, os.getpid()), 5, 2) \
         == [0, 1, 4, 9, 16]
     assert time.monotonic() - started < 20  # not the workers' 30 s sleep
     err = capsys.readouterr().err
@@ -48,10 +49,30 @@ def test_a_killed_worker_is_detected_and_its_pieces_run_here(
         capsys: pytest.CaptureFixture[str]) -> None:
     """A worker killed mid-piece (SIGKILL) breaks the pool; one line says so and the pieces
     not back run here, with the numbers of a run without workers."""
-    assert workers.parallel_map(partial(_killed_in_a_worker, os.getpid()), 5, 2) \
+    assert pool.parallel_map(partial(_killed_in_a_worker, os.getpid()), 5, 2) \
         == [0, 1, 4, 9, 16]
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "lost a worker process" in err
+
+
+def _fails_at_three(index: int) -> int:
+    if index == 3:
+        raise ValueError("piece 3 failed")
+    return index
+
+
+def test_each_piece_reported_as_it_comes_back_and_an_error_raised_here(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """``on_result`` sees every piece once (a progress bar), those back from the workers and
+    those run here after a lost worker alike; a piece's exception reaches the caller."""
+    seen: list[int] = []
+    assert pool.parallel_map(partial(_killed_in_a_worker, os.getpid()), 5, 2,
+                             label="study", on_result=seen.append) == [0, 1, 4, 9, 16]
+    assert sorted(seen) == [0, 1, 4, 9, 16]
+    assert "the study's worker processes lost a worker" in capsys.readouterr().err
+    for workers in (1, 2):
+        with pytest.raises(ValueError, match="piece 3 failed"):
+            pool.parallel_map(_fails_at_three, 5, workers)
 
 
 def test_no_worker_outlives_the_map() -> None:
@@ -60,7 +81,7 @@ def test_no_worker_outlives_the_map() -> None:
 
     # Children of earlier tests in this session (a figure process, say) are not the map's.
     before = set(multiprocessing.active_children())
-    assert workers.parallel_map(lambda i: os.getpid(), 4, 2) is not None
+    assert pool.parallel_map(lambda i: os.getpid(), 4, 2) is not None
     assert set(multiprocessing.active_children()) - before == set()
 
 
@@ -68,7 +89,7 @@ _INTERRUPTED = textwrap.dedent("""
     import os, sys, time
     sys.argv[0] = "jointplay"  # the command's own behaviour on Ctrl-C
     from jointplay.common import interrupts
-    from jointplay.calibration import workers
+    from jointplay.common import pool
 
     folder = sys.argv[1]
 
@@ -78,7 +99,7 @@ _INTERRUPTED = textwrap.dedent("""
         return index
 
     with interrupts.installed():
-        workers.parallel_map(job, 4, 2)
+        pool.parallel_map(job, 4, 2)
 """)
 
 
@@ -115,11 +136,11 @@ def test_pieces_on_a_dask_cluster_and_an_unreachable_scheduler(
 
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
                                   dashboard_address=None) as cluster, \
-            workers.on_cluster(cluster.scheduler_address):
-        assert workers.parallel_map(_square, 5, 2) == [0, 1, 4, 9, 16]
-    monkeypatch.setattr(workers, "CONNECT_TIMEOUT_S", 2.0)
+            pool.on_cluster(cluster.scheduler_address):
+        assert pool.parallel_map(_square, 5, 2) == [0, 1, 4, 9, 16]
+    monkeypatch.setattr(pool, "CONNECT_TIMEOUT_S", 2.0)
     with pytest.raises(DescriptionError, match="--scheduler"), \
-            workers.on_cluster("tcp://127.0.0.1:9"):
+            pool.on_cluster("tcp://127.0.0.1:9"):
         pass
 
 

@@ -1,10 +1,11 @@
-"""Independent pieces of a calibration (the grid's runs, the tracks' fits over a window, the
-lines' runs) on several cores, or on a Dask cluster.
+"""Independent pieces of work (a calibration's runs and fits, identification trajectories, a
+study's runs) on several cores, or on a Dask cluster: the one worker pool of jointplay.
 
-Locally the pieces share the compiled model, which cannot be pickled, so they run in a
+Locally the pieces share compiled models, which cannot be pickled, so they run in a
 :class:`concurrent.futures.ProcessPoolExecutor` whose processes are forked from this one (each
-inherits the model and the job) and send back only numbers. On a cluster
-(:func:`on_cluster`) each piece travels pickled, its predictor reloading the model there
+inherits the models and the job) and send back only numbers. On a cluster
+(:func:`on_cluster`, the calibration's ``--scheduler``) each piece travels pickled, a
+calibration's predictor reloading its model there
 (:meth:`jointplay.calibration.predict.Predictor.__setstate__`). The results do not depend on
 where the pieces run: each is the same computation. Where ``fork`` is unavailable, or one
 worker is asked for, the pieces run here in turn.
@@ -37,9 +38,10 @@ _CLIENT: list[Any] = []  # the Dask client of :func:`on_cluster`, while inside i
 # instruction on (see _quiet_in_copy).
 _FORKING = [False]
 STALL_S = 600.0
-"""The longest a calibration waits for the next piece from its workers (s). A piece is one
-local fit over a window, or a chunk of short runs: seconds to a minute on a loaded 2-core
-machine; the bound leaves room for a machine many times busier."""
+"""The longest a map waits for the next piece from its workers (s). A piece (a calibration's
+local fit over a window or chunk of short runs, a trajectory, a study's run) takes seconds
+to a minute on a loaded 2-core machine; the bound leaves room for a machine many times
+busier."""
 CONNECT_TIMEOUT_S = 20.0
 """How long ``--scheduler`` waits for the cluster to answer."""
 
@@ -87,23 +89,33 @@ def on_cluster(address: str | None) -> Iterator[None]:
         client.close()
 
 
-def parallel_map(job: Callable[[int], Any], count: int, workers: int) -> list[Any]:
+def parallel_map(job: Callable[[int], Any], count: int, workers: int, *,
+                 label: str = "calibration",
+                 on_result: Callable[[Any], None] | None = None) -> list[Any]:
     """``[job(0), ..., job(count - 1)]``, on up to ``workers`` forked processes (or on the
-    cluster of :func:`on_cluster`). ``job`` must catch its own failures and return them as
-    values. If a worker dies or the workers stall (nothing back for :data:`STALL_S` s), the
-    rest run here."""
+    cluster of :func:`on_cluster`). An exception ``job`` raises in a worker is raised here
+    (the workers stopped). If a worker dies or the workers stall (nothing back for
+    :data:`STALL_S` s), one line on stderr names the ``label``'s workers and the rest run
+    here. ``on_result`` is called with each piece as it comes back (a progress bar)."""
+    def here(index: int) -> Any:
+        value = job(index)
+        if on_result is not None:
+            on_result(value)
+        return value
+
     if _CLIENT and count > 1:
         return _on_dask(_CLIENT[-1], job, count)
     if workers <= 1 or count <= 1 or "fork" not in multiprocessing.get_all_start_methods():
-        return [job(i) for i in range(count)]
-    done = _forked(job, count, min(workers, count))
-    return [done[i] if i in done else job(i) for i in range(count)]
+        return [here(i) for i in range(count)]
+    done = _forked(job, count, min(workers, count), label, on_result)
+    return [done[i] if i in done else here(i) for i in range(count)]
 
 
-def _forked(job: Callable[[int], Any], count: int, workers: int) -> dict[int, Any]:
+def _forked(job: Callable[[int], Any], count: int, workers: int, label: str,
+            on_result: Callable[[Any], None] | None) -> dict[int, Any]:
     """The pieces that came back from a pool of ``workers`` forked processes, by index; the
-    pool is killed once every piece is back, a worker died, the workers stalled, or this
-    process is interrupted."""
+    pool is killed once every piece is back, a worker died, the workers stalled, a piece
+    raised, or this process is interrupted."""
     global _JOB
     _JOB = job
     pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"))
@@ -127,8 +139,11 @@ def _forked(job: Callable[[int], Any], count: int, workers: int) -> dict[int, An
                     done[index] = future.result()
                 except BrokenProcessPool:
                     problem = "lost a worker process (killed, or out of memory)"
+                    continue
+                if on_result is not None:
+                    on_result(done[index])
         if problem is not None:
-            print(f"jointplay: the calibration's worker processes {problem}; running the "
+            print(f"jointplay: the {label}'s worker processes {problem}; running the "
                   f"{count - len(done)} remaining pieces in this process", file=sys.stderr)
     finally:
         _stop(pool)
