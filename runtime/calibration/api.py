@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
-from jointplay.calibration.basins import Basins, neighbouring_basins, widened
+from jointplay.calibration.basins import neighbouring_basins, widened
 from jointplay.calibration.basins import threshold as basin_threshold
 from jointplay.calibration.continuation import TRACK_MARGIN, Stage, ValleyScan, continuation
 from jointplay.calibration.fit import (
@@ -22,13 +22,7 @@ from jointplay.calibration.fit import (
     starts_around,
     timed,
 )
-from jointplay.calibration.grid import (
-    Grid,
-    GridResult,
-    grid_candidates,
-    grid_scale,
-    others_first,
-)
+from jointplay.calibration.grid import Grid, GridResult, grid_candidates, grid_scale, others_first
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
 from jointplay.calibration.noise import column_noise, residual_check
 
@@ -53,9 +47,8 @@ VALLEY_CHECK_LOOSER = 3.0
 the threshold (3.84), and at the windows' own (100 times) they are off by about that."""
 
 GRID_LINE_REACH = 1.5
-"""How far the grid window's line reaches either side of the best grid point, in grid
-spacings: the true valley lies within half a spacing of some grid point, and the best one
-can be a neighbour of that point."""
+"""How far the grid window's line reaches either side of the best grid point, in grid spacings:
+the true valley lies within half a spacing of a grid point, the best perhaps its neighbour."""
 
 
 @dataclass(frozen=True)
@@ -69,8 +62,7 @@ class Problem:
     sigma: np.ndarray
     options: CalibrationOptions
     noise_spread: np.ndarray | None = None
-    """Where the noise was estimated: the relative variance of each column's estimated
-    variance (None: stated)."""
+    """The relative variance of each column's estimated noise variance (None: stated)."""
 
 
 def prepare(scene: Scene | MechanismScene, measured: str | Path | Measured,
@@ -81,7 +73,7 @@ def prepare(scene: Scene | MechanismScene, measured: str | Path | Measured,
     """Check every input (raises :class:`DescriptionError` naming the file or the name)."""
     from jointplay.sim import load_scene_model
 
-    if _is_mechanism(scene):  # a mechanism: jointplay.mechanism.calibration
+    if _is_mechanism(scene):
         from jointplay.mechanism.calibration import prepare_mechanism
 
         return prepare_mechanism(scene, measured, free, noise=noise,  # type: ignore[arg-type, return-value]
@@ -109,15 +101,14 @@ def calibrate(scene: Scene | MechanismScene, measured: str | Path | Measured,
               ) -> CalibrationResult:
     """Estimate the ``free`` parameters of ``scene``'s robot from ``measured`` motion.
 
-    A weighted least-squares fit of simulated to measured samples, with the Jacobian from the
-    compiled sensitivities, then the estimates' uncertainty (95 % intervals, correlations) and
-    the cost profiles, and whether the fit explains the data within the noise.
+    A weighted least-squares fit of simulated to measured samples (the Jacobian from the
+    compiled sensitivities), then the estimates' 95 % intervals and correlations, the cost
+    profiles, and whether the fit explains the data within the noise.
 
     Parameters
     ----------
     scene : Scene or MechanismScene
-        The scene that was measured: its torques, initial state and the robot's other numbers.
-        A mechanism scene is calibrated on its outputs
+        The scene that was measured; a mechanism scene is calibrated on its outputs
         (:mod:`jointplay.mechanism.calibration`).
     measured : str, pathlib.Path or Measured
         A CSV path (``time``, and any of ``tip_x``, ``tip_y``, ``q2``, ...), a results file
@@ -126,8 +117,7 @@ def calibrate(scene: Scene | MechanismScene, measured: str | Path | Measured,
         The parameters to estimate, by the names ``--set`` takes, plus ``jointN.clearance``.
     noise : float or mapping of str to float, optional
         The sensors' standard deviations (one number, or one per column); without it each
-        column's noise is estimated from the data's own sample-to-sample scatter
-        (:mod:`jointplay.calibration.noise`).
+        column's noise is estimated from the data's sample-to-sample scatter.
     start : mapping of str to float, optional
         Start values (default: the scene's).
     options : CalibrationOptions, optional
@@ -169,9 +159,8 @@ def calibrate(scene: Scene | MechanismScene, measured: str | Path | Measured,
     >>> round(estimate.value, 2), estimate.determined, result.fit_explains_data
     (2.3, True, True)
     """
-    problem = prepare(scene, measured, free, noise=noise, start=start, options=options,
-                      model=model)
-    return run(problem)
+    return run(prepare(scene, measured, free, noise=noise, start=start, options=options,
+                       model=model))
 
 
 def _is_mechanism(scene: Any) -> bool:
@@ -181,8 +170,7 @@ def _is_mechanism(scene: Any) -> bool:
 
 
 def run(problem: Problem) -> CalibrationResult:
-    """Fit a prepared problem, then state the estimates' uncertainty and the cost profiles
-    (the pieces on the Dask cluster at ``options.scheduler``, if given)."""
+    """Fit a prepared problem and state its uncertainty (on ``options.scheduler``, if given)."""
     if _is_mechanism(problem.scene):
         from jointplay.mechanism.calibration import run_mechanism
 
@@ -201,10 +189,8 @@ def _run(problem: Problem) -> CalibrationResult:
     scan: Scan | None = Scan(opts.scan_points, opts.spread, opts.refine)
     stages: list[Stage] = []
     stage_runs = 0
-    grid = None
-    valley = None
-    weights = problem.sigma
-    centre = starts[0]
+    grid = valley = None
+    weights, centre = problem.sigma, starts[0]
     if opts.horizon_first > 0:
         if opts.grid_window > 0:
             centre, runs = others_first(predictor, weights, starts[0], opts.window_looser,
@@ -232,9 +218,8 @@ def _run(problem: Problem) -> CalibrationResult:
         survivors, runs = _ranked(predictor, weights, survivors, opts.workers)
         stage_runs += runs
         if len(survivors):
-            # The tracks alone start the whole-record fit: a multi-start and a scan there
-            # (the method without continuation) never found a lower minimum on the
-            # benchmark's cases, whose whole-record cost is rugged at tens of nanometres.
+            # The tracks alone start the whole-record fit: a multi-start and a scan there never
+            # found a lower minimum on the benchmark's cases (a cost rugged at tens of nanometres).
             starts, scan = survivors, None
         else:
             starts = np.vstack([survivors, starts[1:]])
@@ -245,26 +230,23 @@ def _run(problem: Problem) -> CalibrationResult:
         stages.append(_whole_stage(problem, optimum.starts[:leading]))
     drift = _drift(centre, optimum.values, valley.held_before) \
         if grid is not None and valley is not None else 0.0
-    free = problem.free
-    check = None
+    free, check, line_runs = problem.free, None, 0
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
-    line_runs = 0
     if opts.basins:
         found = neighbouring_basins(predictor, optimum.sigma, optimum.values,
                                     float(np.sum(optimum.residuals**2)), spread.covariance,
                                     opts.max_evaluations, opts.workers,
                                     others=optimum.starts, axes=spread.seen_covariance)
         line_runs = found.line_runs
-        moved = not np.array_equal(found.best, optimum.values)
-        optimum = _after_basins(predictor, optimum, found, moved)
-        if moved:
+        optimum = dataclasses.replace(optimum, starts=optimum.starts + found.fits)
+        if not np.array_equal(found.best, optimum.values):  # a lower minimum: moved there
+            optimum = _moved_to(predictor, optimum, found.best)
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
     fitted = predictor.outputs(optimum.values)
     if opts.basins:
-        # The valley check only decides which estimates stay determined: where the noise
-        # does not explain the residuals, or the held parameters drifted, none is, and its
-        # runs (162 at the defaults, over 0.32 s) are skipped.
+        # The valley check only decides which estimates stay determined: skipped where none can
+        # be (the noise does not explain the residuals, or the held parameters drifted).
         if valley is not None and opts.valley_check_points > 0 and drift <= HELD_DRIFT \
                 and residual_check(fitted - problem.measured.values, optimum.sigma,
                                    problem.measured.size - free.size, problem.noise_spread,
@@ -295,13 +277,9 @@ def _run(problem: Problem) -> CalibrationResult:
 
 
 HELD_DRIFT = 0.05
-"""The relative change of a parameter the early windows hold (the friction, fitted over the
-whole record before the grid with the clearances at their start) beyond which nothing is
-reported determined: the windows chose the clearances' valley under another model. On the
-benchmark cases whose clearances came out right it moved by 1.2 % at most; on a paper-scene
-draw whose search ended 1.8 % off in both clearances (chi²/dof 0.994, every interval
-missing the truth) it moved by 40 %, and a second search holding it at the whole-record
-value ended no nearer (its best whole-record fit 60 above the first's)."""
+"""The relative change of a parameter the early windows hold (the friction, fitted with the
+clearances at their start) beyond which nothing is reported determined: the windows chose the
+clearances' valley under another model (where they chose right, it moved by 1.2 % at most)."""
 
 
 def _whole_stage(problem: Problem, fits: Sequence[Any]) -> Stage:
@@ -313,8 +291,7 @@ def _whole_stage(problem: Problem, fits: Sequence[Any]) -> Stage:
 
 
 def _drift(held: np.ndarray, fitted: np.ndarray, mask: np.ndarray) -> float:
-    """The largest relative change from ``held`` to ``fitted`` among the ``mask``ed
-    parameters (0 where none)."""
+    """The largest relative change from ``held`` to ``fitted`` in ``mask`` (0 where none)."""
     if not mask.any():
         return 0.0
     scale = np.maximum(np.abs(fitted[mask]), 1e-300)
@@ -322,17 +299,15 @@ def _drift(held: np.ndarray, fitted: np.ndarray, mask: np.ndarray) -> float:
 
 
 WHOLE_RECORD_TRACKS = 2
-"""The tracks fitted on the whole record at least (where that many reach it): a track's
-chi² at its last window's estimate can lie hundreds above its basin's floor on the whole
-record, and two basins can rank the wrong way round there."""
+"""The tracks fitted on the whole record at least (where that many reach it): ranked by their
+chi² there at their last window's estimates, two basins can come the wrong way round."""
 
 
 def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, workers: int
             ) -> tuple[np.ndarray, int]:
-    """The tracks worth a local fit on the whole record, best first: each ranked by one
-    run there (its chi² at the last window's estimate), those more than TRACK_MARGIN above
-    the best dropped but the WHOLE_RECORD_TRACKS best; and the runs. As many tracks as that
-    or fewer are kept without a run."""
+    """The tracks worth a local fit on the whole record, best first, and the runs: each ranked
+    by its chi² there at its last window's estimate, those more than TRACK_MARGIN above the best
+    dropped but the WHOLE_RECORD_TRACKS best (that many or fewer are all kept, without a run)."""
     if len(tracks) <= WHOLE_RECORD_TRACKS:
         return tracks, 0
     values, runs = chi2_at_points(predictor, weights, list(tracks), workers)
@@ -345,17 +320,8 @@ def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, worke
     return tracks[keep], runs
 
 
-def _after_basins(predictor: Predictor, optimum: Optimum, found: Basins, moved: bool
-                  ) -> Optimum:
-    """``optimum`` with the basin check's local fits added to its record, and moved to the
-    lower minimum the check found (its residuals and Jacobian there), if it found one."""
-    optimum = dataclasses.replace(optimum, starts=optimum.starts + found.fits)
-    return _moved_to(predictor, optimum, found.best) if moved else optimum
-
-
 def _moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
-    """``optimum`` moved to ``x`` (a lower minimum found after the fit): its residuals and
-    Jacobian there, its record kept."""
+    """``optimum`` moved to ``x`` (a lower minimum): its residuals and Jacobian there."""
     residuals = whitened(predictor.outputs(x) - predictor.measured.values, optimum.sigma)
     jacobian = whitened(predictor.jacobian(x), optimum.sigma)
     return Optimum(x, optimum.sigma, residuals, jacobian, optimum.starts)
@@ -363,10 +329,9 @@ def _moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
 
 def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
             fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
-            profiles: dict[str, dict[str, list[float]]], wall: float,
-            cpu: float, explains: bool, stages: tuple[Stage, ...] = (),
-            stage_runs: int = 0, grid: GridResult | None = None,
-            line_runs: int = 0, profile_runs: int = 0,
+            profiles: dict[str, dict[str, list[float]]], wall: float, cpu: float,
+            explains: bool, stages: tuple[Stage, ...] = (), stage_runs: int = 0,
+            grid: GridResult | None = None, line_runs: int = 0, profile_runs: int = 0,
             check_runs: int = 0) -> CalibrationResult:
     free = problem.free
     estimates = estimates_at(optimum.values, free, spread, explains)
@@ -384,19 +349,16 @@ def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncert
         simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs,
                              "valley check": check_runs, "basin lines": line_runs,
                              "cost profiles": profile_runs},
-        jacobian_source=source,
-        wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
+        jacobian_source=source, wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
         settings={"rtol": run_settings.rtol, "atol": run_settings.atol,
                   "t_end": run_settings.t_end, "output_step": run_settings.output_step,
                   **dataclasses.asdict(problem.options),
                   "profile": "others fixed at their estimates"},
-        fit_explains_data=explains, profiles=profiles,
-        stages=stages, grid=grid)
+        fit_explains_data=explains, profiles=profiles, stages=stages, grid=grid)
 
 
 def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) -> Scene:
-    """The scene the fit runs: tolerances tightened, the run ending at the last measured
-    sample's output step (no later samples are needed)."""
+    """The scene the fit runs: tolerances tightened, ending at the last sample's output step."""
     run = scene.run
     steps = max(1, math.ceil(measured.t[-1] / run.output_step - 1e-9))
     changes: dict[str, Any] = {"t_end": min(run.t_end, steps * run.output_step)}
@@ -421,11 +383,11 @@ def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
                box_spread: float, distrust: str | None = None, advice: str | None = None,
                reached: np.ndarray | None = None
                ) -> tuple[dict[str, Any], str | None, Uncertainty, list[str]]:
-    """The fit's residual statistics, why the residuals are not the noise (None: they
-    are), its intervals (spanning the searched box, ``box_spread`` of the start either
-    side, where they are not, or where ``distrust`` says why the search's valley cannot be
-    trusted, ``advice`` what to do then; with ``reached``, the same box about that point
-    too) and its warnings; for a scene's and a mechanism's fit alike."""
+    """The fit's residual statistics, why the residuals are not the noise (None: they are),
+    its intervals (spanning the searched box, ``box_spread`` of the start either side, where
+    they are not, or where ``distrust`` says why the search's valley cannot be trusted,
+    ``advice`` what to do then; with ``reached``, the same box about that point too) and its
+    warnings; for a scene's and a mechanism's fit alike."""
     stats = residual_statistics(measured, fitted, optimum.sigma, free.size)
     misfit = residual_check(fitted - measured.values, optimum.sigma, stats["dof"],
                             noise_spread, measured.columns)
@@ -455,9 +417,6 @@ def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
 
 
 def _bound_warnings(values: np.ndarray, free: FreeParameters) -> list[str]:
-    out = []
-    for k, name in enumerate(free.names):
-        if values[k] <= free.lower[k] or values[k] >= free.upper[k]:
-            out.append(f"{name} ended on its physical bound ({values[k]:.6g}): the optimum "
-                       "may lie outside the range the model accepts")
-    return out
+    return [f"{name} ended on its physical bound ({values[k]:.6g}): the optimum may lie outside "
+            "the range the model accepts" for k, name in enumerate(free.names)
+            if values[k] <= free.lower[k] or values[k] >= free.upper[k]]

@@ -1,21 +1,15 @@
 """Neighbouring basins: the other minima of the whole record's cost that the data cannot
 tell from the best one, and the points of the cost's rugged floor they share it with.
 
-Impacts make the cost a field of basins (an impact that moves past a sample changes the
-residual abruptly), a few standard deviations apart, whose floor can stay flat far beyond
-one basin's own curvature along the direction the impacts make most rugged. The covariance
-at the best fit describes its own basin only, so its interval misses the others.
+Impacts make the cost a field of basins a few standard deviations apart, whose floor can stay
+flat far beyond one basin's own curvature; the best fit's covariance describes its basin only.
 
-The check: lines through the best fit along each principal axis of its confidence
-ellipsoid, finely out to :data:`REACH_SIGMAS` standard deviations, then at
-:data:`FAR_SIGMAS`, one plain run per point; a local fit from each of the lowest minima
-along the lines (at most :data:`FITS`) whose chi² lies within the threshold plus
-:data:`SLACK` of the best's (a line passes beside its basin's floor, not through it). A fit
-that ends lower than the best replaces it. Every point found (a line's point or another
-fit's minimum) whose chi² lies within ``chi2.ppf(0.95, 1)`` = 3.84 of the lowest lies inside
-each parameter's 95 % profile-likelihood interval, since the profile at its value can only
-be lower: the intervals are widened to hold them, and a parameter in which another basin's
-minimum lies outside the best's own interval is not determined.
+The check: lines through the best fit along each principal axis of its confidence ellipsoid,
+one plain run per point; a local fit from each of the lowest minima along the lines (at most
+:data:`FITS`) within the threshold plus :data:`SLACK` of the best's chi² (a line passes beside
+its basin's floor, not through it), a lower one replacing the best. The intervals are widened
+to hold every point found within the threshold (:data:`CONFIDENCE`), and a parameter in which
+another basin's minimum lies outside the best's own interval is not determined.
 """
 
 from __future__ import annotations
@@ -34,42 +28,36 @@ from jointplay.calibration.uncertainty import MAX_RELATIVE_STD, Z95, Uncertainty
 from jointplay.calibration.valleys import ValleyCheck
 
 CONFIDENCE = 0.95
-"""The confidence level of the intervals: a point whose chi² lies within
-``chi2.ppf(CONFIDENCE, 1)`` (3.84) of the lowest lies inside every parameter's
-profile-likelihood interval at that level (the profile at its value can only be lower)."""
+"""The intervals' confidence level: a point within ``chi2.ppf(CONFIDENCE, 1)`` (3.84) of the
+lowest chi² lies inside every parameter's profile-likelihood interval at that level (the
+profile at its value can only be lower)."""
 REACH_SIGMAS = 5.0
-"""How far each line's fine part reaches either side of the best fit, in standard
-deviations."""
+"""How far each line's fine part reaches either side of the best fit, in standard deviations."""
 STEP_SIGMAS = 1.0
-"""The fine part's spacing in standard deviations: a basin is two to three wide, so each
-gets a point at most half a standard deviation from its floor (a quarter above it in chi²,
-where its curvature is the best's)."""
+"""The fine part's spacing in standard deviations: a basin is two to three wide, so each gets a
+point at most half a standard deviation (a quarter in chi²) from its floor."""
 FAR_SIGMAS = (8.0, 16.0, 32.0)
-"""The lines' points beyond the fine part, in standard deviations (the rugged floor can stay
-flat that far)."""
+"""Points beyond the fine part, in standard deviations (the rugged floor can stay flat that far)."""
 SLACK = 10.0
 """chi² above the threshold still worth a local fit from a line's minimum."""
 FITS = 2
 """Local fits from the lines' minima at most."""
 WARN_WIDENING = 1.25
-"""The lines' points widen an interval silently up to this factor of its half-width (a
-smooth cost departs that little from its quadratic: on the paper arm without clearance, a
-point at 2.0 standard deviations within the threshold); beyond it a warning says so."""
+"""The lines' points widen an interval silently up to this factor of its half-width (a smooth
+cost departs that little from its quadratic); beyond it a warning says so."""
 OTHER_CENTRES = 1
-"""Other whole-record minima (within the threshold plus SLACK of the best) the lines also
-go through, at most."""
+"""Other whole-record minima (within the threshold plus SLACK of the best) the lines also go
+through, at most."""
 LOOSER = 1.0
 """The lines' runs use the fit's tolerances times this: their chi² decide which points widen
-the intervals (within 3.84 of the lowest), so they must be accurate to well under that
-(ten times looser, they scatter by about the threshold's size)."""
+the intervals (within 3.84 of the lowest), so they must be accurate to well under that."""
 
 
 @dataclass(frozen=True)
 class Basins:
-    """What the check found: the best fit (the given one or a lower one it found), the
-    rivals (other basins' minima within ``threshold`` of the best's chi²), every local fit
-    it made (their runs are counted by the predictor), the lines' runs, and the lines'
-    points within the threshold."""
+    """What the check found: the best fit (the given one or a lower one), the rivals (other
+    basins' minima within ``threshold`` of the best's chi²), every local fit it made (their
+    runs counted by the predictor), and the lines' runs."""
 
     best: np.ndarray
     best_chi2: float
@@ -95,12 +83,9 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     """The check described above, around ``best`` (chi² ``best_chi2``, ``covariance`` its
     estimates' covariance); ``others``: local fits of the same cost made before (the other
     tracks' whole-record fits), whose minima count as rivals as the check's own do.
-    ``axes``: the covariance whose principal axes the lines follow (default
-    ``covariance``); where some parameters are undetermined, the one within the directions
-    the data see (:attr:`Uncertainty.seen_covariance`), so that the rest is still checked:
-    with two inseparable moduli free beside the friction, a fit stopped in a small valley
-    13.5 above the truth's chi² gave the friction 2.9 of its standard deviations off,
-    reported determined, where the lines along the seen directions lead out of it."""
+    ``axes``: the covariance whose principal axes the lines follow (default ``covariance``);
+    where some parameters are undetermined, :attr:`Uncertainty.seen_covariance`, so that the
+    directions the data see are still checked."""
     free = predictor.free
     limit = threshold()
     axes = covariance if axes is None else axes
@@ -115,8 +100,7 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     every = [best, *(p for line in points for p in line)]
     values, line_runs = chi2_at_points(probe, weights, every, workers)
     centre, rest = values[0], values[1:]
-    lowest = min(v for v in values if math.isfinite(v)) if any(
-        math.isfinite(v) for v in values) else centre
+    lowest = min((v for v in values if math.isfinite(v)), default=centre)
     region = np.array([x for x, v in zip(every, values, strict=True)
                        if math.isfinite(v) and v <= lowest + limit]).reshape(-1, free.size)
     found: list[tuple[float, np.ndarray]] = []
@@ -138,10 +122,9 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
 
 def _other_centres(best: np.ndarray, best_chi2: float, covariance: np.ndarray,
                    others: tuple[Start, ...], within: float) -> list[np.ndarray]:
-    """The OTHER_CENTRES lowest minima of ``others`` within ``within`` of the best's chi²
-    that lie in another basin (more than half a standard deviation away in some parameter):
-    a whole-record fit from another track can stop a basin or two from a lower one that the
-    best's lines do not reach."""
+    """The OTHER_CENTRES lowest minima of ``others`` within ``within`` of the best's chi² that
+    lie in another basin (more than half a standard deviation away in some parameter): such a
+    fit can stop a basin or two from a lower one that the best's lines do not reach."""
     std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     near = sorted((s for s in others if not s.failed and math.isfinite(s.chi2)
                    and s.chi2 <= best_chi2 + within
@@ -163,10 +146,9 @@ def _with_rivals(best: np.ndarray, best_chi2: float, covariance: np.ndarray,
     rivals: list[Start] = []
     kept: list[np.ndarray] = [new_best]
     for chi2_value, x in candidates[1:]:
-        if chi2_value > new_chi2 + found.threshold:
-            continue
-        if any(np.all(np.abs(x - other) <= 0.5 * std) for other in kept):
-            continue  # the same basin as one already counted
+        if chi2_value > new_chi2 + found.threshold or any(
+                np.all(np.abs(x - other) <= 0.5 * std) for other in kept):
+            continue  # beyond the threshold, or the same basin as one already counted
         kept.append(x)
         rivals.append(Start(tuple(new_best), tuple(x), chi2_value, 0, "rival basin"))
     return dataclasses.replace(found, best=new_best, best_chi2=new_chi2, rivals=tuple(rivals))
@@ -174,35 +156,29 @@ def _with_rivals(best: np.ndarray, best_chi2: float, covariance: np.ndarray,
 
 def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,
                  upper: np.ndarray) -> list[list[np.ndarray]]:
-    """The points of the lines along the principal axes of ``covariance`` (the centre left
-    out), inside the bounds; none where the covariance is not finite."""
+    """The lines' points along ``covariance``'s principal axes, clipped to the bounds, centre
+    left out; none where the covariance is not finite."""
     if not np.all(np.isfinite(covariance)):
         return []
     eigenvalues, vectors = np.linalg.eigh(covariance)
     side = np.concatenate([np.arange(STEP_SIGMAS, REACH_SIGMAS + 1e-9, STEP_SIGMAS),
                            [s for s in FAR_SIGMAS if s > REACH_SIGMAS]])
     steps = np.concatenate([-side[::-1], side])
-    lines = []
-    for value, vector in zip(eigenvalues, vectors.T, strict=True):
-        if not value > 0:
-            continue
-        axis = math.sqrt(value) * vector
-        lines.append([np.clip(best + s * axis, lower, upper) for s in steps])
-    return lines
+    axes = [math.sqrt(value) * vector
+            for value, vector in zip(eigenvalues, vectors.T, strict=True) if value > 0]
+    return [[np.clip(best + s * axis, lower, upper) for s in steps] for axis in axes]
 
 
 def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
             check: ValleyCheck | None = None
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """The 95 % intervals widened to hold every point found inside them: each rival's basin
-    (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations:
-    the part of its basin below the threshold, its curvature taken as the best's) and every
-    point of the lines within the threshold; which parameters stay determined (no rival
-    outside the best's own interval); a warning for each interval a rival widens, or a
-    line's point by more than WARN_WIDENING; and, with ``check`` (the valley check), each
-    parameter its lines move whose interval misses one of its rivals is not determined, its
-    interval widened to span the check's whole lines (the search cannot tell which valley
-    holds the lowest minimum of the whole record's cost)."""
+    (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations,
+    its curvature taken as the best's) and every point of the lines within the threshold;
+    which parameters stay determined (no rival outside the best's own interval); a warning for
+    each interval a rival widens, or a line's point by more than WARN_WIDENING. With ``check``
+    (the valley check), a parameter its lines move whose interval misses one of its rivals is
+    not determined, its interval spanning the check's whole lines."""
     low, high = spread.low95.copy(), spread.high95.copy()
     determined = spread.determined.copy()
     warnings: list[str] = []
@@ -256,13 +232,9 @@ def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
     """``verdict`` changed in place for the parameters the valley check's lines do not move
     (the friction beside the clearances): in each rival valley, and anywhere along the line
     the clearances' intervals now span, they would take other values, carried by their
-    correlation with the clearances. Their shift there is estimated from the
-    covariance (the regression of each on the moved parameters, the valleys taken as copies
-    of the fit's shifted along the rugged direction) and their intervals widened to hold
-    it, each give or take its own 1.96 standard deviations; the verdict then follows the
-    widened interval. Without this a multi-sine's friction, 0.003 % off, was reported
-    determined with an interval 3.4 of its standard deviations wide that the truth in a
-    neighbouring valley lay beside."""
+    correlation with the clearances. That shift, estimated by regressing each on the moved
+    parameters (the valleys taken as shifted copies of the fit's), widens their intervals,
+    give or take 1.96 of their standard deviations; the verdict follows the widened ones."""
     low, high, determined, warnings = verdict
     moved = check.spacing > 0
     covariance = spread.seen_covariance if spread.seen_covariance is not None \
@@ -305,10 +277,9 @@ def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
 def _unexcluded(check: ValleyCheck, names: tuple[str, ...],
                 limit: float, verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]],
                 low95: np.ndarray, high95: np.ndarray) -> None:
-    """``verdict`` (low, high, determined, warnings) changed in place for the valley
-    check's rivals outside the intervals ``low95`` to ``high95``: such a parameter's
-    interval spans the check's whole lines (where two valleys along it lie within the
-    threshold, the line resolves only the valleys it crosses near their floors)."""
+    """``verdict`` (low, high, determined, warnings) changed in place for the valley check's
+    rivals outside the intervals ``low95`` to ``high95``: such a parameter's interval spans the
+    check's whole lines (they resolve only the valleys they cross near their floors)."""
     low, high, determined, warnings = verdict
     spacing = check.spacing
     moved = spacing > 0

@@ -1,15 +1,13 @@
 """Horizon continuation: fit a short leading window of the data first, then grow it.
 
-Where joints with clearance start centred, each journal crosses its clearance and bounces
-tens of times in the first tens of milliseconds; over the whole record the cost along the
-direction the tip sees least (on the paper scene the difference of two clearances) is a
-sawtooth of valleys a fraction of a micrometre wide, and a local fit from a start tens of
-micrometres away stops in the first valley it meets. Over a window that holds only the first
-impact of each journal the cost is one valley, or a few, across the physical range. The
-window is then grown geometrically, each stage's fit started at the
-previous stage's estimate: a longer window narrows the valleys, and the previous estimate,
-determined more and more precisely, lies in the true one. Short windows are cheap: each
-stage's runs end at the window's end.
+Where joints with clearance start centred, each journal bounces tens of times in the first
+tens of milliseconds; over the whole record the cost along the direction the tip sees least
+(on the paper scene the difference of two clearances) is a sawtooth of valleys a fraction of a
+micrometre wide, and a local fit from a start tens of micrometres away stops in the first one
+it meets. Over a window holding only each journal's first impact the cost is one valley, or a
+few. The window is grown geometrically, each stage's fit started at the previous estimate: a
+longer window narrows the valleys, and the previous estimate lies in the true one. Short
+windows are cheap: each stage's runs end at the window's end.
 """
 
 from __future__ import annotations
@@ -58,9 +56,8 @@ class Stage:
 HELD_RELATIVE_STD = 1.0
 """A parameter whose standard deviation over a window, at the stage's start, exceeds this
 fraction of its value (or of its physical range where its value is 0) is held at its current
-value in that stage: a window too short to see it (friction over the first impacts: σ about
-37 times its value at 5 ms on the paper scene) would otherwise drive it to a bound, from
-which the later stages do not return."""
+value in that stage: a window too short to see it (friction over the first impacts) would
+otherwise drive it to a bound, from which the later stages do not return."""
 
 
 def horizon_windows(t: np.ndarray, columns: int, n_free: int, first: float,
@@ -90,9 +87,8 @@ WINDOW_MODEL_ERROR = 1.0
 """The most the runs at a window's loosened tolerances may differ from those at the fit's
 own, as a chi² (the whitened difference's sum of squares) at the best track's estimate: the
 chi² of two fits then differ by about the model's error at most, far inside the margins the
-tracks are compared by. A loosening that keeps a short window's runs within the noise can
-move a long one's by thousands of chi² (100 times looser on a fast excitation: the truth's
-chi² over 1.5 s 38 000 instead of 1 560), and ranks the tracks by the integrator's error."""
+tracks are compared by. A loosening that keeps a short window's runs within the noise can move
+a long one's by thousands of chi², and would rank the tracks by the integrator's error."""
 
 
 def window_looseness(predictor: Predictor, weights: np.ndarray, x: np.ndarray, end: float,
@@ -113,8 +109,7 @@ def window_looseness(predictor: Predictor, weights: np.ndarray, x: np.ndarray, e
     def outputs(factor: float) -> np.ndarray | None:
         nonlocal runs
         part, scene = _window_problem(predictor, end, factor)
-        probe = Predictor(scene, predictor.model, predictor.free, part,
-                          compiled=predictor.compiled)
+        probe = Predictor(scene, predictor.model, predictor.free, part, compiled=predictor.compiled)
         try:
             return probe.outputs(x, with_jacobian=False)
         except TrialFailed:
@@ -143,10 +138,9 @@ def window(measured: Measured, end: float) -> Measured:
 @dataclass(frozen=True)
 class ValleyScan:
     """Lines of ``points`` plain runs over the first window of at least ``window`` (s),
-    through the best track's estimate along the directions the impacts make rugged,
-    reaching ``reach`` times ``scale`` (one number per free parameter: for the clearances the
-    grid's spacing) either side; its ``keep``
-    lowest local minima become tracks beside the ones carried."""
+    through the best track's estimate along the directions the impacts make rugged, reaching
+    ``reach`` times ``scale`` (one number per free parameter: for the clearances the grid's
+    spacing) either side; its ``keep`` lowest local minima become tracks beside those carried."""
 
     window: float
     points: int
@@ -156,41 +150,34 @@ class ValleyScan:
 
     @property
     def held_before(self) -> np.ndarray:
-        """The parameters the windows shorter than the scan's hold (those the lines do not
-        move: fitted over the whole record before the grid)."""
+        """The parameters held before the scan's window (those its lines do not move)."""
         return np.asarray(self.scale) == 0
 
 
 def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
-                 alternatives: np.ndarray, max_evaluations: int, first: float,
-                 growth: float, valley: ValleyScan | None = None, looser: float = 1.0,
-                 workers: int = 1, opening: ValleyScan | None = None
-                 ) -> tuple[np.ndarray, list[Stage], int]:
+                 alternatives: np.ndarray, max_evaluations: int, first: float, growth: float,
+                 valley: ValleyScan | None = None, looser: float = 1.0, workers: int = 1,
+                 opening: ValleyScan | None = None) -> tuple[np.ndarray, list[Stage], int]:
     """The estimates after the windows shorter than the record (the surviving tracks, best
     first), the stages, and the runs they took.
 
     Each row of ``tracks`` is a start carried through the windows on its own; after each
-    window a track whose chi² lies more than TRACK_MARGIN above the best track's,
-    or whose estimate joins a better track's, is dropped (a longer window only sharpens the
-    difference). With a single track the first window's fit tries ``alternatives`` while
-    its fit does not explain that window within the noise. A stage whose every run
-    stops ends the continuation at the previous estimates (the full-record fit follows).
-    The windows' runs use the fit's tolerances times ``looser`` at most (each window the
-    loosest that keeps its runs within the noise, :func:`window_looseness`; each
-    window's fit only has to land in the right valley; the whole-record fit, at the fit's
-    tolerances, sets the estimate), and each window's fit before the line scan at most
-    WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first adds the
-    lowest minima along lines through the best estimate as tracks (and so does each later
-    window, its lines reaching ``growth`` times less far): over windows of a few tenths of
-    a second the valleys along the rugged directions are narrow, and a track carried from
-    the short windows can sit a valley or two from the true one. Before the scan's window
-    the parameters the lines do not move (fitted over the whole record before) are held: a
-    short window sees them barely and, left free, they absorb the clearances' misfit. With
-    ``opening``, lines of the same kind through the best track's start put their lowest
-    minima in its place before the first window's fits."""
+    window a track whose chi² lies more than TRACK_MARGIN above the best track's, or whose
+    estimate joins a better track's, is dropped. With a single track the first window's fit
+    tries ``alternatives`` while it does not explain that window within the noise. A stage
+    whose every run stops ends the continuation at the previous estimates. The windows' runs
+    use the fit's tolerances times ``looser`` at most (:func:`window_looseness`: a window's
+    fit only has to land in the right valley), and each window's fit before the line scan at
+    most WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first
+    adds the lowest minima along lines through the best estimate as tracks (and so does each
+    later window, its lines reaching ``growth`` times less far): over a few tenths of a second
+    the rugged directions' valleys are narrow, and a track carried from the short windows can
+    sit a valley or two from the true one. Before the scan's window the parameters the lines do
+    not move are held: a short window barely sees them and, left free, they absorb the
+    clearances' misfit. With ``opening``, lines of the same kind through the best track's start
+    put their lowest minima in its place before the first window's fits."""
     measured = predictor.measured
-    ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first,
-                           growth)
+    ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first, growth)
     alive = [np.asarray(x, dtype=float) for x in tracks]
     labels = list(range(len(alive)))
     stages: list[Stage] = []
@@ -206,13 +193,11 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
         dof = max(part.size - predictor.free.size, 1)
         scans_here = []
         if k == 0 and opening is not None:
-            # through the best grid point; its minima are fitted over this window, where
-            # their valleys are widest
+            # through the best grid point; its minima are fitted here, where valleys are widest
             scans_here.append(opening)
         if valley is not None and end >= valley.window * (1 - 1e-9):
             scanned = True
-            # each later window's lines reach less far (its valleys are narrower, and the
-            # tracks nearer them) with the same number of runs: finer steps
+            # each later window's lines reach less far (narrower valleys, tracks nearer them)
             scans_here.append(dataclasses.replace(valley, reach=valley.reach / growth**scans))
             scans += 1
         for scan in scans_here:
@@ -242,16 +227,19 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     return np.array(alive).reshape(-1, predictor.free.size), stages, runs
 
 
-def _line_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
-                 weights: np.ndarray, x: np.ndarray, scan: ValleyScan, workers: int
-                 ) -> tuple[list[np.ndarray], int]:
-    """The ``scan.keep`` lowest minima of the window's chi² along ``scan``'s lines through
-    ``x`` (across the directions :func:`_rugged` finds there), and the runs."""
-    directions, runs = _rugged(predictor, stage_scene, part, weights, x,
-                               np.asarray(scan.scale))
-    found, more = _valley_minima(predictor, stage_scene, part, weights, x, directions, scan,
-                                 workers)
-    return found, runs + more
+def _line_minima(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
+                 x: np.ndarray, scan: ValleyScan, workers: int) -> tuple[list[np.ndarray], int]:
+    """The ``scan.keep`` lowest local minima of the window's chi² along ``scan``'s lines
+    through ``x`` (across the directions :func:`_rugged` finds there), and the runs."""
+    directions, runs = _rugged(predictor, stage_scene, part, weights, x, np.asarray(scan.scale))
+    steps = np.linspace(-scan.reach, scan.reach, scan.points)
+    lines, values, more = _lines_chi2(predictor, stage_scene, part, weights, x, directions,
+                                      steps, workers)
+    found: list[tuple[float, np.ndarray]] = []
+    for line, chi2 in zip(lines, values, strict=True):
+        found += [(chi2[i], line[i]) for i in line_minima(chi2)]
+    found.sort(key=lambda f: f[0])
+    return [point for _, point in found[:scan.keep]], runs + more
 
 
 Fitted = tuple[list[tuple[int, np.ndarray, float]], list[tuple[int, np.ndarray, float]],
@@ -295,10 +283,9 @@ def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: n
     """The directions to scan at ``x`` among the parameters whose ``scale`` is not 0 (a step
     of 1 moves each by at most its ``scale``): the eigenvectors of the window's scaled
     information matrix there, all but the weakest where more than one parameter moves; and
-    the runs. Inside one valley the weakest direction is
-    usually the smooth one the local fit follows (on the paper scene's tip the sum of the
-    clearances, which only the tip's slow sag sets), while the impacts make the cost rugged
-    across the others (the difference of the clearances, whose valleys a local fit cannot
+    the runs. Inside one valley the weakest direction is usually the smooth one the local fit
+    follows (on the paper scene the sum of the clearances), while the impacts make the cost
+    rugged across the others (the clearances' difference, whose valleys a local fit cannot
     leave)."""
     probe = Predictor(stage_scene, predictor.model, predictor.free, part,
                       compiled=predictor.compiled)
@@ -317,21 +304,6 @@ def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: n
     return out, probe.counter.simulations
 
 
-def _valley_minima(predictor: Predictor, stage_scene: Scene, part: Measured,
-                   weights: np.ndarray, x: np.ndarray, directions: list[np.ndarray],
-                   valley: ValleyScan, workers: int) -> tuple[list[np.ndarray], int]:
-    """The ``valley.keep`` lowest local minima of the window's chi² along the lines through
-    ``x`` (one per direction), and the runs."""
-    steps = np.linspace(-valley.reach, valley.reach, valley.points)
-    lines, values, runs = _lines_chi2(predictor, stage_scene, part, weights, x, directions,
-                                      steps, workers)
-    found: list[tuple[float, np.ndarray]] = []
-    for line, chi2 in zip(lines, values, strict=True):
-        found += [(chi2[i], line[i]) for i in line_minima(chi2)]
-    found.sort(key=lambda f: f[0])
-    return [point for _, point in found[:valley.keep]], runs
-
-
 def _window_problem(predictor: Predictor, end: float, looser: float) -> tuple[Measured, Scene]:
     """The samples up to ``end`` and the scene whose runs end at the output step holding it,
     at the fit's tolerances times ``looser``."""
@@ -341,9 +313,8 @@ def _window_problem(predictor: Predictor, end: float, looser: float) -> tuple[Me
     return window(predictor.measured, end), loosened(scene.with_run(t_end=t_end), looser)
 
 
-def _lines_chi2(predictor: Predictor, stage_scene: Scene, part: Measured,
-                weights: np.ndarray, x: np.ndarray, directions: list[np.ndarray],
-                steps: np.ndarray, workers: int
+def _lines_chi2(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
+                x: np.ndarray, directions: list[np.ndarray], steps: np.ndarray, workers: int
                 ) -> tuple[list[list[np.ndarray]], list[np.ndarray], int]:
     """The lines through ``x`` (``x + s direction`` for each of ``steps``, inside the
     bounds, one per direction), the window's chi² along each, and the runs."""
@@ -376,8 +347,7 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
         return (None, x), runs
     stage = probe.for_free(_holding(predictor.free, x, held))
     try:
-        x_next, record = multi_start(stage, weights, starts, max_evaluations,
-                                     stop_early=True)
+        x_next, record = multi_start(stage, weights, starts, max_evaluations, stop_early=True)
     except SimulationError:
         return None, runs + stage.counter.simulations
     runs += stage.counter.simulations
@@ -391,19 +361,16 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
 
 
 WINDOW_EVALUATIONS = 20
-"""Least-squares evaluations at most per window before the line scan (those windows only
-have to bring each track near its valley; the later ones, whose valleys are a fraction of a
-micrometre wide, get the fit's full count)."""
+"""Least-squares evaluations at most per window before the line scan (those windows only have to
+bring each track near its valley; the later ones, with far narrower valleys, get the full count)."""
 
 TRACK_MARGIN = 50.0
 """A track whose chi² over a window lies more than this above the best track's is dropped
 (or more than CHI2_SIGMAS sqrt(2 dof), where that is less; either times the best track's
-chi²/dof where that exceeds 1). Two fits of the same data differ
-in chi² by the model's difference, not by the noise: the true parameters lie above the best
-fit by a chi² of 3 degrees of freedom for three free parameters (over 21 once in 10⁴), and
-the windows' fits, at looser tolerances and a bounded number of evaluations, stop short of
-their floor by a few more. A longer window only sharpens the difference. The whole-record
-stage ranks the surviving tracks by the same margin (one run each) before fitting them."""
+chi²/dof where that exceeds 1). Two fits of the same data differ in chi² by the model's
+difference, not by the noise: the true parameters lie above the best fit by a chi² of 3 degrees
+of freedom for three free parameters (over 21 once in 10⁴), and the windows' fits stop short of
+their floor by a few more. The whole-record stage ranks the surviving tracks by this margin."""
 
 SAME_ESTIMATE = 1e-4
 """Two tracks whose estimates differ by less than this fraction of each parameter's value
@@ -414,15 +381,13 @@ def _surviving(results: list[tuple[int, np.ndarray, float]], dof: int,
                free: FreeParameters) -> list[tuple[int, np.ndarray, float]]:
     """The tracks worth carrying to the next window, best first."""
     ordered = sorted(results, key=lambda r: r[2])
-    best = ordered[0][2] if ordered else math.inf
-    kept: list[tuple[int, np.ndarray, float]] = []
     if not ordered:
-        return kept
-    # Where even the best track does not explain the window (a parameter held at a value
-    # the clearances' misfit set, the model short of something), the tracks' chi² differ by
-    # that misfit as much as by their valleys: the margin grows with the best's chi²/dof,
-    # as a covariance is scaled by it (on a multi-sine with the friction held 4 % off, the
-    # truth's track lay 64 above the best over 0.16 s at chi²/dof 2.6, and was dropped).
+        return []
+    best = ordered[0][2]
+    kept: list[tuple[int, np.ndarray, float]] = []
+    # Where even the best track does not explain the window (a parameter held off, the model
+    # short of something), the tracks' chi² differ by that misfit as much as by their
+    # valleys: the margin grows with the best's chi²/dof, as a covariance is scaled by it.
     margin = min(TRACK_MARGIN, CHI2_SIGMAS * math.sqrt(2 * dof)) * max(1.0, best / dof)
     for label, x, chi2 in ordered:
         if chi2 > best + margin:
@@ -435,8 +400,7 @@ def _surviving(results: list[tuple[int, np.ndarray, float]], dof: int,
 
 
 def _unseen(probe: Predictor, weights: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """Which parameters the window cannot determine from ``x`` (relative std over
-    HELD_RELATIVE_STD)."""
+    """Which parameters the window cannot determine at ``x`` (relative std > HELD_RELATIVE_STD)."""
     free = probe.free
     jac = whitened(probe.jacobian(x), weights)
     scale = np.where(x != 0, np.abs(x), free.upper - free.lower)

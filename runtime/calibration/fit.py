@@ -1,14 +1,12 @@
 """The fit: weighted least squares on the compiled model, from several starts where needed.
 
 ``scipy.optimize.least_squares`` (trust-region reflective, inside the physical bounds,
-``x_scale="jac"``) minimises the residuals whitened by the sensors' standard deviations,
-with the Jacobian from the model's sensitivities. Impacts make the cost multimodal in the
-clearances (an impact that moves past a sample changes the residual abruptly), so the fit is
-restarted from a Latin hypercube of starts around the first one when the first optimum does
-not fit the data within the noise (chi² far above its degrees of freedom). A multi-start
-rather than a continuation in the contact stiffness: the stiffness is itself a parameter a
-user may free, and the restarts are independent runs that cost no more than the
-continuation's ladder of fits.
+``x_scale="jac"``) minimises the residuals whitened by the sensors' standard deviations, with
+the Jacobian from the model's sensitivities. Impacts make the cost multimodal in the clearances,
+so where the first optimum does not fit the data within the noise (chi² far above its degrees
+of freedom) the fit restarts from a Latin hypercube of starts around the first one. A
+multi-start rather than a continuation in the contact stiffness: the stiffness may itself be
+free, and independent restarts cost no more than the continuation's ladder of fits.
 """
 
 from __future__ import annotations
@@ -23,13 +21,8 @@ import numpy as np
 
 from jointplay.calibration.measured import Measured
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import (
-    Predictor,
-    TrialFailed,
-    chi2_at,
-    line_minima,
-    whitened,
-)
+from jointplay.calibration.predict import Predictor, TrialFailed, chi2_at, line_minima, whitened
+from jointplay.common.errors import SimulationError
 from jointplay.common.pool import parallel_map
 
 CHI2_SIGMAS = 5.0
@@ -76,30 +69,24 @@ def starts_around(free: FreeParameters, count: int, spread: float, seed: int) ->
 def least_squares_fit(predictor: Predictor, sigma: np.ndarray, starts: np.ndarray,
                       max_evaluations: int, scan: Scan | None = None,
                       leading: int = 1, workers: int = 1) -> Optimum:
-    """The best optimum over ``starts`` (then along the scan of the weakest direction, when
-    asked and the fit does not yet explain the data), ``sigma`` the noise (stated or estimated
-    from the data's scatter). The first
-    ``leading`` starts (where more than one: each fitted, on up to ``workers`` processes,
-    the best kept) come first, the rest (a multi-start's) last."""
-    weights = sigma
-    best, record = multi_start(predictor, weights, starts[:leading], max_evaluations,
-                               stop_early=leading == 1, workers=workers,
-                               settle=True)
-    if scan is not None and scan.points > 0 and not _explains(min(record, key=_chi2),
-                                                              predictor):
-        seeds = scan_weakest_direction(predictor, weights, best, starts[0], scan)
-        more_best, more = multi_start(predictor, weights, np.vstack([best, seeds]),
-                                       max_evaluations, stop_early=True, settle=True)
+    """The best optimum over ``starts``, ``sigma`` the noise (stated or estimated). The first
+    ``leading`` starts come first (more than one: each fitted, on up to ``workers`` processes,
+    the best kept); then, while the fit does not explain the data, the scan of the weakest
+    direction (when asked) and the rest of ``starts`` (a multi-start's)."""
+    best, record = multi_start(predictor, sigma, starts[:leading], max_evaluations,
+                               stop_early=leading == 1, workers=workers, settle=True)
+    if scan is not None and scan.points > 0 and not _explains(record, predictor):
+        seeds = scan_weakest_direction(predictor, sigma, best, starts[0], scan)
+        best, more = multi_start(predictor, sigma, np.vstack([best, seeds]), max_evaluations,
+                                 stop_early=True, settle=True)
         record += more[1:]
-        best = more_best
-    if len(starts) > leading and not _explains(min(record, key=_chi2), predictor):
-        more_best, more = multi_start(predictor, weights, np.vstack([best, starts[leading:]]),
-                                       max_evaluations, stop_early=True, settle=True)
+    if len(starts) > leading and not _explains(record, predictor):
+        best, more = multi_start(predictor, sigma, np.vstack([best, starts[leading:]]),
+                                 max_evaluations, stop_early=True, settle=True)
         record += more[1:]
-        best = more_best
-    residuals = whitened(predictor.outputs(best) - predictor.measured.values, weights)
-    jacobian = whitened(predictor.jacobian(best), weights)
-    return Optimum(best, weights, residuals, jacobian, tuple(record))
+    residuals = whitened(predictor.outputs(best) - predictor.measured.values, sigma)
+    jacobian = whitened(predictor.jacobian(best), sigma)
+    return Optimum(best, sigma, residuals, jacobian, tuple(record))
 
 
 @dataclass(frozen=True)
@@ -118,12 +105,11 @@ def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.n
     """Starts for local fits: the lowest local minima of chi² along the weakest direction.
 
     Impacts make the cost rugged along the direction the data determine least (on the paper
-    scene, the difference of the two clearances: their sum is set by the tip's sag, the
-    difference by the impact sequence), with minima a fraction of a micrometre apart; a local
-    fit from the start stops in the first one. The first fit sits on the valley floor of the
-    well-determined directions, so a line along the weakest direction samples the minima at
-    one run per point; a basin narrower than the line's spacing can be missed (on the paper
-    scene the true one is under 0.1 µm wide in c2 - c3), which the chi² test then reports."""
+    scene the difference of the two clearances: the tip's sag sets their sum, the impact
+    sequence their difference), and a local fit from the start stops in the first minimum. The
+    first fit sits on the valley floor of the well-determined directions, so a line along the
+    weakest direction samples the minima at one run per point; a basin narrower than the line's
+    spacing can be missed, which the chi² test then reports."""
     free = predictor.free
     jac = whitened(predictor.jacobian(best), weights)
     width = np.where(start != 0, scan.spread * np.abs(start), scan.spread)
@@ -141,12 +127,7 @@ def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.n
     points = [np.clip(best + s * direction, free.lower, free.upper) for s in line]
     chi2, _ = chi2_at(predictor, weights, points)
     minima = line_minima(np.array(chi2))
-    return np.array([np.clip(best + line[i] * direction, free.lower, free.upper)
-                     for i in minima[:scan.refine]]).reshape(-1, free.size)
-
-
-def _chi2(start: Start) -> float:
-    return start.chi2
+    return np.array([points[i] for i in minima[:scan.refine]]).reshape(-1, free.size)
 
 
 def explaining_limit(dof: int) -> float:
@@ -156,8 +137,9 @@ def explaining_limit(dof: int) -> float:
     return dof + CHI2_SIGMAS * math.sqrt(2 * dof)
 
 
-def _explains(start: Start, predictor: Predictor) -> bool:
-    return start.chi2 <= explaining_limit(predictor.measured.size - predictor.free.size)
+def _explains(record: list[Start], predictor: Predictor) -> bool:
+    lowest = min(start.chi2 for start in record)
+    return lowest <= explaining_limit(predictor.measured.size - predictor.free.size)
 
 
 def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
@@ -167,15 +149,12 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
     one that explains the data. Without it the fits are independent and run on up to
     ``workers`` forked processes (their runs added to ``predictor``'s count). With
     ``settle``, each fit ends once settled (SETTLED_SIGMAS)."""
-    measured = predictor.measured
-    free = predictor.free
-    accept = explaining_limit(measured.size - free.size)
-    record: list[Start] = []
+    accept = explaining_limit(predictor.measured.size - predictor.free.size)
     best: np.ndarray | None = None
     best_chi2 = math.inf
     failures = []
+    done: list[Start] = []
     if stop_early or workers <= 1:
-        done = []
         for x0 in starts:
             done.append(_local_fit(predictor, weights, x0, max_evaluations, settle))
             if stop_early and done[-1].chi2 <= accept:
@@ -185,37 +164,30 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
             # counted here, in the worker: one worker may run several fits in turn
             before = dict(predictor.counter.by_kind)
             start = _local_fit(predictor, weights, starts[i], max_evaluations, settle)
-            return start, {k: v - before.get(k, 0)
-                           for k, v in predictor.counter.by_kind.items()}
+            return start, {k: v - before.get(k, 0) for k, v in predictor.counter.by_kind.items()}
 
-        pieces = parallel_map(fit, len(starts), workers)
-        done = []
-        for start, counts in pieces:
+        for start, counts in parallel_map(fit, len(starts), workers):
             done.append(start)
             for kind, n in counts.items():
                 predictor.counter.simulations += n
                 predictor.counter.by_kind[kind] = predictor.counter.by_kind.get(kind, 0) + n
     for start in done:
-        record.append(start)
         if start.failed:
             failures.append(start.message)
         elif start.chi2 < best_chi2:
             best, best_chi2 = np.array(start.end), start.chi2
     if best is None:
-        from jointplay.common.errors import SimulationError
-
         raise SimulationError(math.nan, "every start of the calibration stopped; the first: "
                               f"{failures[0]}")
-    return best, record
+    return best, done
 
 
 SETTLED_SIGMAS = 0.1
 """A local fit ends at its best point once the step it would try next lies within this many
-standard deviations of it, in the metric of the Jacobian there (scaled by sqrt(chi²/dof)
-where the fit does not yet explain the data): such a step changes chi² by a few hundredths,
-below the integrator's own scatter of chi² (about ±1 on the paper scene's whole record),
-where SciPy's ``xtol`` goes on shrinking the trust region through rejected runs. Only the
-fits on the whole record settle; the windows' fits keep SciPy's tolerances."""
+standard deviations of it, in the metric of the Jacobian there (scaled by sqrt(chi²/dof) where
+the fit does not yet explain the data): such a step changes chi² by a few hundredths, below the
+integrator's own scatter, where SciPy's ``xtol`` goes on shrinking the trust region through
+rejected runs. Only the fits on the whole record settle; the windows' keep SciPy's tolerances."""
 
 
 class _Settled(Exception):
@@ -231,10 +203,8 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
     dof = max(measured.size - free.size, 1)
     x0 = np.clip(x0, free.lower, free.upper)
     # The first evaluation is always followed by a Jacobian there; a later one only where its
-    # step is accepted (about half of them on the paper scene: the impacts make the cost
-    # rugged), so it runs without sensitivities (a fifth to a third of the cost) and the
-    # Jacobian, when asked for, takes a run with them.
-    first = [True]
+    # step is accepted (the impacts make the cost rugged), so it runs without sensitivities (a
+    # fifth to a third of the cost) and the Jacobian, when asked for, takes a run with them.
     evaluations = [0]
     last: list[Any] = [None, math.inf]  # the last point evaluated and its chi²
     # the accepted point: (x, whitened Jacobian, chi²)
@@ -243,7 +213,7 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
     def residuals(x: np.ndarray) -> np.ndarray:
         if settle and best[0] is not None and _within(x, best[0], dof):
             raise _Settled
-        wanted, first[0] = first[0], False
+        wanted = evaluations[0] == 0
         evaluations[0] += 1
         try:
             r = whitened(predictor.outputs(x, with_jacobian=wanted) - measured.values, weights)
@@ -265,20 +235,16 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
         return jac
 
     try:
-        fit = least_squares(
-            residuals, x0, jac=jacobian,
-            bounds=(free.lower, free.upper), x_scale="jac", method="trf",
-            max_nfev=max_evaluations)
+        fit = least_squares(residuals, x0, jac=jacobian, bounds=(free.lower, free.upper),
+                            x_scale="jac", method="trf", max_nfev=max_evaluations)
     except TrialFailed as err:
         return Start(tuple(x0), tuple(x0), math.inf, 0, str(err), failed=True)
     except _Settled:
         assert best[0] is not None  # only raised once a point was accepted
         x, _, chi2 = best[0]
-        return Start(tuple(x0), tuple(x), chi2, evaluations[0],
-                     f"settled: the next step lies within {SETTLED_SIGMAS} standard "
-                     "deviations of the best point")
-    return Start(tuple(x0), tuple(fit.x), 2.0 * float(fit.cost), int(fit.nfev),
-                 str(fit.message))
+        return Start(tuple(x0), tuple(x), chi2, evaluations[0], "settled: the next step lies "
+                     f"within {SETTLED_SIGMAS} standard deviations of the best point")
+    return Start(tuple(x0), tuple(fit.x), 2.0 * float(fit.cost), int(fit.nfev), str(fit.message))
 
 
 def _within(x: np.ndarray, best: tuple[np.ndarray, np.ndarray, float], dof: int) -> bool:
@@ -307,8 +273,7 @@ def residual_statistics(measured: Measured, fitted: np.ndarray, sigma: np.ndarra
     chi2 = float(np.sum((raw / sigma[None, :]) ** 2))
     dof = measured.size - n_free
     return {
-        "rms": {c: float(np.sqrt(np.mean(raw[:, k] ** 2)))
-                for k, c in enumerate(measured.columns)},
+        "rms": {c: float(np.sqrt(np.mean(raw[:, k] ** 2))) for k, c in enumerate(measured.columns)},
         "max_abs": {c: float(np.max(np.abs(raw[:, k]))) for k, c in enumerate(measured.columns)},
         "chi2": chi2,
         "dof": int(dof),

@@ -1,13 +1,11 @@
 """The global stage: a coarse grid of the free clearances on a short leading window.
 
 Over a window of a few tens of milliseconds each journal has made its first bounces, and the
-cost over the free clearances is a handful of valleys a few micrometres apart (on the paper
-scene at 20 ms, c2 and c3 each up to 50 % from 30 µm: the true valley is the lowest, about
-2 µm wide, with lower-lying neighbours along c2 - c3). A grid at a spacing near that width
-finds the valleys at one short run per point; its lowest local minima, the other free
-parameters held at their starts (on the paper scene the friction is barely seen over 20 ms),
-are the candidates the horizon continuation carries forward, each on its own track, until
-the longer windows tell them apart.
+cost over the free clearances is a handful of valleys a few micrometres apart and about 2 µm
+wide. A grid at a spacing near that width finds the valleys at one short run per point; its
+lowest local minima, the other free parameters held at their starts (such a window barely
+sees them), are the candidates the horizon continuation carries forward, each on its own
+track, until the longer windows tell them apart.
 """
 
 from __future__ import annotations
@@ -19,12 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from jointplay.calibration.continuation import (
-    _holding,
-    loosened,
-    window,
-    window_looseness,
-)
+from jointplay.calibration.continuation import _holding, _window_problem, loosened, window_looseness
 from jointplay.calibration.fit import multi_start
 from jointplay.calibration.parameters import FreeParameters
 from jointplay.calibration.predict import Predictor, chi2_at_points
@@ -73,11 +66,9 @@ def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
     """``start`` with the free parameters other than the clearances fitted over the whole
     record, the clearances held, the runs at the fit's tolerances times ``looser`` at most
     (:func:`~jointplay.calibration.continuation.window_looseness`); and the runs. Why: the
-    grid holds them, and they are far better determined by the whole record
-    than by the grid's window (on the paper scene the friction from 50 % away moves the tip by
-    millimetres over 2 s, the clearances by tens of micrometres: held at the scene's values,
-    the fit ends within 1.6 % of the true friction on benchmark draws 0, 3 and 4, where over
-    the first 20 ms it barely moves)."""
+    grid holds them, and the whole record determines them far better than the grid's window
+    (on the paper scene the friction moves the tip by millimetres over 2 s, the clearances by
+    tens of micrometres, while over the first 20 ms it barely moves)."""
     free = predictor.free
     axes = clearance_axes(free.names)
     if not axes or len(axes) == free.size:
@@ -86,9 +77,8 @@ def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
     held[axes] = True
     looser, runs = window_looseness(predictor, weights, start, float(predictor.measured.t[-1]),
                                     looser)
-    coarse = loosened(predictor.scene, looser)
-    probe = Predictor(coarse, predictor.model, _holding(free, start, held), predictor.measured,
-                      compiled=predictor.compiled)
+    probe = Predictor(loosened(predictor.scene, looser), predictor.model,
+                      _holding(free, start, held), predictor.measured, compiled=predictor.compiled)
     try:
         x, _ = multi_start(probe, weights, start[None, :], max_evaluations, stop_early=False)
     except SimulationError:
@@ -105,22 +95,14 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
     is no longer than the window."""
     free = predictor.free
     axes = clearance_axes(free.names)
-    measured = predictor.measured
-    if not axes or grid.window_end >= measured.t[-1]:
+    if not axes or grid.window_end >= predictor.measured.t[-1]:
         return None
-    per_axis = max(3, math.floor((grid.points ** 2) ** (1.0 / len(axes)) + 1e-9))
-    per_axis = min(per_axis, grid.points)
+    per_axis = min(max(3, math.floor((grid.points ** 2) ** (1.0 / len(axes)) + 1e-9)),
+                   grid.points)
     values = [_axis(free, start, k, grid.spread, per_axis) for k in axes]
-    part = window(measured, grid.window_end)
-    scene = predictor.scene
-    step = scene.run.output_step
-    run = scene.run
     looser, checks = window_looseness(predictor, weights, start, grid.window_end, grid.looser)
-    coarse = loosened(scene.with_run(t_end=min(run.t_end, math.ceil(grid.window_end / step
-                                                                    - 1e-9) * step)),
-                      looser)
+    part, coarse = _window_problem(predictor, grid.window_end, looser)
     probe = Predictor(coarse, predictor.model, free, part, compiled=predictor.compiled)
-    shape = (per_axis,) * len(axes)
     indices = list(itertools.product(range(per_axis), repeat=len(axes)))
 
     def point(index: tuple[int, ...]) -> np.ndarray:
@@ -130,34 +112,27 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
             x[k] = values[a][index[a]]
         return x
 
-    points = [point(index) for index in indices]
-    values_chi2, runs = chi2_at_points(probe, weights, points, workers)
-    runs += checks
-    chi2 = np.full(shape, np.inf)
-    for index, value in zip(indices, values_chi2, strict=True):
-        chi2[index] = value
+    values_chi2, runs = chi2_at_points(probe, weights, [point(i) for i in indices], workers)
+    # ``indices`` run in row-major order, the order of a reshape
+    chi2 = np.array(values_chi2, dtype=float).reshape((per_axis,) * len(axes))
     minima = _local_minima(chi2)
     minima.sort(key=lambda index: chi2[index])
     chosen = minima[:grid.candidates]
-    candidates = [point(index) for index in chosen]
-    return GridResult(np.array(candidates).reshape(-1, free.size),
+    return GridResult(np.array([point(index) for index in chosen]).reshape(-1, free.size),
                       tuple(float(chi2[i]) for i in chosen),
                       tuple(free.names[k] for k in axes), per_axis, float(part.t[-1]),
-                      runs)
+                      runs + checks)
 
 
 def grid_scale(free: FreeParameters, start: np.ndarray, grid: GridResult,
                spread: float) -> tuple[float, ...]:
     """Per free parameter, the grid's spacing (the clearances: how far the grid leaves each
     one uncertain) or 0 (the others, fitted over the whole record before the grid)."""
-    out = []
-    for k, name in enumerate(free.names):
-        width = 0.0
-        if name in grid.axes:
-            values = _axis(free, start, k, spread, grid.points_per_axis)
-            width = float(values[1] - values[0])
-        out.append(width)
-    return tuple(out)
+    def spacing(k: int) -> float:
+        values = _axis(free, start, k, spread, grid.points_per_axis)
+        return float(values[1] - values[0])
+
+    return tuple(spacing(k) if name in grid.axes else 0.0 for k, name in enumerate(free.names))
 
 
 def _axis(free: FreeParameters, start: np.ndarray, k: int, spread: float,
@@ -172,10 +147,7 @@ def _local_minima(chi2: np.ndarray) -> list[tuple[int, ...]]:
     padded = np.pad(chi2, 1, constant_values=np.inf)
     out = []
     for index in itertools.product(*(range(n) for n in chi2.shape)):
-        value = chi2[index]
-        if not math.isfinite(value):
-            continue
-        block = padded[tuple(slice(i, i + 3) for i in index)]
-        if value <= block.min():
+        if math.isfinite(chi2[index]) \
+                and chi2[index] <= padded[tuple(slice(i, i + 3) for i in index)].min():
             out.append(index)
     return out

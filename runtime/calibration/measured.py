@@ -63,19 +63,16 @@ def read_measured(path: str | Path, model: Model) -> Measured:
 def checked_for_scene(measured: Measured, scene: Scene, n_free: int) -> Measured:
     """``measured`` if its times lie inside the scene's run and it holds more numbers than
     free parameters; else the error naming the file."""
-    t_end = scene.run.t_end
+    t_end, source = scene.run.t_end, measured.source
     if measured.t[0] < 0.0:
-        raise DescriptionError("time", f"{measured.t[0]:g} s is before the run starts "
-                               "(0 s); measured times must lie in the scene's run",
-                               measured.source)
+        raise DescriptionError("time", f"{measured.t[0]:g} s is before the run starts (0 s); "
+                               "measured times must lie in the scene's run", source)
     if measured.t[-1] > t_end * (1 + 1e-12):
         raise DescriptionError("time", f"{measured.t[-1]:g} s is after the scene's run ends "
-                               f"({t_end:g} s); drop the later rows or lengthen run.t_end",
-                               measured.source)
+                               f"({t_end:g} s); drop the later rows or lengthen run.t_end", source)
     if measured.size <= n_free:
         raise DescriptionError("time", f"{measured.size} measured numbers cannot determine "
-                               f"{n_free} free parameters; measure longer or free fewer",
-                               measured.source)
+                               f"{n_free} free parameters; measure longer or free fewer", source)
     return measured
 
 
@@ -94,21 +91,18 @@ def noise_levels(noise: float | Mapping[str, float] | None,
         if missing:
             raise DescriptionError(f"noise {missing[0]}", "has no standard deviation; give "
                                    "one for every measured column, or one number for all")
-        levels = [noise[c] for c in measured.columns]
-        names = list(measured.columns)
+        pairs = [(c, noise[c]) for c in measured.columns]
     else:
-        levels = [noise] * len(measured.columns)
-        names = ["noise"] * len(measured.columns)
-    for name, level in zip(names, levels, strict=True):
+        pairs = [("noise", noise)] * len(measured.columns)
+    for name, level in pairs:
+        flag = name if name == "noise" else f"noise {name}"
         if isinstance(level, bool) or not isinstance(level, (int, float, np.floating)) \
                 or not math.isfinite(level) or level <= 0:
-            raise DescriptionError(name if name == "noise" else f"noise {name}",
-                                   f"must be a finite standard deviation > 0, got {level!r}")
+            raise DescriptionError(flag, f"must be a finite standard deviation > 0, got {level!r}")
         if level < MIN_NOISE:
-            raise DescriptionError(name if name == "noise" else f"noise {name}",
-                                   f"must be at least {MIN_NOISE:g} (a standard deviation in "
-                                   f"m or rad; no sensor resolves less), got {level!r}")
-    return np.asarray(levels, dtype=float)
+            raise DescriptionError(flag, f"must be at least {MIN_NOISE:g} (a standard deviation "
+                                   f"in m or rad; no sensor resolves less), got {level!r}")
+    return np.asarray([level for _, level in pairs], dtype=float)
 
 
 def grid_indices(t: np.ndarray, output_step: float) -> np.ndarray | None:
@@ -120,9 +114,9 @@ def grid_indices(t: np.ndarray, output_step: float) -> np.ndarray | None:
 
 
 def _from_csv(path: Path, model: Model) -> Measured:
-    return read_csv_table(path, "time, tip_x, ...",
-                          lambda header, source: _checked_header(header, model, source),
-                          _checked_value)
+    return read_csv_table(path, "time, tip_x, ...", lambda header, source: checked_header(
+        header, [*TIP_COLUMNS, *angle_columns(model)], source,
+        "is not a column this model can be compared on"), _checked_value)
 
 
 def read_csv_table(path: Path, example: str,
@@ -133,8 +127,8 @@ def read_csv_table(path: Path, example: str,
 
     ``example`` begins the header the error for an empty file suggests; ``header_columns``
     checks the header (stripped cells) and gives the measured columns; ``check_value``, if
-    given, checks each finite value (value, its text, ``row N column NAME``, column) beyond
-    being a number. Both the scene and the mechanism calibrations read their tables here.
+    given, checks each finite value beyond being a number (value, ``row N column NAME``,
+    column, file). The scene's and the mechanism's calibrations both read their tables here.
     """
     source = str(path)
     if path.stat().st_size > MAX_TABLE_BYTES:
@@ -181,8 +175,7 @@ def checked_header(header: Sequence[str], allowed: Sequence[str], source: str,
     seen: set[str] = set()
     for name in header:
         if name in seen:
-            raise DescriptionError(name or "header", "column appears twice; name each once",
-                                   source)
+            raise DescriptionError(name or "header", "column appears twice; name each once", source)
         seen.add(name)
         if refused and name in refused:
             raise DescriptionError(name, refused[name], source)
@@ -194,11 +187,6 @@ def checked_header(header: Sequence[str], allowed: Sequence[str], source: str,
         raise DescriptionError("header", "has a time column only; add measured columns ("
                                f"{listed})", source)
     return columns
-
-
-def _checked_header(header: Sequence[str], model: Model, source: str) -> list[str]:
-    return checked_header(header, [*TIP_COLUMNS, *angle_columns(model)], source,
-                          "is not a column this model can be compared on")
 
 
 def _cell(text: str, row: int, column: str, source: str) -> float:
@@ -238,27 +226,25 @@ def checked_times(measured: Measured) -> Measured:
 def _from_results(path: Path, model: Model) -> Measured:
     from jointplay.results.write import read
 
+    source = str(path)
     try:
         result = read(path)
     except DescriptionError:
         raise
     except (OSError, ValueError, KeyError) as err:
-        raise DescriptionError("measured", f"cannot be read as a results file ({err}); give "
-                               "one written by jointplay simulate --out, or a CSV",
-                               str(path)) from None
-    angles = [c for c in angle_columns(model) if c in result.coordinate_names]
-    missing = [c for c in angle_columns(model) if c not in result.coordinate_names]
+        raise DescriptionError("measured", f"cannot be read as a results file ({err}); give one "
+                               "written by jointplay simulate --out, or a CSV", source) from None
+    angles = angle_columns(model)
+    missing = [c for c in angles if c not in result.coordinate_names]
     if missing:
         raise DescriptionError("measured", f"holds no {missing[0]}: it is a run of another "
-                               "robot; measure this scene's robot", str(path))
-    columns = [*TIP_COLUMNS, *angles]
+                               "robot; measure this scene's robot", source)
     values = np.column_stack([result.tip_position[:, 0], result.tip_position[:, 1],
-                              *(result.q[:, result.coordinate_names.index(c)]
-                                for c in angles)])
+                              *(result.q[:, result.coordinate_names.index(c)] for c in angles)])
     if not np.all(np.isfinite(values)):
-        raise DescriptionError("measured", "holds values that are not finite", str(path))
+        raise DescriptionError("measured", "holds values that are not finite", source)
     if np.any(np.abs(values) > MAX_MEASURED):
         raise DescriptionError("measured", f"holds values beyond ±{MAX_MEASURED:g} (m or rad); "
-                               "give a run of a real robot", str(path))
-    return checked_times(Measured(str(path), np.asarray(result.t, float), tuple(columns),
-                                   values))
+                               "give a run of a real robot", source)
+    t = np.asarray(result.t, float)
+    return checked_times(Measured(source, t, (*TIP_COLUMNS, *angles), values))

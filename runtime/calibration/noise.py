@@ -2,11 +2,10 @@
 
 Noise not stated is estimated before any fit from each column's sample-to-sample scatter
 (difference-based estimation: Rice, Ann. Statist. 12 (1984) 1215; Gasser, Sroka and
-Jennen-Steinmetz, Biometrika 73 (1986) 625): a difference of order k removes a smooth signal
-up to its k-th derivative times the step to the k. The order rises while the scale still
-falls by more than a tenth, then one more. The scale is robust (the root mean square within
-OUTLIER_SIGMAS of the median absolute deviation, corrected for the cut): an impact makes the
-signal rough over a few samples. No model enters, so a misfit cannot inflate it.
+Jennen-Steinmetz, Biometrika 73 (1986) 625): a difference of order k removes a smooth signal up
+to its k-th derivative times the step to the k; the order rises while the scale still falls by
+more than a tenth, then one more. The scale is robust (OUTLIER_SIGMAS), as an impact makes the
+signal rough over a few samples; no model enters, so a misfit cannot inflate it.
 
 A fit explains the data when its chi² lies in its two-sided 99 % range (for an estimated
 noise widened by the estimate's own spread) and each column's residuals pass the Ljung-Box
@@ -22,13 +21,12 @@ import numpy as np
 from jointplay.calibration.measured import Measured
 from jointplay.common.errors import DescriptionError
 
-MAX_ORDER = 8
-OUTLIER_SIGMAS = 3.0
+MAX_ORDER = 8  # the highest order of difference tried
+OUTLIER_SIGMAS = 3.0  # the scale: root mean square within this many sigmas, corrected for the cut
 FALLING = 0.9  # the order rises while the next order's scale is below this fraction
 MAD_TO_SIGMA = 1.482602218505602  # 1 / Phi^-1(3/4)
-LEVEL = 0.01
-LAGS = 20
-"""The share of fits of correct models with the right noise that the check flags."""
+LEVEL = 0.01  # the share of fits of correct models with the right noise that the check flags
+LAGS = 20  # the autocorrelations the Ljung-Box test sums
 
 
 def _pseudo_residuals(t: np.ndarray, y: np.ndarray, order: int) -> np.ndarray:

@@ -1,6 +1,4 @@
-"""How a calibration runs: :class:`CalibrationOptions`, the options of
-:func:`jointplay.calibration.calibrate` (``jointplay calibrate``'s flags), each checked on
-construction."""
+""":class:`CalibrationOptions`, the options of :func:`jointplay.calibration.calibrate`."""
 
 from __future__ import annotations
 
@@ -21,14 +19,11 @@ class CalibrationOptions:
     Attributes
     ----------
     tighten : float
-        The runs of the fit use the scene's tolerances divided by this (a 1 µm sensor needs a
-        model far more accurate than the scene's working accuracy of about 3 µm at the tip).
+        The fit's runs use the scene's tolerances divided by this (a 1 µm sensor needs a model
+        far more accurate than the scene's working accuracy of about 3 µm at the tip).
     starts : int
-        Starts of the multi-start at most: the first the given start, the rest a Latin
-        hypercube within ±``spread`` (relative) of it, run only while the best fit does not
-        explain the data within the stated noise; only without the continuation
-        (``horizon_first`` 0): with it, the tracks it carries are the whole-record fit's
-        starts.
+        Starts of the multi-start at most (the given one, then a Latin hypercube within
+        ±``spread``) while the best fit does not explain the data; not with the continuation.
     spread : float
         The relative half-width of the region the starts and the grid cover.
     seed : int
@@ -38,31 +33,26 @@ class CalibrationOptions:
     profile_points : int
         Points of each cost profile (0: none).
     scan_points : int
-        Runs along the weakest direction of the first optimum (0: no scan), local fits from
-        the ``refine`` lowest minima along it; only without the continuation, as ``starts``.
+        Runs along the weakest direction of the first optimum (0: no scan); only without the
+        continuation.
     refine : int
-        See ``scan_points``.
+        How many of the scan's lowest minima start a local fit.
     horizon_first : float
-        The first window (s) of the horizon continuation, grown by ``horizon_growth`` each stage
-        up to the whole record, each stage started at the last one's estimate (0: no
-        continuation, the fit starts on the whole record from ``starts``, then the scan).
+        The first window (s) of the horizon continuation, each stage started at the last one's
+        estimate (0: no continuation; the fit starts on the whole record from ``starts``).
     horizon_growth : float
-        See ``horizon_first``.
+        The factor each window of the continuation grows by, up to the whole record.
     grid_window : float
-        The window (s) of the global stage: a grid of ``grid_points`` values of each free
-        clearance across ±``spread`` of the start, its runs at the fit's tolerances times
-        ``window_looser`` at most (as are the runs on every window shorter than the record:
-        each window the loosest of ``window_looser``, a tenth of it, ..., 1 whose runs stay
-        within a chi² of 1 of the fit's own at the best estimate), whose
-        ``grid_candidates`` lowest local minima each start a track of the continuation, from
-        ``grid_window`` on (0: no grid; the continuation starts at ``horizon_first`` from the
-        start).
+        The window (s) of the global stage: a grid over ±``spread`` of the start in each free
+        clearance, whose lowest local minima each start a track of the continuation from this
+        window on (0: no grid; the continuation starts at ``horizon_first`` from the start).
     grid_points : int
-        See ``grid_window``.
+        Grid values of each free clearance.
     grid_candidates : int
-        See ``grid_window``.
+        How many of the grid's lowest local minima start a track.
     window_looser : float
-        See ``grid_window``.
+        Runs on windows shorter than the record (the grid's too) use the fit's tolerances times
+        the loosest of this, a tenth of it, ..., 1 within a chi² of 1 of the fit's own.
     valley_window : float
         The valley lines' first window, s (see :func:`continuation`).
     valley_points : int
@@ -70,20 +60,14 @@ class CalibrationOptions:
     valley_keep : int
         Minima kept per valley line (and per grid line).
     grid_line_points : int
-        Runs on the grid's window along the clearances' rugged directions (those of the valley
-        lines) through the best grid point, GRID_LINE_REACH grid spacings either side, whose
-        ``valley_keep`` lowest minima take that point's place as tracks (0: no line): over 20 ms
-        the valleys along c2 - c3 on the paper scene are 50-100 nm wide, the truth's the lowest
-        by about 20, and a fit from a grid point 2 µm from the next stays in the one it starts
-        in.
+        Runs on the grid's window along the clearances' rugged directions through the best grid
+        point, GRID_LINE_REACH grid spacings either side, whose ``valley_keep`` lowest minima
+        replace it as tracks (0: no line): the valleys are far narrower than a grid spacing.
     valley_check_points : int
-        With the basin check on: runs over the valley lines' first window along the
-        clearances' rugged directions (those of the valley lines) through the best fit,
-        VALLEY_CHECK_REACH grid spacings either side; a parameter the lines move whose
-        interval misses another valley there within the basin threshold of the fit's own is
-        not determined, its interval widened to span the lines (:func:`valley_check`; 0: no
-        check). Run only where the noise explains the residuals (otherwise nothing is
-        determined).
+        With ``basins``, runs over the valley lines' first window along the clearances' rugged
+        directions through the best fit, VALLEY_CHECK_REACH grid spacings either side, whose
+        rival valleys leave a parameter undetermined (:func:`valley_check`; 0: no check); run
+        only where the noise explains the residuals (otherwise nothing is determined).
     basins : bool
         Look for the other minima of the whole record's cost near the best fit, which the data
         cannot tell from it, and widen the intervals to hold them
@@ -144,16 +128,11 @@ class CalibrationOptions:
             if not ok:
                 raise DescriptionError(f"options.{name}",
                                        f"{allowed}, got {getattr(self, name)!r}")
-        # Each stage's runs bounded before any work (10**10 scan points once ran a fit and
-        # then out of memory); the grid runs at most grid_points squared.
-        bounds = (("starts", self.starts), ("scan_points", self.scan_points),
-                  ("grid_line_points", self.grid_line_points),
-                  ("valley_check_points", self.valley_check_points),
-                  ("profile_points", self.profile_points), ("valley_points", self.valley_points),
-                  ("grid_points", self.grid_points ** 2))
-        for name, runs in bounds:
-            if runs > MAX_CALIBRATION_RUNS:
-                most = math.isqrt(MAX_CALIBRATION_RUNS) if name == "grid_points" \
-                    else MAX_CALIBRATION_RUNS
+        # Each stage's runs bounded before any work (too many would run out of memory).
+        for name in ("starts", "scan_points", "grid_line_points", "valley_check_points",
+                     "profile_points", "valley_points", "grid_points"):
+            grid = name == "grid_points"  # the grid runs grid_points squared
+            if getattr(self, name) ** (2 if grid else 1) > MAX_CALIBRATION_RUNS:
+                most = math.isqrt(MAX_CALIBRATION_RUNS) if grid else MAX_CALIBRATION_RUNS
                 raise DescriptionError(f"options.{name}", f"must be at most {most} (runs of "
                                        f"one stage of the fit), got {getattr(self, name)!r}")

@@ -1,11 +1,9 @@
 """The free parameters of a calibration: their names, start values and physical ranges.
 
-A free name is any robot parameter ``--set`` accepts (``friction.mu``, ``link2.mass``, ...)
-or ``jointN.clearance``, the radial clearance of clearance joint N with its bearing radius
-held (the journal radius follows). The bounds of the fit are the ranges the project's
-validation accepts for each kind of number (:data:`jointplay.common.limits.PHYSICAL_RANGES`
-and the open intervals of the robot validation), so the fit never proposes a robot the
-simulator would refuse.
+A free name is any robot parameter ``--set`` accepts (``friction.mu``, ``link2.mass``, ...) or
+``jointN.clearance`` (the radial clearance of clearance joint N, its bearing radius held). The
+bounds are the ranges the validation accepts (:data:`jointplay.common.limits.PHYSICAL_RANGES`,
+the robot validation's open intervals), so the fit never proposes a robot the simulator refuses.
 """
 
 from __future__ import annotations
@@ -38,8 +36,7 @@ _KINDS = (
                 r"friction\.v1|lubrication\.viscosity|wear\.coefficient|wear\.hardness)"),
      lambda m: m.group(1)),
 )
-# Open intervals of the robot validation, kept a relative hair inside (a bound is a value the
-# fit may reach, and these ends are refused).
+# Open intervals of the robot validation, kept a relative hair inside: the fit may reach a bound.
 _OPEN = 1e-9
 _INTERVALS = (
     (re.compile(r"joint\d+\.(bearing|journal)_nu"), (_OPEN, 0.5 - _OPEN)),
@@ -77,8 +74,7 @@ def free_parameters(names: Sequence[str], scene: Scene, model: Model,
     return checked_free_parameters(
         names, start, "friction.mu or joint2.clearance",
         lambda name: _check_known(name, scene, model, flag),
-        lambda name: physical_range(name, scene), lambda name: scene_value(name, scene),
-        flag=flag)
+        lambda name: physical_range(name, scene), lambda name: scene_value(name, scene), flag=flag)
 
 
 def checked_free_parameters(names: Sequence[str], start: Mapping[str, float] | None,
@@ -90,13 +86,11 @@ def checked_free_parameters(names: Sequence[str], start: Mapping[str, float] | N
     """The free parameters ``names`` starting at ``start`` (else ``own_value``), checked.
 
     ``example`` names two free parameters for the error when none is given; ``check_known``
-    refuses a name the model lacks, ``check_names`` (if given) the names together;
-    ``value_range`` gives each name's bounds. Both the scene's and the mechanism's
-    calibrations check their free names here.
+    refuses a name the model lacks, ``check_names`` (if given) the names together; ``value_range``
+    gives each name's bounds. The scene's and the mechanism's calibrations both check here.
     """
     if not names:
-        raise DescriptionError(flag, "no parameter names given; name at least one, e.g. "
-                               f"{example}")
+        raise DescriptionError(flag, f"no parameter names given; name at least one, e.g. {example}")
     seen: set[str] = set()
     for name in names:
         if name in seen:
@@ -110,23 +104,20 @@ def checked_free_parameters(names: Sequence[str], start: Mapping[str, float] | N
         if name not in seen:
             raise DescriptionError(f"start {name}", "is not a free parameter; give start "
                                    f"values for the free ones only ({', '.join(names)})")
-    values, lower, upper = [], [], []
+    rows = []
     for name in names:
         low, high = value_range(name)
         value = float(start[name]) if name in start else own_value(name)
         if not math.isfinite(value) or not low <= value <= high:
             raise DescriptionError(f"start {name}", f"{value!r} is outside its physical range "
                                    f"[{low:g}, {high:g}]; start inside it")
-        values.append(value)
-        lower.append(low)
-        upper.append(high)
-    return FreeParameters(tuple(names), np.array(values), np.array(lower), np.array(upper))
+        rows.append((value, low, high))
+    return FreeParameters(tuple(names), *(np.array(column) for column in zip(*rows, strict=True)))
 
 
 def scene_value(name: str, scene: Scene) -> float:
     """The scene's own value of a free parameter."""
-    m = _CLEARANCE.fullmatch(name)
-    if m:
+    if m := _CLEARANCE.fullmatch(name):
         joint = scene.robot.joints[int(m.group(1)) - 1]
         return float(joint.bearing_radius - joint.journal_radius)
     values = dict(zip([p.name for p in scene.robot.parameters()],
@@ -136,20 +127,17 @@ def scene_value(name: str, scene: Scene) -> float:
 
 def physical_range(name: str, scene: Scene) -> tuple[float, float]:
     """The interval of values the project's validation accepts for ``name`` (closed)."""
-    m = _CLEARANCE.fullmatch(name)
-    if m:
+    if m := _CLEARANCE.fullmatch(name):
         return _clearance_range(int(m.group(1)), scene)
     for pattern, interval in _INTERVALS:
         if pattern.fullmatch(name):
             return interval
     for pattern, kind in _KINDS:
-        found = pattern.fullmatch(name)
-        if found:
+        if found := pattern.fullmatch(name):
             low, high, _, _ = PHYSICAL_RANGES[kind(found)]
             return float(low), float(high)
-    if re.fullmatch(r"link(\d+)\.com", name):
-        link = scene.robot.links[int(name[4:name.index(".")]) - 1]
-        return 0.0, float(link.length)
+    if m := re.fullmatch(r"link(\d+)\.com", name):
+        return 0.0, float(scene.robot.links[int(m.group(1)) - 1].length)
     return -math.inf, math.inf
 
 
@@ -159,8 +147,7 @@ def _clearance_range(joint: int, scene: Scene) -> tuple[float, float]:
     from jointplay.robot.description import PEREIRA_CLEARANCE_RANGE
 
     bearing = float(scene.robot.joints[joint - 1].bearing_radius)
-    low = MIN_RADIAL_CLEARANCE
-    high = bearing - PHYSICAL_RANGES["joint.radius"][0]
+    low, high = MIN_RADIAL_CLEARANCE, bearing - PHYSICAL_RANGES["joint.radius"][0]
     if scene.robot.contact.stiffness == "pereira":
         p_low, p_high = PEREIRA_CLEARANCE_RANGE
         low, high = max(low, p_low), min(high, p_high * (1 - _OPEN))
@@ -168,20 +155,17 @@ def _clearance_range(joint: int, scene: Scene) -> tuple[float, float]:
 
 
 def _check_known(name: str, scene: Scene, model: Model, flag: str) -> None:
-    m = _CLEARANCE.fullmatch(name)
-    if m:
+    if m := _CLEARANCE.fullmatch(name):
         joint = int(m.group(1))
         if joint not in model.clearance_joints:
             have = ", ".join(f"joint{j}.clearance" for j in model.clearance_joints) or "none"
             raise DescriptionError(f"{flag} {name}", f"joint {joint} has no clearance in this "
                                    f"model (clearance parameters: {have})")
-        return
-    if name not in model.parameters:
+    elif name not in model.parameters:
         from jointplay.robot.description import unknown_parameter
 
         known = [*model.parameters, *(f"joint{j}.clearance" for j in model.clearance_joints)]
-        err = unknown_parameter(name, scene.robot)
-        message = err.message
+        message = unknown_parameter(name, scene.robot).message
         if "is not a parameter" in message:
             message = "is not a parameter of this model" + did_you_mean(name, known)
         raise DescriptionError(f"{flag} {name}", message)

@@ -1,11 +1,10 @@
 """The model's prediction of the measured columns, and its Jacobian in the free parameters.
 
 The Jacobian comes from the compiled BDF's sensitivities (``simulate(...,
-sensitivities=NAMES)``: one run gives the outputs and their derivatives, through every
-impact). Where that is unavailable for a name, that column is taken by central differences
-of whole runs (two per name). Samples are read off the run's output grid when the measured
-times lie on it; otherwise the values come from the run's dense output and the sensitivities
-are interpolated linearly between samples.
+sensitivities=NAMES)``: one run gives the outputs and their derivatives, through every impact);
+a name they do not cover takes central differences of whole runs (two per name). Samples are
+read off the run's output grid when the measured times lie on it; otherwise from the run's dense
+output, the sensitivities interpolated linearly between samples.
 """
 
 from __future__ import annotations
@@ -24,9 +23,8 @@ from jointplay.common.pool import chunks, parallel_map
 from jointplay.scene.definition import Scene
 from jointplay.store.model import Model
 
-# Central-difference step, relative to the parameter's magnitude: near the optimum of the
-# error (cube root of the runs' relative accuracy, about 1e-9 at the fit's tolerances) and far
-# above the jitter of adaptive steps.
+# Central-difference step, relative to the parameter's magnitude: near the optimum of the error
+# (cube root of the runs' relative accuracy) and far above the jitter of adaptive steps.
 FD_RELATIVE_STEP = 1e-2
 
 
@@ -59,22 +57,16 @@ class Predictor:
 
     def __init__(self, scene: Scene, model: Model, free: FreeParameters,
                  measured: Measured, compiled: tuple[str, ...] | None = None) -> None:
-        self.scene = scene
-        self.model = model
-        self.free = free
-        self.measured = measured
+        self.scene, self.model, self.free, self.measured = scene, model, free, measured
         self.counter = Counter()
         self._grid = grid_indices(measured.t, scene.run.output_step)
-        self._angle_index = [model.coordinates.index(c) for c in measured.columns
-                             if c not in TIP_COLUMNS]
         # ``compiled``: the names another predictor of the same model already tried
         self.compiled = self._compiled_names() if compiled is None else compiled
         self._cache: dict[bytes, tuple[np.ndarray, np.ndarray | None]] = {}
 
     def for_free(self, free: FreeParameters) -> Predictor:
         """This predictor for ``free`` (the same names, other bounds: some held), sharing its
-        last run (a fit from the point it was asked at takes no run there again) but not its
-        count."""
+        last run (a fit from that point takes no run there again) but not its count."""
         other = Predictor(self.scene, self.model, free, self.measured, compiled=self.compiled)
         other._cache = self._cache
         return other
@@ -82,10 +74,7 @@ class Predictor:
     def __getstate__(self) -> dict[str, Any]:
         # For a piece sent to a Dask worker: the compiled model does not pickle; the worker
         # loads it again from the scene (the hash-keyed cache, or derived once there).
-        state = dict(self.__dict__)
-        state["model"] = None
-        state["_cache"] = {}
-        return state
+        return {**self.__dict__, "model": None, "_cache": {}}
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         from jointplay.sim import load_scene_model
@@ -93,27 +82,20 @@ class Predictor:
         self.__dict__.update(state)
         self.model = load_scene_model(self.scene)
 
-    # -- the two things a fit asks for ---------------------------------------------------------
-
     def outputs(self, x: np.ndarray, *, with_jacobian: bool = True) -> np.ndarray:
         """The measured columns at ``x``; ``with_jacobian=False`` (a scan, a profile) runs
-        without sensitivities, at a fraction of the cost, when the Jacobian is not wanted
-        next."""
+        without sensitivities, at a fraction of the cost, when no Jacobian is wanted next."""
         return self._evaluate(x, with_jacobian)[0]
 
     def jacobian(self, x: np.ndarray) -> np.ndarray:
         y, sens = self._evaluate(x)
         jac = np.zeros((*y.shape, self.free.size))
-        if sens is not None:
-            for k, name in enumerate(self.free.names):
-                if name in self.compiled:
-                    jac[:, :, k] = sens[:, :, self.compiled.index(name)]
         for k, name in enumerate(self.free.names):
             if name not in self.compiled:
                 jac[:, :, k] = self._central_difference(x, k)
+            elif sens is not None:
+                jac[:, :, k] = sens[:, :, self.compiled.index(name)]
         return jac
-
-    # -- runs --------------------------------------------------------------------------------
 
     def _evaluate(self, x: np.ndarray, with_jacobian: bool = True
                   ) -> tuple[np.ndarray, np.ndarray | None]:
@@ -138,22 +120,17 @@ class Predictor:
             raise TrialFailed(f"the run at {_describe(self.free.names, x)} stopped: {err}") \
                 from None
         self.counter.add("sensitivities" if names else "plain")
-        y = self._sampled(result)
-        sens = self._sampled_sensitivities(result) if names else None
-        return y, sens
+        return self._sampled(result), (self._sampled_sensitivities(result) if names else None)
+
+    def _columns(self, tip: np.ndarray, q: np.ndarray) -> list[np.ndarray]:
+        """The measured columns, picked along axis 1 of the tip's position and coordinates."""
+        return [tip[:, TIP_COLUMNS.index(name)] if name in TIP_COLUMNS
+                else q[:, self.model.coordinates.index(name)] for name in self.measured.columns]
 
     def _sampled(self, result: Any) -> np.ndarray:
-        columns = []
-        if self._grid is not None:
-            tip, q = result.tip_position[self._grid], result.q[self._grid]
-        else:
-            tip, q = self._dense(result)
-        for name in self.measured.columns:
-            if name in TIP_COLUMNS:
-                columns.append(tip[:, TIP_COLUMNS.index(name)])
-            else:
-                columns.append(q[:, self.model.coordinates.index(name)])
-        return np.column_stack(columns)
+        tip, q = ((result.tip_position[self._grid], result.q[self._grid])
+                  if self._grid is not None else self._dense(result))
+        return np.column_stack(self._columns(tip, q))
 
     def _dense(self, result: Any) -> tuple[np.ndarray, np.ndarray]:
         from jointplay.sim.assemble import _mapped
@@ -167,13 +144,7 @@ class Predictor:
 
     def _sampled_sensitivities(self, result: Any) -> np.ndarray:
         sens = result.sensitivities
-        tip, state = np.asarray(sens.tip_position), np.asarray(sens.state)
-        columns = []
-        for name in self.measured.columns:
-            if name in TIP_COLUMNS:
-                columns.append(tip[:, TIP_COLUMNS.index(name), :])
-            else:
-                columns.append(state[:, self.model.coordinates.index(name), :])
+        columns = self._columns(np.asarray(sens.tip_position), np.asarray(sens.state))
         stacked = np.stack(columns, axis=1)  # (n_grid, n_columns, n_compiled)
         if self._grid is not None:
             return stacked[self._grid]
@@ -186,23 +157,15 @@ class Predictor:
 
     def _central_difference(self, x: np.ndarray, k: int) -> np.ndarray:
         h = FD_RELATIVE_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
-        lo, hi = self.free.lower[k], self.free.upper[k]
         up, down = x.copy(), x.copy()
-        up[k], down[k] = min(x[k] + h, hi), max(x[k] - h, lo)
-        y_up = self._run(up, ())[0]
-        y_down = self._run(down, ())[0]
-        return (y_up - y_down) / (up[k] - down[k])
+        up[k], down[k] = min(x[k] + h, self.free.upper[k]), max(x[k] - h, self.free.lower[k])
+        return (self._run(up, ())[0] - self._run(down, ())[0]) / (up[k] - down[k])
 
     def _compiled_names(self) -> tuple[str, ...]:
         """The free names the compiled sensitivities cover (tried once at the start)."""
         if not compiled_sensitivities_available():
             return ()
-        names = tuple(self.free.names)
-        covered = []
-        for name in names:
-            if self._accepts(name):
-                covered.append(name)
-        return tuple(covered)
+        return tuple(name for name in self.free.names if self._accepts(name))
 
     def _accepts(self, name: str) -> bool:
         from jointplay.sim import simulate

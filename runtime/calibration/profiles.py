@@ -22,9 +22,8 @@ UNDETERMINED_SPAN = 0.5
 """Half-width, relative to the value, of the profile of a parameter without a finite std."""
 
 
-def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty,
-                  points: int, workers: int = 1
-                  ) -> tuple[dict[str, dict[str, list[float]]], int]:
+def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty, points: int,
+                  workers: int = 1) -> tuple[dict[str, dict[str, list[float]]], int]:
     """``{name: {"value": [...], "chi2": [...], "quadratic": [...]}}`` (empty if points=0;
     chi² NaN where the run stops), and the runs, made on up to ``workers`` processes."""
     if points == 0:
@@ -35,10 +34,8 @@ def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty,
     jtj_diag = np.sum(optimum.jacobian**2, axis=0)
     grids = []
     for k in range(free.size):
-        if math.isfinite(spread.std[k]):
-            half = PROFILE_SIGMAS * float(spread.std[k])
-        else:
-            half = UNDETERMINED_SPAN * (abs(best[k]) or 1.0)
+        half = (PROFILE_SIGMAS * float(spread.std[k]) if math.isfinite(spread.std[k])
+                else UNDETERMINED_SPAN * (abs(best[k]) or 1.0))
         grids.append(np.linspace(max(best[k] - half, free.lower[k]),
                                  min(best[k] + half, free.upper[k]), points))
     every = [np.where(np.arange(free.size) == k, value, best)

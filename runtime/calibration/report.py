@@ -13,7 +13,8 @@ from pathlib import Path
 import numpy as np
 
 from jointplay.calibration.result import CalibrationResult
-from jointplay.common.files import OutputPlan
+from jointplay.common.figures import figure, save
+from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
 
 FILES = ("calibration.json", "report.md", "fit.png", "residuals.png", "profiles.png")
 
@@ -32,13 +33,10 @@ def output_plan(out: str | Path, inputs: dict[str, str | None]) -> OutputPlan:
 def write_report(result: CalibrationResult, out: str | Path, plan: OutputPlan,
                  command: str = "") -> list[Path]:
     """Write every file of the calibration into ``out`` (all or none); their paths."""
-    from jointplay.common.files import all_or_nothing, atomic_write_text, make_folder
-
     folder = Path(out)
     with all_or_nothing(plan):
         make_folder(folder, "--out")
-        data = result.to_dict()
-        data["command"] = command
+        data = {**result.to_dict(), "command": command}
         atomic_write_text(folder / "calibration.json", json.dumps(data, indent=2) + "\n")
         atomic_write_text(folder / "report.md", report_text(result, command))
         _fit_figure(result, folder / "fit.png")
@@ -104,10 +102,7 @@ def _correlations(result: CalibrationResult) -> str:
 
 
 def _fit_figure(result: CalibrationResult, path: Path) -> None:
-    from jointplay.common.figures import figure, save
-
-    measured = result.measured
-    n = len(measured.columns)
+    measured, n = result.measured, len(result.measured.columns)
     fig, axes = figure(n, 1, 7.0, 2.2 * n, sharex=True)
     for k, column in enumerate(measured.columns):
         ax = axes[k, 0]
@@ -123,10 +118,7 @@ def _fit_figure(result: CalibrationResult, path: Path) -> None:
 
 
 def _residual_figure(result: CalibrationResult, path: Path) -> None:
-    from jointplay.common.figures import figure, save
-
-    measured = result.measured
-    n = len(measured.columns)
+    measured, n = result.measured, len(result.measured.columns)
     fig, axes = figure(n, 1, 7.0, 2.0 * n, sharex=True)
     for k, column in enumerate(measured.columns):
         ax = axes[k, 0]
@@ -143,14 +135,10 @@ def _residual_figure(result: CalibrationResult, path: Path) -> None:
 
 
 def _profile_figure(result: CalibrationResult, path: Path) -> None:
-    from jointplay.common.figures import figure, save
-
     names = result.names
     fig, axes = figure(1, len(names), 3.6 * len(names), 3.2)
     for k, name in enumerate(names):
-        ax = axes[0, k]
-        profile = result.profiles.get(name)
-        estimate = result.estimates[name]
+        ax, profile, estimate = axes[0, k], result.profiles.get(name), result.estimates[name]
         if profile:
             ax.plot(profile["value"], profile["chi2"], "o-", ms=3, label="chi² (others held)")
             ax.plot(profile["value"], profile["quadratic"], "--", lw=1.0,

@@ -52,7 +52,7 @@ class CalibrationResult:
     noise : dict of str to float
         The noise per column, stated or estimated.
     noise_stated : bool
-        Whether the noise was given (else estimated from the residuals).
+        Whether the noise was given (else estimated from the data's sample-to-sample scatter).
     fitted : numpy.ndarray
         The model's samples at the estimates, as the measured columns.
     starts : tuple of Start
@@ -68,14 +68,12 @@ class CalibrationResult:
     cpu_time_s : float
         s, processor time of this process and its workers.
     warnings : tuple of str
-        What the user must know (parameters not determined, a fit that does not explain the
-        data ...).
+        What the user must know: parameters not determined, a fit that does not explain the data.
     settings : dict
         The options and tolerances the fit ran with.
     fit_explains_data : bool or None
-        Whether chi² is within its two-sided 99 % range for the degrees of freedom (widened by
-        the noise estimate's own spread where the noise was estimated) and the residuals pass
-        the Ljung-Box whiteness test (None: not judged).
+        Whether chi² is within its two-sided 99 % range (widened by an estimated noise's own
+        spread) and the residuals pass the Ljung-Box whiteness test (None: not judged).
     stages : tuple of Stage
         The stages of the horizon continuation, in order.
     profiles : dict
@@ -123,7 +121,6 @@ class CalibrationResult:
     warnings: tuple[str, ...]
     settings: dict[str, Any]
     fit_explains_data: bool | None = None
-    """The residuals are the noise: chi² in its 99 % range, and white (runs test)."""
     stages: tuple[Stage, ...] = ()
     profiles: dict[str, dict[str, list[float]]] = field(default_factory=dict)
     grid: GridResult | None = None
@@ -146,9 +143,8 @@ class CalibrationResult:
                          "samples": int(self.measured.t.size),
                          "t_first": float(self.measured.t[0]),
                          "t_last": float(self.measured.t[-1])},
-            "estimates": {e.name: {"value": e.value, "std": number(e.std),
-                                   "low95": e.low95, "high95": e.high95, "start": e.start,
-                                   "determined": e.determined}
+            "estimates": {e.name: {"value": e.value, "std": number(e.std), "low95": e.low95,
+                                   "high95": e.high95, "start": e.start, "determined": e.determined}
                           for e in self.estimates.values()},
             "correlation": {"names": self.names,
                             "matrix": [[number(v) for v in row] for row in self.correlation]},
@@ -166,12 +162,10 @@ class CalibrationResult:
             "warnings": list(self.warnings),
             "fit_explains_data": self.fit_explains_data,
             "continuation": [{"window_end": s.window_end, "samples": s.samples,
-                              "start": list(s.start), "end": list(s.end),
-                              "chi2": number(s.chi2), "dof": s.dof,
-                              "evaluations": s.evaluations, "simulations": s.simulations,
-                              "held": list(s.held), "track": s.track,
-                              "message": s.message}
-                             for s in self.stages],
+                              "start": list(s.start), "end": list(s.end), "chi2": number(s.chi2),
+                              "dof": s.dof, "evaluations": s.evaluations,
+                              "simulations": s.simulations, "held": list(s.held),
+                              "track": s.track, "message": s.message} for s in self.stages],
             "grid": None if self.grid is None else {
                 "axes": list(self.grid.axes), "points_per_axis": self.grid.points_per_axis,
                 "window_end": self.grid.window_end, "simulations": self.grid.simulations,

@@ -1,12 +1,11 @@
 """What the data say about the estimates: covariance, correlations, conditioning, and which
 parameters they cannot determine.
 
-At the optimum of the weighted least squares, with residuals whitened by the sensors'
-standard deviations, the estimates' covariance is (JᵀJ)⁻¹ (J the whitened Jacobian). It is
-computed through the correlation form C = D⁻¹ JᵀJ D⁻¹ (D the columns' norms), whose
-condition number is unit-free. A direction the data do not see (a singular value of C below
-:data:`RANK_TOLERANCE` of the largest) leaves the parameters in it undetermined: infinite
-standard deviation, interval the whole physical range.
+With residuals whitened by the sensors' standard deviations, the estimates' covariance at the
+optimum is (JᵀJ)⁻¹ (J the whitened Jacobian), computed through the correlation form
+C = D⁻¹ JᵀJ D⁻¹ (D the columns' norms), whose condition number is unit-free. A direction the
+data do not see (a singular value of C below :data:`RANK_TOLERANCE` of the largest) leaves its
+parameters undetermined: infinite standard deviation, interval the whole physical range.
 """
 
 from __future__ import annotations
@@ -20,8 +19,7 @@ Z95 = 1.959963984540054
 RANK_TOLERANCE = 1e-10
 """Singular values of the correlation form below this fraction of the largest: rank lost."""
 MAX_CORRELATION = 0.99
-"""Pairs more correlated than this, one of them with a wide interval, are reported as not
-separated by the data."""
+"""Pairs more correlated than this, one of them with a wide interval: not separated by the data."""
 MAX_RELATIVE_STD = 0.5
 """A 95 % interval wider than the value itself (std > half the value): not determined."""
 NULL_COMPONENT = 0.1
@@ -39,9 +37,8 @@ class Uncertainty:
     determined: np.ndarray
     warnings: tuple[str, ...]
     seen_covariance: np.ndarray | None = None
-    """The covariance within the directions the data see (the pseudo-inverse): finite where
-    ``covariance`` is infinite for the undetermined parameters; its principal axes with
-    nonzero variance are the directions the estimates can be moved along and checked."""
+    """The covariance within the directions the data see (the pseudo-inverse), finite where
+    ``covariance`` is not; its axes of nonzero variance are the directions to move and check."""
 
 
 def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
@@ -59,9 +56,8 @@ def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
     s_max = float(s[0]) if s.size else 0.0
     lost = s <= RANK_TOLERANCE * s_max if s_max > 0 else np.ones(n, bool)
     condition = float(s_max / s[-1]) if s_max > 0 and s[-1] > 0 else float("inf")
-    inverse = (vt[~lost].T / s[~lost]) @ u[:, ~lost].T
-    covariance = inverse / np.outer(unit, unit)
-    undetermined = ~seen.copy()
+    covariance = ((vt[~lost].T / s[~lost]) @ u[:, ~lost].T) / np.outer(unit, unit)
+    undetermined = ~seen
     partners: dict[int, set[int]] = {i: set() for i in range(n)}
     for k in np.flatnonzero(lost):
         members = np.flatnonzero(np.abs(vt[k]) > NULL_COMPONENT)
@@ -70,9 +66,9 @@ def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
             partners[int(i)].update(int(j) for j in members if j != i)
     std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     std[undetermined] = np.inf
-    correlation = _correlation(covariance, corr_form, lost, undetermined)
-    scale = np.where(values != 0, np.abs(values), np.where(np.isfinite(upper - lower),
-                                                           upper - lower, 1.0))
+    correlation = _correlation(covariance, corr_form, vt, lost)
+    span = upper - lower
+    scale = np.where(values != 0, np.abs(values), np.where(np.isfinite(span), span, 1.0))
     wide = std > MAX_RELATIVE_STD * scale
     # A correlation, however close to one, leaves a parameter determined where its own
     # interval is narrow (the covariance already holds it): the verdict follows the interval.
@@ -82,40 +78,33 @@ def uncertainty(jacobian: np.ndarray, values: np.ndarray, lower: np.ndarray,
             partners[int(i)].add(int(j))
             partners[int(j)].add(int(i))
     determined = ~(undetermined | wide)
-    warnings = []
-    for i in np.flatnonzero(~determined):
-        reason = _reason(int(i), names, partners, undetermined, std, values)
-        warnings.append(f"{names[i]} is not determined by the data ({reason})")
+    warnings = tuple(f"{names[i]} is not determined by the data "
+                     f"({_reason(int(i), names, partners, undetermined, std, values)})"
+                     for i in np.flatnonzero(~determined))
     low = np.where(np.isfinite(std), values - Z95 * std, lower)
     high = np.where(np.isfinite(std), values + Z95 * std, upper)
-    return Uncertainty(covariance=np.where(np.outer(undetermined, undetermined) |
-                                           undetermined[:, None] | undetermined[None, :],
-                                           np.inf, covariance),
-                       std=std, correlation=correlation, condition_number=condition,
+    infinite = undetermined[:, None] | undetermined[None, :]
+    return Uncertainty(covariance=np.where(infinite, np.inf, covariance), std=std,
+                       correlation=correlation, condition_number=condition,
                        low95=np.maximum(low, lower), high95=np.minimum(high, upper),
-                       determined=determined, warnings=tuple(warnings),
-                       seen_covariance=covariance)
+                       determined=determined, warnings=warnings, seen_covariance=covariance)
 
 
-def _correlation(covariance: np.ndarray, corr_form: np.ndarray, lost: np.ndarray,
-                 undetermined: np.ndarray) -> np.ndarray:
+def _correlation(covariance: np.ndarray, corr_form: np.ndarray, vt: np.ndarray,
+                 lost: np.ndarray) -> np.ndarray:
     """Correlations of the estimates; a pair in a lost direction gets +-1 from that direction
     (the data move them together), and a parameter the runs do not depend on gets NaN."""
     d = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     with np.errstate(divide="ignore", invalid="ignore"):
         corr = covariance / np.outer(d, d)
     np.fill_diagonal(corr, 1.0)
-    if np.any(lost):
-        # In a lost direction v the estimates can move along v freely: perfectly correlated
-        # with the sign of v_i v_j.
-        _, _, vt = np.linalg.svd(corr_form)
-        for k in np.flatnonzero(lost):
-            v = vt[k]
-            big = np.flatnonzero(np.abs(v) > NULL_COMPONENT)
-            for i in big:
-                for j in big:
-                    if i != j:
-                        corr[i, j] = float(np.sign(v[i] * v[j]))
+    # In a lost direction v the estimates move along v freely: correlated with sign v_i v_j.
+    for v in vt[lost]:
+        big = np.flatnonzero(np.abs(v) > NULL_COMPONENT)
+        for i in big:
+            for j in big:
+                if i != j:
+                    corr[i, j] = float(np.sign(v[i] * v[j]))
     blind = np.flatnonzero(np.diag(corr_form) == 0)
     corr[blind, :] = np.nan
     corr[:, blind] = np.nan

@@ -1,13 +1,12 @@
 """The valley check after the whole record's fit, and the following of what it finds.
 
-Over the whole record the cost along the clearances' rugged direction (on the paper scene
-c2 - c3) is a comb of valleys a fraction of a nanometre wide, and the continuation's lines
-(:mod:`jointplay.calibration.continuation`) are 25-100 nm apart: a fit can end a few
-valleys from the truth's with a chi² the noise explains. Over the continuation's first
-lined window (0.32 s) the valleys are about 10 nm wide, and lines of runs through the fit
-5 nm apart along the clearances' rugged directions resolve them: :func:`valley_check`
-finds the other valleys there as low as the fit's own. What the check finds widens the intervals
-(:func:`jointplay.calibration.basins.widened`).
+Over the whole record the cost along the clearances' rugged direction is a comb of valleys a
+fraction of a nanometre wide, far narrower than the spacing of the continuation's lines
+(:mod:`jointplay.calibration.continuation`): a fit can end a few valleys from the truth's with
+a chi² the noise explains. Over the continuation's first lined window the
+valleys are wide enough for lines of runs through the fit to resolve them:
+:func:`valley_check` finds the other valleys there as low as the fit's own. What it finds
+widens the intervals (:func:`jointplay.calibration.basins.widened`).
 """
 
 from __future__ import annotations
@@ -50,24 +49,17 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     from its own: a line of ``scan.points`` runs over the first window of at least
     ``scan.window`` through ``best`` along the rugged directions there, reaching
     ``scan.reach`` times ``scan.scale`` either side; every other valley along it whose floor
-    lies within ``within`` of (or below) the floor of ``best``'s own valley is a rival.
-
-    Over the whole record the valleys along the rugged direction are far narrower than the
-    continuation's lines resolve, so a fit can end a few valleys from the truth's with a
-    chi² the noise explains; over the first window they are wide enough for a line to
-    resolve them. The check states what the search cannot exclude."""
+    lies within ``within`` of (or below) the floor of ``best``'s own valley is a rival: what
+    the search cannot exclude."""
     measured = predictor.measured
     free = predictor.free
-    ends = horizon_windows(measured.t, len(measured.columns), free.size, scan.window,
-                           growth)
+    ends = horizon_windows(measured.t, len(measured.columns), free.size, scan.window, growth)
     if not ends:
         return ValleyCheck(0.0, (), np.zeros(free.size), 0)
     part, stage_scene = _window_problem(predictor, ends[0], looser)
-    # The rugged directions only: with the check at the final estimate, a line along the
-    # weakest one too changed no interval's coverage on the eleven benchmark cases over
-    # five noise seeds, and cost eight correct verdicts and half the check's runs.
-    directions, runs = _rugged(predictor, stage_scene, part, weights, best,
-                               np.asarray(scan.scale))
+    # The rugged directions only: a line along the weakest one too changed no interval's
+    # coverage on the benchmark cases, and cost correct verdicts and half the check's runs.
+    directions, runs = _rugged(predictor, stage_scene, part, weights, best, np.asarray(scan.scale))
     steps = np.linspace(-scan.reach, scan.reach, 2 * (scan.points // 2) + 1)
     lines, values, more = _lines_chi2(predictor, stage_scene, part, weights, best,
                                       directions, steps, workers)
