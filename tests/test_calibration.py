@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import json
+import math
 import re
 from pathlib import Path
 from typing import Any
@@ -339,6 +340,12 @@ def test_the_whiteness_test_sees_slow_waves_the_chi2_range_misses() -> None:
     (["--grid-window", "-1"], "--grid-window: must be >= 0"),
     (["--grid-line-points", "2"], "--grid-line-points: must be 0 (no line) or >= 3"),
     (["--valley-check-points", "1"], "--valley-check-points: must be 0 (no check) or >= 3"),
+    (["--seed", "-1"], "--seed: must be an integer >= 0, got -1"),
+    (["--tighten", "inf"], "--tighten: must be a finite number >= 1"),
+    # the scene's tolerances divided by it would fall below what a run accepts
+    (["--tighten", "1e300", "--noise", "1e-6"], "--tighten: must be at most 2e+08"),
+    (["--free", ""], "--free: is empty; give a value (NAME[,NAME...])"),
+    (["--scheduler", ""], "--scheduler: is empty; give a value (ADDRESS)"),
 ])
 def test_bad_flags_exit_2(tmp_path: Path, short_scene: Path,
                           capsys: pytest.CaptureFixture[str], flags: list[str],
@@ -931,3 +938,21 @@ def test_the_valley_check_runs_only_where_the_noise_explains_the_residuals() -> 
     assert not wrong.fit_explains_data
     assert wrong.simulations_by_kind["valley check"] == 0
     assert not any(e.determined for e in wrong.estimates.values())
+
+
+def test_options_refuse_what_would_fail_after_work_began() -> None:
+    """Each option the search uses is checked on construction (a negative seed once failed
+    inside NumPy after the first runs), and the fit's tolerances (the scene's divided by
+    ``tighten``) may not fall below what a run accepts: the error names ``tighten``."""
+    from jointplay.calibration.options import CalibrationOptions
+    from jointplay.common.errors import DescriptionError
+
+    for bad in ({"seed": -1}, {"seed": 1.5}, {"seed": True}, {"valley_points": 2},
+                {"valley_keep": 0}, {"valley_window": -0.1}, {"tighten": math.inf}):
+        with pytest.raises(DescriptionError) as caught:
+            CalibrationOptions(**bad)  # type: ignore[arg-type]
+        assert caught.value.field == f"options.{next(iter(bad))}"
+    assert CalibrationOptions(tighten=10.0).tightened(1e-6, 1e-9) == (1e-7, 1e-10)
+    with pytest.raises(DescriptionError, match="must be at most 1e\\+06") as caught:
+        CalibrationOptions(tighten=1e7).tightened(1e-8, 1e-9)
+    assert caught.value.field == "options.tighten"

@@ -363,7 +363,7 @@ def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) ->
     steps = max(1, math.ceil(measured.t[-1] / run.output_step - 1e-9))
     changes: dict[str, Any] = {"t_end": min(run.t_end, steps * run.output_step)}
     if run.integrator in ("bdf", "cvodes", "idas"):
-        changes.update(rtol=run.rtol / options.tighten, atol=run.atol / options.tighten)
+        changes["rtol"], changes["atol"] = options.tightened(run.rtol, run.atol)
     return scene.with_run(**changes)
 
 

@@ -6,7 +6,7 @@ import math
 from dataclasses import dataclass
 
 from jointplay.common.errors import DescriptionError
-from jointplay.common.limits import MAX_CALIBRATION_RUNS
+from jointplay.common.limits import MAX_CALIBRATION_RUNS, MIN_ATOL, MIN_RTOL
 
 
 @dataclass(frozen=True)
@@ -103,7 +103,13 @@ class CalibrationOptions:
     scheduler: str | None = None
 
     def __post_init__(self) -> None:
-        checks = (("tighten", self.tighten >= 1, "must be >= 1"),
+        checks = (("tighten", math.isfinite(self.tighten) and self.tighten >= 1,
+                   "must be a finite number >= 1"),
+                  ("seed", isinstance(self.seed, int) and not isinstance(self.seed, bool)
+                   and self.seed >= 0, "must be an integer >= 0"),
+                  ("valley_window", self.valley_window >= 0, "must be >= 0 (s; 0: no lines)"),
+                  ("valley_points", self.valley_points >= 3, "must be >= 3"),
+                  ("valley_keep", self.valley_keep >= 1, "must be >= 1"),
                   ("starts", self.starts >= 1, "must be >= 1"),
                   ("scan_points", self.scan_points == 0 or self.scan_points >= 3,
                    "must be 0 (no scan) or >= 3"),
@@ -136,3 +142,15 @@ class CalibrationOptions:
                 most = math.isqrt(MAX_CALIBRATION_RUNS) if grid else MAX_CALIBRATION_RUNS
                 raise DescriptionError(f"options.{name}", f"must be at most {most} (runs of "
                                        f"one stage of the fit), got {getattr(self, name)!r}")
+
+    def tightened(self, rtol: float, atol: float) -> tuple[float, float]:
+        """The fit's tolerances: a scene's ``rtol`` and ``atol`` divided by ``tighten``; a
+        :class:`DescriptionError` naming ``tighten`` where they would fall below what a run
+        accepts."""
+        most = min(rtol / MIN_RTOL, atol / MIN_ATOL)
+        if self.tighten > most:
+            raise DescriptionError("options.tighten", f"must be at most {most:.3g} with this "
+                                   f"scene's tolerances (run.rtol {rtol:g}, run.atol {atol:g}: "
+                                   f"the fit's may not fall below {MIN_RTOL:g} and "
+                                   f"{MIN_ATOL:g}), got {self.tighten!r}")
+        return rtol / self.tighten, atol / self.tighten

@@ -126,7 +126,8 @@ def refuse_empty_values(parser: argparse.ArgumentParser, args: argparse.Namespac
     for action in _actions(parser, args):
         if getattr(args, action.dest, None) == "" and action.default != "":
             name = action.option_strings[-1] if action.option_strings else action.dest
-            raise DescriptionError(name, "is empty; give a value (a file or folder name)")
+            what = f" ({action.metavar})" if isinstance(action.metavar, str) else ""
+            raise DescriptionError(name, f"is empty; give a value{what}")
 
 
 def _actions(parser: argparse.ArgumentParser, args: argparse.Namespace

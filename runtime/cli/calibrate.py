@@ -160,7 +160,7 @@ def _options(args: argparse.Namespace, options_type: Any) -> Any:
              "--tighten": args.tighten, "--horizon-first": args.horizon_first,
              "--horizon-growth": args.horizon_growth, "--grid-window": args.grid_window,
              "--grid-points": args.grid_points, "--grid-line-points": args.grid_line_points,
-             "--valley-check-points": args.valley_check_points}
+             "--valley-check-points": args.valley_check_points, "--seed": args.seed}
     try:
         return options_type(tighten=args.tighten, starts=args.starts, spread=args.spread,
                             seed=args.seed, profile_points=args.profile_points,
@@ -216,8 +216,12 @@ def _number(flag: str, text: str) -> float:
 
 
 def _flagged(err: DescriptionError) -> DescriptionError:
-    """A Python-API field name as the flag that gave it (``free x`` -> ``--free x``)."""
+    """A Python-API field name as the flag that gave it (``free x`` -> ``--free x``,
+    ``options.tighten`` -> ``--tighten``)."""
     for name in ("free", "start", "noise", "measured"):
         if err.field == name or err.field.startswith(name + " "):
             return DescriptionError("--" + err.field, err.message, err.source)
+    if err.field.startswith("options."):
+        flag = "--" + err.field.removeprefix("options.").replace("_", "-")
+        return DescriptionError(flag, err.message, err.source)
     return err

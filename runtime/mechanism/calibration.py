@@ -148,8 +148,8 @@ def _fit_scene(scene: MechanismScene, measured: Measured, options: CalibrationOp
     sample."""
     run = scene.run
     steps = max(1, round(measured.t[-1] / run.output_step))
-    return scene.with_run(t_end=min(run.t_end, steps * run.output_step),
-                          rtol=run.rtol / options.tighten, atol=run.atol / options.tighten)
+    rtol, atol = options.tightened(run.rtol, run.atol)
+    return scene.with_run(t_end=min(run.t_end, steps * run.output_step), rtol=rtol, atol=atol)
 
 
 
