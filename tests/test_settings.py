@@ -103,6 +103,17 @@ def test_a_file_reports_the_same_problems_naming_itself(tmp_path: Path) -> None:
         ("identify.hidden[0]", str(path)), ("control.setpoint_filter", str(path))]
 
 
+def test_a_file_naming_itself_as_its_scene_is_refused_as_such(tmp_path: Path) -> None:
+    """``scene`` naming the settings file itself (by any path) is a mistake said as one, not
+    the file read again as a scene (which then looked like a sweep file)."""
+    path = tmp_path / "study.toml"
+    for name in ("study.toml", "./study.toml", f"../{tmp_path.name}/study.toml"):
+        path.write_text(f'scene = "{name}"\n', encoding="utf-8")
+        with pytest.raises(DescriptionError, match="names this settings file itself") as caught:
+            read_settings_file(path)
+        assert caught.value.field == "scene"
+
+
 def test_checks_across_keys_name_the_table() -> None:
     assert problems_of({"preset": "paper", "identify": {"lpv_base": True}})[0][0] == \
         "identify.lpv_base"

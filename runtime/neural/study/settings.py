@@ -172,6 +172,10 @@ def read_settings_file(path: str | Path, *, preset: str | None = None,
     if scene is not None and not isinstance(scene, str):
         raise DescriptionError("scene", f"must be the path of a scene file, got {scene!r}",
                                source)
+    if scene and (path.parent / scene).resolve() == path.resolve():
+        raise DescriptionError("scene", f"names this settings file itself ({scene!r}); give "
+                               "the scene file it runs, or leave scene out for the paper scene",
+                               source)
     settings = resolve_settings(settings_tables(data), preset=preset, overrides=overrides,
                                 source=source)
     return settings, (path.parent / scene if scene else None)
