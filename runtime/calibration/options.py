@@ -11,10 +11,8 @@ from jointplay.common.limits import MAX_CALIBRATION_RUNS, MIN_ATOL, MIN_RTOL
 
 @dataclass(frozen=True)
 class CalibrationOptions:
-    """How the fit runs: the options of :func:`calibrate` (``jointplay calibrate``'s flags).
-
-    The defaults are what ``jointplay calibrate`` uses; the results do not depend on
-    ``workers``.
+    """How the fit runs: the options of :func:`calibrate` (``jointplay calibrate``'s flags,
+    whose defaults these are); the results do not depend on ``workers``.
 
     Attributes
     ----------
@@ -69,14 +67,13 @@ class CalibrationOptions:
         rival valleys leave a parameter undetermined (:func:`valley_check`; 0: no check); run
         only where the noise explains the residuals (otherwise nothing is determined).
     basins : bool
-        Look for the other minima of the whole record's cost near the best fit, which the data
-        cannot tell from it, and widen the intervals to hold them
-        (:mod:`jointplay.calibration.basins`).
+        Look for the whole record's other minima the data cannot tell from the best fit, and
+        widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
     workers : int
         Processes for the grid's runs, the tracks' fits and the lines' runs.
     scheduler : str or None
-        The address of a Dask scheduler whose cluster runs the independent pieces instead of
-        local processes (None: local).
+        The address of a Dask scheduler whose cluster runs the independent pieces (None: local
+        processes).
     """
 
     tighten: float = 1000.0
@@ -144,9 +141,8 @@ class CalibrationOptions:
                                        f"one stage of the fit), got {getattr(self, name)!r}")
 
     def tightened(self, rtol: float, atol: float) -> tuple[float, float]:
-        """The fit's tolerances: a scene's ``rtol`` and ``atol`` divided by ``tighten``; a
-        :class:`DescriptionError` naming ``tighten`` where they would fall below what a run
-        accepts."""
+        """A scene's ``rtol`` and ``atol`` divided by ``tighten``; a :class:`DescriptionError`
+        naming ``tighten`` where they would fall below what a run accepts."""
         most = min(rtol / MIN_RTOL, atol / MIN_ATOL)
         if self.tighten > most:
             raise DescriptionError("options.tighten", f"must be at most {most:.3g} with this "
