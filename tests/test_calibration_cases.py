@@ -208,3 +208,51 @@ def test_the_stage_benchmark_removes_each_stage_and_puts_it_back() -> None:
     assert "- **basin-lines**: a seed 0 friction.mu: +0.01 % (in, det.) → +0.30 % (in, " \
         "not det.)" in text
     assert "- **later-lines**: no change" in text
+
+
+def test_the_time_benchmark_counts_the_runs_of_tracks_it_then_dropped() -> None:
+    """benchmarks/calibration_time.py: per window (not the whole record's stage), its tracks,
+    evaluations and runs, and the runs of the tracks whose chi² ended more than the
+    continuation's margin (TRACK_MARGIN at this many degrees of freedom) above the best."""
+    sys.path.insert(0, str(CASES_DIR.parent))
+    import calibration_time
+
+    from jointplay.calibration.continuation import Stage
+
+    def stage(end: float, chi2: float, runs: int) -> Stage:
+        return Stage(end, 100, (0.0,), (0.0,), chi2, 1000, runs - 1, runs, "")
+
+    rows = calibration_time._windows([stage(0.32, 1000.0, 10), stage(0.32, 1049.0, 20),
+                                      stage(0.32, 1051.0, 30), stage(0.64, 900.0, 5),
+                                      stage(1.5, 2000.0, 3)])
+    assert rows == ["| 0.32 | 3 | 57 | 60 | 30 (50%) |", "| 0.64 | 1 | 4 | 5 | 0 (0%) |"]
+
+
+def test_code_size_counts_code_not_comments_docstrings_or_blanks() -> None:
+    """benchmarks/code_size.py: a wrapped statement counts each line; a docstring, a string
+    standing as a statement, a comment and a blank line count none."""
+    sys.path.insert(0, str(CASES_DIR.parent))
+    import code_size
+
+    source = ('"""Module.\n\nMore."""\n\n# a comment\nX = 1  # counted\n"""X\'s doc."""\n\n'
+              'def f(a: int,\n      b: int) -> int:\n    """Doc."""\n    return a + b\n')
+    assert code_size.code_lines(source) == 4
+    files = code_size.sources("runtime/calibration", None)
+    assert "runtime/calibration/api.py" in files and all(f.endswith(".py") for f in files)
+
+
+@pytest.mark.slow
+def test_the_time_benchmark_runs_a_case(tmp_path: Path) -> None:
+    """The whole script on the quickest case: a table of stages whose seconds add up to no
+    more than the wall time it states."""
+    out = tmp_path / "time.md"
+    proc = subprocess.run([sys.executable, str(CASES_DIR.parent / "calibration_time.py"),
+                           "--case", "paper-one-clearance", "--out", str(out)],
+                          capture_output=True, text=True, timeout=900)
+    assert proc.returncode == 0, proc.stderr
+    text = out.read_text()
+    wall = float(text.split(" s wall")[0].rsplit("\n", 1)[-1])
+    stages = [float(line.split("|")[2]) for line in text.splitlines()
+              if line.startswith("| ") and line.count("|") == 4 and "wall s" not in line]
+    assert stages and sum(stages) <= wall * 1.001
+    assert "| grid |" in text and "whole-record fit" in text
