@@ -104,7 +104,11 @@ def parallel_map(job: Callable[[int], Any], count: int, workers: int, *,
         return value
 
     if _CLIENT and count > 1:
-        return _on_dask(_CLIENT[-1], job, count)
+        values = _on_dask(_CLIENT[-1], job, count)
+        if on_result is not None:
+            for value in values:
+                on_result(value)
+        return values
     if workers <= 1 or count <= 1 or "fork" not in multiprocessing.get_all_start_methods():
         return [here(i) for i in range(count)]
     done = _forked(job, count, min(workers, count), label, on_result)
