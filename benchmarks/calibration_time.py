@@ -20,7 +20,6 @@ from __future__ import annotations
 import argparse
 import collections
 import functools
-import math
 import sys
 import tempfile
 import time
@@ -33,8 +32,7 @@ sys.path.insert(0, str(HERE / "calibration_cases"))
 import runner  # noqa: E402
 
 from jointplay.calibration import api, continuation, profiles  # noqa: E402
-from jointplay.calibration.continuation import TRACK_MARGIN  # noqa: E402
-from jointplay.calibration.fit import CHI2_SIGMAS  # noqa: E402
+from jointplay.calibration.continuation import track_margin  # noqa: E402
 from jointplay.common.files import atomic_write_text  # noqa: E402
 from jointplay.scene import load_scene  # noqa: E402
 
@@ -79,8 +77,7 @@ def _windows(stages: Any) -> list[str]:
     rows = []
     for end, mine in sorted(by_end.items())[:-1]:  # the last is the whole record's
         best = min(s.chi2 for s in mine)
-        dof = mine[0].dof
-        margin = min(TRACK_MARGIN, CHI2_SIGMAS * math.sqrt(2 * dof)) * max(1.0, best / dof)
+        margin = track_margin(best, mine[0].dof)
         runs = sum(s.simulations for s in mine)
         dropped = sum(s.simulations for s in mine if s.chi2 > best + margin)
         rows.append(f"| {end:.3g} | {len(mine)} | {sum(s.evaluations for s in mine)} | {runs} "

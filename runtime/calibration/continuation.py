@@ -385,18 +385,18 @@ def _surviving(results: list[tuple[int, np.ndarray, float]], dof: int,
         return []
     best = ordered[0][2]
     kept: list[tuple[int, np.ndarray, float]] = []
-    # Where even the best track does not explain the window (a parameter held off, the model
-    # short of something), the tracks' chi² differ by that misfit as much as by their
-    # valleys: the margin grows with the best's chi²/dof, as a covariance is scaled by it.
-    margin = min(TRACK_MARGIN, CHI2_SIGMAS * math.sqrt(2 * dof)) * max(1.0, best / dof)
     for label, x, chi2 in ordered:
-        if chi2 > best + margin:
-            continue
         scale = np.where(x != 0, np.abs(x), free.upper - free.lower)
-        if any(np.all(np.abs(x - other) <= SAME_ESTIMATE * scale) for _, other, _ in kept):
-            continue
-        kept.append((label, x, chi2))
+        if not chi2 > best + track_margin(best, dof) and not any(
+                np.all(np.abs(x - other) <= SAME_ESTIMATE * scale) for _, other, _ in kept):
+            kept.append((label, x, chi2))
     return kept
+
+
+def track_margin(best: float, dof: int) -> float:
+    """How far above the best track's chi² (``best``, on ``dof``) a track is dropped: growing
+    with a misfit of the best (chi²/dof over 1), which the tracks' chi² differ by too."""
+    return min(TRACK_MARGIN, CHI2_SIGMAS * math.sqrt(2 * dof)) * max(1.0, best / dof)
 
 
 def _unseen(probe: Predictor, weights: np.ndarray, x: np.ndarray) -> np.ndarray:
