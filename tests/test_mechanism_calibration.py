@@ -174,6 +174,8 @@ BAD = [
     (["--free", "friction.mu", "--noise", "tip_x=1e-6"], None, "--noise tip_x"),
     (["--free", "friction.mu", "--grid-window", "0.01"], None, "--grid-window"),
     (["--free", "friction.mu", "--horizon-first", "0.01"], None, "--horizon-first"),
+    # the fit's tolerances (the scene's divided by it) would fall below what a run accepts
+    (["--free", "friction.mu", "--tighten", "1e300"], None, "--tighten: must be at most"),
     (["--free", "friction.mu"], "time,tip_x\n0,0\n1e-5,0\n2e-5,0\n", "tip_x"),
     (["--free", "friction.mu"], "time,t\n0,0\n1e-5,0\n2e-5,0\n", "t: is the model's clock"),
     (["--free", "friction.mu"], "time,guide.position\n0,0\n1e-5,0\n1.5e-5,0\n",
