@@ -31,6 +31,34 @@ def test_located_peaks_do_not_depend_on_the_output_step() -> None:
         assert np.max(fine.impacts.max_penetration[rows]) >= np.max(fine.penetration[:, k])
 
 
+def test_a_run_without_peaks_is_the_same_run() -> None:
+    """peaks=False skips locating the peak forces and nothing else: through the first impacts
+    the motion, the tip, the impact table's other columns, the step count and (with
+    sensitivities) the state's derivatives equal those of a run with peaks to the bit; the
+    peak columns and the peaks' sensitivities are NaN, not a number that looks measured."""
+    scene = _bdf().with_run(t_end=0.02)
+    names = ("joint2.clearance", "friction.mu")
+    for kwargs in ({}, {"sensitivities": names}):
+        full = simulate(scene, **kwargs)  # type: ignore[arg-type]
+        lean = simulate(scene, peaks=False, **kwargs)  # type: ignore[arg-type]
+        assert len(full.impacts) >= 5
+        assert full.stats["steps"] == lean.stats["steps"]
+        for name in ("q", "u", "tip_position", "normal_force"):
+            np.testing.assert_array_equal(getattr(lean, name), getattr(full, name))
+        for column in ("time", "speed", "max_penetration", "separation_time", "impulse"):
+            np.testing.assert_array_equal(getattr(lean.impacts, column),
+                                          getattr(full.impacts, column))
+        assert np.all(np.isfinite(full.impacts.peak_force))
+        assert np.all(np.isnan(lean.impacts.peak_force))
+        assert np.all(np.isnan(lean.impacts.peak_force_time))
+        if kwargs:
+            np.testing.assert_array_equal(lean.sensitivities.state, full.sensitivities.state)
+            np.testing.assert_array_equal(lean.sensitivities.impact_times,
+                                          full.sensitivities.impact_times)
+            assert np.all(np.isfinite(full.sensitivities.impact_peaks))
+            assert np.all(np.isnan(lean.sensitivities.impact_peaks))
+
+
 def test_bdf_follows_cvodes_through_the_first_impacts() -> None:
     """Same scene, same tolerances: onset times and tip path agree with CVODES."""
     a = simulate(_bdf(rtol=1e-8, atol=1e-8))
@@ -125,8 +153,8 @@ def test_reduced_newton_matrix_equals_the_full_one(monkeypatch: pytest.MonkeyPat
     """The paper scene's state Jacobian is [0 D; Jq Jv]: forced to the n x n Newton matrix
     I - c Jv - c^2 Jq D (JOINTPLAY_NEWTON=reduced; the stat says so), the run through five
     impacts takes the same steps as through the full 2n x 2n LU and agrees to 1e-10 relative
-    (the two solves differ by round-off only). With 8 coordinates, below the driver's
-    threshold of 12, the default takes the full LU."""
+    (the two solves differ by round-off only). With 6 coordinates, below the driver's
+    threshold of 8, the default takes the full LU."""
     scene = _bdf(rtol=1e-9, atol=1e-9)
     monkeypatch.setenv("JOINTPLAY_NEWTON", "reduced")
     reduced = simulate(scene)

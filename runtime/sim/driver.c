@@ -68,12 +68,13 @@ enum {
 #define STACK_DEPTH 256
 
 /* Which Newton matrix a second-order system's step factors (jp_sim.newton). From this many
- * coordinates on, the n x n reduction by default: below it the full 2n x 2n LU has at most
- * 22 rows and costs little beside the Jacobian, and the built-in scenes' published runs
- * (8 coordinates) were measured through it. The two are equal up to round-off, which the
- * paper scene's chaotic impact burst amplifies into a different step sequence (README,
- * "Work-precision"). */
-#define JP_REDUCED_NEWTON_FROM 12
+ * coordinates on, the n x n reduction by default: the calibration benchmark's three-link arm
+ * (9 coordinates) runs 2-14 % faster with it (benchmarks/peaks_cost.py's scenes, alternated
+ * with JOINTPLAY_NEWTON); below it the full 2n x 2n LU has at most 14 rows, and the built-in
+ * arms' published runs (6 coordinates) were measured through it. The two are equal up to
+ * round-off, which the paper scene's chaotic impact burst amplifies into a different step
+ * sequence (README, "Work-precision"). */
+#define JP_REDUCED_NEWTON_FROM 8
 enum { JP_NEWTON_AUTO = 0, JP_NEWTON_FULL = 1, JP_NEWTON_REDUCED = 2 };
 
 typedef struct {
@@ -127,6 +128,11 @@ typedef struct {
    * the driver's power, integrated instead of sum tau_k qdot[drive_index[k]]. eval NULL (the
    * serial arms): not used. */
   jp_function gap_fn, power_fn;
+  /* Whether the event scan locates each phase's peak normal force (and, with sensitivities,
+   * its derivatives). 0: the force is neither sampled nor refined, the peak columns stay NaN;
+   * nothing else changes (the force feeds no step, event or quadrature), so the trajectory is
+   * the same to the bit. A calibration's trial runs, which read only the motion, skip it. */
+  int peaks;
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -1111,7 +1117,8 @@ static int new_phase(jp_sim *s, int j, double t, double speed, const double *xs)
   } else {
     row[PH_EX] = xs[c->ecc_index[2 * j]]; row[PH_EY] = xs[c->ecc_index[2 * j + 1]];
   }
-  row[PH_F_PEAK] = 0.0; row[PH_D_MAX] = 0.0;
+  if (c->peaks) row[PH_F_PEAK] = 0.0;
+  row[PH_D_MAX] = 0.0;
   s->open_phase[j] = s->n_phases++;
   s->n_onsets++;
   return 0;
@@ -1288,8 +1295,8 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
    * step's ends need no new evaluation: its end is the state the quadrature rates were taken
    * at (fn_quad), its start the end of the step before (fn_carry), each equal to round-off
    * to the dense output there and valid while no onset has changed an impact speed since. */
-  int any = 0;
-  for (int j = 0; j < nc; ++j) any |= s->flags[j] > 0.5;
+  int any = 0; /* forces to sample: a joint in contact, and peaks asked for */
+  for (int j = 0; j < nc && c->peaks; ++j) any |= s->flags[j] > 0.5;
   double fn[NS][MAX_JOINTS];
   long gen = s->v_gen;
   if (any)
@@ -1331,7 +1338,7 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
         double tsep = locate(s, EV_DELTA, j, ts[k - 1], dl[k - 1][j], ts[k], dl[k][j], NULL);
         k_end = k;
         /* the force peak of this last stretch, before the phase closes */
-        if (was_in_contact) {
+        if (was_in_contact && c->peaks) {
           int km = 0;
           for (int q = 1; q < k; ++q) if (fn[q][j] > fn[km][j]) km = q;
           if (km > 0) {
@@ -1346,7 +1353,7 @@ static int scan_events(jp_sim *s, double *t_cut, int *cut_joint) {
     }
     int rising = s->rising[j];
     if (any) s->rising[j] = fn[NS - 1][j] > fn[NS - 2][j];
-    if (!was_in_contact || k_end != NS - 1 || s->flags[j] < 0.5) continue;
+    if (!c->peaks || !was_in_contact || k_end != NS - 1 || s->flags[j] < 0.5) continue;
     /* the force peak inside the step (or at its start, continuing the previous step's rise);
      * only a local maximum that can beat the phase's peak so far is refined */
     int km = 0;

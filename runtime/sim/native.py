@@ -106,7 +106,7 @@ class _Config(ctypes.Structure):
                 ("jac_in", _Function), ("sp_p", _i64_p), ("sp_v", _i64_p),
                 ("sens_errcon", ctypes.c_int), ("sens_scale", _dbl_p),
                 ("dir_in", _Function), ("dir_k", ctypes.c_int),
-                ("gap_fn", _Function), ("power_fn", _Function)]
+                ("gap_fn", _Function), ("power_fn", _Function), ("peaks", ctypes.c_int)]
 
 
 @functools.cache
@@ -210,7 +210,8 @@ class NativeIntegrator:
     returns the states, quadratures and captured approach speeds at ``t_out``; ``hold(u)``
     adds constant torques from now on (closed-loop control). With ``sensitivities``, each
     output row also holds d state / d parameter (after the quadratures, one block of nx per
-    parameter, scaled like the state: see :meth:`sensitivity_rows`).
+    parameter, scaled like the state: see :meth:`sensitivity_rows`). ``peaks=False``: no
+    phase's peak normal force is located (its columns NaN); the trajectory is the same.
     """
 
     def __init__(self, model: IntegratorModel, p: np.ndarray, scale: np.ndarray,
@@ -219,7 +220,7 @@ class NativeIntegrator:
                  max_steps: int, max_events: int, max_order: int = 5,
                  h_max: float = math.inf,
                  h_init: float = 0.0, sensitivities: SensitivityInputs | None = None,
-                 model_gaps: bool = False) -> None:
+                 model_gaps: bool = False, peaks: bool = True) -> None:
         self.lib = driver_library()
         self.model = model
         self.nx = model.n_state
@@ -250,6 +251,7 @@ class NativeIntegrator:
         cfg.rtol, cfg.atol, cfg.h_max, cfg.h_init = rtol, atol, h_max, h_init
         cfg.max_steps, cfg.max_events = max_steps, max_events
         cfg.max_order = max_order
+        cfg.peaks = int(peaks)
         # Loading through the model first heals a damaged cached library (model.function
         # rebuilds it once); the driver then calls into the library that loads.
         # The state block of the Jacobian alone, where the model has it as its own function.

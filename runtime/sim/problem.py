@@ -105,6 +105,8 @@ class _Problem:
         self.event_time_tolerance = EVENT_TIME_FRACTION * run.rtol * RATE_SCALE_TIME
         # Forward sensitivities to integrate beside the state (bdf only), or None.
         self.sensitivity: Any = None
+        # Whether the compiled loop locates each contact phase's peak normal force.
+        self.peaks = True
 
     def tau(self, t: np.ndarray | float) -> np.ndarray:
         """Drive torques at times t: shape (len(t), ntau)."""

@@ -150,11 +150,14 @@ def peak_sensitivities(pr: _Problem, records: np.ndarray, joints: np.ndarray,
                        penetration: np.ndarray, directions: np.ndarray) -> np.ndarray:
     """d peak normal force / d p (n_phases, ns) from the loop's phase records (dtau, then at
     the peak x, S, v_imp, dv_imp), the phases' joint indices (0-based among the clearance
-    joints) and maximum penetrations; a phase with no force peak gets 0."""
+    joints) and maximum penetrations; a phase with no force peak gets 0, and every phase NaN
+    where the run located no peaks (``simulate(..., peaks=False)``)."""
     model = pr.model
     nx, nc, ns = model.n_state, pr.nc, directions.shape[0]
     m = records.shape[0]
-    out = np.zeros((m, ns))
+    out = np.zeros((m, ns)) if pr.peaks else np.full((m, ns), np.nan)
+    if not pr.peaks:
+        return out
     if not m or not ns:
         return out
     x = records[:, ns:ns + nx]
