@@ -150,6 +150,8 @@ def test_the_command_line_reports_file_set_and_flag_problems_at_once(
     for named in ("identify.window:", "--set: 'identify.hiden=3'", "--hidden:", "--lags:"):
         assert named in err, err
     assert "4 problems" in err and not out.exists()
+    # the file's problem carries its name; the --set value came from the command line
+    assert f"{study}: identify.window:" in err and f"{study}: --set" not in err, err
 
 
 def test_paper_is_the_dataclasses_defaults_and_best_the_measured_setting() -> None:
@@ -347,3 +349,21 @@ def test_a_tiny_best_study_runs_end_to_end_and_reruns_from_its_output(tmp_path: 
                  "--plot", str(plot), "--quiet", "--horizon", "3"]) in (0, 3)
     controlled, _ = read_settings_file(plot / "settings.toml")
     assert controlled.control.horizon == 3 and controlled.preset == "best"
+
+
+@pytest.mark.parametrize("command", ["identify", "control-study"])
+@pytest.mark.parametrize("text", ["", "# nothing set yet\n"])
+def test_an_empty_file_is_refused_as_neither_scene_nor_settings(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], command: str, text: str) -> None:
+    """An empty file (or one of comments only) is named as such, with both kinds it could
+    be, not read as a scene that lacks its [robot] table; nothing is written."""
+    pytest.importorskip("torch")
+    from jointplay.cli import main
+
+    empty = tmp_path / "empty.toml"
+    empty.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    assert main([command, str(empty), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert f"{empty}: (file): is empty: give a scene" in err and "settings file" in err, err
+    assert "[robot] table or the path" not in err and not out.exists()

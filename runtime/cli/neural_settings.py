@@ -78,6 +78,10 @@ def scene_and_settings(args: argparse.Namespace, flags: FlagKeys
     path = Path(args.scene) if args.scene else None
     scene_file: Path | None = path
     data, _ = read_toml(path, "scene or settings") if path is not None else ({}, "")
+    if path is not None and not data:  # neither kind: say both, not a scene's missing [robot]
+        raise DescriptionError("(file)", "is empty: give a scene (a [robot] table, as in "
+                               "scenes/paper_4dof.toml) or a settings file (preset = ..., "
+                               "scene = ...: docs/how-to/settings-file.md)", str(path))
     found: DescriptionError | None = None
     try:
         if path is not None and is_settings_document(data):

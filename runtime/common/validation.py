@@ -49,11 +49,14 @@ class Problems:
     def __bool__(self) -> bool:
         return bool(self.found)
 
+    def attributed(self, source: str | None) -> list[DescriptionError]:
+        """Everything found, each problem without a source attributed to ``source``."""
+        return [p if p.source or source is None else p.with_source(source) for p in self.found]
+
     def raise_any(self, source: str | None = None) -> None:
         """Raise everything found (attributed to ``source`` when it is given); else nothing."""
         if self.found:
-            raise combined([p if p.source or source is None else p.with_source(source)
-                            for p in self.found])
+            raise combined(self.attributed(source))
 
 
 def positive(field_name: str, value: float, *, allow_zero: bool = False) -> None:

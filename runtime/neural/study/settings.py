@@ -17,7 +17,7 @@ from dataclasses import dataclass, fields, replace
 from pathlib import Path
 from typing import Any
 
-from jointplay.common.errors import DescriptionError
+from jointplay.common.errors import DescriptionError, combined
 from jointplay.common.hints import did_you_mean
 from jointplay.common.validation import Problems, check_keys, read_toml
 from jointplay.neural.control.imc_settings import ControllerSettings
@@ -96,11 +96,13 @@ def resolve_settings(tables: Mapping[str, Any], *, preset: str | None = None,
                 with problems.check():
                     values[section][key] = checked(f"{section}.{key}", SCHEMA[section][key],
                                                    value)
+    flags = Problems()  # the --set values: from the command line, not from the file
     for text in overrides:
-        with problems.check():
+        with flags.check():
             section, key, value = _override(text)
             values[section][key] = value
-    problems.raise_any(source)
+    if problems or flags:
+        raise combined(problems.attributed(source) + flags.found)
     built: dict[str, Any] = {}
     for section in SECTIONS:  # the checks across keys (IdentifyConfig's __post_init__)
         with problems.check():
