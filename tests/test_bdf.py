@@ -154,7 +154,7 @@ def test_reduced_newton_matrix_equals_the_full_one(monkeypatch: pytest.MonkeyPat
     I - c Jv - c^2 Jq D (JOINTPLAY_NEWTON=reduced; the stat says so), the run through five
     impacts takes the same steps as through the full 2n x 2n LU and agrees to 1e-10 relative
     (the two solves differ by round-off only). With 6 coordinates, below the driver's
-    threshold of 8, the default takes the full LU."""
+    threshold of 12, the default takes the full LU."""
     scene = _bdf(rtol=1e-9, atol=1e-9)
     monkeypatch.setenv("JOINTPLAY_NEWTON", "reduced")
     reduced = simulate(scene)

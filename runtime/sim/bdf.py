@@ -138,7 +138,7 @@ def _add_counts(stats: _Accumulated, integ: NativeIntegrator) -> None:
     stats.counts["integrator_calls"] += 1
     stats.counts["lu_decompositions"] = counts["lu_decompositions"]
     # Of those, the ones of the n x n Newton matrix the second-order form reduces to (all of
-    # them where the state Jacobian is [0 D; Jq Jv] and the model has 8 coordinates or more,
+    # them where the state Jacobian is [0 D; Jq Jv] and the model has 12 coordinates or more,
     # or JOINTPLAY_NEWTON=reduced; none with JOINTPLAY_NEWTON=full).
     stats.counts["reduced_lu_decompositions"] = counts["reduced_lu_decompositions"]
     stats.counts["newton_failures"] = counts["newton_failures"]

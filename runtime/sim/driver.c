@@ -68,13 +68,12 @@ enum {
 #define STACK_DEPTH 256
 
 /* Which Newton matrix a second-order system's step factors (jp_sim.newton). From this many
- * coordinates on, the n x n reduction by default: the calibration benchmark's three-link arm
- * (9 coordinates) runs 2-14 % faster with it (benchmarks/peaks_cost.py's scenes, alternated
- * with JOINTPLAY_NEWTON); below it the full 2n x 2n LU has at most 14 rows, and the built-in
- * arms' published runs (6 coordinates) were measured through it. The two are equal up to
- * round-off, which the paper scene's chaotic impact burst amplifies into a different step
- * sequence (README, "Work-precision"). */
-#define JP_REDUCED_NEWTON_FROM 8
+ * coordinates on, the n x n reduction by default: below it the full 2n x 2n LU has at most
+ * 22 rows and costs little beside the Jacobian, and the built-in scenes' published runs
+ * (8 coordinates) were measured through it. The two are equal up to round-off, which the
+ * paper scene's chaotic impact burst amplifies into a different step sequence (README,
+ * "Work-precision"). */
+#define JP_REDUCED_NEWTON_FROM 12
 enum { JP_NEWTON_AUTO = 0, JP_NEWTON_FULL = 1, JP_NEWTON_REDUCED = 2 };
 
 typedef struct {
