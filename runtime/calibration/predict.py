@@ -113,7 +113,7 @@ class Predictor:
         from jointplay.sim import simulate
 
         overrides = self.free.as_overrides(x)
-        # the motion alone: no peak force located (the same trajectory, 5-13 % less CPU)
+        # the motion alone: no peak force located (the same trajectory, up to 10 % less CPU)
         kwargs: dict[str, Any] = {"peaks": False, **({"sensitivities": names} if names else {})}
         try:
             result = simulate(self.scene, model=self.model, parameters=overrides, **kwargs)

@@ -119,7 +119,8 @@ def simulate(scene: Scene, *, model: Model | None = None,
         derivatives too). ``False`` skips that, for runs that need the motion only (a
         calibration's trial runs): ``result.impacts.peak_force`` and ``peak_force_time`` (and
         ``result.sensitivities.impact_peaks``) are NaN, everything else is the same to the bit,
-        and the run costs 5-13 % less CPU (``benchmarks/peaks_cost.py``).
+        and a run costs up to a tenth less CPU (``benchmarks/peaks_cost.py``: 7-10 % without
+        sensitivities, within the machine's scatter with them).
 
     Returns
     -------
