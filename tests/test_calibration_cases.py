@@ -256,3 +256,24 @@ def test_the_time_benchmark_runs_a_case(tmp_path: Path) -> None:
               if line.startswith("| ") and line.count("|") == 4 and "wall s" not in line]
     assert stages and sum(stages) <= wall * 1.001
     assert "| grid |" in text and "whole-record fit" in text
+
+
+def test_the_peaks_benchmark_checks_each_pair_to_the_bit(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """benchmarks/peaks_cost.py on short runs: a row per scene, tolerance and sensitivity
+    count, each pair with and without peaks the same to the bit; its check tells a run whose
+    motion differs in one number."""
+    import dataclasses
+
+    sys.path.insert(0, str(CASES_DIR.parent))
+    import peaks_cost
+
+    assert peaks_cost.main(["--repeats", "1", "--t-end", "0.02"]) == 0
+    rows = [line for line in capsys.readouterr().out.splitlines()
+            if line.startswith("| paper |") or line.startswith("| three-link |")]
+    assert len(rows) == 8 and all(row.endswith("| yes |") for row in rows), rows
+    run = jp.simulate(jp.default_scene().with_run(t_end=0.005), peaks=False)
+    moved = run.q.copy()
+    moved[-1, 0] = np.nextafter(moved[-1, 0], np.inf)
+    assert peaks_cost._same(run, run)
+    assert not peaks_cost._same(run, dataclasses.replace(run, q=moved))

@@ -155,9 +155,9 @@ def peak_sensitivities(pr: _Problem, records: np.ndarray, joints: np.ndarray,
     model = pr.model
     nx, nc, ns = model.n_state, pr.nc, directions.shape[0]
     m = records.shape[0]
-    out = np.zeros((m, ns)) if pr.peaks else np.full((m, ns), np.nan)
     if not pr.peaks:
-        return out
+        return np.full((m, ns), np.nan)
+    out = np.zeros((m, ns))
     if not m or not ns:
         return out
     x = records[:, ns:ns + nx]
