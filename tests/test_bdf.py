@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from jointplay.common.errors import DescriptionError
 from jointplay.scene.definition import default_scene
 from jointplay.sim import simulate
 
@@ -151,17 +152,22 @@ def test_table_torques_equal_the_same_expression(tmp_path: Path) -> None:
 
 def test_reduced_newton_matrix_equals_the_full_one(monkeypatch: pytest.MonkeyPatch) -> None:
     """The paper scene's state Jacobian is [0 D; Jq Jv]: forced to the n x n Newton matrix
-    I - c Jv - c^2 Jq D (JOINTPLAY_NEWTON=reduced; the stat says so), the run through five
+    I - c Jv - c^2 Jq D (``newton="reduced"``; the stat says so), the run through five
     impacts takes the same steps as through the full 2n x 2n LU and agrees to 1e-10 relative
     (the two solves differ by round-off only). With 6 coordinates, below the driver's
-    threshold of 12, the default takes the full LU."""
+    threshold of 12, the default takes the full LU. JOINTPLAY_NEWTON overrides the keyword;
+    a matrix it does not know is refused, naming ``newton``."""
     scene = _bdf(rtol=1e-9, atol=1e-9)
-    monkeypatch.setenv("JOINTPLAY_NEWTON", "reduced")
-    reduced = simulate(scene)
-    monkeypatch.setenv("JOINTPLAY_NEWTON", "full")
-    full = simulate(scene)
-    monkeypatch.delenv("JOINTPLAY_NEWTON")
+    reduced = simulate(scene, newton="reduced")
+    full = simulate(scene, newton="full")
     default = simulate(scene)
+    monkeypatch.setenv("JOINTPLAY_NEWTON", "full")
+    overridden = simulate(scene, newton="reduced")
+    assert overridden.stats["reduced_lu_decompositions"] == 0
+    monkeypatch.setenv("JOINTPLAY_NEWTON", "reduced")
+    assert simulate(scene).stats["reduced_lu_decompositions"] > 0
+    with pytest.raises(DescriptionError, match="newton: must be one of auto, full, reduced"):
+        simulate(scene, newton="sparse")
     assert reduced.stats["reduced_lu_decompositions"] == reduced.stats["lu_decompositions"] > 0
     assert full.stats["reduced_lu_decompositions"] == 0 < full.stats["lu_decompositions"]
     assert default.stats["reduced_lu_decompositions"] == 0

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -258,22 +259,30 @@ def test_the_time_benchmark_runs_a_case(tmp_path: Path) -> None:
     assert "| grid |" in text and "whole-record fit" in text
 
 
-def test_the_peaks_benchmark_checks_each_pair_to_the_bit(
+def test_the_run_options_benchmark_checks_each_pair(
         capsys: pytest.CaptureFixture[str]) -> None:
-    """benchmarks/peaks_cost.py on short runs: a row per scene, tolerance and sensitivity
+    """benchmarks/run_options_cost.py on short runs: a row per scene, tolerance and sensitivity
     count, each pair with and without peaks the same to the bit; its check tells a run whose
-    motion differs in one number."""
+    motion differs in one number. With ``--option newton`` each row gives both runs' steps and
+    their largest tip difference."""
     import dataclasses
 
     sys.path.insert(0, str(CASES_DIR.parent))
-    import peaks_cost
+    import run_options_cost
 
-    assert peaks_cost.main(["--repeats", "1", "--t-end", "0.02"]) == 0
-    rows = [line for line in capsys.readouterr().out.splitlines()
-            if line.startswith("| paper |") or line.startswith("| three-link |")]
-    assert len(rows) == 8 and all(row.endswith("| yes |") for row in rows), rows
+    def rows(option: str) -> list[str]:
+        assert run_options_cost.main(["--option", option, "--repeats", "1",
+                                      "--t-end", "0.02"]) == 0
+        return [line for line in capsys.readouterr().out.splitlines()
+                if line.startswith("| paper |") or line.startswith("| three-link |")]
+
+    peaks = rows("peaks")
+    assert len(peaks) == 8 and all(row.endswith("| yes |") for row in peaks), peaks
+    newton = rows("newton")
+    assert len(newton) == 8 and all(re.search(r"\| \d+, \d+; \d\.\de[-+]\d+ m \|$", row)
+                                    for row in newton), newton
     run = jp.simulate(jp.default_scene().with_run(t_end=0.005), peaks=False)
     moved = run.q.copy()
     moved[-1, 0] = np.nextafter(moved[-1, 0], np.inf)
-    assert peaks_cost._same(run, run)
-    assert not peaks_cost._same(run, dataclasses.replace(run, q=moved))
+    assert run_options_cost._same(run, run)
+    assert not run_options_cost._same(run, dataclasses.replace(run, q=moved))

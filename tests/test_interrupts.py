@@ -140,6 +140,26 @@ def test_interrupt_twice_while_writing(tmp_path: Path) -> None:
     assert list(out.iterdir()) == []
 
 
+def test_library_threads_leave_ctrl_c_to_the_main_thread() -> None:
+    """In the ``jointplay`` program the threads NumPy's BLAS starts as it imports have SIGINT
+    blocked: one delivered to them would not wake the main thread from a sleep or a wait,
+    and Ctrl-C would wait with it (seen once while an import slept). The main thread keeps
+    it unblocked."""
+    script = ("import os, sys\n"
+              "sys.argv[0] = 'jointplay'\n"
+              "import jointplay\n"
+              "for tid in sorted(os.listdir('/proc/self/task')):\n"
+              "    status = open(f'/proc/self/task/{tid}/status').read()\n"
+              "    mask = [line for line in status.splitlines() if line.startswith('SigBlk')]\n"
+              "    print(tid == str(os.getpid()), int(mask[0].split()[1], 16) >> 1 & 1)\n")
+    env = {**os.environ, "OPENBLAS_NUM_THREADS": "2"}
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         env=env, check=True).stdout.split("\n")
+    threads = [line.split() for line in out if line]
+    assert ["True", "0"] in threads and len(threads) >= 2, threads
+    assert all(blocked == "1" for main, blocked in threads if main == "False"), threads
+
+
 def test_interrupt_while_importing(tmp_path: Path) -> None:
     """The command line's modules import slowly here (a hook sleeps in the import of
     jointplay.cli, after jointplay itself): Ctrl-C then is one line and exit 130."""

@@ -163,6 +163,15 @@ def guard_imports() -> None:
         return
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
         signal.signal(signal.SIGINT, _exit_at_once)
+        # NumPy's BLAS starts its threads as it imports. Started with SIGINT blocked, they
+        # leave it to this thread: one delivered to them would not wake this thread from a
+        # sleep or a wait, and the handler would wait with it. One that arrives meanwhile
+        # is delivered on the way out.
+        blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        try:
+            import numpy  # noqa: F401
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
 
 
 @contextlib.contextmanager

@@ -24,6 +24,7 @@ from jointplay.sim.assemble import _assemble
 from jointplay.sim.bdf import run_bdf
 from jointplay.sim.casadi_methods import _run_adaptive
 from jointplay.sim.fixed import _run_fixed
+from jointplay.sim.native import NEWTON_MATRICES
 from jointplay.sim.plausibility import (
     PenetrationWatch,
     PlausibilityWarning,
@@ -72,7 +73,8 @@ def simulate(scene: Scene, *, model: Model | None = None,
              compare_ideal: bool = False, quiet: bool = True,
              verify: bool = False, plausibility: Plausibility | None = None,
              sensitivities: Sequence[str] | None = None,
-             sensitivity_error_control: bool = False, peaks: bool = True) -> SimulationResult:
+             sensitivity_error_control: bool = False, peaks: bool = True,
+             newton: str = "auto") -> SimulationResult:
     """Simulate ``scene`` and return every output as numpy arrays.
 
     The compiled model of the scene's robot is loaded (derived and compiled once, then
@@ -119,8 +121,15 @@ def simulate(scene: Scene, *, model: Model | None = None,
         derivatives too). ``False`` skips that, for runs that need the motion only (a
         calibration's trial runs): ``result.impacts.peak_force`` and ``peak_force_time`` (and
         ``result.sensitivities.impact_peaks``) are NaN, everything else is the same to the bit,
-        and a run costs up to a tenth less CPU (``benchmarks/peaks_cost.py``: 7-10 % without
+        and a run costs up to a tenth less CPU (``benchmarks/run_options_cost.py``: 7-10 % without
         sensitivities, within the machine's scatter with them).
+    newton : {"auto", "full", "reduced"}, default "auto"
+        The Newton matrix of ``bdf``'s steps for a second-order system: ``"full"`` factors
+        I - c J (2n rows), ``"reduced"`` the n x n matrix it reduces to (the same solution up
+        to round-off; ``benchmarks/run_options_cost.py --option newton``: 15-20 % less CPU
+        on the three-link arm's 7 coordinates without sensitivities, 1-6 % on the paper arm's
+        8), ``"auto"`` the reduced one from 12 coordinates on. Round-off in an impact burst
+        changes the steps taken, so the two runs differ within the tolerances.
 
     Returns
     -------
@@ -181,6 +190,12 @@ def simulate(scene: Scene, *, model: Model | None = None,
                                 plausibility=plausibility)
     pr = _Problem(model, scene, p)
     pr.peaks = bool(peaks)
+    if newton not in NEWTON_MATRICES:
+        from jointplay.common.errors import DescriptionError
+
+        raise DescriptionError("newton", f"must be one of {', '.join(NEWTON_MATRICES)}, got "
+                               f"{newton!r}")
+    pr.newton = newton
     run = scene.run
     if model.structure.wear is not None and run.integrator != "bdf":
         from jointplay.common.errors import DescriptionError

@@ -35,7 +35,7 @@ def native_integrator(pr: _Problem) -> NativeIntegrator:
                             np.asarray(pr.angle_index, dtype=np.int32), pr.torques,
                             rtol=run.rtol, atol=run.atol, max_steps=run.max_steps,
                             max_events=MAX_EVENTS_PER_OUTPUT, sensitivities=pr.sensitivity,
-                            peaks=pr.peaks)
+                            peaks=pr.peaks, newton=pr.newton)
 
 
 def torque_fields(pr: _Problem) -> list[str]:

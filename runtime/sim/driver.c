@@ -132,6 +132,9 @@ typedef struct {
    * nothing else changes (the force feeds no step, event or quadrature), so the trajectory is
    * the same to the bit. A calibration's trial runs, which read only the motion, skip it. */
   int peaks;
+  /* Which Newton matrix a second-order system's steps factor: JP_NEWTON_AUTO, _FULL or
+   * _REDUCED (the environment variable JOINTPLAY_NEWTON, where set, overrides it). */
+  int newton;
 } jp_config;
 
 /* One contact phase: see jointplay.results.Impacts. */
@@ -155,9 +158,9 @@ typedef struct {
    * with du solved from the n x n K = I - c Jv - c^2 Jq D, dq = r_q + c D du (exact; an LU
    * of n instead of 2n rows, 8x fewer operations). reduced: J had that form at its last
    * evaluation; lu_c: the c the LU was formed with. newton: which factorisation is allowed,
-   * set from the environment variable JOINTPLAY_NEWTON at each reset ("full", "reduced";
-   * unset or "auto": reduced from JP_REDUCED_NEWTON_FROM coordinates on), so that a test can
-   * compare the two paths. */
+   * the config's, or set from the environment variable JOINTPLAY_NEWTON at each reset
+   * ("full", "reduced"; "auto": reduced from JP_REDUCED_NEWTON_FROM coordinates on), so that
+   * a test can compare the two paths. */
   int reduced, newton; double lu_c; double *rhs_u;
   double *y_pred, *psi, *d, *y_new, *f_buf, *dy, *scal, *err, *work_n;
   double *xs, *xdot;           /* unscaled state and its derivative */
@@ -1614,7 +1617,7 @@ int jp_reset(jp_sim *s, double t0, const double *x0) {
   s->n_steps = s->n_rhs = s->n_jac = s->n_lu = s->n_err_fail = s->n_newton_fail = 0;
   s->n_events = s->n_onsets = 0; s->n_lu_reduced = 0;
   const char *newton = getenv("JOINTPLAY_NEWTON");
-  s->newton = newton == NULL ? JP_NEWTON_AUTO
+  s->newton = newton == NULL ? c->newton
               : strcmp(newton, "full") == 0 ? JP_NEWTON_FULL
               : strcmp(newton, "reduced") == 0 ? JP_NEWTON_REDUCED : JP_NEWTON_AUTO;
   if (c->wear.eval) {

@@ -74,6 +74,8 @@ STAT_NAMES = ("steps", "rhs_evaluations", "jacobian_evaluations", "lu_decomposit
               "reduced_lu_decompositions", "sensitivity_jacobians")
 # The driver's own C flags: -O3 (it is small and compiled once; its LU and difference updates
 # vectorise, without reassociation, so the results equal -O2's); -fno-math-errno as for models.
+NEWTON_MATRICES = ("auto", "full", "reduced")
+"""The driver's Newton matrices of a second-order system, by their number in its config."""
 DRIVER_CFLAGS = ("-O3", "-fPIC", "-shared", "-fno-math-errno")
 DRIVER_WHAT = "the BDF integrator, jointplay/sim/driver.c,"
 
@@ -106,7 +108,8 @@ class _Config(ctypes.Structure):
                 ("jac_in", _Function), ("sp_p", _i64_p), ("sp_v", _i64_p),
                 ("sens_errcon", ctypes.c_int), ("sens_scale", _dbl_p),
                 ("dir_in", _Function), ("dir_k", ctypes.c_int),
-                ("gap_fn", _Function), ("power_fn", _Function), ("peaks", ctypes.c_int)]
+                ("gap_fn", _Function), ("power_fn", _Function), ("peaks", ctypes.c_int),
+                ("newton", ctypes.c_int)]
 
 
 @functools.cache
@@ -212,6 +215,8 @@ class NativeIntegrator:
     output row also holds d state / d parameter (after the quadratures, one block of nx per
     parameter, scaled like the state: see :meth:`sensitivity_rows`). ``peaks=False``: no
     phase's peak normal force is located (its columns NaN); the trajectory is the same.
+    ``newton``: the Newton matrix a second-order system's steps factor ("auto", "full" or
+    "reduced": see :func:`jointplay.simulate`).
     """
 
     def __init__(self, model: IntegratorModel, p: np.ndarray, scale: np.ndarray,
@@ -220,7 +225,7 @@ class NativeIntegrator:
                  max_steps: int, max_events: int, max_order: int = 5,
                  h_max: float = math.inf,
                  h_init: float = 0.0, sensitivities: SensitivityInputs | None = None,
-                 model_gaps: bool = False, peaks: bool = True) -> None:
+                 model_gaps: bool = False, peaks: bool = True, newton: str = "auto") -> None:
         self.lib = driver_library()
         self.model = model
         self.nx = model.n_state
@@ -252,6 +257,7 @@ class NativeIntegrator:
         cfg.max_steps, cfg.max_events = max_steps, max_events
         cfg.max_order = max_order
         cfg.peaks = int(peaks)
+        cfg.newton = NEWTON_MATRICES.index(newton)
         # Loading through the model first heals a damaged cached library (model.function
         # rebuilds it once); the driver then calls into the library that loads.
         # The state block of the Jacobian alone, where the model has it as its own function.

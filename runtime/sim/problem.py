@@ -107,6 +107,8 @@ class _Problem:
         self.sensitivity: Any = None
         # Whether the compiled loop locates each contact phase's peak normal force.
         self.peaks = True
+        # The Newton matrix of the compiled loop's steps ("auto", "full", "reduced").
+        self.newton = "auto"
 
     def tau(self, t: np.ndarray | float) -> np.ndarray:
         """Drive torques at times t: shape (len(t), ntau)."""
