@@ -168,6 +168,14 @@ def test_reduced_newton_matrix_equals_the_full_one(monkeypatch: pytest.MonkeyPat
     assert simulate(scene).stats["reduced_lu_decompositions"] > 0
     with pytest.raises(DescriptionError, match="newton: must be one of auto, full, reduced"):
         simulate(scene, newton="sparse")
+    import jointplay.sim as sim_module
+
+    def no_work(*args: object, **kwargs: object) -> None:
+        raise AssertionError("a model was loaded before the bad matrix was refused")
+
+    monkeypatch.setattr(sim_module, "load_scene_model", no_work)
+    with pytest.raises(DescriptionError, match="newton"):  # refused before any work
+        simulate(scene, newton="sparse", compare_ideal=True)
     assert reduced.stats["reduced_lu_decompositions"] == reduced.stats["lu_decompositions"] > 0
     assert full.stats["reduced_lu_decompositions"] == 0 < full.stats["lu_decompositions"]
     assert default.stats["reduced_lu_decompositions"] == 0

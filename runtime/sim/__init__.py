@@ -170,6 +170,11 @@ def simulate(scene: Scene, *, model: Model | None = None,
                                "run.atol or run.step): no tighter run can check its "
                                "accuracy; use verify=False")
 
+    if newton not in NEWTON_MATRICES:  # before any work, the ideal arm's run included
+        from jointplay.common.errors import DescriptionError
+
+        raise DescriptionError("newton", f"must be one of {', '.join(NEWTON_MATRICES)}, got "
+                               f"{newton!r}")
     names = _sensitivity_names(sensitivities, scene.run.integrator)
     model = model or load_scene_model(scene)
     p = _parameter_vector(model, scene, parameters)
@@ -187,14 +192,9 @@ def simulate(scene: Scene, *, model: Model | None = None,
                             if k in ideal_model.parameters}
         ideal_result = simulate(ideal_scene, model=ideal_model,
                                 parameters=ideal_params, quiet=quiet,
-                                plausibility=plausibility)
+                                plausibility=plausibility, newton=newton)
     pr = _Problem(model, scene, p)
     pr.peaks = bool(peaks)
-    if newton not in NEWTON_MATRICES:
-        from jointplay.common.errors import DescriptionError
-
-        raise DescriptionError("newton", f"must be one of {', '.join(NEWTON_MATRICES)}, got "
-                               f"{newton!r}")
     pr.newton = newton
     run = scene.run
     if model.structure.wear is not None and run.integrator != "bdf":
