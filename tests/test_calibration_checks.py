@@ -124,6 +124,51 @@ def test_the_carried_interval_spans_the_whole_line() -> None:
                                rtol=1e-12)
 
 
+def test_a_check_too_coarse_for_the_fits_valley_leaves_what_it_moves_undetermined() -> None:
+    """The fit's own valley spanning fewer than RESOLVED_POINTS of the check's line (valleys as
+    narrow could lie unseen between its points; a fit a valley off was once reported
+    determined so): the parameter the line moves is not determined, its interval spans the
+    check's extent (a grid spacing either side), one warning says why; the correlated
+    parameter the line holds is carried over that extent; the uncorrelated one keeps its
+    interval and verdict. The width is counted over adjacent points at or below the level."""
+    from jointplay.calibration.basins import Basins, threshold, widened
+    from jointplay.calibration.valleys import RESOLVED_POINTS, _valley_points
+
+    chi2 = np.array([9.0, 1.0, 2.0, 3.0, 9.0, 0.0, 9.0, 3.0])
+    assert [_valley_points(chi2, i, chi2[i] + 3.5) for i in (1, 5)] == [3, 1]
+    assert _valley_points(np.array([1.0, np.inf, 1.0]), 1, np.inf) == 0  # a run that stopped
+    assert RESOLVED_POINTS == 3
+    rng = np.random.default_rng(3)
+    c, m, u = (rng.standard_normal(400) for _ in range(3))
+    basis, _ = np.linalg.qr(np.column_stack([c, m]))
+    u -= basis @ (basis.T @ u)
+    jac = np.column_stack([c, 0.8 * c + 0.6 * m, u])
+    values = np.array([30.0, 5.0, 7.0])
+    names = ("c", "mu", "u")
+    spread = uncertainty(jac, values, np.full(3, -100.0), np.full(3, 100.0), names)
+    grid = np.array([2000 * spread.std[0], 0.0, 0.0])  # mu carried past MAX_RELATIVE_STD
+    nothing = Basins(values, 4000.0, (), threshold(), (), 10, values[None, :])
+    for coarse in (False, True):
+        check = ValleyCheck(0.32, (), np.array([0.1 * spread.std[0], 0, 0]), 162,
+                            (values - grid, values + grid), values.copy(), coarse)
+        low, high, determined, warnings = widened(spread, nothing, names, check)
+        if not coarse:  # no rival: nothing changes
+            assert determined.all() and warnings == []
+            continue
+        assert list(determined) == [False, False, True]
+        np.testing.assert_allclose([low[0], high[0]], [values[0] - grid[0], values[0] + grid[0]],
+                                   rtol=1e-15)
+        slope = spread.covariance[1, 0] / spread.covariance[0, 0]
+        np.testing.assert_allclose(high[1] - low[1], 2 * abs(slope) * grid[0]
+                                   + 2 * Z95 * spread.std[1], rtol=1e-9)
+        np.testing.assert_allclose([low[2], high[2]], [spread.low95[2], spread.high95[2]],
+                                   rtol=1e-15)  # the carried shift of an uncorrelated one: 0
+        assert warnings[0].startswith("c is not determined by the search: over the first "
+                                      "0.32 s the fit's own valley of the cost spans fewer "
+                                      "than 3 points")
+        assert "a grid spacing either side" in warnings[0] and len(warnings) == 2
+
+
 def test_a_distrusted_search_reports_nothing_determined() -> None:
     """Residuals that are the noise, but a reason to distrust the search's valley (a held
     parameter that ended far from its held value): nothing is determined, each interval

@@ -25,7 +25,7 @@ from jointplay.calibration.continuation import loosened
 from jointplay.calibration.fit import Start, multi_start
 from jointplay.calibration.predict import Predictor, chi2_at_points, line_minima
 from jointplay.calibration.uncertainty import MAX_RELATIVE_STD, Z95, Uncertainty
-from jointplay.calibration.valleys import ValleyCheck
+from jointplay.calibration.valleys import RESOLVED_POINTS, ValleyCheck
 
 CONFIDENCE = 0.95
 """The intervals' confidence level: a point within ``chi2.ppf(CONFIDENCE, 1)`` (3.84) of the
@@ -239,12 +239,12 @@ def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
     moved = check.spacing > 0
     covariance = spread.seen_covariance if spread.seen_covariance is not None \
         else spread.covariance
-    if not check.rivals or check.centre is None or not moved.any() or moved.all() \
-            or not np.all(np.isfinite(covariance)):
+    if not (check.rivals or check.coarse) or check.centre is None or not moved.any() \
+            or moved.all() or not np.all(np.isfinite(covariance)):
         return
     points = np.array([p for p, _ in check.rivals]).reshape(-1, len(names))
     outside = ((points < spread.low95) | (points > spread.high95))[:, moved].any(axis=1)
-    if not outside.any():
+    if not (outside.any() or check.coarse):
         return
     fixed = ~moved
     regression = covariance[np.ix_(fixed, moved)] @ np.linalg.pinv(
@@ -261,8 +261,8 @@ def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
     for n, k in enumerate(np.flatnonzero(fixed)):
         new_low = min(low[k], float(shifted[:, n].min() - half[n]))
         new_high = max(high[k], float(shifted[:, n].max() + half[n]))
-        if new_low >= low[k] and new_high <= high[k]:
-            continue
+        if max(low[k] - new_low, new_high - high[k]) <= 1e-9 * (high[k] - low[k]):
+            continue  # uncorrelated: carried by round-off only
         low[k], high[k] = new_low, new_high
         value = (spread.low95[k] + spread.high95[k]) / 2
         scale = abs(value) if value != 0 else 1.0
@@ -288,6 +288,16 @@ def _unexcluded(check: ValleyCheck, names: tuple[str, ...],
     outside = ((points < low95) | (points > high95)) & moved
     for k, name in enumerate(names):
         rows = np.flatnonzero(outside[:, k])
+        if check.coarse and moved[k] and check.extent is not None:
+            determined[k] = False
+            low[k], high[k] = min(low[k], check.extent[0][k]), max(high[k], check.extent[1][k])
+            warnings.append(
+                f"{name} is not determined by the search: over the first {check.window_end:g} "
+                f"s the fit's own valley of the cost spans fewer than {RESOLVED_POINTS} points "
+                f"of the valley check's line ({spacing[k]:.3g} apart), so valleys as narrow as "
+                "it could lie unseen between them: its interval spans a grid spacing either "
+                f"side, {low[k]:.6g} to {high[k]:.6g}")
+            continue
         if not rows.size:
             continue
         determined[k] = False

@@ -31,7 +31,9 @@ class ValleyCheck:
     """What :func:`valley_check` found: the window (s) its line ran over, the other valleys'
     floors along it (a point of the line and its chi² there minus the floor of the best
     fit's own valley), the line's spacing in each parameter, its runs, and the extent of
-    its points in each parameter (lowest, highest; None where it ran no line)."""
+    its points in each parameter (lowest, highest; None where it ran no line); ``coarse``:
+    the fit's own valley spans fewer than RESOLVED_POINTS of a line's points, so a valley as
+    narrow could lie between them unseen (the extent is then a grid spacing either side)."""
 
     window_end: float
     rivals: tuple[tuple[np.ndarray, float], ...]
@@ -40,6 +42,14 @@ class ValleyCheck:
     extent: tuple[np.ndarray, np.ndarray] | None = None
     centre: np.ndarray | None = None
     """The point the line passes through (the fit it checks)."""
+    coarse: bool = False
+
+
+RESOLVED_POINTS = 3
+"""A line resolves the valleys along it where the fit's own valley (its points within the
+threshold of its floor) spans at least this many points: a valley as wide then holds one of
+them wherever it lies (on paper-fast-tip it spanned 1 point, neighbours differing by hundreds
+in chi², and a fit a valley off was reported determined; on paper-default-tip 14)."""
 
 
 def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
@@ -65,15 +75,29 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
                                       directions, steps, workers)
     rivals: list[tuple[np.ndarray, float]] = []
     spacing = np.zeros(free.size)
+    coarse = False
     for n, (line, chi2) in enumerate(zip(lines, values, strict=True)):
         own = _valley_floor(chi2, steps.size // 2)
         rivals += [(line[i], float(chi2[i] - chi2[own])) for i in line_minima(chi2)
                    if i != own and chi2[i] <= chi2[own] + within]
+        coarse |= _valley_points(chi2, own, chi2[own] + within) < RESOLVED_POINTS
         spacing = np.maximum(spacing, np.abs(directions[n]) * (steps[1] - steps[0]))
     points = np.array([p for line in lines for p in line]).reshape(-1, free.size)
     extent = (points.min(axis=0), points.max(axis=0)) if len(points) else None
+    if coarse:  # the search located the fit to within a grid spacing, and no closer
+        scale = np.asarray(scan.scale)
+        extent = (np.maximum(best - scale, free.lower), np.minimum(best + scale, free.upper))
     return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more, extent,
-                       np.array(best, dtype=float))
+                       np.array(best, dtype=float), coarse)
+
+
+def _valley_points(chi2: np.ndarray, floor: int, level: float) -> int:
+    """How many adjacent points around index ``floor`` of a line lie at or below ``level``
+    (finite; padded above, so that both ends stop the count)."""
+    below = np.append(np.insert(np.isfinite(chi2) & (chi2 <= level), 0, False), False)
+    low = floor - np.flatnonzero(~below[:floor + 1])[-1]
+    high = np.flatnonzero(~below[floor + 2:])[0]
+    return int(low + high + 1) if below[floor + 1] else 0
 
 
 def _valley_floor(chi2: np.ndarray, i: int) -> int:
