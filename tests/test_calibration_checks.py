@@ -164,8 +164,8 @@ def test_a_check_too_coarse_for_the_fits_valley_leaves_what_it_moves_undetermine
         np.testing.assert_allclose([low[2], high[2]], [spread.low95[2], spread.high95[2]],
                                    rtol=1e-15)  # the carried shift of an uncorrelated one: 0
         assert warnings[0].startswith("c is not determined by the search: over the first "
-                                      "0.32 s the fit's own valley of the cost spans fewer "
-                                      "than 3 points")
+                                      "0.32 s the fit's own valley spans fewer than 3 "
+                                      "points")
         assert "a grid spacing either side" in warnings[0] and len(warnings) == 2
 
 

@@ -278,8 +278,9 @@ def _unexcluded(check: ValleyCheck, names: tuple[str, ...],
                 limit: float, verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]],
                 low95: np.ndarray, high95: np.ndarray) -> None:
     """``verdict`` (low, high, determined, warnings) changed in place for the valley check's
-    rivals outside the intervals ``low95`` to ``high95``: such a parameter's interval spans the
-    check's whole lines (they resolve only the valleys they cross near their floors)."""
+    rivals outside the intervals ``low95`` to ``high95``, and for a coarse check: such a
+    parameter's interval spans the check's extent (its lines resolve only the valleys they
+    cross near their floors)."""
     low, high, determined, warnings = verdict
     spacing = check.spacing
     moved = spacing > 0
@@ -288,24 +289,24 @@ def _unexcluded(check: ValleyCheck, names: tuple[str, ...],
     outside = ((points < low95) | (points > high95)) & moved
     for k, name in enumerate(names):
         rows = np.flatnonzero(outside[:, k])
-        if check.coarse and moved[k] and check.extent is not None:
-            determined[k] = False
-            low[k], high[k] = min(low[k], check.extent[0][k]), max(high[k], check.extent[1][k])
-            warnings.append(
-                f"{name} is not determined by the search: over the first {check.window_end:g} "
-                f"s the fit's own valley of the cost spans fewer than {RESOLVED_POINTS} points "
-                f"of the valley check's line ({spacing[k]:.3g} apart), so valleys as narrow as "
-                "it could lie unseen between them: its interval spans a grid spacing either "
-                f"side, {low[k]:.6g} to {high[k]:.6g}")
-            continue
-        if not rows.size:
+        coarse = check.coarse and moved[k] and check.extent is not None
+        if not (rows.size or coarse):
             continue
         determined[k] = False
-        low[k] = min(low[k], float(np.min(points[rows, k])) - spacing[k])
-        high[k] = max(high[k], float(np.max(points[rows, k])) + spacing[k])
+        if rows.size:
+            low[k] = min(low[k], float(np.min(points[rows, k])) - spacing[k])
+            high[k] = max(high[k], float(np.max(points[rows, k])) + spacing[k])
         if check.extent is not None:
             low[k] = min(low[k], float(check.extent[0][k]))
             high[k] = max(high[k], float(check.extent[1][k]))
+        if coarse:
+            warnings.append(
+                f"{name} is not determined by the search: over the first {check.window_end:g} "
+                f"s the fit's own valley spans fewer than {RESOLVED_POINTS} points of the "
+                f"valley check's line ({spacing[k]:.3g} apart), and valleys as narrow could lie "
+                f"unseen between them: its interval spans a grid spacing either side, "
+                f"{low[k]:.6g} to {high[k]:.6g}")
+            continue
         partners = sorted(names[j] for j in np.flatnonzero(moved) if j != k)
         along = f" along {name} and {', '.join(partners)}" if partners else ""
         nearest = rows[np.argmin(rise[rows])]

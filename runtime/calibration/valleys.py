@@ -31,9 +31,8 @@ class ValleyCheck:
     """What :func:`valley_check` found: the window (s) its line ran over, the other valleys'
     floors along it (a point of the line and its chi² there minus the floor of the best
     fit's own valley), the line's spacing in each parameter, its runs, and the extent of
-    its points in each parameter (lowest, highest; None where it ran no line); ``coarse``:
-    the fit's own valley spans fewer than RESOLVED_POINTS of a line's points, so a valley as
-    narrow could lie between them unseen (the extent is then a grid spacing either side)."""
+    its points in each parameter (lowest, highest; None where it ran no line; a grid spacing
+    either side where ``coarse``: a line too coarse for the fit's own valley)."""
 
     window_end: float
     rivals: tuple[tuple[np.ndarray, float], ...]
@@ -47,9 +46,8 @@ class ValleyCheck:
 
 RESOLVED_POINTS = 3
 """A line resolves the valleys along it where the fit's own valley (its points within the
-threshold of its floor) spans at least this many points: a valley as wide then holds one of
-them wherever it lies (on paper-fast-tip it spanned 1 point, neighbours differing by hundreds
-in chi², and a fit a valley off was reported determined; on paper-default-tip 14)."""
+threshold of its floor) spans at least this many points: a valley as wide holds one of them
+wherever it lies (on paper-fast-tip a fit a valley off, reported determined, spanned 1)."""
 
 
 def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
@@ -92,9 +90,8 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
 
 
 def _valley_points(chi2: np.ndarray, floor: int, level: float) -> int:
-    """How many adjacent points around index ``floor`` of a line lie at or below ``level``
-    (finite; padded above, so that both ends stop the count)."""
-    below = np.append(np.insert(np.isfinite(chi2) & (chi2 <= level), 0, False), False)
+    """How many adjacent points around index ``floor`` of a line lie at or below ``level``."""
+    below = np.append(np.insert(np.isfinite(chi2) & (chi2 <= level), 0, False), False)  # padded
     low = floor - np.flatnonzero(~below[:floor + 1])[-1]
     high = np.flatnonzero(~below[floor + 2:])[0]
     return int(low + high + 1) if below[floor + 1] else 0
