@@ -270,8 +270,8 @@ def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
             determined[k] = False
         warnings.append(
             f"{names[k]}: its interval is widened to {low[k]:.6g} to {high[k]:.6g} to hold "
-            f"its values in the other valleys the valley check found along {partners} "
-            "(carried by its correlation with them)")
+            f"its values in the other valleys the valley check found or could not exclude "
+            f"along {partners} (carried by its correlation with them)")
 
 
 def _unexcluded(check: ValleyCheck, names: tuple[str, ...],
