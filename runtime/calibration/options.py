@@ -64,8 +64,9 @@ class CalibrationOptions:
     valley_check_points : int
         With ``basins``, runs over the valley lines' first window along the clearances' rugged
         directions through the best fit, VALLEY_CHECK_REACH grid spacings either side, whose
-        rival valleys leave a parameter undetermined (:func:`valley_check`; 0: no check); run
-        only where the noise explains the residuals (otherwise nothing is determined).
+        rival valleys, or a line too coarse for the fit's own valley, leave a parameter
+        undetermined (:func:`valley_check`; 0: no check); run only where the noise explains
+        the residuals (otherwise nothing is determined).
     basins : bool
         Look for the whole record's other minima the data cannot tell from the best fit, and
         widen the intervals to hold them (:mod:`jointplay.calibration.basins`).

@@ -69,8 +69,9 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="runs over 0.32 s along the clearances' rugged directions (all "
                         "but the weakest) through the best fit, 0.2 grid spacings either "
                         "side; a clearance whose interval misses another valley within "
-                        "chi² + 3.84 of the fit's there is reported not determined, its "
-                        "interval spanning the lines; run only where the noise explains the "
+                        "chi² + 3.84 of the fit's there, or whose own valley the line is too "
+                        "coarse to resolve, is reported not determined, its interval "
+                        "spanning the lines; run only where the noise explains the "
                         "residuals (default 161 per direction; 0: no check)")
     p.add_argument("--no-basin-check", dest="basins", action="store_false",
                    help="skip the search for the other minima of the whole record's cost "
