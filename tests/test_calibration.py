@@ -699,6 +699,7 @@ def test_the_valley_check_finds_the_truths_valley_beside_a_fit_one_valley_off() 
                          ValleyScan(0.32, 161, 0.2, 1, (2e-6, 2e-6, 0.0)), 3.0, 2.0,
                          threshold(), workers=2)
     assert check.window_end == pytest.approx(0.32) and check.runs == 161 + 1
+    assert not check.coarse  # a smooth excitation: the line resolves the fit's own valley
     assert check.extent is not None  # the lines' ends, 80 steps of its spacing either side
     assert np.all(check.extent[1] - check.extent[0]
                   == pytest.approx(160 * check.spacing, rel=1e-6, abs=1e-15))
