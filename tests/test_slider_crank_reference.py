@@ -322,8 +322,8 @@ def test_five_revolutions_statistics_match_exudyn() -> None:
     different tolerances are equally valid and differ (measured, the mean located peak force:
     jointplay 12.12-12.92 kN over seven tolerances, Exudyn 10.93-13.48 kN over six; one
     Exudyn run against four of jointplay's is no test). Each statistic's two ensembles must
-    not be told apart by an exact permutation test at level 0.002 (measured: every p >= 0.038,
-    the least the fraction in contact's and the impacts' 0.042).
+    not be told apart by an exact permutation test at level 0.002 (measured: every p >= 0.038;
+    the fraction in contact 0.038, the impacts 0.042).
     """
     five = 5 * REVOLUTION
     runs = [jointplay_run("scenes/slider_crank.toml", five, tol)[1] for tol in JOINTPLAY_DRAWS]
