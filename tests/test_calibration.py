@@ -453,7 +453,7 @@ def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> 
         return record[0], predictor
 
     settled, _ = fitted(True)
-    full, predictor = fitted(False)  # a window's fit: SciPy's ftol or xtol ends it
+    full, predictor = fitted(False)  # SciPy's ftol or xtol ends it
     assert settled.message.startswith("settled") and not full.message.startswith("settled")
     assert settled.evaluations < full.evaluations
     jacobian = whitened(predictor.jacobian(np.array(full.end)), weights)

@@ -347,7 +347,8 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
         return (None, x), runs
     stage = probe.for_free(_holding(predictor.free, x, held))
     try:
-        x_next, record = multi_start(stage, weights, starts, max_evaluations, stop_early=True)
+        x_next, record = multi_start(stage, weights, starts, max_evaluations, stop_early=True,
+                                     settle=True)
     except SimulationError:
         return None, runs + stage.counter.simulations
     runs += stage.counter.simulations
