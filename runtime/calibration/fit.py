@@ -187,9 +187,8 @@ SETTLED_SIGMAS = 0.1
 standard deviations of it, in the metric of the Jacobian there (scaled by sqrt(chi²/dof) where
 the fit does not yet explain the data): such a step changes chi² by a few hundredths, below the
 integrator's own scatter, where SciPy's ``xtol`` goes on shrinking the trust region through
-rejected runs. The windows' fits settle too: they only rank the tracks, by margins of tens.
-(On the benchmark's paper-multisine-b-tip seed 1 this cut the windows' runs from 1,410 to
-1,089 and the whole calibration from 172 s to 133 s.)"""
+rejected runs. Every fit of the search settles: the windows' fits only rank the tracks (by
+margins of tens in chi²), the friction's fit before the grid only seeds it."""
 
 
 class _Settled(Exception):

@@ -80,7 +80,8 @@ def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
     probe = Predictor(loosened(predictor.scene, looser), predictor.model,
                       _holding(free, start, held), predictor.measured, compiled=predictor.compiled)
     try:
-        x, _ = multi_start(probe, weights, start[None, :], max_evaluations, stop_early=False)
+        x, _ = multi_start(probe, weights, start[None, :], max_evaluations, stop_early=False,
+                           settle=True)
     except SimulationError:
         return start, runs + probe.counter.simulations
     x = np.asarray(x, dtype=float)
