@@ -73,9 +73,9 @@ def test_recovers_parameters_with_intervals_that_cover() -> None:
 
 def test_horizon_continuation_grows_the_window_from_the_previous_estimate() -> None:
     """Windows of 0.05, 0.1, 0.2 s, then the whole 0.4 s record: each stage starts where the
-    previous one ended and settles, the last stage is the reported fit (the basin check off: its local
-    fits may end a little lower in the same basin, 0.003 in chi² here, and move the
-    estimate there), and it recovers the truth."""
+    previous one ended and settles, the last stage is the reported fit (the basin check off:
+    its local fits may end a little lower in the same basin, 0.003 in chi² here, and move
+    the estimate there), and it recovers the truth."""
     scene = _ideal_scene()
     truth = {"payload.mass": 2.3, "link2.com": 0.19}
     options = CalibrationOptions(tighten=1.0, starts=1, scan_points=0, profile_points=0,

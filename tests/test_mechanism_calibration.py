@@ -161,6 +161,12 @@ def test_a_parameter_no_output_depends_on_is_not_determined(scene_file: Path,
     assert result.fit_explains_data, result.warnings
     assert not result.estimates["slider.inertia"].determined
     assert any("do not depend on it" in w for w in result.warnings), result.warnings
+    # The profiles' runs are counted once, in one process as on several.
+    profiled = jp.calibrate(scene, data, ["slider.inertia"], noise=NOISE,
+                            options=CalibrationOptions(starts=1, scan_points=0,
+                                                       profile_points=3, workers=1))
+    assert profiled.simulations_by_kind == {**result.simulations_by_kind, "cost profiles": 3}
+    assert profiled.simulations == result.simulations + 3
 
 
 BAD = [

@@ -22,7 +22,7 @@ from jointplay.calibration.fit import (
     starts_around,
     timed,
 )
-from jointplay.calibration.grid import Grid, GridResult, grid_candidates, grid_scale, others_first
+from jointplay.calibration.grid import Grid, grid_candidates, grid_scale, others_first
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
 from jointplay.calibration.noise import column_noise, residual_check
 
@@ -271,9 +271,14 @@ def _run(problem: Problem) -> CalibrationResult:
     profiles, profile_runs = cost_profiles(predictor, optimum, spread, opts.profile_points,
                                            opts.workers)
     wall1, cpu1 = timed()
-    return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   wall1 - wall0, cpu1 - cpu0, misfit is None, tuple(stages), stage_runs, grid,
-                   line_runs, profile_runs, check.runs if check else 0)
+    runs = {**predictor.counter.by_kind, "continuation windows": stage_runs,
+            "valley check": check.runs if check else 0, "basin lines": line_runs,
+            "cost profiles": profile_runs}
+    source = {name: ("compiled sensitivities" if name in predictor.compiled
+                     else "central differences") for name in free.names}
+    return result_of(problem, optimum, spread, (fitted, stats, warnings, misfit is None),
+                     profiles, runs, (wall1 - wall0, cpu1 - cpu0), source,
+                     dataclasses.asdict(opts), stages=tuple(stages), grid=grid)
 
 
 HELD_DRIFT = 0.05
@@ -327,34 +332,31 @@ def _moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
     return Optimum(x, optimum.sigma, residuals, jacobian, optimum.starts)
 
 
-def _result(problem: Problem, predictor: Predictor, optimum: Any, spread: Uncertainty,
-            fitted: np.ndarray, stats: dict[str, Any], warnings: list[str],
-            profiles: dict[str, dict[str, list[float]]], wall: float, cpu: float,
-            explains: bool, stages: tuple[Stage, ...] = (), stage_runs: int = 0,
-            grid: GridResult | None = None, line_runs: int = 0, profile_runs: int = 0,
-            check_runs: int = 0) -> CalibrationResult:
-    free = problem.free
-    estimates = estimates_at(optimum.values, free, spread, explains)
-    source = {name: ("compiled sensitivities" if name in predictor.compiled
-                     else "central differences") for name in free.names}
-    run_settings = problem.scene.run
+def result_of(problem: Any, optimum: Optimum, spread: Uncertainty,
+              judged: tuple[np.ndarray, dict[str, Any], list[str], bool],
+              profiles: dict[str, dict[str, list[float]]], runs: dict[str, int],
+              seconds: tuple[float, float], jacobian_source: dict[str, str],
+              settings: dict[str, Any], **search: Any) -> CalibrationResult:
+    """The result of an arm's or a mechanism's calibration: ``judged`` the fitted outputs,
+    residual statistics, warnings and whether the fit explains the data; ``runs`` the runs
+    by kind; ``settings`` those beside the run's tolerances; ``search`` what the arms'
+    search adds (``stages``, ``grid``)."""
+    fitted, stats, warnings, explains = judged
+    run, measured = problem.scene.run, problem.measured
     return CalibrationResult(
-        scene_name=problem.scene.name, measured=problem.measured, estimates=estimates,
+        scene_name=problem.scene.name, measured=measured,
+        estimates=estimates_at(optimum.values, problem.free, spread, explains),
         covariance=spread.covariance, correlation=spread.correlation,
         condition_number=spread.condition_number, residuals=stats,
-        noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
+        noise=dict(zip(measured.columns, map(float, optimum.sigma), strict=True)),
         noise_stated=problem.noise_spread is None, fitted=fitted, starts=optimum.starts,
-        simulations=(predictor.counter.simulations + stage_runs + line_runs + profile_runs
-                     + check_runs),
-        simulations_by_kind={**predictor.counter.by_kind, "continuation windows": stage_runs,
-                             "valley check": check_runs, "basin lines": line_runs,
-                             "cost profiles": profile_runs},
-        jacobian_source=source, wall_time_s=wall, cpu_time_s=cpu, warnings=tuple(warnings),
-        settings={"rtol": run_settings.rtol, "atol": run_settings.atol,
-                  "t_end": run_settings.t_end, "output_step": run_settings.output_step,
-                  **dataclasses.asdict(problem.options),
+        simulations=sum(runs.values()), simulations_by_kind=runs,
+        jacobian_source=jacobian_source, wall_time_s=seconds[0], cpu_time_s=seconds[1],
+        warnings=tuple(warnings),
+        settings={"rtol": run.rtol, "atol": run.atol, "t_end": run.t_end,
+                  "output_step": run.output_step, **settings,
                   "profile": "others fixed at their estimates"},
-        fit_explains_data=explains, profiles=profiles, stages=stages, grid=grid)
+        fit_explains_data=explains, profiles=profiles, **search)
 
 
 def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) -> Scene:

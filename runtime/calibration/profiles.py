@@ -8,12 +8,13 @@ holds, and where impacts make the cost jump or a second minimum appear.
 
 from __future__ import annotations
 
+import copy
 import math
 from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.predict import Predictor, chi2_at_points
+from jointplay.calibration.predict import Counter, Predictor, chi2_at_points
 from jointplay.calibration.uncertainty import Uncertainty
 
 PROFILE_SIGMAS = 4.0
@@ -25,7 +26,8 @@ UNDETERMINED_SPAN = 0.5
 def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty, points: int,
                   workers: int = 1) -> tuple[dict[str, dict[str, list[float]]], int]:
     """``{name: {"value": [...], "chi2": [...], "quadratic": [...]}}`` (empty if points=0;
-    chi² NaN where the run stops), and the runs, made on up to ``workers`` processes."""
+    chi² NaN where the run stops), and the runs, made on up to ``workers`` processes; for an
+    arm's and a mechanism's predictor alike."""
     if points == 0:
         return {}, 0
     free = predictor.free
@@ -40,8 +42,9 @@ def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty, point
                                  min(best[k] + half, free.upper[k]), points))
     every = [np.where(np.arange(free.size) == k, value, best)
              for k, grid in enumerate(grids) for value in grid]
-    probe = Predictor(predictor.scene, predictor.model, free, predictor.measured,
-                      compiled=predictor.compiled)
+    # its own count (the runs are returned, not counted twice) and cache (one run a point)
+    probe = copy.copy(predictor)
+    probe.counter, probe._cache = Counter(), {}
     values, runs = chi2_at_points(probe, optimum.sigma, every, workers)
     out: dict[str, dict[str, list[float]]] = {}
     for k, name in enumerate(free.names):

@@ -39,8 +39,8 @@ def write_report(result: CalibrationResult, out: str | Path, plan: OutputPlan,
         data = {**result.to_dict(), "command": command}
         atomic_write_text(folder / "calibration.json", json.dumps(data, indent=2) + "\n")
         atomic_write_text(folder / "report.md", report_text(result, command))
-        _fit_figure(result, folder / "fit.png")
-        _residual_figure(result, folder / "residuals.png")
+        _column_figure(result, folder / "fit.png", residuals=False)
+        _column_figure(result, folder / "residuals.png", residuals=True)
         _profile_figure(result, folder / "profiles.png")
     return [folder / name for name in FILES]
 
@@ -101,36 +101,30 @@ def _correlations(result: CalibrationResult) -> str:
     return ", ".join(pairs) if pairs else "(one parameter)"
 
 
-def _fit_figure(result: CalibrationResult, path: Path) -> None:
+def _column_figure(result: CalibrationResult, path: Path, residuals: bool) -> None:
+    """Each measured column against time: measured and fitted, or the residuals beside the
+    noise's ±2σ band."""
     measured, n = result.measured, len(result.measured.columns)
-    fig, axes = figure(n, 1, 7.0, 2.2 * n, sharex=True)
+    fig, axes = figure(n, 1, 7.0, (2.0 if residuals else 2.2) * n, sharex=True)
     for k, column in enumerate(measured.columns):
         ax = axes[k, 0]
+        if residuals:
+            ax.plot(measured.t, result.fitted[:, k] - measured.values[:, k], lw=0.6,
+                    color="C3", rasterized=True)
+            sigma = result.noise[column]
+            ax.axhspan(-2 * sigma, 2 * sigma, color="0.85", zorder=0,
+                       label=f"±2σ noise ({'stated' if result.noise_stated else 'estimated'})")
+            ax.set_ylabel(f"{column} residual")
+            continue
         ax.plot(measured.t, measured.values[:, k], ".", ms=2, color="0.5", label="measured",
                 rasterized=True)
         ax.plot(measured.t, result.fitted[:, k], "-", lw=1.0, color="C0", label="fitted")
         unit = result.settings.get("units", {}).get(column)  # a mechanism's outputs
         ax.set_ylabel(f"{column} ({unit or ('m' if column.startswith('tip') else 'rad')})")
-    axes[0, 0].legend(loc="best", fontsize=8)
+    axes[0, 0].legend(loc="upper right" if residuals else "best", fontsize=8)
     axes[-1, 0].set_xlabel("time (s)")
-    fig.suptitle(f"{result.scene_name}: measured and fitted")
-    save(fig, path)
-
-
-def _residual_figure(result: CalibrationResult, path: Path) -> None:
-    measured, n = result.measured, len(result.measured.columns)
-    fig, axes = figure(n, 1, 7.0, 2.0 * n, sharex=True)
-    for k, column in enumerate(measured.columns):
-        ax = axes[k, 0]
-        ax.plot(measured.t, result.fitted[:, k] - measured.values[:, k], lw=0.6, color="C3",
-                rasterized=True)
-        sigma = result.noise[column]
-        ax.axhspan(-2 * sigma, 2 * sigma, color="0.85", zorder=0,
-                   label=f"±2σ noise ({'stated' if result.noise_stated else 'estimated'})")
-        ax.set_ylabel(f"{column} residual")
-    axes[0, 0].legend(loc="upper right", fontsize=8)
-    axes[-1, 0].set_xlabel("time (s)")
-    fig.suptitle("residuals (fitted - measured)")
+    fig.suptitle("residuals (fitted - measured)" if residuals
+                 else f"{result.scene_name}: measured and fitted")
     save(fig, path)
 
 

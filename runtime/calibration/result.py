@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -151,9 +152,7 @@ class CalibrationResult:
             "condition_number": number(self.condition_number),
             "residuals": self.residuals,
             "noise": {"stated": self.noise_stated, "std": self.noise},
-            "starts": [{"start": list(s.start), "end": list(s.end), "chi2": number(s.chi2),
-                        "evaluations": s.evaluations, "message": s.message,
-                        "failed": s.failed} for s in self.starts],
+            "starts": [{**dataclasses.asdict(s), "chi2": number(s.chi2)} for s in self.starts],
             "simulations": self.simulations,
             "simulations_by_kind": self.simulations_by_kind,
             "jacobian": self.jacobian_source,
@@ -161,11 +160,8 @@ class CalibrationResult:
             "cpu_time_s": self.cpu_time_s,
             "warnings": list(self.warnings),
             "fit_explains_data": self.fit_explains_data,
-            "continuation": [{"window_end": s.window_end, "samples": s.samples,
-                              "start": list(s.start), "end": list(s.end), "chi2": number(s.chi2),
-                              "dof": s.dof, "evaluations": s.evaluations,
-                              "simulations": s.simulations, "held": list(s.held),
-                              "track": s.track, "message": s.message} for s in self.stages],
+            "continuation": [{**dataclasses.asdict(s), "chi2": number(s.chi2)}
+                             for s in self.stages],
             "grid": None if self.grid is None else {
                 "axes": list(self.grid.axes), "points_per_axis": self.grid.points_per_axis,
                 "window_end": self.grid.window_end, "simulations": self.grid.simulations,

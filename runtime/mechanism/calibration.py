@@ -22,27 +22,18 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.api import CalibrationOptions, estimates_at, judged_fit
+from jointplay.calibration.api import CalibrationOptions, judged_fit, result_of
 from jointplay.calibration.basins import Basins, widened
 from jointplay.calibration.basins import threshold as basin_threshold
-from jointplay.calibration.fit import (
-    Optimum,
-    Start,
-    multi_start,
-    timed,
-)
+from jointplay.calibration.fit import Optimum, Start, multi_start, timed
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels
 from jointplay.calibration.noise import column_noise
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import (
-    chi2_at_points,
-    whitened,
-)
-from jointplay.calibration.profiles import PROFILE_SIGMAS, UNDETERMINED_SPAN
+from jointplay.calibration.predict import whitened
+from jointplay.calibration.profiles import cost_profiles
 from jointplay.calibration.result import CalibrationResult
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
 from jointplay.common.errors import DescriptionError
@@ -197,8 +188,15 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
         reached=optimum.values)
     stats["model_error_chi2"] = model_error if math.isfinite(model_error) else None
     wall1, cpu1 = timed()
-    return _result(problem, predictor, optimum, spread, fitted, stats, warnings, profiles,
-                   profile_runs, misfit is None, (wall1 - wall0, cpu1 - cpu0), windows)
+    units = dict(zip(problem.model.coordinates, problem.model.units, strict=True))
+    settings = {**{k: v for k, v in dataclasses.asdict(opts).items() if k not in ARMS_ONLY},
+                "search": search_text(opts, windows),
+                "units": {c: _unit(c, units) for c in problem.measured.columns}}
+    return result_of(problem, optimum, spread, (fitted, stats, warnings, misfit is None),
+                     profiles, {"fits": predictor.counter.simulations,
+                                "cost profiles": profile_runs},
+                     (wall1 - wall0, cpu1 - cpu0),
+                     {name: "central differences" for name in free.names}, settings)
 
 
 
@@ -216,37 +214,20 @@ def _moved_to(predictor: MechanismPredictor, optimum: Optimum, x: np.ndarray) ->
 def _profiles(predictor: MechanismPredictor, optimum: Optimum, spread: Uncertainty,
               opts: CalibrationOptions
               ) -> tuple[dict[str, dict[str, list[float]]], int, np.ndarray | None]:
-    """chi² along each parameter, the others held at the best fit (the arms' form:
-    :func:`jointplay.calibration.profiles.cost_profiles`), the runs, and the lowest point
-    found where it lies LOWER_ELSEWHERE below the best (else None)."""
-    free, best = predictor.free, optimum.values
-    points = opts.profile_points
-    if points == 0:
-        return {}, 0, None
-    chi2_min = _chi2(optimum)
-    jtj = np.sum(optimum.jacobian**2, axis=0)
-    grids = []
-    for k in range(free.size):
-        half = (PROFILE_SIGMAS * float(spread.std[k]) if math.isfinite(spread.std[k])
-                else UNDETERMINED_SPAN * (abs(best[k]) or 1.0))
-        grids.append(np.linspace(max(best[k] - half, free.lower[k]),
-                                 min(best[k] + half, free.upper[k]), points))
-    every = [np.where(np.arange(free.size) == k, value, best)
-             for k, grid in enumerate(grids) for value in grid]
-    values, runs = chi2_at_points(predictor, optimum.sigma, every,  # type: ignore[arg-type]
-                                  opts.workers)
-    out: dict[str, dict[str, list[float]]] = {}
-    for k, name in enumerate(free.names):
-        held = 1.0 / math.sqrt(jtj[k]) if jtj[k] > 0 else math.inf
-        out[name] = {"value": grids[k].tolist(),
-                     "chi2": [v if math.isfinite(v) else math.nan
-                              for v in values[k * points:(k + 1) * points]],
-                     "quadratic": (chi2_min + ((grids[k] - best[k]) / held) ** 2).tolist(),
-                     "estimate": [float(best[k])], "chi2_min": [chi2_min]}
-    finite = [(v, x) for v, x in zip(values, every, strict=True) if math.isfinite(v)]
-    lowest = min(finite, key=lambda f: f[0]) if finite else None
-    lower = lowest[1] if lowest and lowest[0] < chi2_min - LOWER_ELSEWHERE else None
-    return out, runs, lower
+    """The cost profiles (:func:`jointplay.calibration.profiles.cost_profiles`), the runs,
+    and the lowest point found where it lies LOWER_ELSEWHERE below the best (else None)."""
+    profiles, runs = cost_profiles(predictor, optimum, spread,  # type: ignore[arg-type]
+                                   opts.profile_points, opts.workers)
+    found = [(chi2, k, value) for k, name in enumerate(predictor.free.names)
+             for value, chi2 in zip(profiles.get(name, {}).get("value", []),
+                                    profiles.get(name, {}).get("chi2", []), strict=True)
+             if math.isfinite(chi2)]
+    if not found or not min(found)[0] < _chi2(optimum) - LOWER_ELSEWHERE:
+        return profiles, runs, None
+    _, k, value = min(found)
+    lower = np.array(optimum.values, dtype=float)
+    lower[k] = value
+    return profiles, runs, lower
 
 
 def _basins(optimum: Optimum, spread: Uncertainty,
@@ -275,38 +256,6 @@ def _basins(optimum: Optimum, spread: Uncertainty,
                 region.append(np.where(np.arange(len(names)) == k, value, best))
     return Basins(best, best_chi2, tuple(rivals), limit, (), 0,
                   np.array(region).reshape(-1, best.size))
-
-
-def _result(problem: MechanismProblem, predictor: MechanismPredictor, optimum: Optimum,
-            spread: Uncertainty, fitted: np.ndarray, stats: dict[str, Any],
-            warnings: list[str], profiles: dict[str, dict[str, list[float]]],
-            profile_runs: int, explains: bool, seconds: tuple[float, float],
-            windows: list[float]) -> CalibrationResult:
-    free = problem.free
-    estimates = estimates_at(optimum.values, free, spread, explains)
-    run = problem.scene.run
-    units = dict(zip(problem.model.coordinates, problem.model.units, strict=True))
-    return CalibrationResult(
-        scene_name=problem.scene.name, measured=problem.measured, estimates=estimates,
-        covariance=spread.covariance, correlation=spread.correlation,
-        condition_number=spread.condition_number, residuals=stats,
-        noise=dict(zip(problem.measured.columns, map(float, optimum.sigma), strict=True)),
-        noise_stated=problem.noise_spread is None, fitted=fitted, starts=optimum.starts,
-        simulations=predictor.counter.simulations + profile_runs,
-        simulations_by_kind={"fits": predictor.counter.simulations,
-                             "cost profiles": profile_runs},
-        jacobian_source={name: "central differences" for name in free.names},
-        wall_time_s=seconds[0], cpu_time_s=seconds[1], warnings=tuple(warnings),
-        settings={"rtol": run.rtol, "atol": run.atol, "t_end": run.t_end,
-                  "output_step": run.output_step,
-                  **{k: v for k, v in dataclasses.asdict(problem.options).items()
-                     if k not in ARMS_ONLY},
-                  "search": search_text(problem.options, windows),
-                  "profile": "others fixed at their estimates",
-                  "units": {c: _unit(c, units) for c in problem.measured.columns}},
-        fit_explains_data=explains, profiles=profiles)
-
-
 
 
 def _unit(column: str, units: dict[str, str]) -> str:
