@@ -271,13 +271,13 @@ def _run(problem: Problem) -> CalibrationResult:
     profiles, profile_runs = cost_profiles(predictor, optimum, spread, opts.profile_points,
                                            opts.workers)
     wall1, cpu1 = timed()
-    runs = {**predictor.counter.by_kind, "continuation windows": stage_runs,
-            "valley check": check.runs if check else 0, "basin lines": line_runs,
-            "cost profiles": profile_runs}
+    by_kind = {**predictor.counter.by_kind, "continuation windows": stage_runs,
+               "valley check": check.runs if check else 0, "basin lines": line_runs,
+               "cost profiles": profile_runs}
     source = {name: ("compiled sensitivities" if name in predictor.compiled
                      else "central differences") for name in free.names}
     return result_of(problem, optimum, spread, (fitted, stats, warnings, misfit is None),
-                     profiles, runs, (wall1 - wall0, cpu1 - cpu0), source,
+                     profiles, by_kind, (wall1 - wall0, cpu1 - cpu0), source,
                      dataclasses.asdict(opts), stages=tuple(stages), grid=grid)
 
 
