@@ -218,13 +218,12 @@ def _profiles(predictor: MechanismPredictor, optimum: Optimum, spread: Uncertain
     and the lowest point found where it lies LOWER_ELSEWHERE below the best (else None)."""
     profiles, runs = cost_profiles(predictor, optimum, spread,  # type: ignore[arg-type]
                                    opts.profile_points, opts.workers)
-    found = [(chi2, k, value) for k, name in enumerate(predictor.free.names)
-             for value, chi2 in zip(profiles.get(name, {}).get("value", []),
-                                    profiles.get(name, {}).get("chi2", []), strict=True)
+    found = [(chi2, k, value) for k, name in enumerate(predictor.free.names) if name in profiles
+             for value, chi2 in zip(profiles[name]["value"], profiles[name]["chi2"], strict=True)
              if math.isfinite(chi2)]
-    if not found or not min(found)[0] < _chi2(optimum) - LOWER_ELSEWHERE:
+    lowest, k, value = min(found, default=(math.inf, 0, 0.0))
+    if not lowest < _chi2(optimum) - LOWER_ELSEWHERE:
         return profiles, runs, None
-    _, k, value = min(found)
     lower = np.array(optimum.values, dtype=float)
     lower[k] = value
     return profiles, runs, lower
