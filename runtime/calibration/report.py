@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import json
 import math
+from functools import partial
 from pathlib import Path
 
 import numpy as np
 
 from jointplay.calibration.result import CalibrationResult
-from jointplay.common.figures import figure, save
+from jointplay.common.figures import Margins, draw_all, figure, save
 from jointplay.common.files import OutputPlan, all_or_nothing, atomic_write_text, make_folder
 
 FILES = ("calibration.json", "report.md", "fit.png", "residuals.png", "profiles.png")
@@ -39,9 +40,9 @@ def write_report(result: CalibrationResult, out: str | Path, plan: OutputPlan,
         data = {**result.to_dict(), "command": command}
         atomic_write_text(folder / "calibration.json", json.dumps(data, indent=2) + "\n")
         atomic_write_text(folder / "report.md", report_text(result, command))
-        _column_figure(result, folder / "fit.png", residuals=False)
-        _column_figure(result, folder / "residuals.png", residuals=True)
-        _profile_figure(result, folder / "profiles.png")
+        draw_all([partial(_column_figure, result, folder / "fit.png", residuals=False),
+                  partial(_column_figure, result, folder / "residuals.png", residuals=True),
+                  partial(_profile_figure, result, folder / "profiles.png")])
     return [folder / name for name in FILES]
 
 
@@ -101,11 +102,12 @@ def _correlations(result: CalibrationResult) -> str:
     return ", ".join(pairs) if pairs else "(one parameter)"
 
 
-def _column_figure(result: CalibrationResult, path: Path, residuals: bool) -> None:
+def _column_figure(result: CalibrationResult, path: Path, residuals: bool) -> Path:
     """Each measured column against time: measured and fitted, or the residuals beside the
     noise's ±2σ band."""
     measured, n = result.measured, len(result.measured.columns)
-    fig, axes = figure(n, 1, 7.0, (2.0 if residuals else 2.2) * n, sharex=True)
+    fig, axes = figure(n, 1, 7.0, (2.0 if residuals else 2.2) * n + 0.6, sharex=True,
+                       margins=Margins(left=1.0))
     for k, column in enumerate(measured.columns):
         ax = axes[k, 0]
         if residuals:
@@ -125,12 +127,12 @@ def _column_figure(result: CalibrationResult, path: Path, residuals: bool) -> No
     axes[-1, 0].set_xlabel("time (s)")
     fig.suptitle("residuals (fitted - measured)" if residuals
                  else f"{result.scene_name}: measured and fitted")
-    save(fig, path)
+    return save(fig, path)
 
 
-def _profile_figure(result: CalibrationResult, path: Path) -> None:
+def _profile_figure(result: CalibrationResult, path: Path) -> Path:
     names = result.names
-    fig, axes = figure(1, len(names), 3.6 * len(names), 3.2)
+    fig, axes = figure(1, len(names), 3.6 * len(names), 3.4, margins=Margins(left=0.8))
     for k, name in enumerate(names):
         ax, profile, estimate = axes[0, k], result.profiles.get(name), result.estimates[name]
         if profile:
@@ -148,4 +150,4 @@ def _profile_figure(result: CalibrationResult, path: Path) -> None:
         ax.ticklabel_format(axis="x", style="sci", scilimits=(-3, 3))
     axes[0, 0].legend(fontsize=7)
     fig.suptitle("cost profiles: chi² along each parameter, the others held at their estimates")
-    save(fig, path)
+    return save(fig, path)
