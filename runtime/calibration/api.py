@@ -22,7 +22,7 @@ from jointplay.calibration.fit import (
     starts_around,
     timed,
 )
-from jointplay.calibration.grid import Grid, grid_candidates, grid_scale, others_first
+from jointplay.calibration.grid import Grid, GridResult, grid_candidates, grid_scale, others_first
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels, read_measured
 from jointplay.calibration.noise import column_noise, residual_check
 
@@ -336,11 +336,12 @@ def result_of(problem: Any, optimum: Optimum, spread: Uncertainty,
               judged: tuple[np.ndarray, dict[str, Any], list[str], bool],
               profiles: dict[str, dict[str, list[float]]], runs: dict[str, int],
               seconds: tuple[float, float], jacobian_source: dict[str, str],
-              settings: dict[str, Any], **search: Any) -> CalibrationResult:
+              settings: dict[str, Any], *, stages: tuple[Stage, ...] = (),
+              grid: GridResult | None = None) -> CalibrationResult:
     """The result of an arm's or a mechanism's calibration: ``judged`` the fitted outputs,
     residual statistics, warnings and whether the fit explains the data; ``runs`` the runs
-    by kind; ``settings`` those beside the run's tolerances; ``search`` what the arms'
-    search adds (``stages``, ``grid``)."""
+    by kind; ``settings`` those beside the run's tolerances; ``stages`` and ``grid`` what
+    the arms' search adds."""
     fitted, stats, warnings, explains = judged
     run, measured = problem.scene.run, problem.measured
     return CalibrationResult(
@@ -356,7 +357,7 @@ def result_of(problem: Any, optimum: Optimum, spread: Uncertainty,
         settings={"rtol": run.rtol, "atol": run.atol, "t_end": run.t_end,
                   "output_step": run.output_step, **settings,
                   "profile": "others fixed at their estimates"},
-        fit_explains_data=explains, profiles=profiles, **search)
+        fit_explains_data=explains, profiles=profiles, stages=stages, grid=grid)
 
 
 def _fit_scene(scene: Scene, measured: Measured, options: CalibrationOptions) -> Scene:
