@@ -143,12 +143,13 @@ def _explains(record: list[Start], predictor: Predictor) -> bool:
 
 
 def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
-                max_evaluations: int, stop_early: bool, workers: int = 1, settle: bool = False
-                ) -> tuple[np.ndarray, list[Start]]:
+                max_evaluations: int, stop_early: bool, workers: int = 1, settle: bool = False,
+                relative: float = 0.0) -> tuple[np.ndarray, list[Start]]:
     """Local fits from ``starts`` in turn, the best kept; with ``stop_early``, none after
     one that explains the data. Without it the fits are independent and run on up to
     ``workers`` forked processes (their runs added to ``predictor``'s count). With
-    ``settle``, each fit ends once settled (SETTLED_SIGMAS)."""
+    ``settle``, each fit ends once settled (SETTLED_SIGMAS), or once its next step moves
+    every parameter by less than ``relative`` of its value."""
     accept = explaining_limit(predictor.measured.size - predictor.free.size)
     best: np.ndarray | None = None
     best_chi2 = math.inf
@@ -156,14 +157,15 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
     done: list[Start] = []
     if stop_early or workers <= 1:
         for x0 in starts:
-            done.append(_local_fit(predictor, weights, x0, max_evaluations, settle))
+            done.append(_local_fit(predictor, weights, x0, max_evaluations, settle, relative))
             if stop_early and done[-1].chi2 <= accept:
                 break
     else:
         def fit(i: int) -> tuple[Start, dict[str, int]]:
             # counted here, in the worker: one worker may run several fits in turn
             before = dict(predictor.counter.by_kind)
-            start = _local_fit(predictor, weights, starts[i], max_evaluations, settle)
+            start = _local_fit(predictor, weights, starts[i], max_evaluations, settle,
+                               relative)
             return start, {k: v - before.get(k, 0) for k, v in predictor.counter.by_kind.items()}
 
         for start, counts in parallel_map(fit, len(starts), workers):
@@ -196,7 +198,7 @@ class _Settled(Exception):
 
 
 def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
-               max_evaluations: int, settle: bool = False) -> Start:
+               max_evaluations: int, settle: bool = False, relative: float = 0.0) -> Start:
     from scipy.optimize import least_squares
 
     free = predictor.free
@@ -212,7 +214,8 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
     best: list[tuple[np.ndarray, np.ndarray, float] | None] = [None]
 
     def residuals(x: np.ndarray) -> np.ndarray:
-        if settle and best[0] is not None and _within(x, best[0], dof):
+        if settle and best[0] is not None and (_within(x, best[0], dof) or np.all(
+                np.abs(x - best[0][0]) <= relative * np.abs(best[0][0]))):
             raise _Settled
         wanted = evaluations[0] == 0
         evaluations[0] += 1
@@ -244,7 +247,8 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
         assert best[0] is not None  # only raised once a point was accepted
         x, _, chi2 = best[0]
         return Start(tuple(x0), tuple(x), chi2, evaluations[0], "settled: the next step lies "
-                     f"within {SETTLED_SIGMAS} standard deviations of the best point")
+                     f"within {SETTLED_SIGMAS} standard deviations of the best point"
+                     + (f" or {relative:g} of its values" if relative else ""))
     return Start(tuple(x0), tuple(fit.x), 2.0 * float(fit.cost), int(fit.nfev), str(fit.message))
 
 

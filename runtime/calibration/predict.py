@@ -28,6 +28,9 @@ from jointplay.store.model import Model
 FD_RELATIVE_STEP = 1e-2
 
 
+PIECES_PER_WORKER = 4
+
+
 class TrialFailed(Exception):
     """A run at trial parameters stopped (a SimulationError): the message says where."""
 
@@ -198,8 +201,9 @@ def chi2_at(probe: Predictor, weights: np.ndarray, points: list[np.ndarray]
 def chi2_at_points(probe: Predictor, weights: np.ndarray, points: list[np.ndarray],
                    workers: int) -> tuple[list[float], int]:
     """:func:`chi2_at` of every point, in order, the points cut into pieces run on up to
-    ``workers`` forked processes; and the runs."""
-    pieces = chunks(len(points), workers)
+    ``workers`` forked processes (PIECES_PER_WORKER each: runs differ in cost, and a worker
+    that finishes first takes the next piece); and the runs."""
+    pieces = chunks(len(points), PIECES_PER_WORKER * workers)
     done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
                         len(pieces), workers)
     return [value for values, _ in done for value in values], sum(runs for _, runs in done)

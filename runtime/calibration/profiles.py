@@ -42,10 +42,14 @@ def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty, point
                                  min(best[k] + half, free.upper[k]), points))
     every = [np.where(np.arange(free.size) == k, value, best)
              for k, grid in enumerate(grids) for value in grid]
-    # its own count (the runs are returned, not counted twice) and cache (one run a point)
+    # its own count (the runs are returned, not counted twice) and cache (one run a point);
+    # the estimate itself (each profile's middle) is not run again: its chi² is chi2_min
     probe = copy.copy(predictor)
     probe.counter, probe._cache = Counter(), {}
-    values, runs = chi2_at_points(probe, optimum.sigma, every, workers)
+    away = [x for x in every if not np.array_equal(x, best)]
+    found, runs = chi2_at_points(probe, optimum.sigma, away, workers)
+    rest = iter(found)
+    values = [chi2_min if np.array_equal(x, best) else next(rest) for x in every]
     out: dict[str, dict[str, list[float]]] = {}
     for k, name in enumerate(free.names):
         sigma_held = 1.0 / math.sqrt(jtj_diag[k]) if jtj_diag[k] > 0 else math.inf
