@@ -439,7 +439,9 @@ def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> 
     deviations of its best point: at fewer runs than SciPy's own tolerances take, within
     that distance (in the metric of the Jacobian) of where they
     end and at a chi² a hundredth from theirs, on the arm with ideal joints (a smooth
-    cost)."""
+    cost). With ``relative`` (the friction's fit before the grid) it also ends once its
+    next step moves each parameter by less than that fraction: no later, within twice that
+    fraction of the full fit's estimate."""
     from jointplay.calibration import fit as fit_module
     from jointplay.calibration.api import prepare
     from jointplay.calibration.predict import Predictor, whitened
@@ -449,10 +451,11 @@ def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> 
     problem = prepare(scene, _synthetic(scene, truth, seed=5), list(truth), noise=NOISE)
     weights = np.full(2, NOISE)
 
-    def fitted(settle: bool) -> tuple[Any, Predictor]:
+    def fitted(settle: bool, relative: float = 0.0) -> tuple[Any, Predictor]:
         predictor = Predictor(problem.scene, problem.model, problem.free, problem.measured)
         _, record = fit_module.multi_start(predictor, weights, problem.free.start[None, :],
-                                           40, stop_early=False, settle=settle)
+                                           40, stop_early=False, settle=settle,
+                                           relative=relative)
         return record[0], predictor
 
     settled, _ = fitted(True)
@@ -463,6 +466,48 @@ def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> 
     distance = np.linalg.norm(jacobian @ (np.array(settled.end) - np.array(full.end)))
     assert distance < fit_module.SETTLED_SIGMAS
     assert abs(settled.chi2 - full.chi2) < 0.01
+    coarse, _ = fitted(True, relative=1e-2)
+    assert coarse.message.endswith("or 0.01 of its values")
+    assert coarse.evaluations <= settled.evaluations
+    assert np.all(np.abs(np.array(coarse.end) - full.end) <= 2e-2 * np.abs(full.end))
+
+
+def test_window_track_fits_pause_and_only_those_near_the_best_go_on(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """With several tracks each window fit pauses after CHECKPOINT_EVALUATIONS; of those
+    that used them all, only the ones within the tracks' margin (50 here) of the best go
+    on, from where they paused, with the rest of the evaluations; their stage adds both
+    parts. The fits are stand-ins: this is the rule, not the runs."""
+    from types import SimpleNamespace
+
+    from jointplay.calibration import continuation
+
+    calls: list[tuple[int, int, float]] = []
+    after_pause = {0: 100.0, 1: 120.0, 2: 500.0}  # each track's chi² where it paused
+
+    def stand_in(predictor: Any, scene: Any, part: Any, weights: Any, starts: np.ndarray,
+                 budget: int, end: float, label: int, held: Any) -> Any:
+        first = not any(c[0] == label for c in calls)
+        calls.append((label, budget, float(starts[0][0])))
+        used = budget if first and label != 0 else 3  # track 0 settles before the pause
+        chi2 = after_pause[label] - (0.0 if first else 10.0)
+        stage = continuation.Stage(end, 500, tuple(starts[0]), tuple(starts[0] + 1), chi2,
+                                   999, used, used + 1, "stand-in", (), label, 0.5)
+        return (stage, starts[0] + 1), used + 1
+
+    monkeypatch.setattr(continuation, "_stage_fit", stand_in)
+    predictor = SimpleNamespace(free=SimpleNamespace(size=1))
+    alive = [np.array([10.0]), np.array([20.0]), np.array([30.0])]
+    (fitted, unseen, stages), runs = continuation._window_fits(
+        predictor, None, SimpleNamespace(size=1000), np.ones(1), alive, [0, 1, 2], None, 40,
+        0.64, np.zeros(1, dtype=bool), 1)
+    pause = continuation.CHECKPOINT_EVALUATIONS
+    assert calls == [(0, pause, 10.0), (1, pause, 20.0), (2, pause, 30.0),
+                     (1, 40 - pause, 21.0)]
+    assert [(label, chi2) for label, _, chi2 in fitted] == [(0, 100.0), (1, 110.0), (2, 500.0)]
+    assert unseen == [] and runs == 4 + (pause + 1) * 2 + 4
+    assert (stages[1].start, stages[1].end) == ((20.0,), (22.0,))
+    assert (stages[1].evaluations, stages[1].simulations) == (pause + 3, pause + 1 + 4)
 
 
 def test_grid_local_minima_and_track_pruning() -> None:
