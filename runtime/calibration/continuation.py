@@ -269,9 +269,9 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
     runs = sum(stage_runs for _, stage_runs in done)
     paused = [(i, r[0]) for i, (r, _) in enumerate(done)
               if r is not None and r[0] is not None and r[0].evaluations >= pause]
-    finished = [r[0].chi2 for r, _ in done if r is not None and r[0] is not None]
+    at_pause = [r[0].chi2 for r, _ in done if r is not None and r[0] is not None]
     if pause < max_evaluations and paused:
-        best, dof = min(finished), max(part.size - predictor.free.size, 1)
+        best, dof = min(at_pause), max(part.size - predictor.free.size, 1)
         going = [(i, stage) for i, stage in paused if stage.chi2 <= best + track_margin(best, dof)]
         more = parallel_map(lambda j: fit(going[j][0], np.asarray(going[j][1].end),
                                           max_evaluations - pause), len(going), workers)

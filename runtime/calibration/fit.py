@@ -214,8 +214,8 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
     best: list[tuple[np.ndarray, np.ndarray, float] | None] = [None]
 
     def residuals(x: np.ndarray) -> np.ndarray:
-        if settle and best[0] is not None and (_within(x, best[0], dof) or np.all(
-                np.abs(x - best[0][0]) <= relative * np.abs(best[0][0]))):
+        if settle and best[0] is not None and (_within(x, best[0], dof) or _small(
+                x, best[0][0], relative)):
             raise _Settled
         wanted = evaluations[0] == 0
         evaluations[0] += 1
@@ -261,6 +261,12 @@ def _within(x: np.ndarray, best: tuple[np.ndarray, np.ndarray, float], dof: int)
         return False
     moved = float(np.linalg.norm(jac @ (np.asarray(x, float) - centre)))
     return moved < SETTLED_SIGMAS * math.sqrt(max(1.0, chi2 / dof))
+
+
+def _small(x: np.ndarray, centre: np.ndarray, relative: float) -> bool:
+    """Whether ``x`` moves every parameter by at most ``relative`` of its value at
+    ``centre`` (never, with ``relative`` 0)."""
+    return relative > 0 and bool(np.all(np.abs(x - centre) <= relative * np.abs(centre)))
 
 
 def timed() -> tuple[float, float]:
