@@ -267,11 +267,10 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
     pause = min(max_evaluations, CHECKPOINT_EVALUATIONS) if len(alive) > 1 else max_evaluations
     done = parallel_map(lambda i: fit(i, alive[i], pause), len(alive), workers)
     runs = sum(stage_runs for _, stage_runs in done)
-    paused = [(i, r[0]) for i, (r, _) in enumerate(done)
-              if r is not None and r[0] is not None and r[0].evaluations >= pause]
-    at_pause = [r[0].chi2 for r, _ in done if r is not None and r[0] is not None]
+    at_pause = [(i, r[0]) for i, (r, _) in enumerate(done) if r is not None and r[0] is not None]
+    paused = [(i, stage) for i, stage in at_pause if stage.evaluations >= pause]
     if pause < max_evaluations and paused:
-        best, dof = min(at_pause), max(part.size - predictor.free.size, 1)
+        best, dof = min(s.chi2 for _, s in at_pause), max(part.size - predictor.free.size, 1)
         going = [(i, stage) for i, stage in paused if stage.chi2 <= best + track_margin(best, dof)]
         more = parallel_map(lambda j: fit(going[j][0], np.asarray(going[j][1].end),
                                           max_evaluations - pause), len(going), workers)

@@ -29,6 +29,7 @@ FD_RELATIVE_STEP = 1e-2
 
 
 PIECES_PER_WORKER = 4
+"""Pieces a list of points is cut into per worker (:func:`chi2_at_points`)."""
 
 
 class TrialFailed(Exception):
