@@ -18,7 +18,9 @@ from jointplay.calibration.fit import (
     Optimum,
     Scan,
     least_squares_fit,
+    moved_to,
     residual_statistics,
+    search_box,
     starts_around,
     timed,
 )
@@ -29,7 +31,7 @@ from jointplay.calibration.noise import column_noise, residual_check
 # The options live in their own module; the name stays importable from here.
 from jointplay.calibration.options import CalibrationOptions as CalibrationOptions
 from jointplay.calibration.parameters import FreeParameters, free_parameters
-from jointplay.calibration.predict import Predictor, chi2_at_points, whitened
+from jointplay.calibration.predict import Predictor, chi2_at_points
 from jointplay.calibration.result import CalibrationResult, Estimate
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
 from jointplay.calibration.valleys import valley_check
@@ -240,7 +242,7 @@ def _run(problem: Problem) -> CalibrationResult:
         line_runs = found.line_runs
         optimum = dataclasses.replace(optimum, starts=optimum.starts + found.fits)
         if not np.array_equal(found.best, optimum.values):  # a lower minimum: moved there
-            optimum = _moved_to(predictor, optimum, found.best)
+            optimum = moved_to(predictor, optimum, found.best)
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
     fitted = predictor.outputs(optimum.values)
@@ -325,13 +327,6 @@ def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, worke
     return tracks[keep], runs
 
 
-def _moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
-    """``optimum`` moved to ``x`` (a lower minimum): its residuals and Jacobian there."""
-    residuals = whitened(predictor.outputs(x) - predictor.measured.values, optimum.sigma)
-    jacobian = whitened(predictor.jacobian(x), optimum.sigma)
-    return Optimum(x, optimum.sigma, residuals, jacobian, optimum.starts)
-
-
 def result_of(problem: Any, optimum: Optimum, spread: Uncertainty,
               judged: tuple[np.ndarray, dict[str, Any], list[str], bool],
               profiles: dict[str, dict[str, list[float]]], runs: dict[str, int],
@@ -399,11 +394,9 @@ def judged_fit(fitted: np.ndarray, measured: Measured, free: FreeParameters,
     if reason is not None:
         # nothing is determined: the intervals span the box the search covered
         low, high = spread.low95, spread.high95
-        for box in [starts_around(free, 1, box_spread, 0)[0],
-                    *([] if reached is None else [reached])]:
-            width = np.where(box != 0, box_spread * np.abs(box), box_spread)
-            low = np.minimum(low, np.maximum(box - width, free.lower))
-            high = np.maximum(high, np.minimum(box + width, free.upper))
+        for box_low, box_high in [search_box(free, box, box_spread) for box in
+                                  [free.start, *([] if reached is None else [reached])]]:
+            low, high = np.minimum(low, box_low), np.maximum(high, box_high)
         spread = dataclasses.replace(spread, low95=low, high95=high,
                                      determined=np.zeros(free.size, dtype=bool))
         advices = []

@@ -95,8 +95,7 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     if not points:
         return _with_rivals(best, best_chi2, covariance, others, Basins(
             best, best_chi2, (), limit, (), 0))
-    probe = Predictor(loosened(predictor.scene, LOOSER), predictor.model, free,
-                      predictor.measured, compiled=predictor.compiled)
+    probe = predictor.over(loosened(predictor.scene, LOOSER))
     every = [best, *(p for line in points for p in line)]
     values, line_runs = chi2_at_points(probe, weights, every, workers)
     centre, rest = values[0], values[1:]

@@ -109,7 +109,7 @@ def window_looseness(predictor: Predictor, weights: np.ndarray, x: np.ndarray, e
     def outputs(factor: float) -> np.ndarray | None:
         nonlocal runs
         part, scene = _window_problem(predictor, end, factor)
-        probe = Predictor(scene, predictor.model, predictor.free, part, compiled=predictor.compiled)
+        probe = predictor.over(scene, part)
         try:
             return probe.outputs(x, with_jacobian=False)
         except TrialFailed:
@@ -306,8 +306,7 @@ def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: n
     follows (on the paper scene the sum of the clearances), while the impacts make the cost
     rugged across the others (the clearances' difference, whose valleys a local fit cannot
     leave)."""
-    probe = Predictor(stage_scene, predictor.model, predictor.free, part,
-                      compiled=predictor.compiled)
+    probe = predictor.over(stage_scene, part)
     try:
         jac = whitened(probe.jacobian(x), weights)
     except TrialFailed:
@@ -337,8 +336,7 @@ def _lines_chi2(predictor: Predictor, stage_scene: Scene, part: Measured, weight
                 ) -> tuple[list[list[np.ndarray]], list[np.ndarray], int]:
     """The lines through ``x`` (``x + s direction`` for each of ``steps``, inside the
     bounds, one per direction), the window's chi² along each, and the runs."""
-    free = predictor.free
-    probe = Predictor(stage_scene, predictor.model, free, part, compiled=predictor.compiled)
+    free, probe = predictor.free, predictor.over(stage_scene, part)
     lines = [[np.clip(x + s * direction, free.lower, free.upper) for s in steps]
              for direction in directions]
     every, runs = chi2_at_points(probe, weights, [p for line in lines for p in line], workers)
@@ -355,8 +353,7 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
     parameters, and its estimate), or None where its runs stop; and the runs."""
     x = starts[0]
     cpu0 = time.process_time()
-    probe = Predictor(stage_scene, predictor.model, predictor.free, part,
-                      compiled=predictor.compiled)
+    probe = predictor.over(stage_scene, part)
     try:
         held = _unseen(probe, weights, x) | held_first
     except TrialFailed:

@@ -51,6 +51,13 @@ class Optimum:
     starts: tuple[Start, ...]
 
 
+def moved_to(predictor: Predictor, optimum: Optimum, x: np.ndarray) -> Optimum:
+    """``optimum`` moved to ``x`` (a lower minimum): its residuals and Jacobian there."""
+    residuals = whitened(predictor.outputs(x) - predictor.measured.values, optimum.sigma)
+    jacobian = whitened(predictor.jacobian(x), optimum.sigma)
+    return Optimum(x, optimum.sigma, residuals, jacobian, optimum.starts)
+
+
 def starts_around(free: FreeParameters, count: int, spread: float, seed: int) -> np.ndarray:
     """``count`` starts: the first one given, then a seeded Latin hypercube in the box of
     ±``spread`` (relative) around it, inside the physical bounds."""
@@ -59,11 +66,17 @@ def starts_around(free: FreeParameters, count: int, spread: float, seed: int) ->
     first = free.start
     if count <= 1:
         return first[None, :]
-    width = np.where(first != 0, spread * np.abs(first), spread)
-    low = np.maximum(first - width, free.lower)
-    high = np.minimum(first + width, free.upper)
+    low, high = search_box(free, first, spread)
     sample = qmc.LatinHypercube(d=free.size, seed=seed).random(count - 1)
     return np.vstack([first, low + sample * (high - low)])
+
+
+def search_box(free: FreeParameters, centre: np.ndarray, spread: float
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """The box of ±``spread`` (relative; absolute where a value is 0) around ``centre``,
+    inside the physical bounds: its lowest and highest corners."""
+    width = np.where(centre != 0, spread * np.abs(centre), spread)
+    return np.maximum(centre - width, free.lower), np.minimum(centre + width, free.upper)
 
 
 def least_squares_fit(predictor: Predictor, sigma: np.ndarray, starts: np.ndarray,

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from jointplay.calibration.continuation import _holding, _window_problem, loosened, window_looseness
-from jointplay.calibration.fit import multi_start
+from jointplay.calibration.fit import multi_start, search_box
 from jointplay.calibration.parameters import FreeParameters
 from jointplay.calibration.predict import Predictor, chi2_at_points
 from jointplay.common.errors import SimulationError
@@ -82,8 +82,8 @@ def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
     held[axes] = True
     looser, runs = window_looseness(predictor, weights, start, float(predictor.measured.t[-1]),
                                     looser)
-    probe = Predictor(loosened(predictor.scene, looser), predictor.model,
-                      _holding(free, start, held), predictor.measured, compiled=predictor.compiled)
+    probe = predictor.over(loosened(predictor.scene, looser)).for_free(
+        _holding(free, start, held))
     try:
         x, _ = multi_start(probe, weights, start[None, :], max_evaluations, stop_early=False,
                            settle=True, relative=OTHERS_FIRST_RELATIVE)
@@ -108,7 +108,7 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
     values = [_axis(free, start, k, grid.spread, per_axis) for k in axes]
     looser, checks = window_looseness(predictor, weights, start, grid.window_end, grid.looser)
     part, coarse = _window_problem(predictor, grid.window_end, looser)
-    probe = Predictor(coarse, predictor.model, free, part, compiled=predictor.compiled)
+    probe = predictor.over(coarse, part)
     indices = list(itertools.product(range(per_axis), repeat=len(axes)))
 
     def point(index: tuple[int, ...]) -> np.ndarray:
@@ -143,9 +143,8 @@ def grid_scale(free: FreeParameters, start: np.ndarray, grid: GridResult,
 
 def _axis(free: FreeParameters, start: np.ndarray, k: int, spread: float,
           count: int) -> np.ndarray:
-    width = spread * abs(start[k]) if start[k] != 0 else spread
-    return np.linspace(max(start[k] - width, free.lower[k]),
-                       min(start[k] + width, free.upper[k]), count)
+    low, high = search_box(free, start, spread)
+    return np.linspace(low[k], high[k], count)
 
 
 def _local_minima(chi2: np.ndarray) -> list[tuple[int, ...]]:

@@ -8,6 +8,14 @@ from dataclasses import dataclass
 from jointplay.common.errors import DescriptionError
 from jointplay.common.limits import MAX_CALIBRATION_RUNS, MIN_ATOL, MIN_RTOL
 
+_AT_LEAST = {"valley_points": 3, "valley_keep": 1, "starts": 1, "refine": 1, "grid_points": 3,
+             "grid_candidates": 1, "window_looser": 1, "workers": 1, "max_evaluations": 1}
+_WINDOWS = {"valley_window": "no lines", "horizon_first": "no continuation",
+            "grid_window": "no grid"}
+_RUNS = {"scan_points": "no scan", "grid_line_points": "no line",
+         "valley_check_points": "no check", "profile_points": "no profiles"}
+"""The options' lower bounds: counts, windows (s, 0: the stage off) and run counts (0: off)."""
+
 
 @dataclass(frozen=True)
 class CalibrationOptions:
@@ -101,40 +109,24 @@ class CalibrationOptions:
     scheduler: str | None = None
 
     def __post_init__(self) -> None:
-        checks = (("tighten", math.isfinite(self.tighten) and self.tighten >= 1,
+        checks = [("tighten", math.isfinite(self.tighten) and self.tighten >= 1,
                    "must be a finite number >= 1"),
                   ("seed", isinstance(self.seed, int) and not isinstance(self.seed, bool)
                    and self.seed >= 0, "must be an integer >= 0"),
-                  ("valley_window", self.valley_window >= 0, "must be >= 0 (s; 0: no lines)"),
-                  ("valley_points", self.valley_points >= 3, "must be >= 3"),
-                  ("valley_keep", self.valley_keep >= 1, "must be >= 1"),
-                  ("starts", self.starts >= 1, "must be >= 1"),
-                  ("scan_points", self.scan_points == 0 or self.scan_points >= 3,
-                   "must be 0 (no scan) or >= 3"),
-                  ("refine", self.refine >= 1, "must be >= 1"),
-                  ("horizon_first", self.horizon_first >= 0,
-                   "must be >= 0 (s; 0: no continuation)"),
                   ("horizon_growth", self.horizon_growth > 1, "must be > 1"),
-                  ("grid_window", self.grid_window >= 0, "must be >= 0 (s; 0: no grid)"),
-                  ("grid_points", self.grid_points >= 3, "must be >= 3"),
-                  ("grid_candidates", self.grid_candidates >= 1, "must be >= 1"),
-                  ("grid_line_points", self.grid_line_points == 0
-                   or self.grid_line_points >= 3, "must be 0 (no line) or >= 3"),
-                  ("valley_check_points", self.valley_check_points == 0
-                   or self.valley_check_points >= 3, "must be 0 (no check) or >= 3"),
-                  ("window_looser", self.window_looser >= 1, "must be >= 1"),
-                  ("workers", self.workers >= 1, "must be >= 1"),
-                  ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)"),
-                  ("max_evaluations", self.max_evaluations >= 1, "must be >= 1"),
-                  ("profile_points", self.profile_points == 0 or self.profile_points >= 3,
-                   "must be 0 (no profiles) or >= 3"))
+                  ("spread", 0 < self.spread < 1, "must lie between 0 and 1 (relative)")]
+        checks += [(name, getattr(self, name) >= least, f"must be >= {least}")
+                   for name, least in _AT_LEAST.items()]
+        checks += [(name, getattr(self, name) >= 0, f"must be >= 0 (s; 0: {off})")
+                   for name, off in _WINDOWS.items()]
+        checks += [(name, getattr(self, name) == 0 or getattr(self, name) >= 3,
+                    f"must be 0 ({off}) or >= 3") for name, off in _RUNS.items()]
         for name, ok, allowed in checks:
             if not ok:
                 raise DescriptionError(f"options.{name}",
                                        f"{allowed}, got {getattr(self, name)!r}")
         # Each stage's runs bounded before any work (too many would run out of memory).
-        for name in ("starts", "scan_points", "grid_line_points", "valley_check_points",
-                     "profile_points", "valley_points", "grid_points"):
+        for name in ("starts", *_RUNS, "valley_points", "grid_points"):
             grid = name == "grid_points"  # the grid runs grid_points squared
             if getattr(self, name) ** (2 if grid else 1) > MAX_CALIBRATION_RUNS:
                 most = math.isqrt(MAX_CALIBRATION_RUNS) if grid else MAX_CALIBRATION_RUNS

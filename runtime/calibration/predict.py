@@ -9,7 +9,6 @@ output, the sensitivities interpolated linearly between samples.
 
 from __future__ import annotations
 
-import inspect
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -48,13 +47,6 @@ class Counter:
         self.by_kind[kind] += 1
 
 
-def compiled_sensitivities_available() -> bool:
-    """Whether this build's :func:`jointplay.simulate` integrates sensitivities."""
-    from jointplay.sim import simulate
-
-    return "sensitivities" in inspect.signature(simulate).parameters
-
-
 class Predictor:
     """``outputs(x)`` (n_t, n_columns) and ``jacobian(x)`` (n_t, n_columns, n_free) of the
     measured columns at free-parameter values ``x``; caches the last point."""
@@ -74,6 +66,12 @@ class Predictor:
         other = Predictor(self.scene, self.model, free, self.measured, compiled=self.compiled)
         other._cache = self._cache
         return other
+
+    def over(self, scene: Scene, measured: Measured | None = None) -> Predictor:
+        """This predictor's model and free parameters on ``scene`` (a window's, or other
+        tolerances) and ``measured`` (default: its own), with its own count and cache."""
+        return Predictor(scene, self.model, self.free,
+                         self.measured if measured is None else measured, compiled=self.compiled)
 
     def __getstate__(self) -> dict[str, Any]:
         # For a piece sent to a Dask worker: the compiled model does not pickle; the worker
@@ -168,8 +166,6 @@ class Predictor:
 
     def _compiled_names(self) -> tuple[str, ...]:
         """The free names the compiled sensitivities cover (tried once at the start)."""
-        if not compiled_sensitivities_available():
-            return ()
         return tuple(name for name in self.free.names if self._accepts(name))
 
     def _accepts(self, name: str) -> bool:

@@ -28,11 +28,10 @@ import numpy as np
 from jointplay.calibration.api import CalibrationOptions, judged_fit, result_of
 from jointplay.calibration.basins import Basins, widened
 from jointplay.calibration.basins import threshold as basin_threshold
-from jointplay.calibration.fit import Optimum, Start, multi_start, timed
+from jointplay.calibration.fit import Optimum, Start, moved_to, multi_start, timed
 from jointplay.calibration.measured import Measured, checked_for_scene, noise_levels
 from jointplay.calibration.noise import column_noise
 from jointplay.calibration.parameters import FreeParameters
-from jointplay.calibration.predict import whitened
 from jointplay.calibration.profiles import cost_profiles
 from jointplay.calibration.result import CalibrationResult
 from jointplay.calibration.uncertainty import Uncertainty, uncertainty
@@ -165,7 +164,7 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
                               opts.max_evaluations, stop_early=False, settle=True)
         optimum = dataclasses.replace(optimum, starts=optimum.starts + tuple(more))
         if not more[0].failed and more[0].chi2 < _chi2(optimum):
-            optimum = _moved_to(predictor, optimum, np.array(more[0].end))
+            optimum = moved_to(predictor, optimum, np.array(more[0].end))  # type: ignore[arg-type]
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
             profiles, runs, _ = _profiles(predictor, optimum, spread, opts)
@@ -203,12 +202,6 @@ def _run(problem: MechanismProblem) -> CalibrationResult:
 
 def _chi2(optimum: Optimum) -> float:
     return float(np.sum(optimum.residuals**2))
-
-
-def _moved_to(predictor: MechanismPredictor, optimum: Optimum, x: np.ndarray) -> Optimum:
-    residuals = whitened(predictor.outputs(x) - predictor.measured.values, optimum.sigma)
-    jacobian = whitened(predictor.jacobian(x), optimum.sigma)
-    return Optimum(x, optimum.sigma, residuals, jacobian, optimum.starts)
 
 
 def _profiles(predictor: MechanismPredictor, optimum: Optimum, spread: Uncertainty,
