@@ -1,4 +1,4 @@
-"""Where a calibration's time goes: wall seconds of each stage of the search, per window.
+"""Where a calibration's time goes: wall and CPU seconds of each stage of the search, per window.
 
     python benchmarks/calibration_time.py --case paper-multisine-b-tip --seed 4 [--out FILE.md]
 
@@ -33,23 +33,28 @@ import runner  # noqa: E402
 
 from jointplay.calibration import api, continuation, profiles  # noqa: E402
 from jointplay.calibration.continuation import track_margin  # noqa: E402
+from jointplay.calibration.fit import timed  # noqa: E402
 from jointplay.common.files import atomic_write_text  # noqa: E402
 from jointplay.scene import load_scene  # noqa: E402
 
 SECONDS: dict[str, float] = collections.defaultdict(float)
+CPU_SECONDS: dict[str, float] = collections.defaultdict(float)
 
 
 def _timed(module: Any, name: str, label: Any) -> None:
-    """Replace ``module.name`` by itself, adding its wall seconds to ``label(*args)``."""
+    """Replace ``module.name`` by itself, adding its wall and CPU seconds (the workers'
+    included) to ``label(*args)``."""
     original = getattr(module, name)
 
     @functools.wraps(original)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
-        start = time.perf_counter()
+        wall0, cpu0 = timed()
         try:
             return original(*args, **kwargs)
         finally:
-            SECONDS[label(*args)] += time.perf_counter() - start
+            wall1, cpu1 = timed()
+            SECONDS[label(*args)] += wall1 - wall0
+            CPU_SECONDS[label(*args)] += cpu1 - cpu0
 
     setattr(module, name, wrapper)
 
@@ -105,8 +110,10 @@ def main() -> int:
     lines = [f"# Where the time goes: {args.case}, seed {args.seed}", "", "```sh",
              "python benchmarks/calibration_time.py " + " ".join(sys.argv[1:]), "```", "",
              f"{wall:.1f} s wall, {result.cpu_time_s:.1f} s CPU (the workers' included), "
-             f"{result.simulations} runs.", "", "| stage | wall s | share |", "|---|---|---|"]
-    lines += [f"| {name} | {seconds:.1f} | {seconds / wall:.0%} |"
+             f"{result.simulations} runs.", "",
+             "| stage | wall s | share | CPU s | CPU / wall |", "|---|---|---|---|---|"]
+    lines += [f"| {name} | {seconds:.1f} | {seconds / wall:.0%} | {CPU_SECONDS[name]:.1f} "
+              f"| {CPU_SECONDS[name] / seconds if seconds else 0:.2f} |"
               for name, seconds in SECONDS.items()]
     lines += ["", "| window s | tracks | evaluations | runs | runs of tracks then dropped |",
               "|---|---|---|---|---|", *_windows(result.stages), "",

@@ -165,6 +165,18 @@ def test_summary_counts_coverage_verdicts_and_goals() -> None:
     assert s["wall_by_case"] == {"a": (15.0, 20.0), "b": (30.0, 30.0)}
 
 
+def test_the_case_table_states_the_machine_reference() -> None:
+    """The machine's speed before and after the runs, and the wall times in units of it (by
+    which benchmarks on other machines or days compare); a dash where it was not measured."""
+    row = {"case": "a", "seed": 0, "status": "ok", "wall_s": 30.0, "cpu_s": 50.0,
+           "noise_stated": True, "parameters": {}}
+    summary = {**runner.summarise([row]), "reference_s": (0.15, 0.16)}
+    text = runner.markdown([row], summary, "python benchmarks/calibration.py --cases a")
+    assert "0.150 before the runs, 0.160 after; wall median / worst in references: 200 / 200" \
+        in text
+    assert "- machine reference: -" in runner.markdown([row], runner.summarise([row]), "")
+
+
 def test_the_stage_benchmark_removes_each_stage_and_puts_it_back() -> None:
     """benchmarks/calibration_stages.py: inside each removal the search's function is
     replaced (or an option turns the stage off), outside it the original is back; the
@@ -244,8 +256,8 @@ def test_code_size_counts_code_not_comments_docstrings_or_blanks() -> None:
 
 @pytest.mark.slow
 def test_the_time_benchmark_runs_a_case(tmp_path: Path) -> None:
-    """The whole script on the quickest case: a table of stages whose seconds add up to no
-    more than the wall time it states."""
+    """The whole script on the quickest case: a table of stages whose wall seconds add up to
+    no more than the wall time it states, each with its CPU seconds (the workers' included)."""
     out = tmp_path / "time.md"
     proc = subprocess.run([sys.executable, str(CASES_DIR.parent / "calibration_time.py"),
                            "--case", "paper-one-clearance", "--out", str(out)],
@@ -253,9 +265,11 @@ def test_the_time_benchmark_runs_a_case(tmp_path: Path) -> None:
     assert proc.returncode == 0, proc.stderr
     text = out.read_text()
     wall = float(text.split(" s wall")[0].rsplit("\n", 1)[-1])
-    stages = [float(line.split("|")[2]) for line in text.splitlines()
-              if line.startswith("| ") and line.count("|") == 4 and "wall s" not in line]
+    table = text.split("| stage | wall s | share | CPU s | CPU / wall |")[1].split("\n\n")[0]
+    rows = [line.split("|") for line in table.splitlines()[2:]]
+    stages = [float(row[2]) for row in rows]
     assert stages and sum(stages) <= wall * 1.001
+    assert all(float(row[4]) >= 0 for row in rows)
     assert "| grid |" in text and "whole-record fit" in text
 
 

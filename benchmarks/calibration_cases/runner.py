@@ -14,7 +14,9 @@ time the process's and its workers' (``resource.getrusage(RUSAGE_CHILDREN)``).
 
 Summary: coverage (the fraction of intervals holding the truth), parameters reported
 determined with the truth outside their interval, the accuracy goals (clearances within
-2 %, friction within 5 %, where determined), median and worst wall per case and overall.
+2 %, friction within 5 %, where determined), median and worst wall per case and overall, and
+the machine's speed before and after (:func:`machine_reference`), by which runs on other
+machines or days compare.
 """
 
 from __future__ import annotations
@@ -168,6 +170,30 @@ def _goal(pname: str) -> float | None:
     return None
 
 
+REFERENCE_CODE = """
+import statistics, time, jointplay
+scene = jointplay.default_scene()
+rtol, atol = jointplay.CalibrationOptions().tightened(scene.run.rtol, scene.run.atol)
+scene = scene.with_run(rtol=rtol, atol=atol)
+jointplay.simulate(scene, peaks=False)
+seconds = []
+for _ in range(5):
+    start = time.process_time()
+    jointplay.simulate(scene, peaks=False)
+    seconds.append(time.process_time() - start)
+print(statistics.median(seconds))
+"""
+
+
+def machine_reference() -> float:
+    """CPU seconds of one plain run of the paper scene over its 2 s at the fit's tolerances
+    (median of five, in a process of its own, after one untimed): the machine's speed, by which
+    the times of benchmarks run on different machines or days compare."""
+    done = subprocess.run([sys.executable, "-c", REFERENCE_CODE], capture_output=True,
+                          text=True, check=True)
+    return float(done.stdout.split()[-1])
+
+
 def summarise(rows: list[dict[str, Any]]) -> dict[str, Any]:
     params = [(r, n, p) for r in rows for n, p in r["parameters"].items()]
     determined = [(r, n, p) for r, n, p in params if p["determined"]]
@@ -222,6 +248,7 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
     s = summary
     cov = f"{s['covered']} of {s['intervals']}" + \
         (f" ({s['covered'] / s['intervals']:.0%})" if s["intervals"] else "")
+    before, after = s.get("reference_s", (None, None))
     lines += ["", "## Summary", "",
               f"- runs: {s['runs']}, failed or timed out: {s['failed']}",
               f"- 95 % intervals holding the truth: {cov} (goal: at least 95 %)",
@@ -231,7 +258,12 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
               f"{s['goals_met']} of {s['goals_checked']}",
               f"- wall per run, median / worst: {_s(s['wall_median_s'])} / "
               f"{_s(s['wall_worst_s'])} s (goal: 60 / 120 s on 2 cores); CPU median "
-              f"{_s(s['cpu_median_s'])} s", "",
+              f"{_s(s['cpu_median_s'])} s",
+              f"- machine reference (one plain run of the paper scene, 2 s at the fit's "
+              f"tolerances, CPU s, median of 5): {before:.3f} before the runs, {after:.3f} "
+              f"after; wall median / worst in references: "
+              f"{s['wall_median_s'] / before:.0f} / {s['wall_worst_s'] / before:.0f}"
+              if before and s["wall_median_s"] is not None else "- machine reference: -", "",
               "| case | wall median / worst s |", "|---|---|"]
     lines += [f"| {c} | {m:.1f} / {w:.1f} |" for c, (m, w) in s["wall_by_case"].items()]
     lines += ["", "## What each stage did", "",
@@ -288,6 +320,7 @@ def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: flo
     if unknown:
         raise SystemExit(f"unknown case {unknown[0]!r}; cases: {', '.join(known)}")
     out.mkdir(parents=True, exist_ok=True)
+    before = machine_reference()
     rows = []
     for name in cases or known:
         for seed in range(first_seed, first_seed + seeds):
@@ -304,7 +337,7 @@ def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: flo
                   + "; ".join(f"{n} {_cell(p)}" for n, p in row["parameters"].items()),
                   flush=True)
             rows.append(row)
-    summary = summarise(rows)
+    summary = {**summarise(rows), "reference_s": (before, machine_reference())}
     (out / "cases.json").write_text(json.dumps({"command": command, "rows": rows,
                                                 "summary": summary}, indent=1) + "\n")
     flat = flat_rows(rows)
