@@ -165,16 +165,19 @@ def test_summary_counts_coverage_verdicts_and_goals() -> None:
     assert s["wall_by_case"] == {"a": (15.0, 20.0), "b": (30.0, 30.0)}
 
 
-def test_the_case_table_states_the_machine_reference() -> None:
-    """The machine's speed before and after the runs, and the wall times in units of it (by
-    which benchmarks on other machines or days compare); a dash where it was not measured."""
-    row = {"case": "a", "seed": 0, "status": "ok", "wall_s": 30.0, "cpu_s": 50.0,
-           "noise_stated": True, "parameters": {}}
-    summary = {**runner.summarise([row]), "reference_s": (0.15, 0.16)}
-    text = runner.markdown([row], summary, "python benchmarks/calibration.py --cases a")
-    assert "0.150 before the runs, 0.160 after; wall median / worst in references: 200 / 200" \
-        in text
-    assert "- machine reference: -" in runner.markdown([row], runner.summarise([row]), "")
+def test_the_case_table_states_the_walls_in_machine_references() -> None:
+    """Each run's wall over the machine reference measured before it (by which runs on other
+    machines or hours compare), median and worst; a dash where a run has none."""
+    rows = [{"case": "a", "seed": k, "status": "ok", "wall_s": wall, "cpu_s": 50.0,
+             "noise_stated": True, "parameters": {}, "reference_s": ref}
+            for k, (wall, ref) in enumerate([(30.0, 0.15), (45.0, 0.1), (20.0, 0.2)])]
+    summary = runner.summarise(rows)
+    assert summary["references"] == (200.0, 450.0, 0.15)
+    assert "median 0.150 s), median / worst: 200 / 450" in runner.markdown(rows, summary, "")
+    del rows[1]["reference_s"]
+    assert runner.summarise(rows)["references"] is None
+    assert "in machine references: - (not measured)" in runner.markdown(
+        rows, runner.summarise(rows), "")
 
 
 def test_the_stage_benchmark_removes_each_stage_and_puts_it_back() -> None:

@@ -15,8 +15,9 @@ time the process's and its workers' (``resource.getrusage(RUSAGE_CHILDREN)``).
 Summary: coverage (the fraction of intervals holding the truth), parameters reported
 determined with the truth outside their interval, the accuracy goals (clearances within
 2 %, friction within 5 %, where determined), median and worst wall per case and overall, and
-the machine's speed before and after (:func:`machine_reference`), by which runs on other
-machines or days compare.
+the same in units of the machine's speed, measured before each run (:func:`machine_reference`):
+on a shared machine the same calibration, on the same path, took 0.6 to 1.05 times its wall
+of the day before.
 """
 
 from __future__ import annotations
@@ -187,8 +188,8 @@ print(statistics.median(seconds))
 
 def machine_reference() -> float:
     """CPU seconds of one plain run of the paper scene over its 2 s at the fit's tolerances
-    (median of five, in a process of its own, after one untimed): the machine's speed, by which
-    the times of benchmarks run on different machines or days compare."""
+    (median of five, in a process of its own, after one untimed): the machine's speed now, by
+    which the times of runs on different machines or days compare."""
     done = subprocess.run([sys.executable, "-c", REFERENCE_CODE], capture_output=True,
                           text=True, check=True)
     return float(done.stdout.split()[-1])
@@ -213,7 +214,18 @@ def summarise(rows: list[dict[str, Any]]) -> dict[str, Any]:
         "wall_worst_s": float(np.max(walls)) if walls else None,
         "cpu_median_s": float(np.median([r["cpu_s"] for r in rows])) if rows else None,
         "wall_by_case": {c: (float(np.median(w)), float(np.max(w))) for c, w in per_case.items()},
+        "references": _in_references(rows),
     }
+
+
+def _in_references(rows: list[dict[str, Any]]) -> tuple[float, float, float] | None:
+    """The walls in units of the reference measured before each run, median and worst, and
+    the references' median (s); None where a run has none."""
+    if not rows or any(not r.get("reference_s") for r in rows):
+        return None
+    ratios = [r["wall_s"] / r["reference_s"] for r in rows]
+    return (float(np.median(ratios)), float(np.max(ratios)),
+            float(np.median([r["reference_s"] for r in rows])))
 
 
 def _cell(p: dict[str, Any]) -> str:
@@ -248,7 +260,6 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
     s = summary
     cov = f"{s['covered']} of {s['intervals']}" + \
         (f" ({s['covered'] / s['intervals']:.0%})" if s["intervals"] else "")
-    before, after = s.get("reference_s", (None, None))
     lines += ["", "## Summary", "",
               f"- runs: {s['runs']}, failed or timed out: {s['failed']}",
               f"- 95 % intervals holding the truth: {cov} (goal: at least 95 %)",
@@ -258,12 +269,7 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
               f"{s['goals_met']} of {s['goals_checked']}",
               f"- wall per run, median / worst: {_s(s['wall_median_s'])} / "
               f"{_s(s['wall_worst_s'])} s (goal: 60 / 120 s on 2 cores); CPU median "
-              f"{_s(s['cpu_median_s'])} s",
-              f"- machine reference (one plain run of the paper scene, 2 s at the fit's "
-              f"tolerances, CPU s, median of 5): {before:.3f} before the runs, {after:.3f} "
-              f"after; wall median / worst in references: "
-              f"{s['wall_median_s'] / before:.0f} / {s['wall_worst_s'] / before:.0f}"
-              if before and s["wall_median_s"] is not None else "- machine reference: -", "",
+              f"{_s(s['cpu_median_s'])} s", _references_line(s["references"]), "",
               "| case | wall median / worst s |", "|---|---|"]
     lines += [f"| {c} | {m:.1f} / {w:.1f} |" for c, (m, w) in s["wall_by_case"].items()]
     lines += ["", "## What each stage did", "",
@@ -288,6 +294,15 @@ def markdown(rows: list[dict[str, Any]], summary: dict[str, Any], command: str) 
                      f" | {yes('valley check widened')} | "
                      f"{yes('residual check withdrew the verdicts')} |")
     return "\n".join(lines) + "\n"
+
+
+def _references_line(references: tuple[float, float, float] | None) -> str:
+    if references is None:
+        return "- wall in machine references: - (not measured)"
+    median, worst, reference = references
+    return (f"- wall per run in machine references (its wall over the CPU seconds of one plain "
+            f"run of the paper scene at the fit's tolerances, measured just before it; median "
+            f"{reference:.3f} s), median / worst: {median:.0f} / {worst:.0f}")
 
 
 def _moved(stages: dict[str, Any]) -> str:
@@ -320,7 +335,6 @@ def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: flo
     if unknown:
         raise SystemExit(f"unknown case {unknown[0]!r}; cases: {', '.join(known)}")
     out.mkdir(parents=True, exist_ok=True)
-    before = machine_reference()
     rows = []
     for name in cases or known:
         for seed in range(first_seed, first_seed + seeds):
@@ -331,13 +345,14 @@ def run(cases: list[str], seeds: int, first_seed: int, out: Path, timeout_s: flo
                 if row["status"] == "ok" and result_file.is_file():
                     row["stages"] = stage_effects(json.loads(result_file.read_text()))
             else:
-                row = run_one(name, seed, out, timeout_s)
+                reference = machine_reference()
+                row = {**run_one(name, seed, out, timeout_s), "reference_s": reference}
                 done.write_text(json.dumps(row, indent=1) + "\n")
             print(f"{name} seed {seed}: {row['status']}, {row['wall_s']:.1f} s wall, "
                   + "; ".join(f"{n} {_cell(p)}" for n, p in row["parameters"].items()),
                   flush=True)
             rows.append(row)
-    summary = {**summarise(rows), "reference_s": (before, machine_reference())}
+    summary = summarise(rows)
     (out / "cases.json").write_text(json.dumps({"command": command, "rows": rows,
                                                 "summary": summary}, indent=1) + "\n")
     flat = flat_rows(rows)

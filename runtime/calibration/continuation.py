@@ -161,21 +161,16 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
     """The estimates after the windows shorter than the record (the surviving tracks, best
     first), the stages, and the runs they took.
 
-    Each row of ``tracks`` is a start carried through the windows on its own; after each
-    window a track whose chi² lies more than TRACK_MARGIN above the best track's, or whose
-    estimate joins a better track's, is dropped. With a single track the first window's fit
-    tries ``alternatives`` while it does not explain that window within the noise. A stage
-    whose every run stops ends the continuation at the previous estimates. The windows' runs
-    use the fit's tolerances times ``looser`` at most (:func:`window_looseness`: a window's
-    fit only has to land in the right valley), and each window's fit before the line scan at
-    most WINDOW_EVALUATIONS evaluations. With ``valley``, the stage at its window first
-    adds the lowest minima along lines through the best estimate as tracks (and so does each
-    later window, its lines reaching ``growth`` times less far): over a few tenths of a second
-    the rugged directions' valleys are narrow, and a track carried from the short windows can
-    sit a valley or two from the true one. Before the scan's window the parameters the lines do
-    not move are held: a short window barely sees them and, left free, they absorb the
-    clearances' misfit. With ``opening``, lines of the same kind through the best track's start
-    put their lowest minima in its place before the first window's fits."""
+    Each row of ``tracks`` is carried through the windows on its own, and dropped (see
+    :func:`_surviving`) when it falls behind or joins a better one; a single track's first
+    fit tries ``alternatives`` while it does not explain that window. A stage whose every run
+    stops ends the continuation. The runs use the fit's tolerances times ``looser`` at most
+    (:func:`window_looseness`). With ``valley``, from its window on each window first adds
+    the lowest minima along lines through the best estimate as tracks (each later window's
+    lines reaching ``growth`` times less far: its valleys are narrower, the tracks nearer
+    them); before that window the parameters the lines do not move are held (a short window
+    barely sees them and, left free, they absorb the clearances' misfit). With ``opening``,
+    such lines through the best track's start replace it before the first window's fits."""
     measured = predictor.measured
     ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first, growth)
     alive = [np.asarray(x, dtype=float) for x in tracks]
@@ -253,11 +248,9 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
                  alternatives: np.ndarray | None, max_evaluations: int,
                  end: float, held_first: np.ndarray, workers: int) -> tuple[Fitted, int]:
     """Each track's fit over one window, on up to ``workers`` processes (a track whose every
-    run stops ends there), and the runs. With ``alternatives`` (a single track), its fit
-    tries them after its estimate while it does not explain the window. With several
-    tracks, each fit pauses after CHECKPOINT_EVALUATIONS; one that has not ended goes on, up
-    to ``max_evaluations`` in all, only while its chi² lies within the tracks' margin of the
-    best: a track that far behind is dropped after the window whatever it does next."""
+    run stops ends there), and the runs; ``alternatives``: see :func:`continuation`. With
+    several tracks each fit pauses after CHECKPOINT_EVALUATIONS, and goes on only while its
+    chi² lies within the tracks' margin of the best (one further behind is dropped anyway)."""
     def fit(i: int, x: np.ndarray, budget: int
             ) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
         starts = alternatives if alternatives is not None else x[None, :]
@@ -300,12 +293,10 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
 def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
             x: np.ndarray, scale: np.ndarray) -> tuple[list[np.ndarray], int]:
     """The directions to scan at ``x`` among the parameters whose ``scale`` is not 0 (a step
-    of 1 moves each by at most its ``scale``): the eigenvectors of the window's scaled
-    information matrix there, all but the weakest where more than one parameter moves; and
-    the runs. Inside one valley the weakest direction is usually the smooth one the local fit
-    follows (on the paper scene the sum of the clearances), while the impacts make the cost
-    rugged across the others (the clearances' difference, whose valleys a local fit cannot
-    leave)."""
+    of 1 moves each by at most its ``scale``), and the runs: the eigenvectors of the window's
+    scaled information matrix there, all but the weakest where more than one moves. The
+    weakest is the smooth valley floor a local fit follows (on the paper scene the clearances'
+    sum); the impacts make the others rugged (their difference)."""
     probe = predictor.over(stage_scene, part)
     try:
         jac = whitened(probe.jacobian(x), weights)

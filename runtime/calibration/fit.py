@@ -2,11 +2,9 @@
 
 ``scipy.optimize.least_squares`` (trust-region reflective, inside the physical bounds,
 ``x_scale="jac"``) minimises the residuals whitened by the sensors' standard deviations, with
-the Jacobian from the model's sensitivities. Impacts make the cost multimodal in the clearances,
-so where the first optimum does not fit the data within the noise (chi² far above its degrees
-of freedom) the fit restarts from a Latin hypercube of starts around the first one. A
-multi-start rather than a continuation in the contact stiffness: the stiffness may itself be
-free, and independent restarts cost no more than the continuation's ladder of fits.
+the Jacobian from the model's sensitivities. Where an optimum does not explain the data
+within the noise, the fit restarts from a Latin hypercube of starts around the first one (a
+multi-start, not a continuation in the contact stiffness, which may itself be free).
 """
 
 from __future__ import annotations
@@ -117,12 +115,10 @@ def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.n
                            start: np.ndarray, scan: Scan) -> np.ndarray:
     """Starts for local fits: the lowest local minima of chi² along the weakest direction.
 
-    Impacts make the cost rugged along the direction the data determine least (on the paper
-    scene the difference of the two clearances: the tip's sag sets their sum, the impact
-    sequence their difference), and a local fit from the start stops in the first minimum. The
-    first fit sits on the valley floor of the well-determined directions, so a line along the
-    weakest direction samples the minima at one run per point; a basin narrower than the line's
-    spacing can be missed, which the chi² test then reports."""
+    Impacts make the cost rugged along the direction the data determine least, where a local
+    fit stops in the first minimum; from the first fit, on the floor of the well-determined
+    directions, a line along the weakest samples the minima at one run per point (a basin
+    narrower than its spacing can be missed, which the chi² test then reports)."""
     free = predictor.free
     jac = whitened(predictor.jacobian(best), weights)
     width = np.where(start != 0, scan.spread * np.abs(start), scan.spread)
@@ -158,11 +154,10 @@ def _explains(record: list[Start], predictor: Predictor) -> bool:
 def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
                 max_evaluations: int, stop_early: bool, workers: int = 1, settle: bool = False,
                 relative: float = 0.0) -> tuple[np.ndarray, list[Start]]:
-    """Local fits from ``starts`` in turn, the best kept; with ``stop_early``, none after
-    one that explains the data. Without it the fits are independent and run on up to
-    ``workers`` forked processes (their runs added to ``predictor``'s count). With
-    ``settle``, each fit ends once settled (SETTLED_SIGMAS), or once its next step moves
-    every parameter by less than ``relative`` of its value."""
+    """Local fits from ``starts``, the best kept: in turn with ``stop_early`` (none after one
+    that explains the data), else on up to ``workers`` forked processes (their runs added to
+    ``predictor``'s count). With ``settle``, each ends once settled (SETTLED_SIGMAS), or once
+    its next step moves every parameter by less than ``relative`` of its value."""
     accept = explaining_limit(predictor.measured.size - predictor.free.size)
     best: np.ndarray | None = None
     best_chi2 = math.inf
