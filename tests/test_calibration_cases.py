@@ -188,10 +188,10 @@ def test_the_stage_benchmark_removes_each_stage_and_puts_it_back() -> None:
     sys.path.insert(0, str(CASES_DIR.parent))
     import calibration_stages as stages
 
-    from jointplay.calibration import api, basins, continuation, valleys
+    from jointplay.calibration import api, basins, continuation
 
     places = [(continuation, "_line_minima"), (basins, "_line_points"),
-              (basins, "_other_centres"), (valleys, "_rugged"), (api, "others_first")]
+              (basins, "_other_centres"), (api, "others_first")]
     originals = [getattr(m, n) for m, n in places]
     for name, (remove, options) in stages.STAGES.items():
         with remove():

@@ -45,12 +45,12 @@ VALLEY_CHECK_REACH = 0.2
 """How far the valley check's line reaches either side of the best fit, in grid spacings."""
 
 VALLEY_CHECK_LOOSER = 3.0
-"""The valley check's runs use the fit's tolerances times this: their chi² are compared with
-the threshold (3.84), and at the windows' own (100 times) they are off by about that."""
+"""The valley check's runs use the fit's tolerances times this (at the windows' 100 their chi²
+are off by about the threshold it compares them with, 3.84)."""
 
 GRID_LINE_REACH = 1.5
-"""How far the grid window's line reaches either side of the best grid point, in grid spacings:
-the true valley lies within half a spacing of a grid point, the best perhaps its neighbour."""
+"""How far the grid window's line reaches either side of the best grid point, in grid spacings
+(the true valley lies within half a spacing of a grid point, perhaps the best one's neighbour)."""
 
 
 @dataclass(frozen=True)
@@ -201,8 +201,7 @@ def _run(problem: Problem) -> CalibrationResult:
             grid = grid_candidates(predictor, weights, centre, Grid(
                 opts.grid_window, opts.grid_points, opts.spread, opts.grid_candidates,
                 opts.window_looser), opts.workers)
-        tracks, first = starts[:1], opts.horizon_first
-        opening = None
+        tracks, first, opening = starts[:1], opts.horizon_first, None
         if grid is not None and len(grid.candidates):
             tracks, first = grid.candidates, grid.window_end
             stage_runs += grid.simulations
@@ -284,9 +283,9 @@ def _run(problem: Problem) -> CalibrationResult:
 
 
 HELD_DRIFT = 0.05
-"""The relative change of a parameter the early windows hold (the friction, fitted with the
-clearances at their start) beyond which nothing is reported determined: the windows chose the
-clearances' valley under another model (where they chose right, it moved by 1.2 % at most)."""
+"""The relative change of a parameter the early windows hold beyond which nothing is reported
+determined: the windows chose the clearances' valley under another model (right choices moved
+it by 1.2 % at most)."""
 
 
 def _whole_stage(problem: Problem, fits: Sequence[Any]) -> Stage:
@@ -306,15 +305,15 @@ def _drift(held: np.ndarray, fitted: np.ndarray, mask: np.ndarray) -> float:
 
 
 WHOLE_RECORD_TRACKS = 2
-"""The tracks fitted on the whole record at least (where that many reach it): ranked by their
-chi² there at their last window's estimates, two basins can come the wrong way round."""
+"""The tracks fitted on the whole record at least (ranked by their chi² there at their last
+window's estimates, two basins can come the wrong way round)."""
 
 
 def _ranked(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray, workers: int
             ) -> tuple[np.ndarray, int]:
-    """The tracks worth a local fit on the whole record, best first, and the runs: each ranked
-    by its chi² there at its last window's estimate, those more than TRACK_MARGIN above the best
-    dropped but the WHOLE_RECORD_TRACKS best (that many or fewer are all kept, without a run)."""
+    """The tracks worth a local fit on the whole record, best first, and the runs: ranked by
+    their chi² there, those over TRACK_MARGIN above the best dropped but the WHOLE_RECORD_TRACKS
+    best (that many or fewer are kept without a run)."""
     if len(tracks) <= WHOLE_RECORD_TRACKS:
         return tracks, 0
     values, runs = chi2_at_points(predictor, weights, list(tracks), workers)

@@ -1,15 +1,13 @@
 """Neighbouring basins: the other minima of the whole record's cost that the data cannot
-tell from the best one, and the points of the cost's rugged floor they share it with.
+tell from the best one (impacts make the cost a field of basins a few standard deviations
+apart, whose floor can stay flat far beyond one basin's curvature).
 
-Impacts make the cost a field of basins a few standard deviations apart, whose floor can stay
-flat far beyond one basin's own curvature; the best fit's covariance describes its basin only.
-
-The check: lines through the best fit along each principal axis of its confidence ellipsoid,
-one plain run per point; a local fit from each of the lowest minima along the lines (at most
-:data:`FITS`) within the threshold plus :data:`SLACK` of the best's chi² (a line passes beside
-its basin's floor, not through it), a lower one replacing the best. The intervals are widened
-to hold every point found within the threshold (:data:`CONFIDENCE`), and a parameter in which
-another basin's minimum lies outside the best's own interval is not determined.
+The check: lines of plain runs through the best fit along each principal axis of its
+confidence ellipsoid; a local fit from each of the lowest line minima (at most :data:`FITS`)
+within the threshold plus :data:`SLACK` of the best's chi², a lower one replacing the best.
+The intervals are widened to hold every point found within the threshold (:data:`CONFIDENCE`),
+and a parameter in which another basin's minimum lies outside the best's interval is not
+determined.
 """
 
 from __future__ import annotations
@@ -29,13 +27,11 @@ from jointplay.calibration.valleys import RESOLVED_POINTS, ValleyCheck
 
 CONFIDENCE = 0.95
 """The intervals' confidence level: a point within ``chi2.ppf(CONFIDENCE, 1)`` (3.84) of the
-lowest chi² lies inside every parameter's profile-likelihood interval at that level (the
-profile at its value can only be lower)."""
+lowest chi² lies inside every parameter's profile-likelihood interval at that level."""
 REACH_SIGMAS = 5.0
 """How far each line's fine part reaches either side of the best fit, in standard deviations."""
 STEP_SIGMAS = 1.0
-"""The fine part's spacing in standard deviations: a basin is two to three wide, so each gets a
-point at most half a standard deviation (a quarter in chi²) from its floor."""
+"""The fine part's spacing in standard deviations (a basin is two to three wide)."""
 FAR_SIGMAS = (8.0, 16.0, 32.0)
 """Points beyond the fine part, in standard deviations (the rugged floor can stay flat that far)."""
 SLACK = 10.0
@@ -56,8 +52,7 @@ the intervals (within 3.84 of the lowest), so they must be accurate to well unde
 @dataclass(frozen=True)
 class Basins:
     """What the check found: the best fit (the given one or a lower one), the rivals (other
-    basins' minima within ``threshold`` of the best's chi²), every local fit it made (their
-    runs counted by the predictor), and the lines' runs."""
+    basins' minima within ``threshold`` of its chi²), its local fits, and the lines' runs."""
 
     best: np.ndarray
     best_chi2: float
@@ -81,11 +76,10 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
                         workers: int, others: tuple[Start, ...] = (),
                         axes: np.ndarray | None = None) -> Basins:
     """The check described above, around ``best`` (chi² ``best_chi2``, ``covariance`` its
-    estimates' covariance); ``others``: local fits of the same cost made before (the other
-    tracks' whole-record fits), whose minima count as rivals as the check's own do.
-    ``axes``: the covariance whose principal axes the lines follow (default ``covariance``);
-    where some parameters are undetermined, :attr:`Uncertainty.seen_covariance`, so that the
-    directions the data see are still checked."""
+    estimates' covariance); ``others``: earlier local fits of the same cost (the other tracks'),
+    whose minima count as rivals too; ``axes``: the covariance whose principal axes the lines
+    follow (default ``covariance``; :attr:`Uncertainty.seen_covariance` where some parameters
+    are undetermined, so the directions the data see are still checked)."""
     free = predictor.free
     limit = threshold()
     axes = covariance if axes is None else axes
@@ -103,10 +97,8 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     region = np.array([x for x, v in zip(every, values, strict=True)
                        if math.isfinite(v) and v <= lowest + limit]).reshape(-1, free.size)
     found: list[tuple[float, np.ndarray]] = []
-    offset = 0
-    for line in points:
-        chi2 = np.array(rest[offset:offset + len(line)])
-        offset += len(line)
+    for n, line in enumerate(points):  # every line has the same points
+        chi2 = np.array(rest[n * len(line):(n + 1) * len(line)])
         found += [(float(chi2[i]), line[i]) for i in line_minima(chi2)
                   if chi2[i] <= centre + limit + SLACK]
     found.sort(key=lambda f: f[0])
@@ -121,9 +113,9 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
 
 def _other_centres(best: np.ndarray, best_chi2: float, covariance: np.ndarray,
                    others: tuple[Start, ...], within: float) -> list[np.ndarray]:
-    """The OTHER_CENTRES lowest minima of ``others`` within ``within`` of the best's chi² that
-    lie in another basin (more than half a standard deviation away in some parameter): such a
-    fit can stop a basin or two from a lower one that the best's lines do not reach."""
+    """The OTHER_CENTRES lowest minima of ``others`` within ``within`` of the best's chi² in
+    another basin (over half a standard deviation away in some parameter): a lower basin a
+    basin or two from one of them can lie beyond the best's lines."""
     std = np.sqrt(np.clip(np.diag(covariance), 0.0, None))
     near = sorted((s for s in others if not s.failed and math.isfinite(s.chi2)
                    and s.chi2 <= best_chi2 + within
@@ -171,13 +163,11 @@ def _line_points(best: np.ndarray, covariance: np.ndarray, lower: np.ndarray,
 def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
             check: ValleyCheck | None = None
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
-    """The 95 % intervals widened to hold every point found inside them: each rival's basin
-    (its minimum, plus or minus sqrt(threshold - its rise) of the best's standard deviations,
-    its curvature taken as the best's) and every point of the lines within the threshold;
-    which parameters stay determined (no rival outside the best's own interval); a warning for
-    each interval a rival widens, or a line's point by more than WARN_WIDENING. With ``check``
-    (the valley check), a parameter its lines move whose interval misses one of its rivals is
-    not determined, its interval spanning the check's whole lines."""
+    """The 95 % intervals widened to hold each rival's basin (its minimum ± sqrt(threshold -
+    its rise) of the best's standard deviations) and every line point within the threshold;
+    which parameters stay determined (no rival outside the best's interval); a warning for
+    each interval a rival widens, or a line point by over WARN_WIDENING. With ``check`` (the
+    valley check), see :func:`_unexcluded` and :func:`_carried`."""
     low, high = spread.low95.copy(), spread.high95.copy()
     determined = spread.determined.copy()
     warnings: list[str] = []
@@ -229,11 +219,10 @@ def widened(spread: Uncertainty, basins: Basins, names: tuple[str, ...],
 def _carried(check: ValleyCheck, names: tuple[str, ...], spread: Uncertainty,
              verdict: tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]) -> None:
     """``verdict`` changed in place for the parameters the valley check's lines do not move
-    (the friction beside the clearances): in each rival valley, and anywhere along the line
-    the clearances' intervals now span, they would take other values, carried by their
-    correlation with the clearances. That shift, estimated by regressing each on the moved
-    parameters (the valleys taken as shifted copies of the fit's), widens their intervals,
-    give or take 1.96 of their standard deviations; the verdict follows the widened ones."""
+    (the friction): in each rival valley, and along the line the clearances' intervals now
+    span, they take other values, carried by their correlation with the clearances. That
+    shift (regressed on the moved parameters) ± 1.96 standard deviations widens their
+    intervals; the verdict follows the widened ones."""
     low, high, determined, warnings = verdict
     moved = check.spacing > 0
     covariance = spread.seen_covariance if spread.seen_covariance is not None \

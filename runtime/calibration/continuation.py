@@ -1,13 +1,11 @@
 """Horizon continuation: fit a short leading window of the data first, then grow it.
 
-Where joints with clearance start centred, each journal bounces tens of times in the first
-tens of milliseconds; over the whole record the cost along the direction the tip sees least
-(on the paper scene the difference of two clearances) is a sawtooth of valleys a fraction of a
-micrometre wide, and a local fit from a start tens of micrometres away stops in the first one
-it meets. Over a window holding only each journal's first impact the cost is one valley, or a
-few. The window is grown geometrically, each stage's fit started at the previous estimate: a
-longer window narrows the valleys, and the previous estimate lies in the true one. Short
-windows are cheap: each stage's runs end at the window's end.
+Over the whole record the cost along the direction the data see least (on the paper scene the
+clearances' difference) is a sawtooth of valleys a fraction of a micrometre wide, where a local
+fit stops in the first it meets; over a window holding each journal's first impacts it is one
+valley, or a few. The window grows geometrically, each stage started at the previous estimate
+(a longer window narrows the valleys; that estimate lies in the true one); a stage's runs end
+at its window's end.
 """
 
 from __future__ import annotations
@@ -36,8 +34,7 @@ from jointplay.scene.definition import Scene
 
 @dataclass(frozen=True)
 class Stage:
-    """One stage of the continuation: its window, where its fit began and ended, at what
-    cost (``simulations``: runs of this stage, each ending at the window's end)."""
+    """One stage of the continuation: its window, where its fit began and ended, its runs."""
 
     window_end: float
     samples: int
@@ -54,10 +51,9 @@ class Stage:
 
 
 HELD_RELATIVE_STD = 1.0
-"""A parameter whose standard deviation over a window, at the stage's start, exceeds this
-fraction of its value (or of its physical range where its value is 0) is held at its current
-value in that stage: a window too short to see it (friction over the first impacts) would
-otherwise drive it to a bound, from which the later stages do not return."""
+"""A parameter whose standard deviation over a window at the stage's start exceeds this
+fraction of its value (or range, where 0) is held there: a window that barely sees it (the
+friction over the first impacts) would drive it to a bound the later stages never leave."""
 
 
 def horizon_windows(t: np.ndarray, columns: int, n_free: int, first: float,
@@ -84,25 +80,17 @@ def loosened(scene: Scene, factor: float) -> Scene:
 
 
 WINDOW_MODEL_ERROR = 1.0
-"""The most the runs at a window's loosened tolerances may differ from those at the fit's
-own, as a chi² (the whitened difference's sum of squares) at the best track's estimate: the
-chi² of two fits then differ by about the model's error at most, far inside the margins the
-tracks are compared by. A loosening that keeps a short window's runs within the noise can move
-a long one's by thousands of chi², and would rank the tracks by the integrator's error."""
+"""The most a window's runs at loosened tolerances may differ from those at the fit's own, as
+a chi² at the best track's estimate: far inside the margins the tracks are compared by (a
+loosening harmless on a short window can move a long one's chi² by thousands)."""
 
 
 def window_looseness(predictor: Predictor, weights: np.ndarray, x: np.ndarray, end: float,
                      most: float) -> tuple[float, int]:
-    """The loosest of ``most``, ``most``/10, ... , 1 (times the fit's tolerances) whose runs
-    over the samples up to ``end`` stay within WINDOW_MODEL_ERROR of the fit's own at ``x``;
-    and the runs it took. A run that stops counts as too loose; one that stops at the fit's
-    own tolerances leaves ``most`` (the window's fits then meet the failure themselves)."""
-    factors = []
-    factor = most
-    while factor > 1:
-        factors.append(factor)
-        factor /= 10
-    if not factors:
+    """The loosest of ``most``, ``most``/10, ... , 1 (times the fit's tolerances) whose runs up
+    to ``end`` stay within WINDOW_MODEL_ERROR of the fit's own at ``x``, and the runs. A run
+    that stops is too loose; one that stops at the fit's tolerances leaves ``most``."""
+    if not most > 1:
         return 1.0, 0
     runs = 0
 
@@ -120,11 +108,13 @@ def window_looseness(predictor: Predictor, weights: np.ndarray, x: np.ndarray, e
     reference = outputs(1.0)
     if reference is None:
         return most, runs
-    for factor in factors:
+    factor = most
+    while factor > 1:
         loose = outputs(factor)
         if loose is not None and np.sum(whitened(loose - reference, weights)**2) \
                 <= WINDOW_MODEL_ERROR:
             return factor, runs
+        factor /= 10
     return 1.0, runs
 
 
@@ -137,10 +127,10 @@ def window(measured: Measured, end: float) -> Measured:
 
 @dataclass(frozen=True)
 class ValleyScan:
-    """Lines of ``points`` plain runs over the first window of at least ``window`` (s),
-    through the best track's estimate along the directions the impacts make rugged, reaching
-    ``reach`` times ``scale`` (one number per free parameter: for the clearances the grid's
-    spacing) either side; its ``keep`` lowest local minima become tracks beside those carried."""
+    """Lines of ``points`` plain runs over the first window of at least ``window`` (s) through
+    the best track's estimate along the rugged directions, ``reach`` times ``scale`` (per
+    parameter; the clearances' grid spacing) either side; the ``keep`` lowest minima become
+    tracks."""
 
     window: float
     points: int
@@ -159,18 +149,16 @@ def continuation(predictor: Predictor, weights: np.ndarray, tracks: np.ndarray,
                  valley: ValleyScan | None = None, looser: float = 1.0, workers: int = 1,
                  opening: ValleyScan | None = None) -> tuple[np.ndarray, list[Stage], int]:
     """The estimates after the windows shorter than the record (the surviving tracks, best
-    first), the stages, and the runs they took.
+    first), the stages, and the runs.
 
-    Each row of ``tracks`` is carried through the windows on its own, and dropped (see
-    :func:`_surviving`) when it falls behind or joins a better one; a single track's first
-    fit tries ``alternatives`` while it does not explain that window. A stage whose every run
-    stops ends the continuation. The runs use the fit's tolerances times ``looser`` at most
-    (:func:`window_looseness`). With ``valley``, from its window on each window first adds
-    the lowest minima along lines through the best estimate as tracks (each later window's
-    lines reaching ``growth`` times less far: its valleys are narrower, the tracks nearer
-    them); before that window the parameters the lines do not move are held (a short window
-    barely sees them and, left free, they absorb the clearances' misfit). With ``opening``,
-    such lines through the best track's start replace it before the first window's fits."""
+    Each row of ``tracks`` is carried on its own, dropped (:func:`_surviving`) when it falls
+    behind or joins a better one; a single track's first fit tries ``alternatives`` while it
+    does not explain that window; a stage whose every run stops ends it. Runs use the fit's
+    tolerances times ``looser`` at most (:func:`window_looseness`). With ``valley``, from its
+    window on, the lowest minima along lines through the best estimate join the tracks (each
+    later window's lines reaching ``growth`` times less far); before it, the parameters the
+    lines do not move are held (left free they absorb the clearances' misfit). With
+    ``opening``, such lines through the best track's start replace it before the first fits."""
     measured = predictor.measured
     ends = horizon_windows(measured.t, len(measured.columns), predictor.free.size, first, growth)
     alive = [np.asarray(x, dtype=float) for x in tracks]
@@ -226,15 +214,14 @@ def _line_minima(predictor: Predictor, stage_scene: Scene, part: Measured, weigh
                  x: np.ndarray, scan: ValleyScan, workers: int) -> tuple[list[np.ndarray], int]:
     """The ``scan.keep`` lowest local minima of the window's chi² along ``scan``'s lines
     through ``x`` (across the directions :func:`_rugged` finds there), and the runs."""
-    directions, runs = _rugged(predictor, stage_scene, part, weights, x, np.asarray(scan.scale))
     steps = np.linspace(-scan.reach, scan.reach, scan.points)
-    lines, values, more = _lines_chi2(predictor, stage_scene, part, weights, x, directions,
-                                      steps, workers)
+    _, lines, values, runs = _lines_chi2(predictor, stage_scene, part, weights, x, scan.scale,
+                                         steps, workers)
     found: list[tuple[float, np.ndarray]] = []
     for line, chi2 in zip(lines, values, strict=True):
         found += [(chi2[i], line[i]) for i in line_minima(chi2)]
     found.sort(key=lambda f: f[0])
-    return [point for _, point in found[:scan.keep]], runs + more
+    return [point for _, point in found[:scan.keep]], runs
 
 
 Fitted = tuple[list[tuple[int, np.ndarray, float]], list[tuple[int, np.ndarray, float]],
@@ -248,14 +235,13 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
                  alternatives: np.ndarray | None, max_evaluations: int,
                  end: float, held_first: np.ndarray, workers: int) -> tuple[Fitted, int]:
     """Each track's fit over one window, on up to ``workers`` processes (a track whose every
-    run stops ends there), and the runs; ``alternatives``: see :func:`continuation`. With
-    several tracks each fit pauses after CHECKPOINT_EVALUATIONS, and goes on only while its
-    chi² lies within the tracks' margin of the best (one further behind is dropped anyway)."""
+    run stops ends), and the runs. With several tracks each fit pauses after
+    CHECKPOINT_EVALUATIONS and goes on only while within the tracks' margin of the best."""
     def fit(i: int, x: np.ndarray, budget: int
             ) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
-        starts = alternatives if alternatives is not None else x[None, :]
-        return _stage_fit(predictor, stage_scene, part, weights,
-                          np.vstack([x, starts[1:]]), budget, end, labels[i], held_first)
+        starts = x[None, :] if alternatives is None else np.vstack([x, alternatives[1:]])
+        return _stage_fit(predictor, stage_scene, part, weights, starts, budget, end,
+                          labels[i], held_first)
 
     pause = min(max_evaluations, CHECKPOINT_EVALUATIONS) if len(alive) > 1 else max_evaluations
     done = parallel_map(lambda i: fit(i, alive[i], pause), len(alive), workers)
@@ -292,11 +278,10 @@ def _window_fits(predictor: Predictor, stage_scene: Scene, part: Measured,
 
 def _rugged(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
             x: np.ndarray, scale: np.ndarray) -> tuple[list[np.ndarray], int]:
-    """The directions to scan at ``x`` among the parameters whose ``scale`` is not 0 (a step
-    of 1 moves each by at most its ``scale``), and the runs: the eigenvectors of the window's
-    scaled information matrix there, all but the weakest where more than one moves. The
-    weakest is the smooth valley floor a local fit follows (on the paper scene the clearances'
-    sum); the impacts make the others rugged (their difference)."""
+    """The directions to scan at ``x`` among the parameters whose ``scale`` is not 0 (a unit
+    step moves each by at most its ``scale``), and the runs: the eigenvectors of the window's
+    scaled information matrix but the weakest where more than one moves (the smooth valley
+    floor a local fit follows; the impacts make the others rugged)."""
     probe = predictor.over(stage_scene, part)
     try:
         jac = whitened(probe.jacobian(x), weights)
@@ -323,25 +308,27 @@ def _window_problem(predictor: Predictor, end: float, looser: float) -> tuple[Me
 
 
 def _lines_chi2(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
-                x: np.ndarray, directions: list[np.ndarray], steps: np.ndarray, workers: int
-                ) -> tuple[list[list[np.ndarray]], list[np.ndarray], int]:
-    """The lines through ``x`` (``x + s direction`` for each of ``steps``, inside the
-    bounds, one per direction), the window's chi² along each, and the runs."""
+                x: np.ndarray, scale: tuple[float, ...], steps: np.ndarray, workers: int
+                ) -> tuple[list[np.ndarray], list[list[np.ndarray]], list[np.ndarray], int]:
+    """The rugged directions at ``x`` (:func:`_rugged`), the lines through it along them
+    (``x + s direction`` for each of ``steps``, inside the bounds), the window's chi² along
+    each, and the runs."""
+    directions, runs = _rugged(predictor, stage_scene, part, weights, x, np.asarray(scale))
     free, probe = predictor.free, predictor.over(stage_scene, part)
     lines = [[np.clip(x + s * direction, free.lower, free.upper) for s in steps]
              for direction in directions]
-    every, runs = chi2_at_points(probe, weights, [p for line in lines for p in line], workers)
+    every, more = chi2_at_points(probe, weights, [p for line in lines for p in line], workers)
     values = [np.array(every[n * steps.size:(n + 1) * steps.size]) for n in range(len(lines))]
-    return lines, values, runs
+    return directions, lines, values, runs + more
 
 
 def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights: np.ndarray,
                starts: np.ndarray, max_evaluations: int, end: float,
                label: int, held_first: np.ndarray
                ) -> tuple[tuple[Stage | None, np.ndarray] | None, int]:
-    """One track's fit over one window from ``starts[0]`` (the others tried while it does
-    not explain the window): (its stage record, or None where the window sees none of the
-    parameters, and its estimate), or None where its runs stop; and the runs."""
+    """One track's fit over one window from ``starts[0]`` (the others tried while it does not
+    explain it): (its stage, None where the window sees no parameter, and its estimate), or
+    None where its runs stop; and the runs."""
     x = starts[0]
     cpu0 = time.process_time()
     probe = predictor.over(stage_scene, part)
@@ -369,21 +356,18 @@ def _stage_fit(predictor: Predictor, stage_scene: Scene, part: Measured, weights
 
 
 CHECKPOINT_EVALUATIONS = 15
-"""Evaluations after which a window's track fits pause to compare their chi² (over nine in
-ten end sooner on the benchmark's cases; one that does not can creep down a rugged valley for
-all its evaluations, on paper-fast-tip 36 s at 1.28 s, and end far behind the best)."""
+"""Evaluations after which a window's track fits pause to compare their chi² (nine in ten end
+sooner; one that does not can creep down a rugged valley for all its evaluations)."""
 
 WINDOW_EVALUATIONS = 20
-"""Least-squares evaluations at most per window before the line scan (those windows only have to
-bring each track near its valley; the later ones, with far narrower valleys, get the full count)."""
+"""Evaluations at most per window before the valley lines (which only bring each track near
+its valley; the later windows, with far narrower valleys, get the full count)."""
 
 TRACK_MARGIN = 50.0
 """A track whose chi² over a window lies more than this above the best track's is dropped
-(or more than CHI2_SIGMAS sqrt(2 dof), where that is less; either times the best track's
-chi²/dof where that exceeds 1). Two fits of the same data differ in chi² by the model's
-difference, not by the noise: the true parameters lie above the best fit by a chi² of 3 degrees
-of freedom for three free parameters (over 21 once in 10⁴), and the windows' fits stop short of
-their floor by a few more. The whole-record stage ranks the surviving tracks by this margin."""
+(see :func:`track_margin`): the truth lies above the best fit by a chi² on as many degrees of
+freedom as free parameters (over 21 once in 10⁴ for three), and windows' fits stop a few short
+of their floor. The whole-record stage ranks the surviving tracks by it too."""
 
 SAME_ESTIMATE = 1e-4
 """Two tracks whose estimates differ by less than this fraction of each parameter's value
@@ -394,9 +378,7 @@ def _surviving(results: list[tuple[int, np.ndarray, float]], dof: int,
                free: FreeParameters) -> list[tuple[int, np.ndarray, float]]:
     """The tracks worth carrying to the next window, best first."""
     ordered = sorted(results, key=lambda r: r[2])
-    if not ordered:
-        return []
-    best = ordered[0][2]
+    best = ordered[0][2] if ordered else math.inf
     kept: list[tuple[int, np.ndarray, float]] = []
     for label, x, chi2 in ordered:
         scale = np.where(x != 0, np.abs(x), free.upper - free.lower)

@@ -1,10 +1,9 @@
 """The fit: weighted least squares on the compiled model, from several starts where needed.
 
 ``scipy.optimize.least_squares`` (trust-region reflective, inside the physical bounds,
-``x_scale="jac"``) minimises the residuals whitened by the sensors' standard deviations, with
-the Jacobian from the model's sensitivities. Where an optimum does not explain the data
-within the noise, the fit restarts from a Latin hypercube of starts around the first one (a
-multi-start, not a continuation in the contact stiffness, which may itself be free).
+``x_scale="jac"``) on the residuals whitened by the noise, the Jacobian from the model's
+sensitivities; where an optimum does not explain the data, restarts from a Latin hypercube
+around the first start.
 """
 
 from __future__ import annotations
@@ -113,12 +112,9 @@ class Scan:
 
 def scan_weakest_direction(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
                            start: np.ndarray, scan: Scan) -> np.ndarray:
-    """Starts for local fits: the lowest local minima of chi² along the weakest direction.
-
-    Impacts make the cost rugged along the direction the data determine least, where a local
-    fit stops in the first minimum; from the first fit, on the floor of the well-determined
-    directions, a line along the weakest samples the minima at one run per point (a basin
-    narrower than its spacing can be missed, which the chi² test then reports)."""
+    """Starts for local fits: the lowest local minima of chi² along the line through the
+    first fit in the direction the data determine least, where impacts make the cost rugged
+    (one run per point; a basin narrower than the spacing can be missed)."""
     free = predictor.free
     jac = whitened(predictor.jacobian(best), weights)
     width = np.where(start != 0, scan.spread * np.abs(start), scan.spread)
@@ -155,13 +151,12 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
                 max_evaluations: int, stop_early: bool, workers: int = 1, settle: bool = False,
                 relative: float = 0.0) -> tuple[np.ndarray, list[Start]]:
     """Local fits from ``starts``, the best kept: in turn with ``stop_early`` (none after one
-    that explains the data), else on up to ``workers`` forked processes (their runs added to
-    ``predictor``'s count). With ``settle``, each ends once settled (SETTLED_SIGMAS), or once
-    its next step moves every parameter by less than ``relative`` of its value."""
+    that explains the data), else on up to ``workers`` forked processes (runs counted in
+    ``predictor``). With ``settle``, each ends once settled (SETTLED_SIGMAS) or once its next
+    step moves every parameter by less than ``relative`` of its value."""
     accept = explaining_limit(predictor.measured.size - predictor.free.size)
     best: np.ndarray | None = None
     best_chi2 = math.inf
-    failures = []
     done: list[Start] = []
     if stop_early or workers <= 1:
         for x0 in starts:
@@ -182,23 +177,19 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
                 predictor.counter.simulations += n
                 predictor.counter.by_kind[kind] = predictor.counter.by_kind.get(kind, 0) + n
     for start in done:
-        if start.failed:
-            failures.append(start.message)
-        elif start.chi2 < best_chi2:
+        if not start.failed and start.chi2 < best_chi2:
             best, best_chi2 = np.array(start.end), start.chi2
     if best is None:
-        raise SimulationError(math.nan, "every start of the calibration stopped; the first: "
-                              f"{failures[0]}")
+        first = next((s.message for s in done if s.failed), "no finite chi²")
+        raise SimulationError(math.nan, f"every start of the calibration stopped: {first}")
     return best, done
 
 
 SETTLED_SIGMAS = 0.1
-"""A local fit ends at its best point once the step it would try next lies within this many
-standard deviations of it, in the metric of the Jacobian there (scaled by sqrt(chi²/dof) where
-the fit does not yet explain the data): such a step changes chi² by a few hundredths, below the
-integrator's own scatter, where SciPy's ``xtol`` goes on shrinking the trust region through
-rejected runs. Every fit of the search settles: the windows' fits only rank the tracks (by
-margins of tens in chi²), the friction's fit before the grid only seeds it."""
+"""A local fit ends at its best point once its next step lies within this many standard
+deviations of it (the Jacobian's metric there, scaled by sqrt(chi²/dof) where above one): such
+a step changes chi² by hundredths, below the integrator's scatter, where SciPy's ``xtol`` goes
+on shrinking the trust region through rejected runs."""
 
 
 class _Settled(Exception):

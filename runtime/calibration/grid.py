@@ -1,11 +1,9 @@
 """The global stage: a coarse grid of the free clearances on a short leading window.
 
-Over a window of a few tens of milliseconds each journal has made its first bounces, and the
-cost over the free clearances is a handful of valleys a few micrometres apart and about 2 µm
-wide. A grid at a spacing near that width finds the valleys at one short run per point; its
-lowest local minima, the other free parameters held at their starts (such a window barely
-sees them), are the candidates the horizon continuation carries forward, each on its own
-track, until the longer windows tell them apart.
+Over the first tens of milliseconds the cost over the free clearances is a handful of valleys
+a few micrometres apart and about 2 µm wide; a grid at about that spacing finds them at one
+short run per point. Its lowest minima, the other parameters held (the window barely sees
+them), start the continuation's tracks.
 """
 
 from __future__ import annotations
@@ -26,19 +24,16 @@ from jointplay.common.errors import SimulationError
 CLEARANCE_NAME = re.compile(r"joint\d+\.clearance")
 OTHERS_FIRST_RELATIVE = 1e-3
 """The fit of the others before the grid ends once its next step moves each by less than this
-fraction: with the clearances at their start the cost is rugged at a millionth of the friction
-(on paper-fast-tip, 9 of 14 evaluations went there), and the value only seeds the grid and the
-first windows, whose held parameters may drift by HELD_DRIFT (5 %)."""
+fraction (with the clearances at their start the cost is rugged at a millionth of the friction;
+the value only seeds the grid and the first windows, which allow a drift of 5 %)."""
 
 
 @dataclass(frozen=True)
 class Grid:
-    """How the grid runs: a window ending at ``window_end`` (s), at most ``points`` values
-    of each free clearance (fewer per axis with more than two, keeping the grid at most
-    ``points`` squared runs) across ±``spread`` (relative) of the start, the runs at the
-    fit's tolerances times ``looser`` at most (the loosest that keeps them within the noise:
-    :func:`~jointplay.calibration.continuation.window_looseness`); ``candidates``: the
-    lowest local minima kept."""
+    """How the grid runs: a window ending at ``window_end`` (s), at most ``points`` values of
+    each free clearance (at most ``points`` squared runs in all) across ±``spread`` of the
+    start, at the fit's tolerances times ``looser`` at most; ``candidates``: the lowest local
+    minima kept."""
 
     window_end: float
     points: int
@@ -49,9 +44,8 @@ class Grid:
 
 @dataclass(frozen=True)
 class GridResult:
-    """The candidates (best first), their window chi², the grid's axes and its runs (the
-    grid's points, and the two to four that chose their tolerances:
-    :func:`~jointplay.calibration.continuation.window_looseness`)."""
+    """The candidates (best first), their window chi², the grid's axes and its runs (those
+    that chose its tolerances included)."""
 
     candidates: np.ndarray
     chi2: tuple[float, ...]
@@ -69,11 +63,9 @@ def clearance_axes(names: tuple[str, ...]) -> list[int]:
 def others_first(predictor: Predictor, weights: np.ndarray, start: np.ndarray,
                  looser: float, max_evaluations: int) -> tuple[np.ndarray, int]:
     """``start`` with the free parameters other than the clearances fitted over the whole
-    record, the clearances held, the runs at the fit's tolerances times ``looser`` at most
-    (:func:`~jointplay.calibration.continuation.window_looseness`); and the runs. Why: the
-    grid holds them, and the whole record determines them far better than the grid's window
-    (on the paper scene the friction moves the tip by millimetres over 2 s, the clearances by
-    tens of micrometres, while over the first 20 ms it barely moves)."""
+    record, the clearances held, at the fit's tolerances times ``looser`` at most; and the
+    runs. The grid holds them, and the whole record sees them far better than its window (the
+    friction moves the tip by millimetres over 2 s, and barely over the first 20 ms)."""
     free = predictor.free
     axes = clearance_axes(free.names)
     if not axes or len(axes) == free.size:
@@ -114,8 +106,7 @@ def grid_candidates(predictor: Predictor, weights: np.ndarray, start: np.ndarray
     def point(index: tuple[int, ...]) -> np.ndarray:
         """The start with the grid's axes set to the values at ``index``."""
         x = start.copy()
-        for a, k in enumerate(axes):
-            x[k] = values[a][index[a]]
+        x[axes] = [values[a][i] for a, i in enumerate(index)]
         return x
 
     values_chi2, runs = chi2_at_points(probe, weights, [point(i) for i in indices], workers)
@@ -134,11 +125,9 @@ def grid_scale(free: FreeParameters, start: np.ndarray, grid: GridResult,
                spread: float) -> tuple[float, ...]:
     """Per free parameter, the grid's spacing (the clearances: how far the grid leaves each
     one uncertain) or 0 (the others, fitted over the whole record before the grid)."""
-    def spacing(k: int) -> float:
-        values = _axis(free, start, k, spread, grid.points_per_axis)
-        return float(values[1] - values[0])
-
-    return tuple(spacing(k) if name in grid.axes else 0.0 for k, name in enumerate(free.names))
+    axes = {k: _axis(free, start, k, spread, grid.points_per_axis)
+            for k, name in enumerate(free.names) if name in grid.axes}
+    return tuple(float(axes[k][1] - axes[k][0]) if k in axes else 0.0 for k in range(free.size))
 
 
 def _axis(free: FreeParameters, start: np.ndarray, k: int, spread: float,
@@ -150,9 +139,6 @@ def _axis(free: FreeParameters, start: np.ndarray, k: int, spread: float,
 def _local_minima(chi2: np.ndarray) -> list[tuple[int, ...]]:
     """Grid points no higher than any neighbour (the corners' diagonals included)."""
     padded = np.pad(chi2, 1, constant_values=np.inf)
-    out = []
-    for index in itertools.product(*(range(n) for n in chi2.shape)):
-        if math.isfinite(chi2[index]) \
-                and chi2[index] <= padded[tuple(slice(i, i + 3) for i in index)].min():
-            out.append(index)
-    return out
+    return [index for index in itertools.product(*(range(n) for n in chi2.shape))
+            if math.isfinite(chi2[index])
+            and chi2[index] <= padded[tuple(slice(i, i + 3) for i in index)].min()]

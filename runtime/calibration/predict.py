@@ -1,10 +1,9 @@
 """The model's prediction of the measured columns, and its Jacobian in the free parameters.
 
-The Jacobian comes from the compiled BDF's sensitivities (``simulate(...,
-sensitivities=NAMES)``: one run gives the outputs and their derivatives, through every impact);
-a name they do not cover takes central differences of whole runs (two per name). Samples are
-read off the run's output grid when the measured times lie on it; otherwise from the run's dense
-output, the sensitivities interpolated linearly between samples.
+The Jacobian comes from the compiled sensitivities (one run gives the outputs and their
+derivatives through every impact); a name they do not cover takes central differences (two
+runs). Samples come off the run's output grid where the measured times lie on it, else from
+its dense output (the sensitivities interpolated linearly).
 """
 
 from __future__ import annotations
@@ -152,11 +151,7 @@ class Predictor:
         if self._grid is not None:
             return stacked[self._grid]
         t_grid = np.asarray(sens.t, float)
-        out = np.empty((self.measured.t.size, *stacked.shape[1:]))
-        for c in range(stacked.shape[1]):
-            for k in range(stacked.shape[2]):
-                out[:, c, k] = np.interp(self.measured.t, t_grid, stacked[:, c, k])
-        return out
+        return np.apply_along_axis(lambda y: np.interp(self.measured.t, t_grid, y), 0, stacked)
 
     def _central_difference(self, x: np.ndarray, k: int) -> np.ndarray:
         h = FD_RELATIVE_STEP * (abs(x[k]) if x[k] != 0 else 1e-2)
@@ -165,18 +160,17 @@ class Predictor:
         return (self._run(up, ())[0] - self._run(down, ())[0]) / (up[k] - down[k])
 
     def _compiled_names(self) -> tuple[str, ...]:
-        """The free names the compiled sensitivities cover (tried once at the start)."""
-        return tuple(name for name in self.free.names if self._accepts(name))
-
-    def _accepts(self, name: str) -> bool:
+        """The free names the compiled sensitivities cover (each tried once on one step)."""
         from jointplay.sim import simulate
 
-        short = self.scene.with_run(t_end=self.scene.run.output_step)
-        try:
-            simulate(short, model=self.model, parameters=None, sensitivities=(name,))
-        except DescriptionError:
-            return False
-        return True
+        short, names = self.scene.with_run(t_end=self.scene.run.output_step), []
+        for name in self.free.names:
+            try:
+                simulate(short, model=self.model, parameters=None, sensitivities=(name,))
+                names.append(name)
+            except DescriptionError:
+                pass
+        return tuple(names)
 
 
 def chi2_at(probe: Predictor, weights: np.ndarray, points: list[np.ndarray]
@@ -197,9 +191,8 @@ def chi2_at(probe: Predictor, weights: np.ndarray, points: list[np.ndarray]
 
 def chi2_at_points(probe: Predictor, weights: np.ndarray, points: list[np.ndarray],
                    workers: int) -> tuple[list[float], int]:
-    """:func:`chi2_at` of every point, in order, the points cut into pieces run on up to
-    ``workers`` forked processes (PIECES_PER_WORKER each: runs differ in cost, and a worker
-    that finishes first takes the next piece); and the runs."""
+    """:func:`chi2_at` of every point, in order, in pieces on up to ``workers`` processes
+    (PIECES_PER_WORKER each: runs differ in cost); and the runs."""
     pieces = chunks(len(points), PIECES_PER_WORKER * workers)
     done = parallel_map(lambda i: chi2_at(probe, weights, [points[j] for j in pieces[i]]),
                         len(pieces), workers)

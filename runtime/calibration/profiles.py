@@ -1,9 +1,7 @@
-"""Cost profiles: chi² along each free parameter, the others held at their estimates.
-
-Held, not re-optimised: a profile then costs one run per point, and beside the quadratic
-that the covariance predicts (chi²_min + ((p - p̂)/σ_cond)², σ_cond the conditional standard
-deviation with the others fixed) it shows whether the linearisation behind the intervals
-holds, and where impacts make the cost jump or a second minimum appear.
+"""Cost profiles: chi² along each free parameter, the others held at their estimates (one run
+per point). Beside the quadratic the covariance predicts (chi²_min + ((p - p̂)/σ_cond)², σ_cond
+the standard deviation with the others fixed) a profile shows whether the linearisation behind
+the intervals holds, and where impacts make the cost jump or a second minimum appear.
 """
 
 from __future__ import annotations

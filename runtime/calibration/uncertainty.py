@@ -101,10 +101,7 @@ def _correlation(covariance: np.ndarray, corr_form: np.ndarray, vt: np.ndarray,
     # In a lost direction v the estimates move along v freely: correlated with sign v_i v_j.
     for v in vt[lost]:
         big = np.flatnonzero(np.abs(v) > NULL_COMPONENT)
-        for i in big:
-            for j in big:
-                if i != j:
-                    corr[i, j] = float(np.sign(v[i] * v[j]))
+        corr[np.ix_(big, big)] = np.sign(np.outer(v[big], v[big]))  # its diagonal: 1
     blind = np.flatnonzero(np.diag(corr_form) == 0)
     corr[blind, :] = np.nan
     corr[:, blind] = np.nan

@@ -1,12 +1,10 @@
-"""The valley check after the whole record's fit, and the following of what it finds.
+"""The valley check after the whole record's fit.
 
 Over the whole record the cost along the clearances' rugged direction is a comb of valleys a
-fraction of a nanometre wide, far narrower than the spacing of the continuation's lines
-(:mod:`jointplay.calibration.continuation`): a fit can end a few valleys from the truth's with
-a chi² the noise explains. Over the continuation's first lined window the
-valleys are wide enough for lines of runs through the fit to resolve them:
-:func:`valley_check` finds the other valleys there as low as the fit's own. What it finds
-widens the intervals (:func:`jointplay.calibration.basins.widened`).
+fraction of a nanometre wide: a fit can end a few valleys from the truth's with a chi² the
+noise explains. Over the continuation's first lined window the valleys are wide enough for a
+line of runs through the fit to resolve them: :func:`valley_check` finds the others there as
+low as the fit's own, which widen the intervals (:func:`jointplay.calibration.basins.widened`).
 """
 
 from __future__ import annotations
@@ -19,7 +17,6 @@ import numpy as np
 from jointplay.calibration.continuation import (
     ValleyScan,
     _lines_chi2,
-    _rugged,
     _window_problem,
     horizon_windows,
 )
@@ -28,11 +25,10 @@ from jointplay.calibration.predict import Predictor, line_minima
 
 @dataclass(frozen=True)
 class ValleyCheck:
-    """What :func:`valley_check` found: the window (s) its line ran over, the other valleys'
-    floors along it (a point of the line and its chi² there minus the floor of the best
-    fit's own valley), the line's spacing in each parameter, its runs, and the extent of
-    its points in each parameter (lowest, highest; None where it ran no line; a grid spacing
-    either side where ``coarse``: a line too coarse for the fit's own valley)."""
+    """What :func:`valley_check` found: its window (s), the other valleys' floors along its
+    line (a point and its chi² minus the fit's own valley's floor), the line's spacing per
+    parameter, its runs, and its points' extent (lowest, highest; None without a line; a
+    grid spacing either side where ``coarse``: too coarse for the fit's own valley)."""
 
     window_end: float
     rivals: tuple[tuple[np.ndarray, float], ...]
@@ -46,19 +42,16 @@ class ValleyCheck:
 
 RESOLVED_POINTS = 3
 """A line resolves the valleys along it where the fit's own valley (its points within the
-threshold of its floor) spans at least this many points: a valley as wide holds one of them
-wherever it lies (on paper-fast-tip a fit a valley off, reported determined, spanned 1)."""
+threshold of its floor) spans at least this many points: a valley as wide holds one of them."""
 
 
 def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
                  scan: ValleyScan, looser: float, growth: float, within: float,
                  workers: int) -> ValleyCheck:
-    """The valleys near ``best`` that the whole record's fit and the basin check cannot tell
-    from its own: a line of ``scan.points`` runs over the first window of at least
-    ``scan.window`` through ``best`` along the rugged directions there, reaching
-    ``scan.reach`` times ``scan.scale`` either side; every other valley along it whose floor
-    lies within ``within`` of (or below) the floor of ``best``'s own valley is a rival: what
-    the search cannot exclude."""
+    """The valleys near ``best`` the search cannot tell from its own: along a line of
+    ``scan.points`` runs over the first window of at least ``scan.window`` through ``best``
+    along the rugged directions, ``scan.reach`` times ``scan.scale`` either side, each other
+    valley whose floor lies within ``within`` of (or below) the floor of ``best``'s own."""
     measured = predictor.measured
     free = predictor.free
     ends = horizon_windows(measured.t, len(measured.columns), free.size, scan.window, growth)
@@ -67,10 +60,9 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     part, stage_scene = _window_problem(predictor, ends[0], looser)
     # The rugged directions only: a line along the weakest one too changed no interval's
     # coverage on the benchmark cases, and cost correct verdicts and half the check's runs.
-    directions, runs = _rugged(predictor, stage_scene, part, weights, best, np.asarray(scan.scale))
     steps = np.linspace(-scan.reach, scan.reach, 2 * (scan.points // 2) + 1)
-    lines, values, more = _lines_chi2(predictor, stage_scene, part, weights, best,
-                                      directions, steps, workers)
+    directions, lines, values, runs = _lines_chi2(predictor, stage_scene, part, weights, best,
+                                                  scan.scale, steps, workers)
     rivals: list[tuple[np.ndarray, float]] = []
     spacing = np.zeros(free.size)
     coarse = False
@@ -85,7 +77,7 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     if coarse:  # the search located the fit to within a grid spacing, and no closer
         scale = np.asarray(scan.scale)
         extent = (np.maximum(best - scale, free.lower), np.minimum(best + scale, free.upper))
-    return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs + more, extent,
+    return ValleyCheck(float(ends[0]), tuple(rivals), spacing, runs, extent,
                        np.array(best, dtype=float), coarse)
 
 
