@@ -180,6 +180,17 @@ def test_the_case_table_states_the_walls_in_machine_references() -> None:
         rows, runner.summarise(rows), "")
 
 
+def test_a_failing_machine_reference_stops_with_the_childs_error(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """A reference run that fails (here: its code raises) stops the benchmark with one line
+    naming the child's error, not a number read from nothing."""
+    monkeypatch.setattr(runner, "REFERENCE_CODE", "raise ImportError('no jointplay here')")
+    with pytest.raises(RuntimeError, match=r"exit status 1: ImportError: no jointplay here"):
+        runner.machine_reference()
+    monkeypatch.setattr(runner, "REFERENCE_CODE", "print('0.125')")
+    assert runner.machine_reference() == 0.125
+
+
 def test_the_stage_benchmark_removes_each_stage_and_puts_it_back() -> None:
     """benchmarks/calibration_stages.py: inside each removal the search's function is
     replaced (or an option turns the stage off), outside it the original is back; the

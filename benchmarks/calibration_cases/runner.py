@@ -189,9 +189,13 @@ print(statistics.median(seconds))
 def machine_reference() -> float:
     """CPU seconds of one plain run of the paper scene over its 2 s at the fit's tolerances
     (median of five, in a process of its own, after one untimed): the machine's speed now, by
-    which the times of runs on different machines or days compare."""
-    done = subprocess.run([sys.executable, "-c", REFERENCE_CODE], capture_output=True,
-                          text=True, check=True)
+    which the times of runs on different machines or days compare. A RuntimeError with the
+    child's last line of error where it fails (a broken install: the benchmark stops at once)."""
+    done = subprocess.run([sys.executable, "-c", REFERENCE_CODE], capture_output=True, text=True)
+    if done.returncode != 0 or not done.stdout.split():
+        last = (done.stderr.strip().splitlines() or ["no message"])[-1]
+        raise RuntimeError(f"the machine reference (a plain run of the paper scene in a child "
+                           f"process) failed with exit status {done.returncode}: {last}")
     return float(done.stdout.split()[-1])
 
 
