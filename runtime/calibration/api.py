@@ -233,11 +233,7 @@ def _run(problem: Problem) -> CalibrationResult:
         if grid is not None and valley is not None else 0.0
     free, check, line_runs = problem.free, None, 0
     spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper, free.names)
-    fitted = predictor.outputs(optimum.values)
-    # The checks decide which estimates stay determined (the basin check may also move the fit
-    # to a lower minimum): skipped where none can be (the noise does not explain the residuals,
-    # or the held parameters drifted), the intervals then spanning the searched box.
-    if opts.basins and drift <= HELD_DRIFT and _explained(problem, optimum, fitted):
+    if opts.basins:
         found = neighbouring_basins(predictor, optimum.sigma, optimum.values,
                                     float(np.sum(optimum.residuals**2)), spread.covariance,
                                     opts.max_evaluations, opts.workers,
@@ -248,9 +244,14 @@ def _run(problem: Problem) -> CalibrationResult:
             optimum = moved_to(predictor, optimum, found.best)
             spread = uncertainty(optimum.jacobian, optimum.values, free.lower, free.upper,
                                  free.names)
-            fitted = predictor.outputs(optimum.values)
-        if valley is not None and opts.valley_check_points > 0 \
-                and _explained(problem, optimum, fitted):
+    fitted = predictor.outputs(optimum.values)
+    if opts.basins:
+        # The valley check only decides which estimates stay determined: skipped where none can
+        # be (the noise does not explain the residuals, or the held parameters drifted).
+        if valley is not None and opts.valley_check_points > 0 and drift <= HELD_DRIFT \
+                and residual_check(fitted - problem.measured.values, optimum.sigma,
+                                   problem.measured.size - free.size, problem.noise_spread,
+                                   problem.measured.columns) is None:
             check = valley_check(predictor, weights, optimum.values, ValleyScan(
                 opts.valley_window, opts.valley_check_points, VALLEY_CHECK_REACH, 1,
                 valley.scale), VALLEY_CHECK_LOOSER, opts.horizon_growth, basin_threshold(),
@@ -293,14 +294,6 @@ def _whole_stage(problem: Problem, fits: Sequence[Any]) -> Stage:
     return Stage(float(problem.measured.t[-1]), int(problem.measured.t.size), whole.start,
                  whole.end, whole.chi2, max(problem.measured.size - problem.free.size, 1),
                  whole.evaluations, whole.evaluations, whole.message)
-
-
-def _explained(problem: Problem, optimum: Optimum, fitted: np.ndarray) -> bool:
-    """Whether the noise explains the residuals of ``fitted`` (:func:`residual_check`)."""
-    measured = problem.measured
-    return residual_check(fitted - measured.values, optimum.sigma,
-                          measured.size - problem.free.size, problem.noise_spread,
-                          measured.columns) is None
 
 
 def _drift(held: np.ndarray, fitted: np.ndarray, mask: np.ndarray) -> float:

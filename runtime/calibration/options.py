@@ -76,9 +76,8 @@ class CalibrationOptions:
         undetermined (:func:`valley_check`; 0: no check); run only where the noise explains
         the residuals (otherwise nothing is determined).
     basins : bool
-        Where the noise explains the residuals, look for the whole record's other minima the
-        data cannot tell from the best fit, and widen the intervals to hold them
-        (:mod:`jointplay.calibration.basins`).
+        Look for the whole record's other minima the data cannot tell from the best fit, and
+        widen the intervals to hold them (:mod:`jointplay.calibration.basins`).
     workers : int
         Processes for the grid's runs, the tracks' fits and the lines' runs.
     scheduler : str or None

@@ -77,8 +77,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
                    help="skip the search for the other minima of the whole record's cost "
                         "near the best fit (lines along the axes of its confidence "
                         "ellipsoid, local fits from their lowest minima), which the "
-                        "intervals are otherwise widened to hold; run only where the noise "
-                        "explains the residuals")
+                        "intervals are otherwise widened to hold")
     p.add_argument("--profile-points", type=int, default=13,
                    help="points of each cost profile (default 13; 0: none)")
     p.add_argument("--tighten", type=float, default=1000.0,
