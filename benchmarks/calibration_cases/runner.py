@@ -16,8 +16,8 @@ Summary: coverage (the fraction of intervals holding the truth), parameters repo
 determined with the truth outside their interval, the accuracy goals (clearances within
 2 %, friction within 5 %, where determined), median and worst wall per case and overall, and
 the same in units of the machine's speed, measured before each run (:func:`machine_reference`):
-on a shared machine the same calibration, on the same path, took 0.56 to 1.05 times its wall
-of three hours before.
+on a shared machine the same calibration, on the same path, took 0.56 to 1.69 times its wall
+at another hour (2026-11-30 and 12-01).
 """
 
 from __future__ import annotations
