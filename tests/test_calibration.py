@@ -472,6 +472,30 @@ def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> 
     assert np.all(np.abs(np.array(coarse.end) - full.end) <= 2e-2 * np.abs(full.end))
 
 
+def test_a_multi_start_without_a_usable_fit_stops_saying_why(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Where every start stopped, one SimulationError names the first failure; where none
+    stopped but none reached a finite chi² (a fit settled at a point it never evaluated), the
+    same error says so instead of failing on an empty choice. The fits are stand-ins."""
+    from types import SimpleNamespace
+
+    from jointplay.calibration import fit as fit_module
+    from jointplay.common.errors import SimulationError
+
+    predictor = SimpleNamespace(measured=SimpleNamespace(size=20), free=SimpleNamespace(size=1))
+    starts = np.array([[1.0], [2.0]])
+    stopped = [fit_module.Start((x,), (x,), math.inf, 0, f"the run at x = {x:g} stopped",
+                                failed=True) for x in (1.0, 2.0)]
+    unfinished = [fit_module.Start((x,), (x,), math.inf, 3, "settled") for x in (1.0, 2.0)]
+    for outcomes, expected in ((stopped, "stopped: the run at x = 1 stopped"),
+                               (unfinished, "stopped: no finite chi²")):
+        fits = iter(outcomes)
+        monkeypatch.setattr(fit_module, "_local_fit", lambda *_, **__: next(fits))
+        with pytest.raises(SimulationError, match="every start of the calibration " + expected):
+            fit_module.multi_start(predictor, np.ones(1), starts, 5,  # type: ignore[arg-type]
+                                   stop_early=False)
+
+
 def test_window_track_fits_pause_and_only_those_near_the_best_go_on(
         monkeypatch: pytest.MonkeyPatch) -> None:
     """With several tracks each window fit pauses after CHECKPOINT_EVALUATIONS; of those

@@ -226,7 +226,7 @@ def _run(problem: Problem) -> CalibrationResult:
             starts = np.vstack([survivors, starts[1:]])
     leading = len(starts) - (opts.starts - 1) if scan is not None else len(starts)
     optimum = least_squares_fit(predictor, problem.sigma, starts, opts.max_evaluations, scan,
-                                leading=leading, workers=opts.workers)
+                                leading=leading, workers=opts.workers, give_up=True)
     if stages:
         stages.append(_whole_stage(problem, optimum.starts[:leading]))
     drift = _drift(centre, optimum.values, valley.held_before) \

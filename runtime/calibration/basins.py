@@ -106,7 +106,7 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     fits: list[Start] = []
     if len(starts):
         _, fits = multi_start(predictor, weights, starts, max_evaluations, stop_early=False,
-                              workers=workers, settle=True)
+                              workers=workers, settle=True, give_up=True)
     return _with_rivals(best, best_chi2, covariance, others, Basins(
         best, best_chi2, (), limit, tuple(fits), line_runs, region))
 

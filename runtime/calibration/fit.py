@@ -78,21 +78,23 @@ def search_box(free: FreeParameters, centre: np.ndarray, spread: float
 
 def least_squares_fit(predictor: Predictor, sigma: np.ndarray, starts: np.ndarray,
                       max_evaluations: int, scan: Scan | None = None,
-                      leading: int = 1, workers: int = 1) -> Optimum:
+                      leading: int = 1, workers: int = 1, give_up: bool = False) -> Optimum:
     """The best optimum over ``starts``, ``sigma`` the noise (stated or estimated). The first
     ``leading`` starts come first (more than one: each fitted, on up to ``workers`` processes,
     the best kept); then, while the fit does not explain the data, the scan of the weakest
-    direction (when asked) and the rest of ``starts`` (a multi-start's)."""
+    direction (when asked) and the rest of ``starts`` (a multi-start's); ``give_up``: see
+    :func:`multi_start`."""
     best, record = multi_start(predictor, sigma, starts[:leading], max_evaluations,
-                               stop_early=leading == 1, workers=workers, settle=True)
+                               stop_early=leading == 1, workers=workers, settle=True,
+                               give_up=give_up)
     if scan is not None and scan.points > 0 and not _explains(record, predictor):
         seeds = scan_weakest_direction(predictor, sigma, best, starts[0], scan)
         best, more = multi_start(predictor, sigma, np.vstack([best, seeds]), max_evaluations,
-                                 stop_early=True, settle=True)
+                                 stop_early=True, settle=True, give_up=give_up)
         record += more[1:]
     if len(starts) > leading and not _explains(record, predictor):
         best, more = multi_start(predictor, sigma, np.vstack([best, starts[leading:]]),
-                                 max_evaluations, stop_early=True, settle=True)
+                                 max_evaluations, stop_early=True, settle=True, give_up=give_up)
         record += more[1:]
     residuals = whitened(predictor.outputs(best) - predictor.measured.values, sigma)
     jacobian = whitened(predictor.jacobian(best), sigma)
@@ -149,18 +151,20 @@ def _explains(record: list[Start], predictor: Predictor) -> bool:
 
 def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
                 max_evaluations: int, stop_early: bool, workers: int = 1, settle: bool = False,
-                relative: float = 0.0) -> tuple[np.ndarray, list[Start]]:
+                relative: float = 0.0, give_up: bool = False) -> tuple[np.ndarray, list[Start]]:
     """Local fits from ``starts``, the best kept: in turn with ``stop_early`` (none after one
     that explains the data), else on up to ``workers`` forked processes (runs counted in
     ``predictor``). With ``settle``, each ends once settled (SETTLED_SIGMAS) or once its next
-    step moves every parameter by less than ``relative`` of its value."""
+    step moves every parameter by less than ``relative`` of its value; with ``give_up``, once
+    it cannot explain the data at its pace (:func:`_out_of_reach`)."""
     accept = explaining_limit(predictor.measured.size - predictor.free.size)
     best: np.ndarray | None = None
     best_chi2 = math.inf
     done: list[Start] = []
     if stop_early or workers <= 1:
         for x0 in starts:
-            done.append(_local_fit(predictor, weights, x0, max_evaluations, settle, relative))
+            done.append(_local_fit(predictor, weights, x0, max_evaluations, settle, relative,
+                                   give_up))
             if stop_early and done[-1].chi2 <= accept:
                 break
     else:
@@ -168,7 +172,7 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
             # counted here, in the worker: one worker may run several fits in turn
             before = dict(predictor.counter.by_kind)
             start = _local_fit(predictor, weights, starts[i], max_evaluations, settle,
-                               relative)
+                               relative, give_up)
             return start, {k: v - before.get(k, 0) for k, v in predictor.counter.by_kind.items()}
 
         for start, counts in parallel_map(fit, len(starts), workers):
@@ -192,12 +196,21 @@ a step changes chi² by hundredths, below the integrator's scatter, where SciPy'
 on shrinking the trust region through rejected runs."""
 
 
+PACE_EVALUATIONS = 10
+"""A fit whose chi² does not explain the data ends (with ``give_up``) once, at the pace of its
+last this many evaluations or more, the rest could not bring it there: on the whole record a
+misfit creeps down a rugged valley for all its evaluations (85 on paper-fast-angles seed 1),
+refining estimates that the report will not call determined."""
+
+
 class _Settled(Exception):
-    """The fit's next step would lie within SETTLED_SIGMAS of its best point."""
+    """The fit ends at its best point: its next step would lie within SETTLED_SIGMAS of it (or
+    ``relative``), or the message says why it gave up."""
 
 
 def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
-               max_evaluations: int, settle: bool = False, relative: float = 0.0) -> Start:
+               max_evaluations: int, settle: bool = False, relative: float = 0.0,
+               give_up: bool = False) -> Start:
     from scipy.optimize import least_squares
 
     free = predictor.free
@@ -211,11 +224,15 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
     last: list[Any] = [None, math.inf]  # the last point evaluated and its chi²
     # the accepted point: (x, whitened Jacobian, chi²)
     best: list[tuple[np.ndarray, np.ndarray, float] | None] = [None]
+    accepted: list[tuple[int, float]] = []  # (evaluations, chi²) at each accepted point
+    limit = explaining_limit(dof) if give_up else math.inf
 
     def residuals(x: np.ndarray) -> np.ndarray:
         if settle and best[0] is not None and (_within(x, best[0], dof) or _small(
                 x, best[0][0], relative)):
             raise _Settled
+        if (why := _out_of_reach(accepted, evaluations[0], max_evaluations, limit)) is not None:
+            raise _Settled(why)
         wanted = evaluations[0] == 0
         evaluations[0] += 1
         try:
@@ -235,6 +252,7 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
         jac = whitened(predictor.jacobian(x), weights)
         chi2 = last[1] if np.array_equal(last[0], x) else math.inf
         best[0] = (np.array(x), jac, chi2)
+        accepted.append((evaluations[0], chi2))
         return jac
 
     try:
@@ -242,13 +260,30 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
                             x_scale="jac", method="trf", max_nfev=max_evaluations)
     except TrialFailed as err:
         return Start(tuple(x0), tuple(x0), math.inf, 0, str(err), failed=True)
-    except _Settled:
+    except _Settled as why:
         assert best[0] is not None  # only raised once a point was accepted
         x, _, chi2 = best[0]
-        return Start(tuple(x0), tuple(x), chi2, evaluations[0], "settled: the next step lies "
-                     f"within {SETTLED_SIGMAS} standard deviations of the best point"
+        return Start(tuple(x0), tuple(x), chi2, evaluations[0], str(why) or "settled: the next "
+                     f"step lies within {SETTLED_SIGMAS} standard deviations of the best point"
                      + (f" or {relative:g} of its values" if relative else ""))
     return Start(tuple(x0), tuple(fit.x), 2.0 * float(fit.cost), int(fit.nfev), str(fit.message))
+
+
+def _out_of_reach(accepted: list[tuple[int, float]], done: int, budget: int,
+                  limit: float) -> str | None:
+    """Why a fit whose best chi² (the last ``accepted``) lies above ``limit`` ends after
+    ``done`` of its ``budget`` evaluations: at its pace since the last point accepted
+    PACE_EVALUATIONS or more evaluations before, the rest would not bring it to ``limit``
+    (None: it goes on)."""
+    earlier = [(n, chi2) for n, chi2 in accepted if n <= done - PACE_EVALUATIONS]
+    if not earlier or not limit < accepted[-1][1] < math.inf:
+        return None
+    (n, before), now = earlier[-1], accepted[-1][1]
+    if now - (before - now) / (done - n) * (budget - done) <= limit:
+        return None
+    return (f"gave up: chi² {now:.6g} does not explain the data (above {limit:.6g}), and its "
+            f"last {done - n} evaluations lowered it by {before - now:.3g}, too slowly to get "
+            "there")
 
 
 def _within(x: np.ndarray, best: tuple[np.ndarray, np.ndarray, float], dof: int) -> bool:

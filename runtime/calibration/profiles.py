@@ -6,13 +6,12 @@ the intervals holds, and where impacts make the cost jump or a second minimum ap
 
 from __future__ import annotations
 
-import copy
 import math
 from typing import Any
 
 import numpy as np
 
-from jointplay.calibration.predict import Counter, Predictor, chi2_at_points
+from jointplay.calibration.predict import Predictor, chi2_at_points
 from jointplay.calibration.uncertainty import Uncertainty
 
 PROFILE_SIGMAS = 4.0
@@ -42,8 +41,7 @@ def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty, point
              for k, grid in enumerate(grids) for value in grid]
     # its own count (the runs are returned, not counted twice) and cache (one run a point);
     # the estimate itself (each profile's middle) is not run again: its chi² is chi2_min
-    probe = copy.copy(predictor)
-    probe.counter, probe._cache = Counter(), {}
+    probe = predictor.apart()
     away = [x for x in every if not np.array_equal(x, best)]
     found, runs = chi2_at_points(probe, optimum.sigma, away, workers)
     rest = iter(found)

@@ -15,6 +15,7 @@ whole. The Jacobian is taken by central differences of whole runs (two per free 
 
 from __future__ import annotations
 
+import copy
 import math
 from typing import TYPE_CHECKING, Any
 
@@ -99,6 +100,12 @@ class MechanismPredictor:
         assert grid is not None  # checked at the door (on_output_grid)
         self._grid = grid
         self._cache: dict[bytes, np.ndarray] = {}
+
+    def apart(self) -> MechanismPredictor:
+        """This predictor with its own count and an empty cache (see Predictor.apart)."""
+        other = copy.copy(self)
+        other.counter, other._cache = Counter(), {}
+        return other
 
     def __getstate__(self) -> dict[str, Any]:
         # For a piece sent to a Dask worker: the compiled model does not pickle
