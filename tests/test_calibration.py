@@ -11,6 +11,7 @@ the locked joint 4) are flagged. Every bad input exits 2 with one line and write
 from __future__ import annotations
 
 import dataclasses
+import functools
 import itertools
 import json
 import math
@@ -472,6 +473,51 @@ def test_a_whole_record_fit_settles_within_a_tenth_of_a_standard_deviation() -> 
     assert np.all(np.abs(np.array(coarse.end) - full.end) <= 2e-2 * np.abs(full.end))
 
 
+class _Banana:
+    """A stand-in predictor: Rosenbrock's valley in two entries of 25 x 2 outputs (a fit creeps
+    along it), the other 48 held ``offset`` from the data whatever the parameters."""
+
+    def __init__(self, offset: float) -> None:
+        from types import SimpleNamespace
+
+        self.free = SimpleNamespace(size=2, lower=np.full(2, -5.0), upper=np.full(2, 5.0))
+        self.measured = SimpleNamespace(size=50, values=np.zeros((25, 2)))
+        self.offset = offset
+
+    def outputs(self, x: np.ndarray, with_jacobian: bool = True) -> np.ndarray:
+        y = np.full((25, 2), self.offset)
+        y[0] = 10.0 * (x[1] - x[0] ** 2), 1.0 - x[0]
+        return y
+
+    def jacobian(self, x: np.ndarray) -> np.ndarray:
+        jac = np.zeros((25, 2, 2))
+        jac[0] = [[-20.0 * x[0], 10.0], [-1.0, 0.0]]
+        return jac
+
+
+def test_a_fit_that_cannot_reach_a_chi2_the_noise_explains_gives_up_at_its_pace() -> None:
+    """With ``give_up``, a fit whose chi² lies above the explaining limit ends once, at the
+    pace of its last PACE_EVALUATIONS evaluations or more, the rest of its evaluations could
+    not bring it there: on a misfit creeping along Rosenbrock's valley (chi² about 1,200
+    against a limit of 97) it stops after PACE_EVALUATIONS or a few more, at its best point
+    so far, where the same fit without it goes on; a fit the data can explain never gives
+    up (the same fit either way)."""
+    from jointplay.calibration import fit as fit_module
+
+    start, weights = np.array([-1.2, 1.0]), np.ones(2)
+
+    def fitted(offset: float, give_up: bool) -> Any:
+        return fit_module._local_fit(_Banana(offset), weights, start, 40,  # type: ignore[arg-type]
+                                     give_up=give_up)
+
+    creeping, full = fitted(5.0, True), fitted(5.0, False)
+    assert creeping.message.startswith("gave up: chi²") and "too slowly" in creeping.message
+    assert fit_module.PACE_EVALUATIONS <= creeping.evaluations < full.evaluations
+    assert full.chi2 <= creeping.chi2 < 48 * 25.0 + 24.2  # below the start's chi²
+    assert fit_module.explaining_limit(48) < full.chi2
+    assert fitted(0.0, True) == fitted(0.0, False)
+
+
 def test_a_multi_start_without_a_usable_fit_stops_saying_why(
         monkeypatch: pytest.MonkeyPatch) -> None:
     """Where every start stopped, one SimulationError names the first failure; where none
@@ -487,10 +533,13 @@ def test_a_multi_start_without_a_usable_fit_stops_saying_why(
     stopped = [fit_module.Start((x,), (x,), math.inf, 0, f"the run at x = {x:g} stopped",
                                 failed=True) for x in (1.0, 2.0)]
     unfinished = [fit_module.Start((x,), (x,), math.inf, 3, "settled") for x in (1.0, 2.0)]
+
+    def next_of(fits: Any, *_: Any) -> Any:
+        return next(fits)
+
     for outcomes, expected in ((stopped, "stopped: the run at x = 1 stopped"),
                                (unfinished, "stopped: no finite chi²")):
-        fits = iter(outcomes)
-        monkeypatch.setattr(fit_module, "_local_fit", lambda *_, **__: next(fits))
+        monkeypatch.setattr(fit_module, "_local_fit", functools.partial(next_of, iter(outcomes)))
         with pytest.raises(SimulationError, match="every start of the calibration " + expected):
             fit_module.multi_start(predictor, np.ones(1), starts, 5,  # type: ignore[arg-type]
                                    stop_early=False)

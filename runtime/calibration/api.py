@@ -298,10 +298,8 @@ def _whole_stage(problem: Problem, fits: Sequence[Any]) -> Stage:
 
 def _drift(held: np.ndarray, fitted: np.ndarray, mask: np.ndarray) -> float:
     """The largest relative change from ``held`` to ``fitted`` in ``mask`` (0 where none)."""
-    if not mask.any():
-        return 0.0
     scale = np.maximum(np.abs(fitted[mask]), 1e-300)
-    return float(np.max(np.abs(fitted[mask] - held[mask]) / scale))
+    return float(np.max(np.abs(fitted[mask] - held[mask]) / scale, initial=0.0))
 
 
 WHOLE_RECORD_TRACKS = 2

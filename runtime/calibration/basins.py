@@ -80,8 +80,7 @@ def neighbouring_basins(predictor: Predictor, weights: np.ndarray, best: np.ndar
     whose minima count as rivals too; ``axes``: the covariance whose principal axes the lines
     follow (default ``covariance``; :attr:`Uncertainty.seen_covariance` where some parameters
     are undetermined, so the directions the data see are still checked)."""
-    free = predictor.free
-    limit = threshold()
+    free, limit = predictor.free, threshold()
     axes = covariance if axes is None else axes
     points = _line_points(best, axes, free.lower, free.upper)
     for other in _other_centres(best, best_chi2, covariance, others, limit + SLACK):

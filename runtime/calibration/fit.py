@@ -82,19 +82,19 @@ def least_squares_fit(predictor: Predictor, sigma: np.ndarray, starts: np.ndarra
     """The best optimum over ``starts``, ``sigma`` the noise (stated or estimated). The first
     ``leading`` starts come first (more than one: each fitted, on up to ``workers`` processes,
     the best kept); then, while the fit does not explain the data, the scan of the weakest
-    direction (when asked) and the rest of ``starts`` (a multi-start's); ``give_up``: see
-    :func:`multi_start`."""
+    direction (when asked) and the rest of ``starts`` (a multi-start's). Each fit settles
+    (``give_up``: see :func:`multi_start`)."""
+    ending = {"settle": True, "give_up": give_up}
     best, record = multi_start(predictor, sigma, starts[:leading], max_evaluations,
-                               stop_early=leading == 1, workers=workers, settle=True,
-                               give_up=give_up)
+                               stop_early=leading == 1, workers=workers, **ending)
     if scan is not None and scan.points > 0 and not _explains(record, predictor):
         seeds = scan_weakest_direction(predictor, sigma, best, starts[0], scan)
         best, more = multi_start(predictor, sigma, np.vstack([best, seeds]), max_evaluations,
-                                 stop_early=True, settle=True, give_up=give_up)
+                                 stop_early=True, **ending)
         record += more[1:]
     if len(starts) > leading and not _explains(record, predictor):
         best, more = multi_start(predictor, sigma, np.vstack([best, starts[leading:]]),
-                                 max_evaluations, stop_early=True, settle=True, give_up=give_up)
+                                 max_evaluations, stop_early=True, **ending)
         record += more[1:]
     residuals = whitened(predictor.outputs(best) - predictor.measured.values, sigma)
     jacobian = whitened(predictor.jacobian(best), sigma)
@@ -156,7 +156,7 @@ def multi_start(predictor: Predictor, weights: np.ndarray, starts: np.ndarray,
     that explains the data), else on up to ``workers`` forked processes (runs counted in
     ``predictor``). With ``settle``, each ends once settled (SETTLED_SIGMAS) or once its next
     step moves every parameter by less than ``relative`` of its value; with ``give_up``, once
-    it cannot explain the data at its pace (:func:`_out_of_reach`)."""
+    it cannot explain the data at its pace (PACE_EVALUATIONS)."""
     accept = explaining_limit(predictor.measured.size - predictor.free.size)
     best: np.ndarray | None = None
     best_chi2 = math.inf
@@ -197,15 +197,12 @@ on shrinking the trust region through rejected runs."""
 
 
 PACE_EVALUATIONS = 10
-"""A fit whose chi² does not explain the data ends (with ``give_up``) once, at the pace of its
-last this many evaluations or more, the rest could not bring it there: on the whole record a
-misfit creeps down a rugged valley for all its evaluations (85 on paper-fast-angles seed 1),
-refining estimates that the report will not call determined."""
+"""Evaluations over which ``give_up`` judges a fit's pace (on the whole record a misfit creeps
+down a rugged valley for all its evaluations, refining estimates the report cannot trust)."""
 
 
 class _Settled(Exception):
-    """The fit ends at its best point: its next step would lie within SETTLED_SIGMAS of it (or
-    ``relative``), or the message says why it gave up."""
+    """The fit ends at its best point: settled, or (with a message) given up."""
 
 
 def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
@@ -213,8 +210,7 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
                give_up: bool = False) -> Start:
     from scipy.optimize import least_squares
 
-    free = predictor.free
-    measured = predictor.measured
+    free, measured = predictor.free, predictor.measured
     dof = max(measured.size - free.size, 1)
     x0 = np.clip(x0, free.lower, free.upper)
     # The first evaluation is always followed by a Jacobian there; a later one only where its
@@ -231,7 +227,7 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
         if settle and best[0] is not None and (_within(x, best[0], dof) or _small(
                 x, best[0][0], relative)):
             raise _Settled
-        if (why := _out_of_reach(accepted, evaluations[0], max_evaluations, limit)) is not None:
+        if (why := gave_up()) is not None:
             raise _Settled(why)
         wanted = evaluations[0] == 0
         evaluations[0] += 1
@@ -246,6 +242,20 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
             return np.full(measured.size, np.inf)
         last[0], last[1] = np.array(x), float(r @ r)
         return r
+
+    def gave_up() -> str | None:
+        # above the limit, and at its pace over the last PACE_EVALUATIONS evaluations or more
+        # the rest would not bring it there (None: the fit goes on)
+        done = evaluations[0]
+        earlier = [(n, chi2) for n, chi2 in accepted if n <= done - PACE_EVALUATIONS]
+        if not earlier or not limit < accepted[-1][1] < math.inf:
+            return None
+        (n, before), now = earlier[-1], accepted[-1][1]
+        if now - (before - now) / (done - n) * (max_evaluations - done) <= limit:
+            return None
+        return (f"gave up: chi² {now:.6g} does not explain the data (above {limit:.6g}), and "
+                f"its last {done - n} evaluations lowered it by {before - now:.3g}, too slowly "
+                "to get there")
 
     def jacobian(x: np.ndarray) -> np.ndarray:
         # SciPy asks for the Jacobian only at a point it accepts, just after evaluating it
@@ -267,23 +277,6 @@ def _local_fit(predictor: Predictor, weights: np.ndarray, x0: np.ndarray,
                      f"step lies within {SETTLED_SIGMAS} standard deviations of the best point"
                      + (f" or {relative:g} of its values" if relative else ""))
     return Start(tuple(x0), tuple(fit.x), 2.0 * float(fit.cost), int(fit.nfev), str(fit.message))
-
-
-def _out_of_reach(accepted: list[tuple[int, float]], done: int, budget: int,
-                  limit: float) -> str | None:
-    """Why a fit whose best chi² (the last ``accepted``) lies above ``limit`` ends after
-    ``done`` of its ``budget`` evaluations: at its pace since the last point accepted
-    PACE_EVALUATIONS or more evaluations before, the rest would not bring it to ``limit``
-    (None: it goes on)."""
-    earlier = [(n, chi2) for n, chi2 in accepted if n <= done - PACE_EVALUATIONS]
-    if not earlier or not limit < accepted[-1][1] < math.inf:
-        return None
-    (n, before), now = earlier[-1], accepted[-1][1]
-    if now - (before - now) / (done - n) * (budget - done) <= limit:
-        return None
-    return (f"gave up: chi² {now:.6g} does not explain the data (above {limit:.6g}), and its "
-            f"last {done - n} evaluations lowered it by {before - now:.3g}, too slowly to get "
-            "there")
 
 
 def _within(x: np.ndarray, best: tuple[np.ndarray, np.ndarray, float], dof: int) -> bool:

@@ -72,11 +72,6 @@ class Predictor:
         return Predictor(scene, self.model, self.free,
                          self.measured if measured is None else measured, compiled=self.compiled)
 
-    def apart(self) -> Predictor:
-        """This predictor with its own count and an empty cache: runs made through it are
-        returned by the stage that makes them, not counted here twice."""
-        return self.over(self.scene)
-
     def __getstate__(self) -> dict[str, Any]:
         # For a piece sent to a Dask worker: the compiled model does not pickle; the worker
         # loads it again from the scene (the hash-keyed cache, or derived once there).

@@ -27,8 +27,7 @@ def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty, point
     arm's and a mechanism's predictor alike."""
     if points == 0:
         return {}, 0
-    free = predictor.free
-    best = optimum.values
+    free, best = predictor.free, optimum.values
     chi2_min = float(np.sum(optimum.residuals**2))
     jtj_diag = np.sum(optimum.jacobian**2, axis=0)
     grids = []
@@ -41,7 +40,7 @@ def cost_profiles(predictor: Predictor, optimum: Any, spread: Uncertainty, point
              for k, grid in enumerate(grids) for value in grid]
     # its own count (the runs are returned, not counted twice) and cache (one run a point);
     # the estimate itself (each profile's middle) is not run again: its chi² is chi2_min
-    probe = predictor.apart()
+    probe = predictor.over(predictor.scene)
     away = [x for x in every if not np.array_equal(x, best)]
     found, runs = chi2_at_points(probe, optimum.sigma, away, workers)
     rest = iter(found)

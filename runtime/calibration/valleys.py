@@ -52,8 +52,7 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     ``scan.points`` runs over the first window of at least ``scan.window`` through ``best``
     along the rugged directions, ``scan.reach`` times ``scan.scale`` either side, each other
     valley whose floor lies within ``within`` of (or below) the floor of ``best``'s own."""
-    measured = predictor.measured
-    free = predictor.free
+    measured, free = predictor.measured, predictor.free
     ends = horizon_windows(measured.t, len(measured.columns), free.size, scan.window, growth)
     if not ends:
         return ValleyCheck(0.0, (), np.zeros(free.size), 0)

@@ -15,7 +15,6 @@ whole. The Jacobian is taken by central differences of whole runs (two per free 
 
 from __future__ import annotations
 
-import copy
 import math
 from typing import TYPE_CHECKING, Any
 
@@ -101,11 +100,12 @@ class MechanismPredictor:
         self._grid = grid
         self._cache: dict[bytes, np.ndarray] = {}
 
-    def apart(self) -> MechanismPredictor:
-        """This predictor with its own count and an empty cache (see Predictor.apart)."""
-        other = copy.copy(self)
-        other.counter, other._cache = Counter(), {}
-        return other
+    def over(self, scene: MechanismScene, measured: Measured | None = None
+             ) -> MechanismPredictor:
+        """This predictor's model and free parameters on ``scene`` and ``measured`` (default:
+        its own), with its own count and cache (as :meth:`Predictor.over`)."""
+        return MechanismPredictor(scene, self.model, self.free,
+                                  self.measured if measured is None else measured)
 
     def __getstate__(self) -> dict[str, Any]:
         # For a piece sent to a Dask worker: the compiled model does not pickle
