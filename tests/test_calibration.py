@@ -25,6 +25,7 @@ import pytest
 import jointplay as jp
 from jointplay.calibration import CalibrationOptions, Measured, calibrate
 from jointplay.calibration.continuation import horizon_windows
+from jointplay.calibration.fit import explaining_limit
 from jointplay.calibration.report import report_text
 from jointplay.cli import main
 from jointplay.common.errors import DescriptionError
@@ -101,6 +102,25 @@ def test_horizon_continuation_grows_the_window_from_the_previous_estimate() -> N
     saved = result.to_dict()["continuation"]
     assert [s["window_end"] for s in saved] == pytest.approx([0.05, 0.1, 0.2, 0.4])
     assert "4 fits over growing windows" in report_text(result)
+
+
+def test_the_last_window_is_left_out_after_a_window_no_track_explains() -> None:
+    """Windows of 0.05-0.4 s before a 0.5 s record (under sqrt(2) times the last): data the
+    model explains are fitted on all four; data from another link 2 centre of mass (not
+    free) on the first three (the 0.2 s window explains nothing), then on the whole record."""
+    scene = _ideal_scene(0.5)
+    options = CalibrationOptions(tighten=1.0, starts=1, scan_points=0, profile_points=0,
+                                 horizon_first=0.05, horizon_growth=2.0, basins=False)
+    ends = {}
+    for label, truth in (("explained", {"payload.mass": 2.3}),
+                         ("misfit", {"payload.mass": 2.3, "link2.com": 0.21})):
+        result = calibrate(scene, _synthetic(scene, truth, seed=3), ["payload.mass"],
+                           noise=NOISE, options=options)
+        ends[label] = [s.window_end for s in result.stages]
+        at_02 = next(s for s in result.stages if s.window_end == pytest.approx(0.2))
+        assert (at_02.chi2 > explaining_limit(at_02.dof)) == (label == "misfit")
+    assert ends["explained"] == pytest.approx([0.05, 0.1, 0.2, 0.4, 0.5])
+    assert ends["misfit"] == pytest.approx([0.05, 0.1, 0.2, 0.5])
 
 
 def test_horizon_windows() -> None:

@@ -63,8 +63,7 @@ def valley_check(predictor: Predictor, weights: np.ndarray, best: np.ndarray,
     directions, lines, values, runs = _lines_chi2(predictor, stage_scene, part, weights, best,
                                                   scan.scale, steps, workers)
     rivals: list[tuple[np.ndarray, float]] = []
-    spacing = np.zeros(free.size)
-    coarse = False
+    spacing, coarse = np.zeros(free.size), False
     for n, (line, chi2) in enumerate(zip(lines, values, strict=True)):
         own = _valley_floor(chi2, steps.size // 2)
         rivals += [(line[i], float(chi2[i] - chi2[own])) for i in line_minima(chi2)
